@@ -1,0 +1,93 @@
+# tiershade: make deps | all | demo | test | bench
+# Warnings are errors. The C reference is built with -ffp-contract=off (no fused
+# multiply-adds the GLSL does not have) and runs with FTZ/DAZ set (c_ref/ts_math.c).
+
+BUILD    ?= build
+SAN      ?=
+CC       ?= gcc
+CXX      ?= g++
+PKGS     := OpenEXR libpng
+OPT      := -O2 -g
+ifeq ($(SAN),1)
+OPT      := -O1 -g -fsanitize=address,undefined -fno-omit-frame-pointer -fno-sanitize-recover=undefined
+endif
+CFLAGS   := -std=c99 $(OPT) -Wall -Wextra -Werror -ffp-contract=off -fno-fast-math -Ic_ref
+CXXFLAGS := -std=c++17 $(OPT) -Wall -Wextra -Werror -ffp-contract=off -fno-fast-math -Iglue -Ic_ref \
+            -I$(BUILD)/gen $(shell pkg-config --cflags $(PKGS) 2>/dev/null)
+SANFLAGS := -fsanitize=address,undefined
+LDFLAGS  := $(if $(filter 1,$(SAN)),$(SANFLAGS))
+LDLIBS   := -lOSMesa -lEGL $(shell pkg-config --libs $(PKGS) 2>/dev/null) -lpthread -lm
+
+SHADER_FILES := $(sort $(wildcard shaders/*.glsl shaders/*.fs shaders/*.vs shaders/*.variants))
+C_SRC   := $(sort $(wildcard c_ref/*.c))
+CXX_SRC := $(sort $(wildcard glue/*.cpp))
+C_OBJ   := $(C_SRC:%.c=$(BUILD)/obj/%.o)
+CXX_OBJ := $(CXX_SRC:%.cpp=$(BUILD)/obj/%.o) $(BUILD)/obj/gen/shader_sources.o
+LIB_OBJ := $(C_OBJ) $(filter-out $(BUILD)/obj/glue/main.o,$(CXX_OBJ))
+UNIT_TESTS := $(BUILD)/tests/test_ts_math $(BUILD)/tests/test_budget $(BUILD)/tests/test_image_io \
+              $(BUILD)/tests/test_glue $(BUILD)/tests/test_light_folding
+
+.PHONY: all deps demo test test-fast bench clean
+all: $(BUILD)/tiershade $(UNIT_TESTS)
+
+# Debian packages (see README): installed only when missing, so a second run is quick.
+DEB_PKGS := build-essential pkg-config libosmesa6-dev libegl-dev libegl-mesa0 libgles-dev libgbm-dev \
+            libglm-dev libopenexr-dev libopencolorio-dev libtinygltf-dev nlohmann-json3-dev libstb-dev \
+            libpng-dev glslang-tools spirv-tools
+deps:
+	@missing=$$(for p in $(DEB_PKGS); do dpkg-query -W -f='$${Status}\n' $$p 2>/dev/null | grep -q 'install ok installed' || echo $$p; done); \
+	if [ -n "$$missing" ]; then \
+	  echo "deps: installing$$(echo ' '$$missing)"; \
+	  SUDO=$$( [ "$$(id -u)" = 0 ] || echo sudo ); \
+	  $$SUDO apt-get update -q && DEBIAN_FRONTEND=noninteractive $$SUDO apt-get install -y -q $$missing; \
+	else echo "deps: all $(words $(DEB_PKGS)) packages present"; fi
+
+$(BUILD)/tools/embed_files: tools/embed_files.c
+	@mkdir -p $(dir $@)
+	$(CC) -std=c99 -O1 -Wall -Wextra -Werror -o $@ $<
+
+$(BUILD)/gen/shader_sources.cpp: $(SHADER_FILES) $(BUILD)/tools/embed_files
+	@mkdir -p $(dir $@)
+	$(BUILD)/tools/embed_files $@ $(foreach f,$(SHADER_FILES),$(notdir $(f))=$(f))
+
+$(BUILD)/obj/gen/shader_sources.o: $(BUILD)/gen/shader_sources.cpp
+	@mkdir -p $(dir $@)
+	$(CXX) $(CXXFLAGS) -MMD -MP -c -o $@ $<
+
+$(BUILD)/obj/%.o: %.c
+	@mkdir -p $(dir $@)
+	$(CC) $(CFLAGS) -MMD -MP -c -o $@ $<
+
+$(BUILD)/obj/%.o: %.cpp $(BUILD)/gen/shader_sources.cpp
+	@mkdir -p $(dir $@)
+	$(CXX) $(CXXFLAGS) -MMD -MP -c -o $@ $<
+
+$(BUILD)/tiershade: $(BUILD)/obj/glue/main.o $(LIB_OBJ)
+	$(CXX) $(LDFLAGS) -o $@ $^ $(LDLIBS)
+
+$(BUILD)/tests/test_ts_math: $(BUILD)/obj/tests/unit/test_ts_math.o $(C_OBJ)
+	@mkdir -p $(dir $@)
+	$(CC) $(LDFLAGS) -o $@ $^ -lm
+$(BUILD)/tests/%: $(BUILD)/obj/tests/unit/%.o $(LIB_OBJ)
+	@mkdir -p $(dir $@)
+	$(CXX) $(LDFLAGS) -o $@ $^ $(LDLIBS)
+
+# The README's test command: every unit test, conformance on both backends and all
+# APIs, the CLI checks, then the same suite's fast part under ASan+UBSan.
+test: deps
+	$(MAKE) all
+	$(MAKE) BUILD=build/san SAN=1 all
+	bash tests/run_tests.sh
+
+demo: deps
+	$(MAKE) all
+	$(BUILD)/tiershade demo -o out
+
+bench: deps
+	$(MAKE) all
+	$(BUILD)/tiershade bench -o docs/accuracy_cost.md
+
+clean:
+	rm -rf build out
+
+-include $(shell find $(BUILD)/obj -name '*.d' 2>/dev/null)

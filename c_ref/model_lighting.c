@@ -1,0 +1,30 @@
+/* c_ref/model_lighting.c: instantiates the model_lighting twin in float32
+ * (llvmpipe-exact) and double (accuracy reference). See model_lighting_impl.h. */
+#include "model_lighting.h"
+
+#include "ts_generic.h"
+
+/* ---- float32 ---- */
+#include "ts_generic_float.h"
+static ts_vec4f sample_albedo_f(const ts_tex2d *t, float u, float v) { return ts_texture2Df(t, ts_v2f(u, v)); }
+#include "common_math.h"
+#include "common_ambient_cube.h"
+#include "common_lights.h"
+#include "common_output.h"
+#include "model_lighting_impl.h"
+
+/* ---- double ---- */
+#include "ts_generic_double.h"
+static ts_vec4d sample_albedo_d(const ts_tex2d *t, double u, double v) { return ts_texture2Dd(t, ts_v2d(u, v)); }
+#include "common_math.h"
+#include "common_ambient_cube.h"
+#include "common_lights.h"
+#include "common_output.h"
+#include "model_lighting_impl.h"
+
+ts_vec4f model_lighting_f(const ml_variant *v, const ts_vec4f rec[ML_SLOTS], const ts_tex2d *albedo) {
+  return model_lighting_impl_f(v, rec, albedo);
+}
+ts_vec4d model_lighting_d(const ml_variant *v, const ts_vec4f rec[ML_SLOTS], const ts_tex2d *albedo) {
+  return model_lighting_impl_d(v, rec, albedo);
+}

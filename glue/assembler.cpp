@@ -1,0 +1,176 @@
+// tiershade glue: GLSL source assembler (see assembler.h).
+// Portability layer in the spirit of bgfx's shader macros: the library code uses
+// TS_VARYING_IN/OUT, TS_ATTRIBUTE, TS_TEX2D, TS_FRAG_COLOR, and every target
+// gets `precision highp` so GLES results can be compared with C float32
+// (llvmpipe computes mediump in fp16: ../shared/docs/platform_notes.md section 3).
+#include "assembler.h"
+
+#include <cstdlib>
+#include <fstream>
+#include <map>
+#include <regex>
+#include <set>
+#include <sstream>
+
+#include "shader_sources.h"
+
+const char *target_name(Target t) {
+  switch (t) {
+    case Target::ESSL100: return "essl100";
+    case Target::ESSL300: return "essl300";
+    case Target::GLSL330: return "glsl330";
+  }
+  return "?";
+}
+bool parse_target(const std::string &s, Target *out) {
+  if (s == "essl100") *out = Target::ESSL100;
+  else if (s == "essl300") *out = Target::ESSL300;
+  else if (s == "glsl330") *out = Target::GLSL330;
+  else return false;
+  return true;
+}
+
+bool shader_library_read(const std::string &name, std::string *out) {
+  if (const char *dir = std::getenv("TIERSHADE_SHADER_DIR")) {
+    std::ifstream f(std::string(dir) + "/" + name, std::ios::binary);
+    if (!f) return false;
+    std::ostringstream ss;
+    ss << f.rdbuf();
+    *out = ss.str();
+    return true;
+  }
+  for (const EmbeddedFile *e = kShaderFiles; e->name; ++e) {
+    if (name == e->name) {
+      *out = e->text;
+      return true;
+    }
+  }
+  return false;
+}
+
+std::vector<std::string> shader_library_files() {
+  std::vector<std::string> v;
+  for (const EmbeddedFile *e = kShaderFiles; e->name; ++e) v.push_back(e->name);
+  return v;
+}
+
+namespace {
+
+std::string prelude(Target t, Stage s) {
+  std::ostringstream o;
+  switch (t) {
+    case Target::ESSL100:
+      o << "#version 100\n";
+      o << "precision highp float;\nprecision highp int;\n";
+      // Samplers default to lowp in ES fragment shaders, and llvmpipe really returns
+      // fp16 texels for them: every compared value must be highp.
+      o << "precision highp sampler2D;\nprecision highp samplerCube;\n";
+      o << "#define TS_ESSL100 1\n";
+      if (s == Stage::Vertex) {
+        o << "#define TS_ATTRIBUTE attribute\n#define TS_VARYING_OUT varying\n";
+      } else {
+        o << "#define TS_VARYING_IN varying\n#define TS_FRAG_COLOR gl_FragColor\n";
+        o << "#define TS_DECLARE_FRAG_COLOR\n";
+      }
+      o << "#define TS_TEX2D(s, uv) texture2D(s, uv)\n#define TS_TEXCUBE(s, d) textureCube(s, d)\n";
+      break;
+    case Target::ESSL300:
+    case Target::GLSL330:
+      o << (t == Target::ESSL300 ? "#version 300 es\n" : "#version 330 core\n");
+      o << "precision highp float;\nprecision highp int;\n";
+      if (t == Target::ESSL300) o << "precision highp sampler2D;\nprecision highp samplerCube;\n";
+      o << (t == Target::ESSL300 ? "#define TS_ESSL300 1\n" : "#define TS_GLSL330 1\n");
+      o << "#define TS_HAS_TEXEL_FETCH 1\n";
+      if (s == Stage::Vertex) {
+        o << "#define TS_ATTRIBUTE in\n#define TS_VARYING_OUT out\n";
+      } else {
+        o << "#define TS_VARYING_IN in\n#define TS_FRAG_COLOR ts_FragColor\n";
+        o << "#define TS_DECLARE_FRAG_COLOR out vec4 ts_FragColor;\n";
+      }
+      o << "#define TS_TEX2D(s, uv) texture(s, uv)\n#define TS_TEXCUBE(s, d) texture(s, d)\n";
+      break;
+  }
+  return o.str();
+}
+
+bool expand(const std::string &name, int depth, std::vector<std::string> &stack, Assembled *out,
+            std::ostringstream &o, std::string *err, const std::string &from) {
+  if (depth > 16) {
+    *err = from + ": includes nested deeper than 16 levels";
+    return false;
+  }
+  for (const auto &s : stack) {
+    if (s == name) {
+      *err = from + ": include cycle through " + name;
+      return false;
+    }
+  }
+  std::string text;
+  if (!shader_library_read(name, &text)) {
+    *err = from + ": cannot find shader file '" + name + "'";
+    return false;
+  }
+  int id = -1;
+  for (size_t i = 0; i < out->files.size(); ++i)
+    if (out->files[i] == "shaders/" + name) id = static_cast<int>(i);
+  if (id < 0) {
+    id = static_cast<int>(out->files.size());
+    out->files.push_back("shaders/" + name);
+  }
+  stack.push_back(name);
+  static const std::regex inc_re("^\\s*#\\s*include\\s+\"([^\"]+)\"\\s*$");
+  static const std::regex pragma_once_re("^\\s*#\\s*pragma\\s+once\\s*$");
+  std::istringstream in(text);
+  std::string line;
+  int lineno = 0;
+  o << "#line 1 " << id << "\n";
+  while (std::getline(in, line)) {
+    ++lineno;
+    std::smatch m;
+    if (std::regex_match(line, m, inc_re)) {
+      const std::string child = m[1];
+      if (!expand(child, depth + 1, stack, out, o, err, "shaders/" + name + ":" + std::to_string(lineno)))
+        return false;
+      o << "#line " << (lineno + 1) << " " << id << "\n";
+    } else if (std::regex_match(line, pragma_once_re)) {
+      o << "\n";  // includes are guarded with #ifndef in the library; keep line numbers
+    } else {
+      o << line << "\n";
+    }
+  }
+  stack.pop_back();
+  return true;
+}
+
+}  // namespace
+
+bool assemble(const std::string &entry, Target target, Stage stage, const std::vector<Define> &defines,
+              Assembled *out, std::string *err) {
+  *out = Assembled();
+  std::ostringstream o;
+  o << prelude(target, stage);
+  for (const auto &d : defines) o << "#define " << d.name << " " << d.value << "\n";
+  std::vector<std::string> stack;
+  if (!expand(entry, 0, stack, out, o, err, "assembler")) return false;
+  out->text = o.str();
+  return true;
+}
+
+std::string map_compile_log(const std::string &log, const Assembled &a) {
+  // Mesa: "3:17(5): error: ..."; glslang: "ERROR: 3:17: ...".
+  static const std::regex loc_re("(^|\\s)(\\d+):(\\d+)(\\(\\d+\\))?:");
+  std::string result;
+  std::istringstream in(log);
+  std::string line;
+  while (std::getline(in, line)) {
+    std::smatch m;
+    if (std::regex_search(line, m, loc_re)) {
+      const size_t id = std::stoul(m[2]);
+      if (id < a.files.size()) {
+        line = m.prefix().str() + m[1].str() + a.files[id] + ":" + m[3].str() + ":" + m.suffix().str();
+      }
+    }
+    result += line + "\n";
+  }
+  return result;
+}

@@ -1,0 +1,64 @@
+// tiershade glue: shader-family plumbing shared by every family (see family.h).
+#include "family.h"
+
+#include <cmath>
+
+extern const ShaderFamily kModelLightingFamily;
+
+const char *input_set_name(InputSet s) { return s == InputSet::Random ? "random" : "hard"; }
+
+ts_vec4f FamilyInputs::slot(int x, int y, int k) const {
+  const float *p = &records[(static_cast<size_t>(y + k * h) * w + x) * 4];
+  return ts_v4f(p[0], p[1], p[2], p[3]);
+}
+void FamilyInputs::set_slot(int x, int y, int k, ts_vec4f v) {
+  float *p = &records[(static_cast<size_t>(y + k * h) * w + x) * 4];
+  p[0] = v.x;
+  p[1] = v.y;
+  p[2] = v.z;
+  p[3] = v.w;
+}
+void FamilyInputs::resize(int w_, int h_, int slots_) {
+  w = w_;
+  h = h_;
+  slots = slots_;
+  records.assign(static_cast<size_t>(w) * h * slots * 4, 0.f);
+}
+TextureDesc FamilyInputs::record_texture() const {
+  TextureDesc t;
+  t.sampler = "ts_record";
+  t.w = w;
+  t.h = h * slots;
+  t.rgba = records;
+  return t;
+}
+
+const ShaderFamily *find_family(const std::string &name) {
+  for (const ShaderFamily *f : all_families())
+    if (name == f->name) return f;
+  return nullptr;
+}
+std::vector<const ShaderFamily *> all_families() { return {&kModelLightingFamily}; }
+
+std::vector<Define> variant_defines(const Variant &v, bool conform) {
+  std::vector<Define> d;
+  switch (v.tier) {
+    case Tier::PS20: d.push_back({"TS_TIER_PS20", "1"}); break;
+    case Tier::PS2B: d.push_back({"TS_TIER_PS2B", "1"}); break;
+    case Tier::SM3: d.push_back({"TS_TIER_SM3", "1"}); break;
+  }
+  for (const auto &kv : v.values) d.push_back({kv.first, std::to_string(kv.second)});
+  if (conform) d.push_back({"TS_CONFORM", "1"});
+  return d;
+}
+
+ts_vec3f Rng::unit_vector() {
+  for (;;) {
+    const float x = uniform(-1, 1), y = uniform(-1, 1), z = uniform(-1, 1);
+    const float l2 = x * x + y * y + z * z;
+    if (l2 > 0.01f && l2 <= 1.f) {
+      const float inv = 1.0f / std::sqrt(l2);
+      return ts_v3f(x * inv, y * inv, z * inv);
+    }
+  }
+}

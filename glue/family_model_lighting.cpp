@@ -1,0 +1,209 @@
+// tiershade glue: the model_lighting family: input records (random and hard
+// cases), and the bridge to its C twin (c_ref/model_lighting.c).
+#include <cmath>
+#include <limits>
+
+#include "family.h"
+#include "model_lighting.h"
+
+namespace {
+
+const float kNaN = std::numeric_limits<float>::quiet_NaN();
+const float kInf = std::numeric_limits<float>::infinity();
+
+ml_variant to_ml(const Variant &v) {
+  ml_variant m;
+  m.tier = v.tier == Tier::PS20 ? TS_TIER_ID_PS20 : v.tier == Tier::PS2B ? TS_TIER_ID_PS2B : TS_TIER_ID_SM3;
+  m.albedo_texture = v.value("ALBEDO_TEXTURE");
+  m.half_lambert = v.value("HALF_LAMBERT");
+  m.output_mode = v.value("OUTPUT_MODE");
+  m.num_lights = v.value("NUM_LIGHTS");
+  return m;
+}
+
+ts_tex2d albedo_tex(const FamilyInputs &in) {
+  const TextureDesc &t = in.textures.at(0);
+  ts_tex2d x;
+  x.w = t.w;
+  x.h = t.h;
+  x.texels = t.rgba.data();
+  x.wrap_s = x.wrap_t = t.repeat ? TS_WRAP_REPEAT : TS_WRAP_CLAMP;
+  x.filter = t.linear ? TS_FILTER_LINEAR : TS_FILTER_NEAREST;
+  return x;
+}
+
+void gather(const FamilyInputs &in, int x, int y, ts_vec4f rec[ML_SLOTS]) {
+  for (int k = 0; k < ML_SLOTS; ++k) rec[k] = in.slot(x, y, k);
+}
+
+ts_vec4f eval_f(const Variant &v, const FamilyInputs &in, int x, int y) {
+  ts_vec4f rec[ML_SLOTS];
+  gather(in, x, y, rec);
+  const ml_variant m = to_ml(v);
+  const ts_tex2d t = albedo_tex(in);
+  return model_lighting_f(&m, rec, &t);
+}
+
+ts_vec4d eval_d(const Variant &v, const FamilyInputs &in, int x, int y) {
+  ts_vec4f rec[ML_SLOTS];
+  gather(in, x, y, rec);
+  const ml_variant m = to_ml(v);
+  const ts_tex2d t = albedo_tex(in);
+  return model_lighting_d(&m, rec, &t);
+}
+
+void output_range(const Variant &v, float *lo, float *hi) {
+  *lo = 0.f;
+  *hi = v.value("OUTPUT_MODE") == 0 ? 65504.f : 1.f;
+}
+
+ts_vec4f v4(ts_vec3f v, float w) { return ts_v4f(v.x, v.y, v.z, w); }
+
+// A well-conditioned random light of a random type (point, spot, directional).
+void random_light(Rng &r, ts_vec4f l[5]) {
+  const int type = static_cast<int>(r.next() % 3);  // 0 point, 1 spot, 2 directional
+  const ts_vec3f dir = r.unit_vector();
+  l[0] = ts_v4f(r.uniform(0, 4), r.uniform(0, 4), r.uniform(0, 4), type == 2 ? 1.f : 0.f);
+  l[1] = v4(dir, type == 1 ? 1.f : 0.f);
+  l[2] = ts_v4f(r.uniform(-4, 4), r.uniform(-4, 4), r.uniform(-4, 4), 1.f);
+  const float cos_outer = r.uniform(0.3f, 0.95f);
+  const float cos_inner = std::fmin(1.f, cos_outer + r.uniform(0.02f, 0.3f));
+  l[3] = ts_v4f(r.uniform(0.5f, 8.f), 0.f, cos_outer, 1.0f / (cos_inner - cos_outer));
+  l[4] = type == 2 ? ts_v4f(1, 0, 0, 0) : ts_v4f(r.uniform(0.05f, 1.f), r.uniform(0, 0.5f), r.uniform(0, 0.5f), 0);
+}
+
+void random_pixel(Rng &r, ts_vec4f rec[ML_SLOTS]) {
+  rec[ML_SLOT_NORMAL] = v4(ts_scale3f(r.unit_vector(), r.uniform(0.2f, 3.f)), 0.f);
+  rec[ML_SLOT_POSITION] = ts_v4f(r.uniform(-2, 2), r.uniform(-2, 2), r.uniform(-2, 2), 1.f);
+  rec[ML_SLOT_UV] = ts_v4f(r.uniform(-1, 2), r.uniform(-1, 2), 0, 0);
+  for (int k = 0; k < 6; ++k)
+    rec[ML_SLOT_AMBIENT + k] = ts_v4f(r.uniform(0, 1), r.uniform(0, 1), r.uniform(0, 1), 0);
+  rec[ML_SLOT_PARAMS] = ts_v4f(r.uniform(0.25f, 4.f), static_cast<float>(r.next() % 5), 0, 0);
+  rec[ML_SLOT_ALBEDO] = ts_v4f(r.uniform(0, 1), r.uniform(0, 1), r.uniform(0, 1), 1);
+  for (int i = 0; i < ML_MAX_LIGHTS; ++i) random_light(r, &rec[ML_SLOT_LIGHT0 + 5 * i]);
+}
+
+// The hard cases: each pixel of the hard set applies one of these to a random base record.
+const char *const kHardCases[] = {
+    "zero-length normal",        "denormal normal",          "huge normal 1e20",
+    "light at the shaded point", "N.L = 1 exactly",          "N.L = -1 exactly",
+    "N.L = 0 exactly",           "light colour 65504",       "tone-map scale 1e6",
+    "NaN in the normal",         "Inf in a light colour",    "NaN in the position",
+    "light at 1e30",             "spot exponent 0 and 1e4",  "spot cos at the outer cone",
+    "zero l and q, huge d",      "NaN in the ambient cube",  "Inf in the ambient cube",
+    "negative tone-map scale",   "NaN tone-map scale",       "NaN light count",
+    "NaN spot direction",        "huge albedo uv 1e7",       "unnormalised tiny normal 1e-19",
+};
+const int kNumHardCases = sizeof kHardCases / sizeof kHardCases[0];
+
+void hard_pixel(Rng &r, int c, ts_vec4f rec[ML_SLOTS]) {
+  random_pixel(r, rec);
+  ts_vec4f *l0 = &rec[ML_SLOT_LIGHT0];
+  const ts_vec3f n = ts_normalize3f(ts_v3f(rec[0].x, rec[0].y, rec[0].z));
+  auto make_directional = [&](ts_vec4f *l, ts_vec3f travel) {
+    l[0].w = 1.f;
+    l[1] = v4(travel, 0.f);
+    l[4] = ts_v4f(1, 0, 0, 0);
+  };
+  switch (c) {
+    case 0: rec[ML_SLOT_NORMAL] = ts_v4f(0, 0, 0, 0); break;
+    case 1: rec[ML_SLOT_NORMAL] = ts_v4f(1e-39f, -2e-39f, 3e-40f, 0); break;
+    case 2: rec[ML_SLOT_NORMAL] = ts_v4f(1e20f, -3e19f, 2e20f, 0); break;
+    case 3: l0[2] = rec[ML_SLOT_POSITION]; l0[0].w = 0.f; break;
+    case 4:  // an axis normal and a directional light travelling against it: N.L = 1
+      rec[ML_SLOT_NORMAL] = ts_v4f(0, 0, 1, 0);
+      make_directional(l0, ts_v3f(0, 0, -1));
+      break;
+    case 5:
+      rec[ML_SLOT_NORMAL] = ts_v4f(0, 1, 0, 0);
+      make_directional(l0, ts_v3f(0, 1, 0));
+      break;
+    case 6:
+      rec[ML_SLOT_NORMAL] = ts_v4f(1, 0, 0, 0);
+      make_directional(l0, ts_v3f(0, 0, 1));
+      break;
+    case 7:
+      for (int i = 0; i < ML_MAX_LIGHTS; ++i) {
+        rec[ML_SLOT_LIGHT0 + 5 * i].x = 65504.f;
+        rec[ML_SLOT_LIGHT0 + 5 * i].y = 65504.f;
+        rec[ML_SLOT_LIGHT0 + 5 * i].z = 65504.f;
+      }
+      rec[ML_SLOT_PARAMS].x = 4.f;
+      break;
+    case 8: rec[ML_SLOT_PARAMS].x = 1e6f; break;
+    case 9: rec[ML_SLOT_NORMAL].y = kNaN; break;
+    case 10: l0[0].x = kInf; break;
+    case 11: rec[ML_SLOT_POSITION].z = kNaN; break;
+    case 12: l0[2] = ts_v4f(1e30f, -1e30f, 1e30f, 1); l0[0].w = 0.f; break;
+    case 13:
+      l0[1].w = 1.f;
+      l0[3].x = 0.f;
+      rec[ML_SLOT_LIGHT0 + 5 + 1].w = 1.f;
+      rec[ML_SLOT_LIGHT0 + 5 + 3].x = 1e4f;
+      break;
+    case 14: {  // a spot light whose axis makes cos = cos_outer exactly is hard to build; use the axis itself
+      l0[0].w = 0.f;
+      l0[1].w = 1.f;
+      l0[3].z = 1.f;  // cos_outer = 1: the cone test sits at its edge for an on-axis point
+      l0[3].w = 1e30f;
+      break;
+    }
+    case 15: l0[4] = ts_v4f(1.f, 0.f, 0.f, 0.f); l0[2] = ts_v4f(3e18f, 0, 0, 1); l0[0].w = 0.f; break;
+    case 16: rec[ML_SLOT_AMBIENT + 2].y = kNaN; rec[ML_SLOT_AMBIENT + 3].y = kNaN; break;
+    case 17: rec[ML_SLOT_AMBIENT + 0].x = kInf; rec[ML_SLOT_AMBIENT + 1].x = kInf; break;
+    case 18: rec[ML_SLOT_PARAMS].x = -2.f; break;
+    case 19: rec[ML_SLOT_PARAMS].x = kNaN; break;
+    case 20: rec[ML_SLOT_PARAMS].y = kNaN; break;
+    case 21: l0[1] = ts_v4f(kNaN, 0, 1, 1); break;
+    case 22: rec[ML_SLOT_UV] = ts_v4f(1e7f, -3e7f, 0, 0); break;
+    case 23: rec[ML_SLOT_NORMAL] = v4(ts_scale3f(n, 1e-19f), 0.f); break;
+    default: break;
+  }
+}
+
+void make_inputs(InputSet set, int w, int h, uint32_t seed, FamilyInputs *out) {
+  out->resize(w, h, ML_SLOTS);
+  out->case_names.clear();
+  Rng r(seed);
+  for (int y = 0; y < h; ++y) {
+    for (int x = 0; x < w; ++x) {
+      ts_vec4f rec[ML_SLOTS];
+      if (set == InputSet::Random) {
+        random_pixel(r, rec);
+      } else {
+        const int c = (y * w + x) % kNumHardCases;
+        hard_pixel(r, c, rec);
+        out->case_names.push_back(kHardCases[c]);
+      }
+      for (int k = 0; k < ML_SLOTS; ++k) out->set_slot(x, y, k, rec[k]);
+    }
+  }
+  // The albedo texture: 16x16 RGBA32F, bilinear, repeat (RGBA8 would take llvmpipe's
+  // 8-bit fixed-point filtering path: platform notes section 4).
+  TextureDesc t;
+  t.sampler = "u_albedo";
+  t.w = t.h = 16;
+  t.linear = t.repeat = true;
+  t.rgba.resize(16 * 16 * 4);
+  for (size_t i = 0; i < t.rgba.size(); ++i) t.rgba[i] = (i % 4 == 3) ? 1.f : r.uniform(0.05f, 1.f);
+  out->textures = {t};
+}
+
+std::vector<std::string> slot_names() {
+  std::vector<std::string> n = {"normal", "position", "uv"};
+  const char *faces[6] = {"+x", "-x", "+y", "-y", "+z", "-z"};
+  for (const char *f : faces) n.push_back(std::string("ambient") + f);
+  n.push_back("params");
+  n.push_back("albedo");
+  const char *parts[5] = {"color", "dir", "pos", "spot", "atten"};
+  for (int i = 0; i < ML_MAX_LIGHTS; ++i)
+    for (const char *p : parts) n.push_back("light" + std::to_string(i) + "." + p);
+  return n;
+}
+
+}  // namespace
+
+extern const ShaderFamily kModelLightingFamily;
+const ShaderFamily kModelLightingFamily = {
+    "model_lighting", ML_SLOTS, slot_names(), make_inputs, eval_f, eval_d, output_range,
+};

@@ -1,0 +1,69 @@
+// tiershade glue: the table of GL entry points, resolved per backend.
+// Every GL call goes through a GlFns table filled by OSMesaGetProcAddress or
+// eglGetProcAddress, so the binary does not depend on link order between
+// libOSMesa and libEGL (see ../shared/docs/platform_notes.md, addendum).
+#pragma once
+#include <GL/glcorearb.h>
+
+// X(name, PFN type suffix). Functions marked optional may be missing (ES2).
+#define TS_GL_FUNCTIONS(X)                                              \
+  X(GetString, PFNGLGETSTRINGPROC)                                      \
+  X(GetError, PFNGLGETERRORPROC)                                        \
+  X(GetIntegerv, PFNGLGETINTEGERVPROC)                                  \
+  X(Finish, PFNGLFINISHPROC)                                            \
+  X(Flush, PFNGLFLUSHPROC)                                              \
+  X(CreateShader, PFNGLCREATESHADERPROC)                                \
+  X(ShaderSource, PFNGLSHADERSOURCEPROC)                                \
+  X(CompileShader, PFNGLCOMPILESHADERPROC)                              \
+  X(GetShaderiv, PFNGLGETSHADERIVPROC)                                  \
+  X(GetShaderInfoLog, PFNGLGETSHADERINFOLOGPROC)                        \
+  X(DeleteShader, PFNGLDELETESHADERPROC)                                \
+  X(CreateProgram, PFNGLCREATEPROGRAMPROC)                              \
+  X(AttachShader, PFNGLATTACHSHADERPROC)                                \
+  X(BindAttribLocation, PFNGLBINDATTRIBLOCATIONPROC)                    \
+  X(LinkProgram, PFNGLLINKPROGRAMPROC)                                  \
+  X(GetProgramiv, PFNGLGETPROGRAMIVPROC)                                \
+  X(GetProgramInfoLog, PFNGLGETPROGRAMINFOLOGPROC)                      \
+  X(DeleteProgram, PFNGLDELETEPROGRAMPROC)                              \
+  X(UseProgram, PFNGLUSEPROGRAMPROC)                                    \
+  X(GetUniformLocation, PFNGLGETUNIFORMLOCATIONPROC)                    \
+  X(GetActiveUniform, PFNGLGETACTIVEUNIFORMPROC)                        \
+  X(Uniform1i, PFNGLUNIFORM1IPROC)                                      \
+  X(Uniform1f, PFNGLUNIFORM1FPROC)                                      \
+  X(Uniform2f, PFNGLUNIFORM2FPROC)                                      \
+  X(Uniform1fv, PFNGLUNIFORM1FVPROC)                                    \
+  X(Uniform3fv, PFNGLUNIFORM3FVPROC)                                    \
+  X(Uniform4fv, PFNGLUNIFORM4FVPROC)                                    \
+  X(GenTextures, PFNGLGENTEXTURESPROC)                                  \
+  X(BindTexture, PFNGLBINDTEXTUREPROC)                                  \
+  X(ActiveTexture, PFNGLACTIVETEXTUREPROC)                              \
+  X(TexImage2D, PFNGLTEXIMAGE2DPROC)                                    \
+  X(TexParameteri, PFNGLTEXPARAMETERIPROC)                              \
+  X(DeleteTextures, PFNGLDELETETEXTURESPROC)                            \
+  X(PixelStorei, PFNGLPIXELSTOREIPROC)                                  \
+  X(GenFramebuffers, PFNGLGENFRAMEBUFFERSPROC)                          \
+  X(BindFramebuffer, PFNGLBINDFRAMEBUFFERPROC)                          \
+  X(FramebufferTexture2D, PFNGLFRAMEBUFFERTEXTURE2DPROC)                \
+  X(CheckFramebufferStatus, PFNGLCHECKFRAMEBUFFERSTATUSPROC)            \
+  X(DeleteFramebuffers, PFNGLDELETEFRAMEBUFFERSPROC)                    \
+  X(GenBuffers, PFNGLGENBUFFERSPROC)                                    \
+  X(BindBuffer, PFNGLBINDBUFFERPROC)                                    \
+  X(BufferData, PFNGLBUFFERDATAPROC)                                    \
+  X(DeleteBuffers, PFNGLDELETEBUFFERSPROC)                              \
+  X(VertexAttribPointer, PFNGLVERTEXATTRIBPOINTERPROC)                  \
+  X(EnableVertexAttribArray, PFNGLENABLEVERTEXATTRIBARRAYPROC)          \
+  X(GenVertexArrays, PFNGLGENVERTEXARRAYSPROC)                          \
+  X(BindVertexArray, PFNGLBINDVERTEXARRAYPROC)                          \
+  X(DeleteVertexArrays, PFNGLDELETEVERTEXARRAYSPROC)                    \
+  X(Viewport, PFNGLVIEWPORTPROC)                                        \
+  X(Disable, PFNGLDISABLEPROC)                                          \
+  X(ClearColor, PFNGLCLEARCOLORPROC)                                    \
+  X(Clear, PFNGLCLEARPROC)                                              \
+  X(DrawArrays, PFNGLDRAWARRAYSPROC)                                    \
+  X(ReadPixels, PFNGLREADPIXELSPROC)
+
+struct GlFns {
+#define TS_GL_DECLARE(name, type) type name = nullptr;
+  TS_GL_FUNCTIONS(TS_GL_DECLARE)
+#undef TS_GL_DECLARE
+};

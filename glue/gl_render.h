@@ -1,0 +1,42 @@
+// tiershade glue: programs, RGBA32F textures, and full-screen draws into an
+// RGBA32F framebuffer with float readback, on any GlContext.
+#pragma once
+#include <string>
+#include <vector>
+
+#include "assembler.h"
+#include "gl_context.h"
+#include "image_io.h"
+
+struct TextureDesc {
+  std::string sampler;  // uniform name
+  int w = 0, h = 0;
+  std::vector<float> rgba;  // RGBA32F, row 0 first (GL order)
+  bool linear = false;      // GL_LINEAR (else GL_NEAREST)
+  bool repeat = false;      // GL_REPEAT (else GL_CLAMP_TO_EDGE)
+};
+
+class GlRenderer {
+ public:
+  explicit GlRenderer(GlContext &ctx);
+  ~GlRenderer();
+  GlRenderer(const GlRenderer &) = delete;
+  GlRenderer &operator=(const GlRenderer &) = delete;
+
+  const GlFns &gl() const { return ctx_.gl(); }
+  // Compiles and links; on failure *err holds the log mapped to shaders/<file>:<line>.
+  GLuint build_program(const Assembled &vs, const Assembled &fs, std::string *err);
+  void delete_program(GLuint p);
+  GLuint upload_texture(const TextureDesc &t);
+  void delete_texture(GLuint t);
+  // Binds textures to units 0..n-1 and their samplers, draws one full-screen
+  // triangle into a w x h RGBA32F target, and reads it back.
+  bool draw(GLuint program, const std::vector<std::pair<std::string, GLuint>> &textures, int w, int h,
+            ImageF *out, std::string *err);
+
+ private:
+  bool ensure_target(int w, int h, std::string *err);
+  GlContext &ctx_;
+  GLuint vao_ = 0, vbo_ = 0, fbo_ = 0, color_ = 0;
+  int tw_ = 0, th_ = 0;
+};

@@ -1,0 +1,52 @@
+// tiershade glue: shader variants = tier x static combos x dynamic combos, minus skip rules.
+// Each shader declares its combos in shaders/<shader>.variants (format: docs/tiers.md).
+#pragma once
+#include <map>
+#include <string>
+#include <vector>
+
+enum class Tier { PS20, PS2B, SM3 };
+const char *tier_name(Tier t);
+bool parse_tier(const std::string &s, Tier *out);
+std::vector<Tier> all_tiers();
+
+struct Combo {
+  std::string name;
+  bool dynamic = false;
+  int min = 0, max = 0;
+  std::vector<Tier> tiers;  // tiers where the combo exists (empty = all)
+};
+
+struct SkipRule {
+  std::vector<Tier> tiers;  // empty = all
+  std::string expr;
+  int line = 0;
+};
+
+struct ShaderDecl {
+  std::string name;
+  std::string fragment, vertex;
+  std::string file;  // the .variants file, for messages
+  std::vector<Tier> tiers;
+  std::vector<Combo> combos;
+  std::vector<SkipRule> skips;
+};
+
+struct Variant {
+  const ShaderDecl *shader = nullptr;
+  Tier tier = Tier::SM3;
+  std::vector<std::pair<std::string, int>> values;  // combo name -> value, declaration order
+  int value(const std::string &combo, int fallback = 0) const;
+  std::string name() const;  // "ps20:ALBEDO_TEXTURE=1,HALF_LAMBERT=0,..."
+};
+
+// Evaluates an integer expression over combo values (== != < <= > >= && || ! + - * and parentheses).
+bool eval_expr(const std::string &expr, const std::map<std::string, int> &vars, int *out, std::string *err);
+
+bool parse_shader_decl(const std::string &file, const std::string &text, ShaderDecl *out, std::string *err);
+// Every shader declared in the library (shaders/*.variants), sorted by name.
+bool load_shader_decls(std::vector<ShaderDecl> *out, std::string *err);
+std::vector<Variant> enumerate_variants(const ShaderDecl &s, const std::vector<Tier> &tiers, std::string *err);
+// Finds a variant by its name() or by its index in enumerate_variants(all tiers).
+bool find_variant(const std::vector<ShaderDecl> &decls, const std::string &shader, const std::string &variant,
+                  Variant *out, std::string *err);
