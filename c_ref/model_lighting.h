@@ -19,7 +19,8 @@ enum ml_slot {
   ML_SLOT_PARAMS = 9,  /* x tone-map scale, y light count (sm3) */
   ML_SLOT_ALBEDO = 10,
   ML_SLOT_LIGHT0 = 11, /* 5 slots per light: color, dir, pos, spot, atten */
-  ML_SLOTS = 31
+  ML_SLOTS = 31,
+  ML_PIXEL_SLOTS = 3 /* normal, position, uv: per pixel in deferred frames */
 };
 
 enum ts_tier_id { TS_TIER_ID_PS20 = 0, TS_TIER_ID_PS2B = 1, TS_TIER_ID_SM3 = 2 };

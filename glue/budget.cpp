@@ -137,18 +137,26 @@ bool run_tool(const std::vector<std::string> &argv, const std::string &out_path,
     return true;
 }
 
-// Removes every occurrence of "dir/" from text (tool messages name our temp files).
-std::string strip_dir(std::string text, const std::string &dir) {
-    const std::string needle = dir + "/";
-    for (size_t p; (p = text.find(needle)) != std::string::npos;) text.erase(p, needle.size());
-    return text;
-}
-
 std::string trim(const std::string &s) {
     size_t b = s.find_first_not_of(" \t\r\n");
     if (b == std::string::npos) return std::string();
     size_t e = s.find_last_not_of(" \t\r\n");
     return s.substr(b, e - b + 1);
+}
+
+// Makes a tool log readable: removes our temp directory from paths, the bare
+// file-name line glslang echoes, and blank lines.
+std::string clean_log(const std::string &text, const std::string &dir, const std::string &echoed_name) {
+    const std::string needle = dir + "/";
+    std::istringstream in(text);
+    std::string line, out;
+    while (std::getline(in, line)) {
+        for (size_t p; (p = line.find(needle)) != std::string::npos;) line.erase(p, needle.size());
+        line = trim(line);
+        if (line.empty() || line == echoed_name) continue;
+        out += line + "\n";
+    }
+    return out.empty() ? std::string("(no output)\n") : out;
 }
 
 // ----------------------------------------------------------------------------
@@ -466,8 +474,8 @@ const Rule kRules[] = {
     {"Fma", true, Unit::Alu, 1, 0, "`mad`", nullptr},
     {"FMin FMax UMin UMax SMin SMax NMin NMax", true, Unit::Alu, 1, 0, "`min` / `max`", nullptr},
     {"FClamp NClamp", true, Unit::Alu, 0, 0, "`_sat` modifier, `mov_sat`, or `max` + `min`",
-     "clamp(x,0,1): 0 if x is a single-use ALU result in the same block (`_sat`), else 1 (`mov_sat`); "
-     "other bounds: 2"},
+     "clamp(x,0,1): 0 if x is a single-use ALU result in the same block, or a vector built only from such "
+     "results (`_sat`), else 1 (`mov_sat`); other bounds: 2"},
     {"UClamp SClamp", true, Unit::Alu, 2, 0, "`max` + `min`", nullptr},
     {"FMix", true, Unit::Alu, 2, 0, "`lrp` (2-slot macro)", nullptr},
     {"Step", true, Unit::Alu, 0, 0, "`cmp` (+ `add`)", "1 with a constant 0 edge, else 2"},
@@ -904,13 +912,23 @@ void Counter::analyse_fusion(const Function &f) {
             std::string name = ext_name(in);
             if (name != "FClamp" && name != "NClamp") continue;
             if (!const_all(ext_arg(in, 1), 0.0) || !const_all(ext_arg(in, 2), 1.0)) continue;
+            // x must be a single-use ALU result, or a vector built only from
+            // single-use ALU results (each lane's instruction takes the _sat).
+            auto alu_result = [&](const std::string &id) {
+                const Inst *d = def(id);
+                if (!d || uses(id) != 1 || !same_block(id, in.result)) return false;
+                Cost c = cost(*d, *blocks_.at(def_block_.at(id)));
+                return c.alu >= 1 && c.tex == 0;
+            };
             const std::string x = ext_arg(in, 0);
             const Inst *d = def(x);
-            if (!d || uses(x) != 1 || !same_block(x, in.result)) continue;
-            auto bl = blocks_.find(def_block_.at(x));
-            if (bl == blocks_.end()) continue;
-            Cost c = cost(*d, *bl->second);
-            if (c.alu >= 1 && c.tex == 0) sat_clamp_.insert(in.result);
+            bool sat = alu_result(x);
+            if (!sat && d && d->op == "OpCompositeConstruct" && uses(x) == 1 && same_block(x, in.result)) {
+                sat = true;
+                for (const std::string &lane : d->args)
+                    if (!alu_result(lane)) sat = false;
+            }
+            if (sat) sat_clamp_.insert(in.result);
         }
     }
 }
@@ -1150,8 +1168,9 @@ bool budget_count_fragment(const std::string &glsl330_source, BudgetCounts *out,
         if (!run_tool(s.argv, log_out, log_err, &code, &e)) return false;
         if (code != 0) {
             // glslang prints its compile log on stdout, the spirv tools on stderr.
-            std::string log = trim(read_file(log_out) + "\n" + read_file(log_err));
-            e = std::string(s.what) + " failed (exit " + std::to_string(code) + "):\n" + strip_dir(log, dir.path());
+            std::string log = read_file(log_out) + "\n" + read_file(log_err);
+            e = std::string(s.what) + " failed (exit " + std::to_string(code) + "):\n" +
+                clean_log(log, dir.path(), "fragment.frag");
             return false;
         }
     }

@@ -41,7 +41,7 @@ int cmd_budget(int argc, char **argv) {
     Assembled fs;
     std::string err;
     BudgetCounts c;
-    bool ok = assemble(v.shader->fragment, Target::GLSL330, Stage::Fragment, variant_defines(v, false), &fs, &err) &&
+    bool ok = assemble(v.shader->fragment, Target::GLSL330, Stage::Fragment, variant_defines(v, InputMode::Production), &fs, &err) &&
               budget_count_fragment(fs.text, &c, &err);
     if (!ok) err = map_compile_log(err, fs);
     const TierLimits L = limits_for(v.tier);

@@ -65,7 +65,7 @@ int cmd_assemble(int argc, char **argv) {
   std::string err;
   const bool vertex = a.flag("--vertex");
   const std::string entry = vertex ? (a.flag("--conform") ? "conform_fullscreen.vs" : v.shader->vertex) : v.shader->fragment;
-  if (!assemble(entry, t, vertex ? Stage::Vertex : Stage::Fragment, variant_defines(v, a.flag("--conform")), &out,
+  if (!assemble(entry, t, vertex ? Stage::Vertex : Stage::Fragment, variant_defines(v, a.flag("--conform") ? InputMode::Conform : InputMode::Production), &out,
                 &err)) {
     fprintf(stderr, "tiershade assemble: %s\n", err.c_str());
     return 1;

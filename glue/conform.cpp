@@ -19,7 +19,7 @@ Target target_for_api(Api a) {
 GLuint build_conform_program(GlRenderer &r, Api api, const Variant &v, std::string *err) {
   const Target t = target_for_api(api);
   Assembled vs, fs;
-  const auto defs = variant_defines(v, true);
+  const auto defs = variant_defines(v, InputMode::Conform);
   if (!assemble("conform_fullscreen.vs", t, Stage::Vertex, {}, &vs, err)) return 0;
   if (!assemble(v.shader->fragment, t, Stage::Fragment, defs, &fs, err)) return 0;
   return r.build_program(vs, fs, err);

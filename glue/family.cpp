@@ -8,6 +8,7 @@ extern const ShaderFamily kModelLightingFamily;
 const char *input_set_name(InputSet s) { return s == InputSet::Random ? "random" : "hard"; }
 
 ts_vec4f FamilyInputs::slot(int x, int y, int k) const {
+  if (k >= slots) return shared.at(k);
   const float *p = &records[(static_cast<size_t>(y + k * h) * w + x) * 4];
   return ts_v4f(p[0], p[1], p[2], p[3]);
 }
@@ -40,7 +41,7 @@ const ShaderFamily *find_family(const std::string &name) {
 }
 std::vector<const ShaderFamily *> all_families() { return {&kModelLightingFamily}; }
 
-std::vector<Define> variant_defines(const Variant &v, bool conform) {
+std::vector<Define> variant_defines(const Variant &v, InputMode mode) {
   std::vector<Define> d;
   switch (v.tier) {
     case Tier::PS20: d.push_back({"TS_TIER_PS20", "1"}); break;
@@ -48,7 +49,8 @@ std::vector<Define> variant_defines(const Variant &v, bool conform) {
     case Tier::SM3: d.push_back({"TS_TIER_SM3", "1"}); break;
   }
   for (const auto &kv : v.values) d.push_back({kv.first, std::to_string(kv.second)});
-  if (conform) d.push_back({"TS_CONFORM", "1"});
+  if (mode == InputMode::Conform) d.push_back({"TS_CONFORM", "1"});
+  if (mode == InputMode::Deferred) d.push_back({"TS_DEFERRED", "1"});
   return d;
 }
 

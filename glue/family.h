@@ -11,6 +11,8 @@
 #include "variants.h"
 
 enum class InputSet { Random, Hard };
+// Where a shader's inputs come from (shaders/common_inputs.glsl).
+enum class InputMode { Production, Conform, Deferred };
 const char *input_set_name(InputSet s);
 
 // Per-pixel input records: pixel (x, y) slot k lives at texel (x, y + k*h) of a
@@ -20,6 +22,9 @@ struct FamilyInputs {
   std::vector<float> records;
   std::vector<TextureDesc> textures;  // extra textures the shader samples (e.g. u_albedo)
   std::vector<std::string> case_names;  // hard set: a label per pixel (empty for random)
+  // Deferred frames: only the first `slots` slots are per pixel (the G-buffer); the
+  // others are shared by every pixel and passed to GL as the production uniforms.
+  std::vector<ts_vec4f> shared;  // empty, or the family's full record with the shared slots set
   ts_vec4f slot(int x, int y, int k) const;
   void set_slot(int x, int y, int k, ts_vec4f v);
   void resize(int w_, int h_, int slots_);
@@ -35,14 +40,17 @@ struct ShaderFamily {
   ts_vec4d (*eval_d)(const Variant &v, const FamilyInputs &in, int x, int y);
   // Allowed output range of the variant (every channel), for the hard-case checks.
   void (*output_range)(const Variant &v, float *lo, float *hi);
+  int pixel_slots;  // slots that stay per pixel in deferred frames
+  // Sets the production uniforms from the shared slots (deferred frames).
+  void (*bind_uniforms)(const GlFns &gl, GLuint program, const std::vector<ts_vec4f> &shared);
 };
 
 const ShaderFamily *find_family(const std::string &name);
 std::vector<const ShaderFamily *> all_families();
 
-// #defines for a variant: each combo value, the tier (TS_TIER_PS20/PS2B/SM3) and, for
-// conformance/record-driven runs, TS_CONFORM.
-std::vector<Define> variant_defines(const Variant &v, bool conform);
+// #defines for a variant: each combo value, the tier (TS_TIER_PS20/PS2B/SM3) and
+// the input mode (TS_CONFORM, TS_DEFERRED, or nothing for production).
+std::vector<Define> variant_defines(const Variant &v, InputMode mode);
 
 // Small deterministic PRNG (xorshift32) for reproducible test inputs.
 struct Rng {

@@ -201,9 +201,20 @@ std::vector<std::string> slot_names() {
   return n;
 }
 
+void bind_uniforms(const GlFns &gl, GLuint program, const std::vector<ts_vec4f> &shared) {
+  auto set = [&](const char *name, int first, int count) {
+    const GLint loc = gl.GetUniformLocation(program, name);
+    if (loc >= 0) gl.Uniform4fv(loc, count, &shared.at(first).x);
+  };
+  set("u_ambient_cube", ML_SLOT_AMBIENT, 6);
+  set("u_params", ML_SLOT_PARAMS, 1);
+  set("u_albedo_color", ML_SLOT_ALBEDO, 1);
+  set("u_lights", ML_SLOT_LIGHT0, 5 * ML_MAX_LIGHTS);
+}
+
 }  // namespace
 
 extern const ShaderFamily kModelLightingFamily;
 const ShaderFamily kModelLightingFamily = {
-    "model_lighting", ML_SLOTS, slot_names(), make_inputs, eval_f, eval_d, output_range,
+    "model_lighting", ML_SLOTS, slot_names(), make_inputs, eval_f, eval_d, output_range, ML_PIXEL_SLOTS, bind_uniforms,
 };

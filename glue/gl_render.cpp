@@ -1,6 +1,7 @@
 // tiershade glue: program building and full-screen RGBA32F draws (see gl_render.h).
 #include "gl_render.h"
 
+#include <chrono>
 #include <cstdio>
 
 GlRenderer::GlRenderer(GlContext &ctx) : ctx_(ctx) {
@@ -124,7 +125,7 @@ bool GlRenderer::ensure_target(int w, int h, std::string *err) {
 }
 
 bool GlRenderer::draw(GLuint program, const std::vector<std::pair<std::string, GLuint>> &textures, int w, int h,
-                      ImageF *out, std::string *err) {
+                      ImageF *out, std::string *err, double *draw_ms) {
   const GlFns &g = gl();
   if (!ensure_target(w, h, err)) return false;
   g.BindFramebuffer(GL_FRAMEBUFFER, fbo_);
@@ -141,7 +142,12 @@ bool GlRenderer::draw(GLuint program, const std::vector<std::pair<std::string, G
   g.BindVertexArray(vao_);
   g.ClearColor(0, 0, 0, 0);
   g.Clear(GL_COLOR_BUFFER_BIT);
+  const auto t0 = std::chrono::steady_clock::now();
   g.DrawArrays(GL_TRIANGLES, 0, 3);
+  if (draw_ms) {
+    g.Finish();
+    *draw_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
+  }
   out->w = w;
   out->h = h;
   out->rgba.assign(static_cast<size_t>(w) * h * 4, 0.f);

@@ -31,8 +31,9 @@ class GlRenderer {
   void delete_texture(GLuint t);
   // Binds textures to units 0..n-1 and their samplers, draws one full-screen
   // triangle into a w x h RGBA32F target, and reads it back.
+  // *draw_ms (optional) receives the time of the draw alone, glFinish included.
   bool draw(GLuint program, const std::vector<std::pair<std::string, GLuint>> &textures, int w, int h,
-            ImageF *out, std::string *err);
+            ImageF *out, std::string *err, double *draw_ms = nullptr);
 
  private:
   bool ensure_target(int w, int h, std::string *err);

@@ -1,15 +1,18 @@
 //------------------------------------------------------------------------------
 // common_inputs.glsl: where a shader's inputs come from.
-// In an engine (production) each input is a uniform or a varying. In conformance
-// mode (TS_CONFORM) every input comes from a per-pixel record in an RGBA32F
-// texture: pixel (x, y) reads slot k at texel (x, y + k * grid height). The same
-// entry code runs in both modes; only the source of each value changes.
+// Three modes, one entry code; only the source of each value changes:
+//  - production (default): per-pixel inputs are varyings, the rest uniforms;
+//  - TS_CONFORM: every input comes from a per-pixel record in an RGBA32F texture,
+//    pixel (x, y) reading slot k at texel (x, y + k * grid height), so that each
+//    pixel of a conformance grid has its own lights, parameters, ...;
+//  - TS_DEFERRED: per-pixel inputs come from the record (a G-buffer of the first
+//    slots), the rest from the production uniforms (demo and benchmark frames).
 // Model: piglit's data-driven shader tests and OpenColorIO's GPU tests (docs/conformance.md).
 //------------------------------------------------------------------------------
 #ifndef TS_COMMON_INPUTS_GLSL
 #define TS_COMMON_INPUTS_GLSL
 
-#ifdef TS_CONFORM
+#if defined(TS_CONFORM) || defined(TS_DEFERRED)
 uniform sampler2D ts_record;     // RGBA32F, NEAREST, W x (H * slots)
 uniform vec2 ts_record_size;     // (W, H * slots), powers of two
 uniform float ts_grid_height;    // H
@@ -23,9 +26,17 @@ vec4 ts_fetch(int slot) {
     return texture2D(ts_record, p / ts_record_size);
 #endif
 }
-#define TS_INPUT(slot, production) ts_fetch(slot)
+#endif
+
+#if defined(TS_CONFORM)
+#define TS_PIXEL_INPUT(slot, production) ts_fetch(slot)
+#define TS_UNIFORM_INPUT(slot, production) ts_fetch(slot)
+#elif defined(TS_DEFERRED)
+#define TS_PIXEL_INPUT(slot, production) ts_fetch(slot)
+#define TS_UNIFORM_INPUT(slot, production) (production)
 #else
-#define TS_INPUT(slot, production) (production)
+#define TS_PIXEL_INPUT(slot, production) (production)
+#define TS_UNIFORM_INPUT(slot, production) (production)
 #endif
 
 #endif

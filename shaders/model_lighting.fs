@@ -35,15 +35,15 @@ uniform sampler2D u_albedo;
 TS_DECLARE_FRAG_COLOR
 
 void main() {
-    vec3 N = ts_safe_normalize(TS_INPUT(ML_SLOT_NORMAL, vec4(v_normal, 0.0)).xyz);
-    vec3 P = TS_INPUT(ML_SLOT_POSITION, vec4(v_position, 1.0)).xyz;
-    vec2 uv = TS_INPUT(ML_SLOT_UV, vec4(v_uv, 0.0, 0.0)).xy;
-    vec4 params = TS_INPUT(ML_SLOT_PARAMS, u_params);
+    vec3 N = ts_safe_normalize(TS_PIXEL_INPUT(ML_SLOT_NORMAL, vec4(v_normal, 0.0)).xyz);
+    vec3 P = TS_PIXEL_INPUT(ML_SLOT_POSITION, vec4(v_position, 1.0)).xyz;
+    vec2 uv = TS_PIXEL_INPUT(ML_SLOT_UV, vec4(v_uv, 0.0, 0.0)).xy;
+    vec4 params = TS_UNIFORM_INPUT(ML_SLOT_PARAMS, u_params);
 
     vec3 diffuse = ts_ambient_cube(N,
-        TS_INPUT(ML_SLOT_AMBIENT + 0, u_ambient_cube[0]).rgb, TS_INPUT(ML_SLOT_AMBIENT + 1, u_ambient_cube[1]).rgb,
-        TS_INPUT(ML_SLOT_AMBIENT + 2, u_ambient_cube[2]).rgb, TS_INPUT(ML_SLOT_AMBIENT + 3, u_ambient_cube[3]).rgb,
-        TS_INPUT(ML_SLOT_AMBIENT + 4, u_ambient_cube[4]).rgb, TS_INPUT(ML_SLOT_AMBIENT + 5, u_ambient_cube[5]).rgb);
+        TS_UNIFORM_INPUT(ML_SLOT_AMBIENT + 0, u_ambient_cube[0]).rgb, TS_UNIFORM_INPUT(ML_SLOT_AMBIENT + 1, u_ambient_cube[1]).rgb,
+        TS_UNIFORM_INPUT(ML_SLOT_AMBIENT + 2, u_ambient_cube[2]).rgb, TS_UNIFORM_INPUT(ML_SLOT_AMBIENT + 3, u_ambient_cube[3]).rgb,
+        TS_UNIFORM_INPUT(ML_SLOT_AMBIENT + 4, u_ambient_cube[4]).rgb, TS_UNIFORM_INPUT(ML_SLOT_AMBIENT + 5, u_ambient_cube[5]).rgb);
 
 #ifdef TS_TIER_SM3
     int light_count = int(clamp(params.y, 0.0, float(ML_MAX_LIGHTS)));
@@ -53,11 +53,11 @@ void main() {
         if (i >= light_count) break;
 #endif
         TsLight l;
-        l.color = TS_INPUT(ML_SLOT_LIGHT0 + 5 * i + 0, u_lights[5 * i + 0]);
-        l.dir   = TS_INPUT(ML_SLOT_LIGHT0 + 5 * i + 1, u_lights[5 * i + 1]);
-        l.pos   = TS_INPUT(ML_SLOT_LIGHT0 + 5 * i + 2, u_lights[5 * i + 2]);
-        l.spot  = TS_INPUT(ML_SLOT_LIGHT0 + 5 * i + 3, u_lights[5 * i + 3]);
-        l.atten = TS_INPUT(ML_SLOT_LIGHT0 + 5 * i + 4, u_lights[5 * i + 4]);
+        l.color = TS_UNIFORM_INPUT(ML_SLOT_LIGHT0 + 5 * i + 0, u_lights[5 * i + 0]);
+        l.dir   = TS_UNIFORM_INPUT(ML_SLOT_LIGHT0 + 5 * i + 1, u_lights[5 * i + 1]);
+        l.pos   = TS_UNIFORM_INPUT(ML_SLOT_LIGHT0 + 5 * i + 2, u_lights[5 * i + 2]);
+        l.spot  = TS_UNIFORM_INPUT(ML_SLOT_LIGHT0 + 5 * i + 3, u_lights[5 * i + 3]);
+        l.atten = TS_UNIFORM_INPUT(ML_SLOT_LIGHT0 + 5 * i + 4, u_lights[5 * i + 4]);
         vec3 L;
         float att = ts_light_attenuation(l, P, L);
         float NdotL = dot(N, L);
@@ -72,7 +72,7 @@ void main() {
 #if ALBEDO_TEXTURE
     vec3 albedo = TS_TEX2D(u_albedo, uv).rgb;
 #else
-    vec3 albedo = TS_INPUT(ML_SLOT_ALBEDO, u_albedo_color).rgb;
+    vec3 albedo = TS_UNIFORM_INPUT(ML_SLOT_ALBEDO, u_albedo_color).rgb;
 #endif
     TS_FRAG_COLOR = vec4(ts_final_output(albedo * diffuse, params.x, OUTPUT_MODE), 1.0);
 }

@@ -13,4 +13,5 @@
 #define ML_SLOT_ALBEDO 10
 #define ML_SLOT_LIGHT0 11       // 5 slots per light: color, dir, pos, spot, atten
 #define ML_SLOTS 31
+#define ML_PIXEL_SLOTS 3      // normal, position, uv: the G-buffer of TS_DEFERRED frames
 #endif
