@@ -19,6 +19,13 @@ static TS_REAL FN(light_attenuation)(const V4 l[5], V3 P, V3 *L) {
   return dist_att * spot;
 }
 
+/* ps20: direction only; the attenuation arrives interpolated from the vertex shader. */
+static V3 FN(light_direction)(const V4 l[5], V3 P) {
+  V3 Lv = M(sub3)(FN(xyz4)(l[2]), P);
+  TS_REAL rinv = M(inversesqrt)(M(max)(M(dot3)(Lv, Lv), K(1.0e-30)));
+  return l[0].w > K(0.5) ? M(neg3)(FN(xyz4)(l[1])) : M(scale3)(Lv, rinv);
+}
+
 static TS_REAL FN(half_lambert)(TS_REAL NdotL) {
   TS_REAL h = M(saturate)(K(0.5) * NdotL + K(0.5));
   return h * h;

@@ -15,12 +15,13 @@ enum ml_slot {
   ML_SLOT_NORMAL = 0,
   ML_SLOT_POSITION = 1,
   ML_SLOT_UV = 2,
-  ML_SLOT_AMBIENT = 3, /* 6 slots: +X -X +Y -Y +Z -Z */
-  ML_SLOT_PARAMS = 9,  /* x tone-map scale, y light count (sm3) */
-  ML_SLOT_ALBEDO = 10,
-  ML_SLOT_LIGHT0 = 11, /* 5 slots per light: color, dir, pos, spot, atten */
-  ML_SLOTS = 31,
-  ML_PIXEL_SLOTS = 3 /* normal, position, uv: per pixel in deferred frames */
+  ML_SLOT_VERTEX_ATTEN = 3, /* ps20: attenuation of lights 0..3 from the vertex shader */
+  ML_SLOT_AMBIENT = 4,      /* 6 slots: +X -X +Y -Y +Z -Z */
+  ML_SLOT_PARAMS = 10,      /* x tone-map scale, y light count (sm3) */
+  ML_SLOT_ALBEDO = 11,
+  ML_SLOT_LIGHT0 = 12,      /* 5 slots per light: color, dir, pos, spot, atten */
+  ML_SLOTS = 32,
+  ML_PIXEL_SLOTS = 4 /* normal, position, uv, vertex attenuation: per pixel in deferred frames */
 };
 
 enum ts_tier_id { TS_TIER_ID_PS20 = 0, TS_TIER_ID_PS2B = 1, TS_TIER_ID_SM3 = 2 };

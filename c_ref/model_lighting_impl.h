@@ -18,7 +18,13 @@ static V4 FN(model_lighting_impl)(const ml_variant *v, const ts_vec4f rec[ML_SLO
     V4 l[5];
     for (int k = 0; k < 5; ++k) l[k] = FN(vec4_in)(rec[ML_SLOT_LIGHT0 + 5 * i + k]);
     V3 L;
-    TS_REAL att = FN(light_attenuation)(l, P, &L);
+    TS_REAL att;
+    if (v->tier == TS_TIER_ID_PS20) {
+      L = FN(light_direction)(l, P);
+      att = i == 0 ? (TS_REAL)rec[ML_SLOT_VERTEX_ATTEN].x : (TS_REAL)rec[ML_SLOT_VERTEX_ATTEN].y;
+    } else {
+      att = FN(light_attenuation)(l, P, &L);
+    }
     TS_REAL NdotL = M(dot3)(N, L);
     TS_REAL term = v->half_lambert ? FN(half_lambert)(NdotL) : FN(lambert)(NdotL);
     diffuse = M(add3)(diffuse, M(scale3)(FN(xyz4)(l[0]), att * term));

@@ -198,8 +198,10 @@ float ts_sqrtf(float x) { return sqrtf(x); }
 /* lp_build_rsqrt without the fast path: a real sqrt then an IEEE division. */
 float ts_inversesqrtf(float x) { return 1.0f / sqrtf(x); }
 
-/* NIR fmin/fmax -> lp_build_min/max_ext(GALLIVM_NAN_RETURN_OTHER) on SSE:
- * r = minps(a,b); if b is NaN, r = a. */
+/* GLSL min/max = gallivm min/max with GALLIVM_NAN_RETURN_OTHER on SSE
+ * (lp_build_min/max_simple): r = minps(a,b); if b is NaN, r = a.  Measured:
+ * both argument orders, +-0 ties, denormals, NaN. NB: NIR moves a constant
+ * operand second, so GLSL max(0.0, x) == ts_maxf(x, 0.0f). */
 float ts_minf(float a, float b) { return is_nanf(b) ? a : ts_lp_minf(a, b); }
 float ts_maxf(float a, float b) { return is_nanf(b) ? a : ts_lp_maxf(a, b); }
 /* GLSL clamp -> fmin(fmax(x, lo), hi). */
@@ -207,11 +209,11 @@ float ts_clampf(float x, float lo, float hi) { return ts_minf(ts_maxf(x, lo), hi
 /* NIR fsat -> lp_build_clamp_zero_one_nanzero: minps(maxps(x, 0), 1). */
 float ts_saturatef(float x) { return ts_lp_minf(ts_lp_maxf(x, 0.0f), 1.0f); }
 float ts_floorf(float x) { return lp_floor(x); }
-float ts_fractf(float x) { return x - lp_floor(x); }
+float ts_fractf(float x) { return x - lp_floor(x); } /* not clamped: fract(-tiny) = 1 */
 float ts_absf(float x) { return bitsf(fbits(x) & 0x7fffffffu); }
-/* step(edge,x) = x >= edge ? 1 : 0 (ordered compare: NaN -> 0). */
+/* step(edge,x) = x >= edge ? 1 : 0 (ordered compare: NaN -> 0; measured). */
 float ts_stepf(float edge, float x) { return x >= edge ? 1.0f : 0.0f; }
-/* sign: +-1 by sign bit, 0 for +-0 and NaN. */
+/* sign: +1/-1 by comparison; +0 for +-0, denormals and NaN (measured). */
 float ts_signf(float x)
 {
     float xd = daz(x);
@@ -252,8 +254,9 @@ ts_vec4f ts_v4f(float x, float y, float z, float w)
     ts_vec4f v; v.x = x; v.y = y; v.z = z; v.w = w; return v;
 }
 
-/* NIR nir_lower_alu_to_scalar lowers fdotN as a reduction from the LAST
- * component: a0*b0 + (a1*b1 + (a2*b2 + a3*b3)), unfused (verified on GL). */
+/* GLSL dot: NIR scalarises fdotN as a reduction from the LAST component,
+ * a0*b0 + (a1*b1 + (a2*b2 + a3*b3)), unfused (measured on llvmpipe; the
+ * left-to-right order mismatches in ~7% of random cases). */
 float ts_dot2f(ts_vec2f a, ts_vec2f b) { return a.x * b.x + a.y * b.y; }
 float ts_dot3f(ts_vec3f a, ts_vec3f b) { return a.x * b.x + (a.y * b.y + a.z * b.z); }
 float ts_dot4f(ts_vec4f a, ts_vec4f b)

@@ -38,12 +38,10 @@
 #include <fcntl.h>
 #include <filesystem>
 #include <fstream>
-#include <functional>
 #include <optional>
 #include <set>
 #include <spawn.h>
 #include <sstream>
-#include <sys/stat.h>
 #include <sys/wait.h>
 #include <unistd.h>
 #include <vector>
@@ -611,7 +609,7 @@ private:
     }
 
     bool analyse_function(const Function &f, std::string *err);
-    bool analyse_loop(const Function &f, const Block &header, LoopInfo *loop, std::string *err);
+    bool analyse_loop(const Block &header, LoopInfo *loop, std::string *err);
     std::optional<double> eval(const std::string &id, const std::map<std::string, double> &env, int depth) const;
     void analyse_fusion(const Function &f);
     void propagate_derived(const Function &f);
@@ -668,7 +666,7 @@ std::optional<double> Counter::eval(const std::string &id, const std::map<std::s
     for (const std::string &a : d->args) {
         if (!is_id(a)) return std::nullopt;
         std::optional<double> x = eval(a, env, depth + 1);
-        if (!x) return std::nullopt;
+        if (!x || !std::isfinite(*x) || std::fabs(*x) > 1e15) return std::nullopt;  // keep int casts defined
         v.push_back(*x);
     }
     auto need = [&](size_t n) { return v.size() == n; };
@@ -681,8 +679,9 @@ std::optional<double> Counter::eval(const std::string &id, const std::map<std::s
         return static_cast<double>(as_int(v[0]) / as_int(v[1]));
     if (op == "OpFDiv" && need(2) && v[1] != 0.0) return v[0] / v[1];
     if ((op == "OpSNegate" || op == "OpFNegate") && need(1)) return -v[0];
-    if (op == "OpShiftLeftLogical" && need(2)) return static_cast<double>(as_int(v[0]) << as_int(v[1]));
-    if ((op == "OpShiftRightArithmetic" || op == "OpShiftRightLogical") && need(2))
+    const bool shift_ok = need(2) && v[0] >= 0.0 && v[1] >= 0.0 && v[1] < 32.0;
+    if (op == "OpShiftLeftLogical" && shift_ok) return static_cast<double>(as_int(v[0]) << as_int(v[1]));
+    if ((op == "OpShiftRightArithmetic" || op == "OpShiftRightLogical") && shift_ok)
         return static_cast<double>(as_int(v[0]) >> as_int(v[1]));
     if ((op == "OpConvertSToF" || op == "OpConvertUToF") && need(1)) return v[0];
     if ((op == "OpConvertFToS" || op == "OpConvertFToU") && need(1)) return std::trunc(v[0]);
@@ -715,8 +714,7 @@ std::optional<double> Counter::eval(const std::string &id, const std::map<std::s
 }
 
 // Finds the loop's body, its induction variables and its trip count.
-bool Counter::analyse_loop(const Function &f, const Block &header, LoopInfo *loop, std::string *err) {
-    (void)f;
+bool Counter::analyse_loop(const Block &header, LoopInfo *loop, std::string *err) {
     loop->header = header.label;
     loop->merge = header.merge;
     const std::string where = "loop at block " + header.label;
@@ -829,7 +827,14 @@ bool Counter::analyse_loop(const Function &f, const Block &header, LoopInfo *loo
             return false;
         }
         std::map<std::string, double> next = env;
-        for (const Phi &p : cands) next[p.id] = *eval(p.update, env, 0);
+        for (const Phi &p : cands) {
+            std::optional<double> u = eval(p.update, env, 0);
+            if (!u) {
+                *err = "unbounded loop: the counter update of the " + where + " cannot be evaluated";
+                return false;
+            }
+            next[p.id] = *u;
+        }
         env = next;
     }
     if (top_tested) {
@@ -1085,7 +1090,7 @@ bool Counter::analyse_function(const Function &f, std::string *err) {
     for (const Block &b : f.blocks) {
         if (!reachable_.count(b.label) || !b.loop_header) continue;
         LoopInfo loop;
-        if (!analyse_loop(f, b, &loop, err)) return false;
+        if (!analyse_loop(b, &loop, err)) return false;
         loops_.push_back(loop);
     }
     propagate_derived(f);

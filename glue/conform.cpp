@@ -16,6 +16,15 @@ Target target_for_api(Api a) {
   return Target::GLSL330;
 }
 
+GLuint build_production_program(GlRenderer &r, Api api, const Variant &v, std::string *err) {
+  const Target t = target_for_api(api);
+  Assembled vs, fs;
+  const auto defs = variant_defines(v, InputMode::Production);
+  if (!assemble(v.shader->vertex, t, Stage::Vertex, defs, &vs, err)) return 0;
+  if (!assemble(v.shader->fragment, t, Stage::Fragment, defs, &fs, err)) return 0;
+  return r.build_program(vs, fs, err);
+}
+
 GLuint build_conform_program(GlRenderer &r, Api api, const Variant &v, std::string *err) {
   const Target t = target_for_api(api);
   Assembled vs, fs;
@@ -59,6 +68,13 @@ ConformResult conform_variant(const ConformRun &run, const ShaderFamily &fam, co
   const auto t0 = std::chrono::steady_clock::now();
   GlRenderer &r = *run.renderer;
   std::string err;
+  // The production program (varyings and uniforms) must compile and link too.
+  const GLuint prod = build_production_program(r, run.api, v, &err);
+  if (!prod) {
+    res.error = "production program: " + err;
+    return res;
+  }
+  r.delete_program(prod);
   const GLuint prog = build_conform_program(r, run.api, v, &err);
   if (!prog) {
     res.error = err;

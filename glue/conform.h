@@ -32,6 +32,8 @@ struct ConformRun {
 
 Target target_for_api(Api a);
 
+// Builds the variant's production program (its vertex shader, varyings and uniforms).
+GLuint build_production_program(GlRenderer &r, Api api, const Variant &v, std::string *err);
 // Builds the variant's conformance program for the renderer's API (nullptr err on success).
 GLuint build_conform_program(GlRenderer &r, Api api, const Variant &v, std::string *err);
 

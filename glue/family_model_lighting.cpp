@@ -76,6 +76,7 @@ void random_pixel(Rng &r, ts_vec4f rec[ML_SLOTS]) {
   rec[ML_SLOT_NORMAL] = v4(ts_scale3f(r.unit_vector(), r.uniform(0.2f, 3.f)), 0.f);
   rec[ML_SLOT_POSITION] = ts_v4f(r.uniform(-2, 2), r.uniform(-2, 2), r.uniform(-2, 2), 1.f);
   rec[ML_SLOT_UV] = ts_v4f(r.uniform(-1, 2), r.uniform(-1, 2), 0, 0);
+  rec[ML_SLOT_VERTEX_ATTEN] = ts_v4f(r.uniform(0, 2), r.uniform(0, 2), r.uniform(0, 2), r.uniform(0, 2));
   for (int k = 0; k < 6; ++k)
     rec[ML_SLOT_AMBIENT + k] = ts_v4f(r.uniform(0, 1), r.uniform(0, 1), r.uniform(0, 1), 0);
   rec[ML_SLOT_PARAMS] = ts_v4f(r.uniform(0.25f, 4.f), static_cast<float>(r.next() % 5), 0, 0);
@@ -93,6 +94,7 @@ const char *const kHardCases[] = {
     "zero l and q, huge d",      "NaN in the ambient cube",  "Inf in the ambient cube",
     "negative tone-map scale",   "NaN tone-map scale",       "NaN light count",
     "NaN spot direction",        "huge albedo uv 1e7",       "unnormalised tiny normal 1e-19",
+    "NaN and Inf vertex attenuation",
 };
 const int kNumHardCases = sizeof kHardCases / sizeof kHardCases[0];
 
@@ -157,6 +159,7 @@ void hard_pixel(Rng &r, int c, ts_vec4f rec[ML_SLOTS]) {
     case 21: l0[1] = ts_v4f(kNaN, 0, 1, 1); break;
     case 22: rec[ML_SLOT_UV] = ts_v4f(1e7f, -3e7f, 0, 0); break;
     case 23: rec[ML_SLOT_NORMAL] = v4(ts_scale3f(n, 1e-19f), 0.f); break;
+    case 24: rec[ML_SLOT_VERTEX_ATTEN] = ts_v4f(kNaN, kInf, kNaN, kInf); break;
     default: break;
   }
 }
@@ -190,7 +193,7 @@ void make_inputs(InputSet set, int w, int h, uint32_t seed, FamilyInputs *out) {
 }
 
 std::vector<std::string> slot_names() {
-  std::vector<std::string> n = {"normal", "position", "uv"};
+  std::vector<std::string> n = {"normal", "position", "uv", "vertex_atten"};
   const char *faces[6] = {"+x", "-x", "+y", "-y", "+z", "-z"};
   for (const char *f : faces) n.push_back(std::string("ambient") + f);
   n.push_back("params");

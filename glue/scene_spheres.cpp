@@ -45,6 +45,43 @@ TextureDesc albedo_texture() {
   return t;
 }
 
+// Distance x cone attenuation of a light at p, as shaders/common_lights.glsl defines it (double).
+double light_attenuation_at(const ts_light &L, const double p[3]) {
+  if (L.type == TS_LIGHT_DIRECTIONAL) return 1.0;
+  double v[3] = {L.pos[0] - p[0], L.pos[1] - p[1], L.pos[2] - p[2]};
+  const double d = std::sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]);
+  double att = 1.0 / (L.atten[0] + L.atten[1] * d + L.atten[2] * d * d);
+  if (L.type == TS_LIGHT_SPOT && d > 0) {
+    const double cos_a = -(v[0] * L.dir[0] + v[1] * L.dir[1] + v[2] * L.dir[2]) / d;
+    const double t = std::max(1e-4, (cos_a - L.cos_outer) / (static_cast<double>(L.cos_inner) - L.cos_outer));
+    att *= std::min(1.0, std::pow(t, static_cast<double>(L.spot_exponent)));
+  }
+  return att;
+}
+
+// ps20 takes the attenuation interpolated from the vertices. The spheres are drawn
+// as UV spheres of kSegPhi x kSegTheta quads; a pixel's value is the bilinear blend
+// of its quad's four vertex values (Gouraud over quads).
+const int kSegPhi = 24, kSegTheta = 12;
+double vertex_interpolated_attenuation(const ts_light &L, const double center[3], double nx, double ny, double nz) {
+  const double pi = 3.14159265358979323846;
+  const double theta = std::acos(std::max(-1.0, std::min(1.0, ny)));  // 0 at +Y
+  const double phi = std::atan2(nx, nz);                               // 0 at +Z
+  const double ft = theta / pi * kSegTheta, fp = (phi + pi) / (2 * pi) * kSegPhi;
+  const int it = std::min(kSegTheta - 1, static_cast<int>(ft)), ip = std::min(kSegPhi - 1, static_cast<int>(fp));
+  const double wt = ft - it, wp = fp - ip;
+  double a[2][2];
+  for (int j = 0; j < 2; ++j) {
+    for (int i = 0; i < 2; ++i) {
+      const double th = (it + j) * pi / kSegTheta, ph = (ip + i) * 2 * pi / kSegPhi - pi;
+      const double q[3] = {center[0] + std::sin(th) * std::sin(ph), center[1] + std::cos(th),
+                           center[2] + std::sin(th) * std::cos(ph)};
+      a[j][i] = light_attenuation_at(L, q);
+    }
+  }
+  return (a[0][0] * (1 - wp) + a[0][1] * wp) * (1 - wt) + (a[1][0] * (1 - wp) + a[1][1] * wp) * wt;
+}
+
 }  // namespace
 
 SphereScene default_sphere_scene() {
@@ -101,6 +138,7 @@ bool sphere_frame(const SphereScene &scene, int w, int h, int max_local, SphereF
       in.set_slot(x, y, ML_SLOT_UV, ts_v4f(2.f * u, v, 0, 0));
     }
   }
+
   // Shared slots: the ambient cube with the folded lights, and the kept local lights.
   in.shared.assign(ML_SLOTS, ts_v4f(0, 0, 0, 0));
   float cube[6][3];
@@ -124,6 +162,18 @@ bool sphere_frame(const SphereScene &scene, int w, int h, int max_local, SphereF
     }
     for (int k = 0; k < 5; ++k)
       in.shared[ML_SLOT_LIGHT0 + 5 * i + k] = ts_v4f(packed[k][0], packed[k][1], packed[k][2], packed[k][3]);
+  }
+  // Per-vertex attenuation of the kept lights, interpolated (read by the ps20 tier only).
+  for (int y = 0; y < h; ++y) {
+    for (int x = 0; x < w; ++x) {
+      if (!out->hit[static_cast<size_t>(y) * w + x]) continue;
+      const ts_vec4f n = in.slot(x, y, ML_SLOT_NORMAL), p = in.slot(x, y, ML_SLOT_POSITION);
+      const double center[3] = {p.x - n.x, p.y - n.y, p.z - n.z};
+      float va[4] = {0, 0, 0, 0};
+      for (int i = 0; i < nk && i < 4; ++i)
+        va[i] = static_cast<float>(vertex_interpolated_attenuation(scene.lights[kept[i]], center, n.x, n.y, n.z));
+      in.set_slot(x, y, ML_SLOT_VERTEX_ATTEN, ts_v4f(va[0], va[1], va[2], va[3]));
+    }
   }
   in.textures = {albedo_texture()};
   return true;

@@ -41,6 +41,16 @@ float ts_light_attenuation(TsLight l, vec3 P, out vec3 L) {
     return dist_att * spot;
 }
 
+// Direction only, for ps20: there the attenuation (distance and cone) is computed per
+// vertex and interpolated, as in Source's ps_2_0 vertexlit shaders (fact sheet section 4:
+// "per-light attenuation is computed per vertex and interpolated; N.L is computed per pixel").
+// Same bits as the L of ts_light_attenuation.
+vec3 ts_light_direction(TsLight l, vec3 P) {
+    vec3 Lv = l.pos.xyz - P;
+    float rinv = inversesqrt(max(dot(Lv, Lv), TS_MIN_LENGTH2));
+    return l.color.w > 0.5 ? -l.dir.xyz : Lv * rinv;
+}
+
 float ts_half_lambert(float NdotL) {
     float h = saturate(0.5 * NdotL + 0.5);
     return h * h;

@@ -3,8 +3,8 @@
 // irradiance volume ambient cube, half-Lambert, local lights).
 //   diffuse = ambientCube(N) + sum_i color_i * atten_i * D(N.L_i)
 //   out     = FinalOutput(albedo * diffuse)        D = half-Lambert or Lambert
-// Tiers: ps20 (<= 2 lights, linear output), ps2b (<= 4 lights), sm3 (a dynamic
-// loop over a uniform light count). Lights beyond a tier's limit are folded into
+// Tiers: ps20 (<= 2 lights, attenuation per vertex, linear output), ps2b (<= 4
+// lights, all per pixel), sm3 (a dynamic loop over a uniform light count). Lights beyond a tier's limit are folded into
 // the ambient cube on the CPU (docs/light_folding.md).
 // Variants: model_lighting.variants. C twin: c_ref/model_lighting.c.
 // Inputs (slots): c_ref/model_lighting.h and model_lighting_slots.glsl.
@@ -25,6 +25,9 @@
 TS_VARYING_IN vec3 v_normal;     // world-space normal, as interpolated (not unit length)
 TS_VARYING_IN vec3 v_position;   // world-space position
 TS_VARYING_IN vec2 v_uv;
+#ifdef TS_TIER_PS20
+TS_VARYING_IN vec4 v_light_atten;  // per-vertex attenuation of lights 0..3 (model_lighting.vs)
+#endif
 
 uniform vec4 u_ambient_cube[6];  // +X -X +Y -Y +Z -Z
 uniform vec4 u_lights[5 * ML_MAX_LIGHTS];
@@ -39,6 +42,9 @@ void main() {
     vec3 P = TS_PIXEL_INPUT(ML_SLOT_POSITION, vec4(v_position, 1.0)).xyz;
     vec2 uv = TS_PIXEL_INPUT(ML_SLOT_UV, vec4(v_uv, 0.0, 0.0)).xy;
     vec4 params = TS_UNIFORM_INPUT(ML_SLOT_PARAMS, u_params);
+#ifdef TS_TIER_PS20
+    vec4 vertex_atten = TS_PIXEL_INPUT(ML_SLOT_VERTEX_ATTEN, v_light_atten);
+#endif
 
     vec3 diffuse = ts_ambient_cube(N,
         TS_UNIFORM_INPUT(ML_SLOT_AMBIENT + 0, u_ambient_cube[0]).rgb, TS_UNIFORM_INPUT(ML_SLOT_AMBIENT + 1, u_ambient_cube[1]).rgb,
@@ -58,8 +64,14 @@ void main() {
         l.pos   = TS_UNIFORM_INPUT(ML_SLOT_LIGHT0 + 5 * i + 2, u_lights[5 * i + 2]);
         l.spot  = TS_UNIFORM_INPUT(ML_SLOT_LIGHT0 + 5 * i + 3, u_lights[5 * i + 3]);
         l.atten = TS_UNIFORM_INPUT(ML_SLOT_LIGHT0 + 5 * i + 4, u_lights[5 * i + 4]);
+#ifdef TS_TIER_PS20
+        // ps_2_0 budget: distance and cone attenuation come from the vertex shader.
+        vec3 L = ts_light_direction(l, P);
+        float att = i == 0 ? vertex_atten.x : vertex_atten.y;
+#else
         vec3 L;
         float att = ts_light_attenuation(l, P, L);
+#endif
         float NdotL = dot(N, L);
 #if HALF_LAMBERT
         float term = ts_half_lambert(NdotL);

@@ -1,7 +1,13 @@
 //------------------------------------------------------------------------------
 // model_lighting.vs: the production vertex shader of model_lighting: world-space
-// position and normal for per-pixel lighting, and the albedo uv.
+// position and normal for per-pixel lighting, the albedo uv, and on ps20 the
+// per-vertex attenuation (distance x spot cone) of each local light, which the
+// ps20 pixel shader takes interpolated (fact sheet section 4, VertexAttenInternal).
 //------------------------------------------------------------------------------
+#include "common_math.glsl"
+#include "common_lights.glsl"
+#include "model_lighting_slots.glsl"
+
 TS_ATTRIBUTE vec3 a_position;
 TS_ATTRIBUTE vec3 a_normal;
 TS_ATTRIBUTE vec2 a_uv;
@@ -10,11 +16,31 @@ uniform mat4 u_view_proj;
 TS_VARYING_OUT vec3 v_normal;
 TS_VARYING_OUT vec3 v_position;
 TS_VARYING_OUT vec2 v_uv;
+#ifdef TS_TIER_PS20
+uniform vec4 u_lights[5 * ML_MAX_LIGHTS];
+TS_VARYING_OUT vec4 v_light_atten;
+#endif
 
 void main() {
     vec4 world = u_model * vec4(a_position, 1.0);
     v_position = world.xyz;
     v_normal = (u_model * vec4(a_normal, 0.0)).xyz;
     v_uv = a_uv;
+#ifdef TS_TIER_PS20
+    vec4 atten = vec4(0.0);
+    for (int i = 0; i < NUM_LIGHTS; ++i) {
+        TsLight l;
+        l.color = u_lights[5 * i + 0];
+        l.dir = u_lights[5 * i + 1];
+        l.pos = u_lights[5 * i + 2];
+        l.spot = u_lights[5 * i + 3];
+        l.atten = u_lights[5 * i + 4];
+        vec3 L;
+        float a = ts_light_attenuation(l, world.xyz, L);
+        if (i == 0) atten.x = a;
+        if (i == 1) atten.y = a;
+    }
+    v_light_atten = atten;
+#endif
     gl_Position = u_view_proj * world;
 }
