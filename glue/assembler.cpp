@@ -56,12 +56,12 @@ std::vector<std::string> shader_library_files() {
 
 namespace {
 
-std::string prelude(Target t, Stage s) {
+std::string prelude(Target t, Stage s, const std::string &prec) {
   std::ostringstream o;
   switch (t) {
     case Target::ESSL100:
       o << "#version 100\n";
-      o << "precision highp float;\nprecision highp int;\n";
+      o << "precision " << prec << " float;\nprecision highp int;\n";
       // Samplers default to lowp in ES fragment shaders, and llvmpipe really returns
       // fp16 texels for them: every compared value must be highp.
       o << "precision highp sampler2D;\nprecision highp samplerCube;\n";
@@ -77,7 +77,7 @@ std::string prelude(Target t, Stage s) {
     case Target::ESSL300:
     case Target::GLSL330:
       o << (t == Target::ESSL300 ? "#version 300 es\n" : "#version 330 core\n");
-      o << "precision highp float;\nprecision highp int;\n";
+      o << "precision " << prec << " float;\nprecision highp int;\n";
       if (t == Target::ESSL300) o << "precision highp sampler2D;\nprecision highp samplerCube;\n";
       o << (t == Target::ESSL300 ? "#define TS_ESSL300 1\n" : "#define TS_GLSL330 1\n");
       o << "#define TS_HAS_TEXEL_FETCH 1\n";
@@ -145,10 +145,14 @@ bool expand(const std::string &name, int depth, std::vector<std::string> &stack,
 }  // namespace
 
 bool assemble(const std::string &entry, Target target, Stage stage, const std::vector<Define> &defines,
-              Assembled *out, std::string *err) {
+              Assembled *out, std::string *err, const std::string &float_precision) {
   *out = Assembled();
+  if (float_precision != "highp" && float_precision != "mediump" && float_precision != "lowp") {
+    *err = "unknown float precision '" + float_precision + "'";
+    return false;
+  }
   std::ostringstream o;
-  o << prelude(target, stage);
+  o << prelude(target, stage, float_precision);
   for (const auto &d : defines) o << "#define " << d.name << " " << d.value << "\n";
   std::vector<std::string> stack;
   if (!expand(entry, 0, stack, out, o, err, "assembler")) return false;

@@ -25,8 +25,10 @@ struct Assembled {
 bool shader_library_read(const std::string &name, std::string *out);
 std::vector<std::string> shader_library_files();
 
+// float_precision: "highp" (always, where results are compared with C) or "mediump"
+// (accuracy studies: llvmpipe computes mediump in fp16 on GLES).
 bool assemble(const std::string &entry, Target target, Stage stage, const std::vector<Define> &defines,
-              Assembled *out, std::string *err);
+              Assembled *out, std::string *err, const std::string &float_precision = "highp");
 
 // Rewrites a Mesa/glslang info log so that "N:L(C)" prefixes name the original file and line.
 std::string map_compile_log(const std::string &log, const Assembled &a);

@@ -411,8 +411,9 @@ const Rule kRules[] = {
     {"OpVectorShuffle OpCompositeConstruct OpCompositeInsert", false, Unit::Alu, 0, 0,
      "write masks and swizzles; `mov r.w, c` for constant lanes",
      "0; 1 when it mixes constant lanes with computed lanes (e.g. `vec4(rgb, 1.0)`)"},
-    {"OpStore", false, Unit::Alu, 0, 0, "`mov oC#` / `mov oDepth`",
-     "0; 1 per distinct Output variable written (ps_2_x writes oC#/oDepth only with mov, once)"},
+    {"OpStore", false, Unit::Alu, 0, 0, "`mov oC#` / `mov oDepth` (+ `cmp`)",
+     "0; 1 per distinct Output variable written (ps_2_x writes oC#/oDepth only with mov, once), "
+     "+1 `cmp` per extra block that stores the same output (flattened early returns)"},
     {"OpFNegate OpSNegate", false, Unit::Free, 0, 0, "`-r` source modifier", nullptr},
     {"OpLogicalNot", false, Unit::Free, 0, 0, "swap the `cmp` operands", nullptr},
     {"OpBitcast OpConvertSToF OpConvertUToF OpFConvert OpSConvert OpUConvert", false, Unit::Free, 0, 0,
@@ -420,11 +421,13 @@ const Rule kRules[] = {
     {"OpTranspose", false, Unit::Free, 0, 0, "none: `dp4` rows instead of `mul`/`mad` columns", nullptr},
     {"OpImageQuerySize OpImageQuerySizeLod OpImageQueryLevels OpImageQuerySamples", false, Unit::Free, 0, 0,
      "a constant set by the application", nullptr},
-    {"OpLabel OpBranch OpBranchConditional OpSwitch OpSelectionMerge OpLoopMerge OpReturn OpReturnValue "
+    {"OpLabel OpBranch OpBranchConditional OpSelectionMerge OpLoopMerge OpReturn OpReturnValue "
      "OpUnreachable OpLine OpNoLine OpNop",
      false, Unit::Free, 0, 0, "none: ps_2_x has no flow control",
      "0; every block of an if/switch is counted (flattened), loops are unrolled (trip count x body)"},
     // --- arithmetic ------------------------------------------------------------------------------
+    {"OpSwitch", false, Unit::Alu, 0, 0, "`add` forming selector - case for each `cmp`",
+     "1 per case label other than 0; 0 with a constant selector"},
     {"OpFAdd OpFSub", false, Unit::Alu, 1, 0, "`add`", nullptr},
     {"OpFMul OpVectorTimesScalar", false, Unit::Alu, 1, 0, "`mul`, or the mul half of `mad`",
      "1; 0 when its only use is an OpFAdd/OpFSub in the same block (fused into `mad`; an add absorbs one mul)"},
@@ -435,8 +438,8 @@ const Rule kRules[] = {
      "constant; no mul if the dividend is the constant 1"},
     {"OpFMod OpFRem", false, Unit::Alu, 0, 0, "division + `frc` + `mul`", "OpFDiv cost + 2"},
     {"OpSelect", false, Unit::Alu, 1, 0, "`cmp`", nullptr},
-    {"OpPhi", false, Unit::Alu, 0, 0, "`cmp` merging a flattened if",
-     "0 in a loop header (register reuse once unrolled); 1 elsewhere"},
+    {"OpPhi", false, Unit::Alu, 0, 0, "`cmp` merging a flattened if/switch",
+     "k-1 for k incoming values; 0 in a loop header (register reuse once unrolled)"},
     {"OpFOrdEqual OpFUnordEqual OpFOrdNotEqual OpFUnordNotEqual OpFOrdLessThan OpFUnordLessThan "
      "OpFOrdGreaterThan OpFUnordGreaterThan OpFOrdLessThanEqual OpFUnordLessThanEqual "
      "OpFOrdGreaterThanEqual OpFUnordGreaterThanEqual",
@@ -1013,7 +1016,17 @@ Cost Counter::cost(const Inst &in, const Block &b) const {
     }
     if (op == "OpFDiv") { c.alu = div_cost(in); return c; }
     if (op == "OpFMod" || op == "OpFRem") { c.alu = div_cost(in) + 2; return c; }
-    if (op == "OpPhi") { c.alu = b.loop_header ? 0 : 1; return c; }
+    if (op == "OpPhi") {
+        int incoming = static_cast<int>(in.args.size() / 2);
+        c.alu = b.loop_header || incoming < 2 ? 0 : incoming - 1;
+        return c;
+    }
+    if (op == "OpSwitch") {
+        if (in.args.empty() || is_const(in.args[0])) return c;
+        for (size_t i = 2; i < in.args.size(); i += 2)
+            if (std::strtod(in.args[i].c_str(), nullptr) != 0.0) ++c.alu;
+        return c;
+    }
     if (op.rfind("OpFOrd", 0) == 0 || op.rfind("OpFUnord", 0) == 0) {
         bool vs_zero = false;
         for (const std::string &a : in.args) if (const_all(a, 0.0)) vs_zero = true;
@@ -1105,7 +1118,7 @@ bool Counter::count(BudgetCounts *out, std::string *err) {
     if (!analyse_function(*entry, err)) return false;
 
     BudgetCounts r;
-    std::set<std::string> outputs;
+    std::map<std::string, std::set<std::string>> outputs;  // output variable -> blocks storing it
     for (const Block &b : entry->blocks) {
         if (!reachable_.count(b.label)) continue;
         long mult = 1;
@@ -1121,7 +1134,7 @@ bool Counter::count(BudgetCounts *out, std::string *err) {
             }
             if (in.op == "OpStore" && !in.args.empty()) {
                 std::string var = output_variable(in.args[0]);
-                if (!var.empty()) outputs.insert(var);
+                if (!var.empty()) outputs[var].insert(b.label);
                 continue;
             }
             Cost c = cost(in, b);
@@ -1132,9 +1145,14 @@ bool Counter::count(BudgetCounts *out, std::string *err) {
             r.by_op[c.name] += alu + tex;
         }
     }
-    if (!outputs.empty()) {
-        r.alu += static_cast<int>(outputs.size());
-        r.by_op["output mov (oC#/oDepth)"] += static_cast<int>(outputs.size());
+    for (const auto &o : outputs) {
+        r.alu += 1;
+        r.by_op["output mov (oC#/oDepth)"] += 1;
+        if (o.second.size() > 1) {  // written on several flattened paths: cmp selects the value
+            int extra = static_cast<int>(o.second.size()) - 1;
+            r.alu += extra;
+            r.by_op["output merge cmp"] += extra;
+        }
     }
     *out = r;
     return true;

@@ -7,11 +7,12 @@
 #include "conform.h"
 
 bool gl_frame_setup(GlRenderer &r, Api api, const ShaderFamily &f, const Variant &v, const FamilyInputs &in,
-                    GlFrameProgram *fp, std::string *err) {
+                    GlFrameProgram *fp, std::string *err, const std::string &float_precision) {
   const Target t = target_for_api(api);
   Assembled vs, fs;
   if (!assemble("conform_fullscreen.vs", t, Stage::Vertex, {}, &vs, err)) return false;
-  if (!assemble(v.shader->fragment, t, Stage::Fragment, variant_defines(v, InputMode::Deferred), &fs, err))
+  if (!assemble(v.shader->fragment, t, Stage::Fragment, variant_defines(v, InputMode::Deferred), &fs, err,
+                float_precision))
     return false;
   fp->program = r.build_program(vs, fs, err);
   if (!fp->program) return false;

@@ -15,7 +15,7 @@ struct GlFrameProgram {
 
 // Builds the deferred program and uploads the frame's textures (kept for repeated draws).
 bool gl_frame_setup(GlRenderer &r, Api api, const ShaderFamily &f, const Variant &v, const FamilyInputs &in,
-                    GlFrameProgram *fp, std::string *err);
+                    GlFrameProgram *fp, std::string *err, const std::string &float_precision = "highp");
 bool gl_frame_draw(GlRenderer &r, const GlFrameProgram &fp, const FamilyInputs &in, ImageF *out, double *draw_ms,
                    std::string *err);
 void gl_frame_release(GlRenderer &r, GlFrameProgram *fp);

@@ -205,6 +205,16 @@ void test_control_flow() {
                       "o = vec4(c, v_a.w);"),
                1 + 3 + 1 + 1 + 1, 1);
     check(op(c, "OpPhi") == 1, "if/else phi by_op", describe(c));
+    c = expect("switch: case compares + (k-1) cmps at the merge",
+               shader("vec4 a = v_a;\n"
+                      "switch (u_n) { case 0: a *= 2.0; break; case 1: a = normalize(a); break; "
+                      "default: a = sqrt(a); }\n"
+                      "o = a;"),
+               1 + 3 + 8 + 1 + 2 + 1, 0);
+    check(op(c, "OpPhi") == 2 && op(c, "OpSwitch") == 1, "switch by_op", describe(c));
+    c = expect("early return: output written on two paths needs a cmp",
+               shader("if (v_a.x > 0.5) { o = v_a; return; }\no = texture(s, v_uv);"), 1 + 1 + 1, 1);
+    check(op(c, "output merge cmp") == 1, "early return by_op", describe(c));
     expect("two outputs = two movs",
            "#version 330\nin vec4 v_a;\nlayout(location = 0) out vec4 o0;\nlayout(location = 1) out vec4 o1;\n"
            "void main() { o0 = v_a * 2.0; o1 = v_a + 1.0; }\n",
