@@ -208,8 +208,9 @@ int cmd_bench(int argc, char **argv) {
      << "- **C ms**: the C fallback (bit-exact float32 twin) on " << cores << " threads and on 1.\n"
      << "- **error**: against the double-precision reference of the full model (all 6 lights local, exact\n"
      << "  sRGB), in 8-bit display code values (sRGB-encoded, x255), over the sphere pixels; **>1 code**: share\n"
-     << "  of channels off by more than one code. **fp32 rounding**: the same variant in float32 against\n"
-     << "  itself in double, the part of the error that is arithmetic, not approximation.\n"
+     << "  of channels off by more than one code. **rounding max**: the same variant in float32 against\n"
+     << "  itself in double (for mediump: against the highp frame), the part of the error that is\n"
+     << "  arithmetic precision, not approximation.\n"
      << "- **GL = C**: channels where llvmpipe and the C twin differ (0 = bit-exact frame).\n\n"
      << "| row | what it does | slots alu+tex | llvmpipe ms (GL 3.3) | llvmpipe ms (GLES 3.0) | x sm3 time | cold first frame ms | C ms (" << cores
      << " thr) | C ms (1 thr) | C / llvmpipe | error max | error mean | >1 code | rounding max | GL = C |\n"
