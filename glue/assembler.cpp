@@ -8,7 +8,6 @@
 #include <cstdlib>
 #include <fstream>
 #include <map>
-#include <regex>
 #include <set>
 #include <sstream>
 
@@ -93,6 +92,21 @@ std::string prelude(Target t, Stage s, const std::string &prec) {
   return o.str();
 }
 
+// Recognises `#include "name"` (spaces allowed around '#' and the keyword).
+bool parse_include(const std::string &line, std::string *name) {
+  size_t p = line.find_first_not_of(" \t");
+  if (p == std::string::npos || line[p] != '#') return false;
+  p = line.find_first_not_of(" \t", p + 1);
+  if (p == std::string::npos || line.compare(p, 7, "include") != 0) return false;
+  p = line.find_first_not_of(" \t", p + 7);
+  if (p == std::string::npos || line[p] != '"') return false;
+  const size_t q = line.find('"', p + 1);
+  if (q == std::string::npos || q == p + 1) return false;
+  if (line.find_first_not_of(" \t\r", q + 1) != std::string::npos) return false;
+  *name = line.substr(p + 1, q - p - 1);
+  return true;
+}
+
 bool expand(const std::string &name, int depth, std::vector<std::string> &stack, Assembled *out,
             std::ostringstream &o, std::string *err, const std::string &from) {
   if (depth > 16) {
@@ -118,22 +132,17 @@ bool expand(const std::string &name, int depth, std::vector<std::string> &stack,
     out->files.push_back("shaders/" + name);
   }
   stack.push_back(name);
-  static const std::regex inc_re("^\\s*#\\s*include\\s+\"([^\"]+)\"\\s*$");
-  static const std::regex pragma_once_re("^\\s*#\\s*pragma\\s+once\\s*$");
   std::istringstream in(text);
   std::string line;
   int lineno = 0;
   o << "#line 1 " << id << "\n";
   while (std::getline(in, line)) {
     ++lineno;
-    std::smatch m;
-    if (std::regex_match(line, m, inc_re)) {
-      const std::string child = m[1];
+    std::string child;
+    if (parse_include(line, &child)) {
       if (!expand(child, depth + 1, stack, out, o, err, "shaders/" + name + ":" + std::to_string(lineno)))
         return false;
       o << "#line " << (lineno + 1) << " " << id << "\n";
-    } else if (std::regex_match(line, pragma_once_re)) {
-      o << "\n";  // includes are guarded with #ifndef in the library; keep line numbers
     } else {
       o << line << "\n";
     }
@@ -160,20 +169,41 @@ bool assemble(const std::string &entry, Target target, Stage stage, const std::v
   return true;
 }
 
+// Finds the first "S:L:" or "S:L(C):" location (S, L decimal, at the line start or after
+// a blank) and rewrites it to "shaders/<file>:L:".
+static bool map_location(std::string *line, const Assembled &a) {
+  const std::string &s = *line;
+  for (size_t i = 0; i < s.size(); ++i) {
+    if (!isdigit(static_cast<unsigned char>(s[i])) || (i > 0 && !isspace(static_cast<unsigned char>(s[i - 1]))))
+      continue;
+    size_t j = i;
+    while (j < s.size() && isdigit(static_cast<unsigned char>(s[j]))) ++j;
+    if (j >= s.size() || s[j] != ':' || j - i > 6) continue;
+    size_t k = j + 1;
+    while (k < s.size() && isdigit(static_cast<unsigned char>(s[k]))) ++k;
+    if (k == j + 1 || k - j > 8) continue;
+    size_t e = k;
+    if (e < s.size() && s[e] == '(') {
+      const size_t close = s.find(')', e);
+      if (close == std::string::npos) continue;
+      e = close + 1;
+    }
+    if (e >= s.size() || s[e] != ':') continue;
+    const size_t id = std::stoul(s.substr(i, j - i));
+    if (id >= a.files.size()) return false;
+    *line = s.substr(0, i) + a.files[id] + ":" + s.substr(j + 1, k - j - 1) + ":" + s.substr(e + 1);
+    return true;
+  }
+  return false;
+}
+
 std::string map_compile_log(const std::string &log, const Assembled &a) {
   // Mesa: "3:17(5): error: ..."; glslang: "ERROR: 3:17: ...".
-  static const std::regex loc_re("(^|\\s)(\\d+):(\\d+)(\\(\\d+\\))?:");
   std::string result;
   std::istringstream in(log);
   std::string line;
   while (std::getline(in, line)) {
-    std::smatch m;
-    if (std::regex_search(line, m, loc_re)) {
-      const size_t id = std::stoul(m[2]);
-      if (id < a.files.size()) {
-        line = m.prefix().str() + m[1].str() + a.files[id] + ":" + m[3].str() + ":" + m.suffix().str();
-      }
-    }
+    map_location(&line, a);
     result += line + "\n";
   }
   return result;
