@@ -1,5 +1,7 @@
 // tiershade: `probe` subcommand: one pixel of one variant, evaluated in GL and in
 // C (float32 bit-exact twin and the double reference), printed side by side.
+#include <sys/stat.h>
+
 #include <cmath>
 #include <cstdio>
 #include <cstring>
@@ -112,6 +114,8 @@ int cmd_probe(int argc, char **argv) {
 
   if (a.has("--input")) {
     const std::string path = a.get("--input");
+    struct stat st;
+    if (stat(path.c_str(), &st) != 0 || !S_ISREG(st.st_mode)) a.fail("cannot read input file '" + path + "' (not a readable regular file)");
     std::ifstream file(path);
     if (!file) a.fail("cannot read input file '" + path + "'");
     std::string line;
@@ -126,6 +130,7 @@ int cmd_probe(int argc, char **argv) {
       while (ls >> tok) rest += (rest.empty() ? "" : " ") + tok;
       set_slot_value(a, *f, &in, path + ":" + std::to_string(lineno), name + "=" + rest);
     }
+    if (file.bad()) a.fail("cannot read input file '" + path + "' (read error after line " + std::to_string(lineno) + ")");
   }
   for (const auto &s : a.all("--set")) set_slot_value(a, *f, &in, "--set", s);
 

@@ -1,6 +1,8 @@
 // tiershade glue: variant and backend selection from the command line (see selection.h).
 #include "selection.h"
 
+#include <algorithm>
+
 void select_variants(const Args &a, Selection *sel) {
   std::string err;
   if (!load_shader_decls(&sel->decls, &err)) a.fail(err);
@@ -25,6 +27,8 @@ void select_variants(const Args &a, Selection *sel) {
     if (shader.empty()) a.fail("--variant needs --shader");
     Variant v;
     if (!find_variant(sel->decls, shader, a.get("--variant"), &v, &err)) a.fail(err);
+    if (std::find(tiers.begin(), tiers.end(), v.tier) == tiers.end())
+      a.fail("variant '" + v.name() + "' is not in the selected --tier");
     sel->variants = {v};
   }
 }

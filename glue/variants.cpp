@@ -74,8 +74,7 @@ struct Parser {
     if (eat("-")) {
       int x;
       if (!primary(&x)) return false;
-      *v = -x;
-      return true;
+      return checked(-static_cast<long long>(x), v);
     }
     if (p < s.size() && std::isdigit(static_cast<unsigned char>(s[p]))) {
       long x = 0;
@@ -97,12 +96,18 @@ struct Parser {
     }
     return fail("operand expected");
   }
+  // Results are kept within +-1e9 so that no int operation can overflow.
+  bool checked(long long x, int *v) {
+    if (x > 1000000000LL || x < -1000000000LL) return fail("value out of range (|x| > 1e9)");
+    *v = static_cast<int>(x);
+    return true;
+  }
   bool mul(int *v) {
     if (!primary(v)) return false;
     while (eat("*")) {
       int r;
       if (!primary(&r)) return false;
-      *v *= r;
+      if (!checked(static_cast<long long>(*v) * r, v)) return false;
     }
     return true;
   }
@@ -112,10 +117,10 @@ struct Parser {
       int r;
       if (eat("+")) {
         if (!mul(&r)) return false;
-        *v += r;
+        if (!checked(static_cast<long long>(*v) + r, v)) return false;
       } else if (eat("-")) {
         if (!mul(&r)) return false;
-        *v -= r;
+        if (!checked(static_cast<long long>(*v) - r, v)) return false;
       } else {
         return true;
       }
@@ -202,6 +207,8 @@ bool parse_shader_decl(const std::string &file, const std::string &text, ShaderD
     ++lineno;
     const size_t hash = line.find('#');
     if (hash != std::string::npos) line.resize(hash);
+    const size_t first = line.find_first_not_of(" \t");
+    if (first != std::string::npos && line.compare(first, 5, "skip:") == 0) line.insert(first + 4, " ");
     std::istringstream ls(line);
     std::string key;
     if (!(ls >> key)) continue;
@@ -283,9 +290,11 @@ std::vector<Variant> enumerate_variants(const ShaderDecl &s, const std::vector<T
   std::vector<Variant> result;
   for (Tier t : tiers) {
     if (!tier_in(t, s.tiers)) continue;
+    // Static combos outside, dynamic combos inside (they vary fastest), each in declaration order.
     std::vector<const Combo *> active;
-    for (const auto &c : s.combos)
-      if (tier_in(t, c.tiers)) active.push_back(&c);
+    for (int dyn = 0; dyn < 2; ++dyn)
+      for (const auto &c : s.combos)
+        if (tier_in(t, c.tiers) && c.dynamic == (dyn == 1)) active.push_back(&c);
     std::vector<int> v;
     for (const auto *c : active) v.push_back(c->min);
     for (;;) {

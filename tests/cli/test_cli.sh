@@ -30,8 +30,17 @@ fi
 
 TMP=$(mktemp -d "${TMPDIR:-/tmp}/tiershade_cli.XXXXXX") || { echo "FAIL setup: mktemp"; exit 1; }
 trap 'rm -rf "$TMP"' EXIT
+trap 'exit 129' HUP INT TERM PIPE
 cd "$TMP" || exit 1                 # nothing may depend on the caller's directory
 unset TIERSHADE_SHADER_DIR          # use the embedded shader library
+# Sanitizer builds: memory errors and UB must still be reported (they are FAILs below),
+# but leak reports are not meaningful here: Mesa keeps allocations of its own (OSMesa
+# buffers, llvmpipe state, some in driver modules unloaded by eglTerminate). A caller
+# who sets detect_leaks explicitly keeps that choice.
+case ${ASAN_OPTIONS:-} in
+  *detect_leaks=*) ;;
+  *) export ASAN_OPTIONS="${ASAN_OPTIONS:+$ASAN_OPTIONS:}detect_leaks=0" ;;
+esac
 
 FAILED=0
 PASSED=0
