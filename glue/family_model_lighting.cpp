@@ -94,7 +94,7 @@ const char *const kHardCases[] = {
     "zero l and q, huge d",      "NaN in the ambient cube",  "Inf in the ambient cube",
     "negative tone-map scale",   "NaN tone-map scale",       "NaN light count",
     "NaN spot direction",        "huge albedo uv 1e7",       "unnormalised tiny normal 1e-19",
-    "NaN and Inf vertex attenuation",
+    "NaN and Inf vertex attenuation", "all attenuation coefficients 0 (1/0)",
 };
 const int kNumHardCases = sizeof kHardCases / sizeof kHardCases[0];
 
@@ -160,6 +160,7 @@ void hard_pixel(Rng &r, int c, ts_vec4f rec[ML_SLOTS]) {
     case 22: rec[ML_SLOT_UV] = ts_v4f(1e7f, -3e7f, 0, 0); break;
     case 23: rec[ML_SLOT_NORMAL] = v4(ts_scale3f(n, 1e-19f), 0.f); break;
     case 24: rec[ML_SLOT_VERTEX_ATTEN] = ts_v4f(kNaN, kInf, kNaN, kInf); break;
+    case 25: l0[4] = ts_v4f(0, 0, 0, 0); l0[0].w = 0.f; break;
     default: break;
   }
 }
