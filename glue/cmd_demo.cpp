@@ -9,6 +9,7 @@
 #include <cstring>
 
 #include "frame.h"
+#include "lights_file.h"
 #include "scene_spheres.h"
 #include "selection.h"
 
@@ -35,9 +36,9 @@ bool save(const std::string &base, const ImageF &img, Encode enc, bool exr, std:
 }  // namespace
 
 int cmd_demo(int argc, char **argv) {
-  Args a("demo", argc, argv, {"--help"}, {"-o", "--size", "--backend"});
+  Args a("demo", argc, argv, {"--help"}, {"-o", "--size", "--backend", "--lights"});
   if (a.flag("--help")) {
-    puts("usage: tiershade demo [-o DIR] [--size WxH] [--backend osmesa|egl|all]\n"
+    puts("usage: tiershade demo [-o DIR] [--size WxH] [--backend osmesa|egl|all] [--lights FILE]\n"
          "Renders the lit sphere grid (six lights, ambient cube) with the HL2 model lighting in each\n"
          "tier: ps20 (2 local lights, the rest folded into the ambient cube, linear output for an sRGB\n"
          "target), ps2b (4 lights, gamma 2.2 in the shader), sm3 (4 lights in a dynamic loop, exact sRGB).\n"
@@ -45,7 +46,9 @@ int cmd_demo(int argc, char **argv) {
          "and by the C fallback; every GL frame is compared bit for bit with the C frame.\n"
          "Writes DIR/model_lighting_<tier>_<backend>.png/.exr, DIR/model_lighting_<tier>_diff_<backend>.png\n"
          "(black = bit-equal), DIR/model_lighting_reference.png (double precision, every light local)\n"
-         "and DIR/model_lighting_tiers.png (ps20 | ps2b | sm3 | reference). Default DIR: out.");
+         "and DIR/model_lighting_tiers.png (ps20 | ps2b | sm3 | reference). Default DIR: out.\n"
+         "--lights replaces the six lights with a lights file (format: tiershade fold --help;\n"
+         "example: scenes/sphere_grid.lights).");
     return 0;
   }
   if (!a.positional().empty()) a.fail("unexpected argument '" + a.positional()[0] + "'");
@@ -58,15 +61,19 @@ int cmd_demo(int argc, char **argv) {
       a.fail("--size wants WxH with 8 <= W, H <= 4096, got '" + s + "'");
   }
   std::vector<BackendApi> configs = select_configs(a);
+  std::string err;
   if (mkdir(dir.c_str(), 0777) != 0 && errno != EEXIST) {
     fprintf(stderr, "tiershade demo: cannot create directory '%s': %s\n", dir.c_str(), strerror(errno));
     return 1;
   }
   Selection sel;
-  std::string err;
   if (!load_shader_decls(&sel.decls, &err)) a.fail(err);
   const ShaderFamily *fam = find_family("model_lighting");
-  const SphereScene scene = default_sphere_scene();
+  SphereScene scene = default_sphere_scene();
+  if (a.has("--lights")) {
+    scene.lights.clear();
+    if (!read_lights(a.get("--lights"), &scene.lights, &err)) a.fail(err);
+  }
   int failures = 0;
   std::vector<ImageF> panels;
 
