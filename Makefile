@@ -24,8 +24,9 @@ CXX_SRC := $(sort $(wildcard glue/*.cpp))
 C_OBJ   := $(C_SRC:%.c=$(BUILD)/obj/%.o)
 CXX_OBJ := $(CXX_SRC:%.cpp=$(BUILD)/obj/%.o) $(BUILD)/obj/gen/shader_sources.o
 LIB_OBJ := $(C_OBJ) $(filter-out $(BUILD)/obj/glue/main.o,$(CXX_OBJ))
-UNIT_TESTS := $(BUILD)/tests/test_ts_math $(BUILD)/tests/test_budget $(BUILD)/tests/test_image_io \
-              $(BUILD)/tests/test_glue $(BUILD)/tests/test_light_folding
+# Every tests/unit/test_*.c or .cpp is a test program (run by tests/run_tests.sh).
+UNIT_SRC   := $(sort $(wildcard tests/unit/test_*.c tests/unit/test_*.cpp))
+UNIT_TESTS := $(patsubst tests/unit/%,$(BUILD)/tests/%,$(basename $(UNIT_SRC)))
 
 .PHONY: all deps demo test test-fast bench clean
 all: $(BUILD)/tiershade $(UNIT_TESTS)
@@ -65,9 +66,6 @@ $(BUILD)/obj/%.o: %.cpp $(BUILD)/gen/shader_sources.cpp
 $(BUILD)/tiershade: $(BUILD)/obj/glue/main.o $(LIB_OBJ)
 	$(CXX) $(LDFLAGS) -o $@ $^ $(LDLIBS)
 
-$(BUILD)/tests/test_ts_math: $(BUILD)/obj/tests/unit/test_ts_math.o $(C_OBJ)
-	@mkdir -p $(dir $@)
-	$(CC) $(LDFLAGS) -o $@ $^ -lm
 $(BUILD)/tests/%: $(BUILD)/obj/tests/unit/%.o $(LIB_OBJ)
 	@mkdir -p $(dir $@)
 	$(CXX) $(LDFLAGS) -o $@ $^ $(LDLIBS)

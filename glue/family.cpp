@@ -54,6 +54,24 @@ std::vector<Define> variant_defines(const Variant &v, InputMode mode) {
   return d;
 }
 
+ts_tex2d tex2d_of(const TextureDesc &t) {
+  ts_tex2d x;
+  x.w = t.w;
+  x.h = t.h;
+  x.texels = t.rgba.data();
+  x.wrap_s = x.wrap_t = t.repeat ? TS_WRAP_REPEAT : TS_WRAP_CLAMP;
+  x.filter = t.linear ? TS_FILTER_LINEAR : TS_FILTER_NEAREST;
+  return x;
+}
+
+ts_texcube texcube_of(const TextureDesc &t) {
+  ts_texcube c;
+  c.size = t.w;
+  for (int f = 0; f < 6; ++f) c.faces[f] = t.rgba.data() + static_cast<size_t>(f) * t.w * t.w * 4;
+  c.filter = t.linear ? TS_FILTER_LINEAR : TS_FILTER_NEAREST;
+  return c;
+}
+
 ts_vec3f Rng::unit_vector() {
   for (;;) {
     const float x = uniform(-1, 1), y = uniform(-1, 1), z = uniform(-1, 1);

@@ -8,6 +8,7 @@
 
 #include "gl_render.h"
 #include "ts_math.h"
+#include "ts_sampler.h"
 #include "variants.h"
 
 enum class InputSet { Random, Hard };
@@ -51,6 +52,10 @@ std::vector<const ShaderFamily *> all_families();
 // #defines for a variant: each combo value, the tier (TS_TIER_PS20/PS2B/SM3) and
 // the input mode (TS_CONFORM, TS_DEFERRED, or nothing for production).
 std::vector<Define> variant_defines(const Variant &v, InputMode mode);
+
+// The C sampler's view of a texture the shader samples (same filtering and wrapping).
+ts_tex2d tex2d_of(const TextureDesc &t);
+ts_texcube texcube_of(const TextureDesc &t);
 
 // Small deterministic PRNG (xorshift32) for reproducible test inputs.
 struct Rng {

@@ -21,16 +21,7 @@ ml_variant to_ml(const Variant &v) {
   return m;
 }
 
-ts_tex2d albedo_tex(const FamilyInputs &in) {
-  const TextureDesc &t = in.textures.at(0);
-  ts_tex2d x;
-  x.w = t.w;
-  x.h = t.h;
-  x.texels = t.rgba.data();
-  x.wrap_s = x.wrap_t = t.repeat ? TS_WRAP_REPEAT : TS_WRAP_CLAMP;
-  x.filter = t.linear ? TS_FILTER_LINEAR : TS_FILTER_NEAREST;
-  return x;
-}
+ts_tex2d albedo_tex(const FamilyInputs &in) { return tex2d_of(in.textures.at(0)); }
 
 void gather(const FamilyInputs &in, int x, int y, ts_vec4f rec[ML_SLOTS]) {
   for (int k = 0; k < ML_SLOTS; ++k) rec[k] = in.slot(x, y, k);

@@ -60,7 +60,39 @@
   X(ClearColor, PFNGLCLEARCOLORPROC)                                    \
   X(Clear, PFNGLCLEARPROC)                                              \
   X(DrawArrays, PFNGLDRAWARRAYSPROC)                                    \
-  X(ReadPixels, PFNGLREADPIXELSPROC)
+  X(ReadPixels, PFNGLREADPIXELSPROC)                                    \
+  X(Enable, PFNGLENABLEPROC)                                            \
+  X(BlendFunc, PFNGLBLENDFUNCPROC)                                      \
+  X(BlendEquation, PFNGLBLENDEQUATIONPROC)                              \
+  X(Scissor, PFNGLSCISSORPROC)                                          \
+  X(ColorMask, PFNGLCOLORMASKPROC)                                      \
+  X(DepthMask, PFNGLDEPTHMASKPROC)                                      \
+  X(DepthFunc, PFNGLDEPTHFUNCPROC)                                      \
+  X(StencilFunc, PFNGLSTENCILFUNCPROC)                                  \
+  X(StencilOp, PFNGLSTENCILOPPROC)                                      \
+  X(TexImage3D, PFNGLTEXIMAGE3DPROC)                                    \
+  X(TexSubImage2D, PFNGLTEXSUBIMAGE2DPROC)                              \
+  X(GenerateMipmap, PFNGLGENERATEMIPMAPPROC)                            \
+  X(GenQueries, PFNGLGENQUERIESPROC)                                    \
+  X(DeleteQueries, PFNGLDELETEQUERIESPROC)                              \
+  X(BeginQuery, PFNGLBEGINQUERYPROC)                                    \
+  X(EndQuery, PFNGLENDQUERYPROC)                                        \
+  X(GetQueryObjectuiv, PFNGLGETQUERYOBJECTUIVPROC)                      \
+  X(Uniform2fv, PFNGLUNIFORM2FVPROC)                                    \
+  X(Uniform3f, PFNGLUNIFORM3FPROC)                                      \
+  X(Uniform4f, PFNGLUNIFORM4FPROC)                                      \
+  X(Uniform1iv, PFNGLUNIFORM1IVPROC)                                    \
+  X(UniformMatrix4fv, PFNGLUNIFORMMATRIX4FVPROC)                        \
+  X(GenRenderbuffers, PFNGLGENRENDERBUFFERSPROC)                        \
+  X(DeleteRenderbuffers, PFNGLDELETERENDERBUFFERSPROC)                  \
+  X(BindRenderbuffer, PFNGLBINDRENDERBUFFERPROC)                        \
+  X(RenderbufferStorage, PFNGLRENDERBUFFERSTORAGEPROC)                  \
+  X(RenderbufferStorageMultisample, PFNGLRENDERBUFFERSTORAGEMULTISAMPLEPROC) \
+  X(FramebufferRenderbuffer, PFNGLFRAMEBUFFERRENDERBUFFERPROC)          \
+  X(BlitFramebuffer, PFNGLBLITFRAMEBUFFERPROC)                          \
+  X(DrawElements, PFNGLDRAWELEMENTSPROC)                                \
+  X(DrawBuffers, PFNGLDRAWBUFFERSPROC)                                  \
+  X(ReadBuffer, PFNGLREADBUFFERPROC)
 
 struct GlFns {
 #define TS_GL_DECLARE(name, type) type name = nullptr;

@@ -78,24 +78,49 @@ void GlRenderer::delete_program(GLuint p) {
   if (p) gl().DeleteProgram(p);
 }
 
+GLenum texture_target(TexKind k) {
+  return k == TexKind::Cube ? GL_TEXTURE_CUBE_MAP : k == TexKind::Tex3D ? GL_TEXTURE_3D : GL_TEXTURE_2D;
+}
+
 GLuint GlRenderer::upload_texture(const TextureDesc &t) {
   const GlFns &g = gl();
+  const GLenum target = texture_target(t.kind);
   GLuint id = 0;
   g.GenTextures(1, &id);
-  g.BindTexture(GL_TEXTURE_2D, id);
+  g.BindTexture(target, id);
   g.PixelStorei(GL_UNPACK_ALIGNMENT, 4);
-  g.TexImage2D(GL_TEXTURE_2D, 0, GL_RGBA32F, t.w, t.h, 0, GL_RGBA, GL_FLOAT, t.rgba.data());
+  if (t.kind == TexKind::Tex2D) {
+    g.TexImage2D(GL_TEXTURE_2D, 0, GL_RGBA32F, t.w, t.h, 0, GL_RGBA, GL_FLOAT, t.rgba.data());
+  } else if (t.kind == TexKind::Tex3D) {
+    g.TexImage3D(GL_TEXTURE_3D, 0, GL_RGBA32F, t.w, t.h, t.d, 0, GL_RGBA, GL_FLOAT, t.rgba.data());
+  } else {
+    const size_t face = static_cast<size_t>(t.w) * t.w * 4;
+    for (int f = 0; f < 6; ++f)
+      g.TexImage2D(GL_TEXTURE_CUBE_MAP_POSITIVE_X + f, 0, GL_RGBA32F, t.w, t.w, 0, GL_RGBA, GL_FLOAT,
+                   t.rgba.data() + f * face);
+  }
   const GLint filter = t.linear ? GL_LINEAR : GL_NEAREST;
-  const GLint wrap = t.repeat ? GL_REPEAT : GL_CLAMP_TO_EDGE;
-  g.TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, filter);
-  g.TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, filter);
-  g.TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, wrap);
-  g.TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, wrap);
+  const GLint wrap = t.repeat && t.kind != TexKind::Cube ? GL_REPEAT : GL_CLAMP_TO_EDGE;
+  g.TexParameteri(target, GL_TEXTURE_MIN_FILTER, filter);
+  g.TexParameteri(target, GL_TEXTURE_MAG_FILTER, filter);
+  g.TexParameteri(target, GL_TEXTURE_WRAP_S, wrap);
+  g.TexParameteri(target, GL_TEXTURE_WRAP_T, wrap);
+  if (t.kind != TexKind::Tex2D) g.TexParameteri(target, GL_TEXTURE_WRAP_R, wrap);
+  // Seamless cube filtering is not reproducible per pixel (llvmpipe_bitexact.md): off on
+  // desktop GL. GLES 3 has no switch (its cube maps are seamless by definition).
+  if (t.kind == TexKind::Cube && ctx_.api() == Api::GL33) g.Disable(GL_TEXTURE_CUBE_MAP_SEAMLESS);
+  kinds_[id] = target;
   return id;
 }
 
 void GlRenderer::delete_texture(GLuint t) {
   if (t) gl().DeleteTextures(1, &t);
+  kinds_.erase(t);
+}
+
+GLenum GlRenderer::kind_of(GLuint t) const {
+  auto it = kinds_.find(t);
+  return it == kinds_.end() ? GL_TEXTURE_2D : it->second;
 }
 
 bool GlRenderer::ensure_target(int w, int h, std::string *err) {
@@ -135,7 +160,7 @@ bool GlRenderer::draw(GLuint program, const std::vector<std::pair<std::string, G
   g.UseProgram(program);
   for (size_t i = 0; i < textures.size(); ++i) {
     g.ActiveTexture(GL_TEXTURE0 + static_cast<GLenum>(i));
-    g.BindTexture(GL_TEXTURE_2D, textures[i].second);
+    g.BindTexture(kind_of(textures[i].second), textures[i].second);
     const GLint loc = g.GetUniformLocation(program, textures[i].first.c_str());
     if (loc >= 0) g.Uniform1i(loc, static_cast<GLint>(i));
   }

@@ -1,6 +1,7 @@
 // tiershade glue: programs, RGBA32F textures, and full-screen draws into an
 // RGBA32F framebuffer with float readback, on any GlContext.
 #pragma once
+#include <map>
 #include <string>
 #include <vector>
 
@@ -8,12 +9,17 @@
 #include "gl_context.h"
 #include "image_io.h"
 
+enum class TexKind { Tex2D, Cube, Tex3D };
+
 struct TextureDesc {
   std::string sampler;  // uniform name
-  int w = 0, h = 0;
-  std::vector<float> rgba;  // RGBA32F, row 0 first (GL order)
+  TexKind kind = TexKind::Tex2D;
+  int w = 0, h = 0, d = 1;  // Tex3D: depth d; Cube: 6 faces of w x w (h == w)
+  // RGBA32F, row 0 first (GL order). Tex3D: slice after slice. Cube: faces +X -X +Y -Y +Z -Z
+  // one after another, each w*w texels.
+  std::vector<float> rgba;
   bool linear = false;      // GL_LINEAR (else GL_NEAREST)
-  bool repeat = false;      // GL_REPEAT (else GL_CLAMP_TO_EDGE)
+  bool repeat = false;      // GL_REPEAT (else GL_CLAMP_TO_EDGE; cube maps always clamp, seamless off)
 };
 
 class GlRenderer {
@@ -37,6 +43,8 @@ class GlRenderer {
 
  private:
   bool ensure_target(int w, int h, std::string *err);
+  GLenum kind_of(GLuint texture) const;  // the GL target a texture was created with
+  std::map<GLuint, GLenum> kinds_;
   GlContext &ctx_;
   GLuint vao_ = 0, vbo_ = 0, fbo_ = 0, color_ = 0;
   int tw_ = 0, th_ = 0;

@@ -63,14 +63,24 @@ demo_check() {
   if ls "$dir" | grep -q '\.tmp\.'; then echo "FAIL demo left temporary files"; else echo "PASS demo left no temporary files"; fi
 }
 
+# Every unit-test program; a few take an argument.
+unit_tests() {
+  local dir=$1 prefix=$2 t name
+  for t in "$dir"/tests/test_*; do
+    [ -x "$t" ] || continue
+    name=$(basename "$t")
+    case "$name" in
+      test_budget) run "$prefix$name" "$t" tests/unit/fixtures ;;
+      test_image_io) run "$prefix$name" "$t" "$PROBE" ;;
+      *) run "$prefix$name" "$t" ;;
+    esac
+  done
+}
+
 echo "== unit tests"
-run test_ts_math build/tests/test_ts_math
-run test_budget build/tests/test_budget tests/unit/fixtures
-run test_image_io build/tests/test_image_io "$PROBE"
-run test_glue build/tests/test_glue
-run test_light_folding build/tests/test_light_folding
+unit_tests build ""
 echo "== command line"
-run test_cli bash tests/cli/test_cli.sh build/tiershade
+for s in tests/cli/test_*.sh; do run "$(basename "$s" .sh)" bash "$s" build/tiershade; done
 echo "== budgets"
 run budget as_checks build/tiershade budget --verbose
 echo "== conformance (0 ULP, all variants, 4 backend/API pairs, random + hard inputs)"
@@ -80,12 +90,8 @@ run demo demo_check build/tiershade
 
 echo "== under AddressSanitizer + UndefinedBehaviorSanitizer"
 export ASAN_OPTIONS=detect_leaks=0:abort_on_error=1 UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1
-run san_test_ts_math build/san/tests/test_ts_math
-run san_test_budget build/san/tests/test_budget tests/unit/fixtures
-run san_test_image_io build/san/tests/test_image_io "$PROBE"
-run san_test_glue build/san/tests/test_glue
-run san_test_light_folding build/san/tests/test_light_folding
-run san_test_cli bash tests/cli/test_cli.sh build/san/tiershade
+unit_tests build/san san_
+for s in tests/cli/test_*.sh; do run "san_$(basename "$s" .sh)" bash "$s" build/san/tiershade; done
 run san_conform as_checks build/san/tiershade conform --verbose --size 16
 run san_demo demo_check build/san/tiershade
 
