@@ -233,6 +233,19 @@ int cmd_bench(int argc, char **argv) {
      << "absolute milliseconds move with the machine's load. The ps20 error is dominated by the four\n"
      << "folded lights and the per-vertex attenuation; ps2b's by the gamma-2.2 curve standing in for sRGB\n"
      << "in the darks; sm3 keeps only the error of the two folded lights; mediump adds fp16 rounding.\n";
+  // The other families' sections (glue/bench_*.cpp), measured in the same run.
+  BenchOptions bopt;
+  bopt.size = n;
+  bopt.runs = runs;
+  for (const BenchSection *s : bench_sections()) {
+    std::string section;
+    fprintf(stderr, "bench: %s\n", s->name);
+    if (!s->run(bopt, &section, &err)) {
+      fprintf(stderr, "tiershade bench: %s: %s\n", s->name, err.c_str());
+      return 1;
+    }
+    md << "\n" << section;
+  }
 
   // SVG: mean error (y) against llvmpipe time (x), one labelled point per row.
   std::ostringstream svg;

@@ -177,6 +177,19 @@ int cmd_demo(int argc, char **argv) {
   }
   printf("wrote %s/model_lighting_*.png, *.exr; side by side: %s/model_lighting_tiers.png (ps20 | ps2b | sm3 | reference)\n",
          dir.c_str(), dir.c_str());
+  // The other families' sections (glue/demo_*.cpp).
+  DemoOptions opt;
+  opt.dir = dir;
+  opt.w = w;
+  opt.h = h;
+  opt.configs = configs;
+  for (const DemoSection *s : demo_sections()) {
+    printf("\n== %s\n", s->name);
+    if (!s->run(opt, &err)) {
+      fprintf(stderr, "tiershade demo: %s: %s\n", s->name, err.c_str());
+      ++failures;
+    }
+  }
   if (failures) printf("demo: %d GL frames differ from the C fallback or failed\n", failures);
   return failures ? 1 : 0;
 }

@@ -3,7 +3,7 @@
 
 #include <cmath>
 
-extern const ShaderFamily kModelLightingFamily;
+#include <algorithm>
 
 const char *input_set_name(InputSet s) { return s == InputSet::Random ? "random" : "hard"; }
 
@@ -34,12 +34,39 @@ TextureDesc FamilyInputs::record_texture() const {
   return t;
 }
 
+namespace {
+// Function-local statics: registrars run during static initialisation, in any order.
+std::vector<const ShaderFamily *> &family_registry() {
+  static std::vector<const ShaderFamily *> r;
+  return r;
+}
+std::vector<const DemoSection *> &demo_registry() {
+  static std::vector<const DemoSection *> r;
+  return r;
+}
+std::vector<const BenchSection *> &bench_registry() {
+  static std::vector<const BenchSection *> r;
+  return r;
+}
+template <class T>
+std::vector<const T *> sorted(std::vector<const T *> v) {
+  std::sort(v.begin(), v.end(), [](const T *a, const T *b) { return std::string(a->name) < b->name; });
+  return v;
+}
+}  // namespace
+
+FamilyRegistrar::FamilyRegistrar(const ShaderFamily *f) { family_registry().push_back(f); }
+DemoRegistrar::DemoRegistrar(const DemoSection *s) { demo_registry().push_back(s); }
+BenchRegistrar::BenchRegistrar(const BenchSection *s) { bench_registry().push_back(s); }
+std::vector<const ShaderFamily *> all_families() { return sorted(family_registry()); }
+std::vector<const DemoSection *> demo_sections() { return sorted(demo_registry()); }
+std::vector<const BenchSection *> bench_sections() { return sorted(bench_registry()); }
+
 const ShaderFamily *find_family(const std::string &name) {
   for (const ShaderFamily *f : all_families())
     if (name == f->name) return f;
   return nullptr;
 }
-std::vector<const ShaderFamily *> all_families() { return {&kModelLightingFamily}; }
 
 std::vector<Define> variant_defines(const Variant &v, InputMode mode) {
   std::vector<Define> d;

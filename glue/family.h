@@ -47,7 +47,44 @@ struct ShaderFamily {
 };
 
 const ShaderFamily *find_family(const std::string &name);
-std::vector<const ShaderFamily *> all_families();
+std::vector<const ShaderFamily *> all_families();  // sorted by name
+
+// Each family registers itself from its own file (glue/family_<name>.cpp):
+//   static const FamilyRegistrar kRegister(&kMyFamily);
+struct FamilyRegistrar {
+  explicit FamilyRegistrar(const ShaderFamily *f);
+};
+
+// Extra sections of `tiershade demo` and `tiershade bench`, registered the same way by the
+// files that own them (glue/demo_<name>.cpp, glue/bench_<name>.cpp), run in name order
+// after the model-lighting section.
+struct DemoOptions {
+  std::string dir;  // output directory (exists)
+  int w = 640, h = 320;
+  std::vector<BackendApi> configs;  // GL backends to render on (the C fallback always runs)
+};
+struct DemoSection {
+  const char *name;
+  // Writes its files into opt.dir and prints its summary; returns false (with *err) on failure,
+  // including a GL frame that differs from the C frame.
+  bool (*run)(const DemoOptions &opt, std::string *err);
+};
+struct BenchOptions {
+  int size = 1024, runs = 7;
+};
+struct BenchSection {
+  const char *name;
+  // Measures and returns its markdown section ("## ..." and its tables) for docs/accuracy_cost.md.
+  bool (*run)(const BenchOptions &opt, std::string *markdown, std::string *err);
+};
+struct DemoRegistrar {
+  explicit DemoRegistrar(const DemoSection *s);
+};
+struct BenchRegistrar {
+  explicit BenchRegistrar(const BenchSection *s);
+};
+std::vector<const DemoSection *> demo_sections();
+std::vector<const BenchSection *> bench_sections();
 
 // #defines for a variant: each combo value, the tier (TS_TIER_PS20/PS2B/SM3) and
 // the input mode (TS_CONFORM, TS_DEFERRED, or nothing for production).

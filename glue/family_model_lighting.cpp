@@ -209,7 +209,7 @@ void bind_uniforms(const GlFns &gl, GLuint program, const std::vector<ts_vec4f> 
 
 }  // namespace
 
-extern const ShaderFamily kModelLightingFamily;
 const ShaderFamily kModelLightingFamily = {
     "model_lighting", ML_SLOTS, slot_names(), make_inputs, eval_f, eval_d, output_range, ML_PIXEL_SLOTS, bind_uniforms,
 };
+const FamilyRegistrar kRegister(&kModelLightingFamily);
