@@ -1,0 +1,46 @@
+//------------------------------------------------------------------------------
+// common_lightmap.glsl: lightmap page addressing and texel decodes.
+// Page layout (fact sheet section 1, lightmappedgeneric_vs20.fxc): a bumped face
+// has four lightmaps side by side, flat first, then b0, b1, b2: uv_k = uv + k * offset.
+// Encodings (fact sheet section 2; docs/world_lighting.md):
+//   0 float    linear radiance (an fp16 texture where half floats filter)
+//   1 "4.12"   16-bit unorm holding radiance / 16, range [0, 16) (MAX_HDR_OVERBRIGHT)
+//   2 LDR      gamma-encoded and pre-divided by overbright 2: radiance = (2 t)^2.2
+//              (GammaToLinear(2c), the overbright-2 decode of common_vs_fxc.h)
+//   3 RGBE     ColorRGBExp32 in an RGBA8 texture, exponent biased by 128:
+//              radiance = (c/255) 2^e = t.rgb * 2^(255 t.a - 128) (TexLightToLinear)
+// C twin: c_ref/common_lightmap.h
+//------------------------------------------------------------------------------
+#ifndef TS_COMMON_LIGHTMAP_GLSL
+#define TS_COMMON_LIGHTMAP_GLSL
+
+#define TS_LIGHTMAP_FLOAT 0
+#define TS_LIGHTMAP_412 1
+#define TS_LIGHTMAP_LDR 2
+#define TS_LIGHTMAP_RGBE 3
+
+// MAX_HDR_OVERBRIGHT (fact sheet section 2): the range of the 16-bit format.
+#define TS_LIGHTMAP_412_RANGE 16.0
+
+// The LDR gamma curve's exponent and overbright factor (fact sheet section 2).
+#define TS_LIGHTMAP_LDR_GAMMA 2.2
+#define TS_LIGHTMAP_OVERBRIGHT 2.0
+
+// uv of lightmap k of a face (0 flat, 1..3 the bumped ones).
+vec2 ts_lightmap_uv(vec2 uv, vec2 offset, float k) {
+    return uv + k * offset;
+}
+
+// The gamma half of the LDR decode, applied to a sample (or to a blend of samples on ps20).
+vec3 ts_lightmap_ldr_to_linear(vec3 t) {
+    return pow(t * TS_LIGHTMAP_OVERBRIGHT, vec3(TS_LIGHTMAP_LDR_GAMMA));
+}
+
+vec3 ts_lightmap_decode(vec4 t, int encoding) {
+    if (encoding == TS_LIGHTMAP_412) return t.rgb * TS_LIGHTMAP_412_RANGE;
+    if (encoding == TS_LIGHTMAP_LDR) return ts_lightmap_ldr_to_linear(t.rgb);
+    if (encoding == TS_LIGHTMAP_RGBE) return t.rgb * exp2(t.a * 255.0 - 128.0);
+    return t.rgb;
+}
+
+#endif
