@@ -2,7 +2,7 @@
  * Fact sheet section 3: n.x^2 C[x sign] + n.y^2 C[y sign] + n.z^2 C[z sign],
  * order +X -X +Y -Y +Z -Z. No include guard (instantiated per precision). */
 
-static V3 FN(ambient_cube)(V3 n, const V3 c[6]) {
+static inline V3 FN(ambient_cube)(V3 n, const V3 c[6]) {
   V3 n2 = M(mul3)(n, n);
   V3 cx = n.x >= K(0.0) ? c[0] : c[1];
   V3 cy = n.y >= K(0.0) ? c[2] : c[3];

@@ -4,7 +4,7 @@
  * saturate(0.5 N.L + 0.5)^2. A light is 5 vec4: color, dir, pos, spot, atten.
  * No include guard (instantiated per precision). */
 
-static TS_REAL FN(light_attenuation)(const V4 l[5], V3 P, V3 *L) {
+static inline TS_REAL FN(light_attenuation)(const V4 l[5], V3 P, V3 *L) {
   V3 Lv = M(sub3)(FN(xyz4)(l[2]), P);
   TS_REAL d2 = M(max)(M(dot3)(Lv, Lv), K(1.0e-30));
   TS_REAL rinv = M(inversesqrt)(d2);
@@ -20,15 +20,15 @@ static TS_REAL FN(light_attenuation)(const V4 l[5], V3 P, V3 *L) {
 }
 
 /* ps20: direction only; the attenuation arrives interpolated from the vertex shader. */
-static V3 FN(light_direction)(const V4 l[5], V3 P) {
+static inline V3 FN(light_direction)(const V4 l[5], V3 P) {
   V3 Lv = M(sub3)(FN(xyz4)(l[2]), P);
   TS_REAL rinv = M(inversesqrt)(M(max)(M(dot3)(Lv, Lv), K(1.0e-30)));
   return l[0].w > K(0.5) ? M(neg3)(FN(xyz4)(l[1])) : M(scale3)(Lv, rinv);
 }
 
-static TS_REAL FN(half_lambert)(TS_REAL NdotL) {
+static inline TS_REAL FN(half_lambert)(TS_REAL NdotL) {
   TS_REAL h = M(saturate)(K(0.5) * NdotL + K(0.5));
   return h * h;
 }
 
-static TS_REAL FN(lambert)(TS_REAL NdotL) { return M(saturate)(NdotL); }
+static inline TS_REAL FN(lambert)(TS_REAL NdotL) { return M(saturate)(NdotL); }

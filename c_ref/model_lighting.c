@@ -6,25 +6,29 @@
 
 /* ---- float32 ---- */
 #include "ts_generic_float.h"
-static ts_vec4f sample_albedo_f(const ts_tex2d *t, float u, float v) { return ts_texture2Df(t, ts_v2f(u, v)); }
+static ts_vec4f sample2d_f(const ts_tex2d *t, float u, float v) { return ts_texture2Df(t, ts_v2f(u, v)); }
+static ts_vec4f samplecube_f(const ts_texcube *c, ts_vec3f d) { return ts_textureCubef(c, d); }
 #include "common_math.h"
 #include "common_ambient_cube.h"
 #include "common_lights.h"
+#include "common_phong.h"
 #include "common_output.h"
 #include "model_lighting_impl.h"
 
 /* ---- double ---- */
 #include "ts_generic_double.h"
-static ts_vec4d sample_albedo_d(const ts_tex2d *t, double u, double v) { return ts_texture2Dd(t, ts_v2d(u, v)); }
+static ts_vec4d sample2d_d(const ts_tex2d *t, double u, double v) { return ts_texture2Dd(t, ts_v2d(u, v)); }
+static ts_vec4d samplecube_d(const ts_texcube *c, ts_vec3d d) { return ts_textureCubed(c, d); }
 #include "common_math.h"
 #include "common_ambient_cube.h"
 #include "common_lights.h"
+#include "common_phong.h"
 #include "common_output.h"
 #include "model_lighting_impl.h"
 
-ts_vec4f model_lighting_f(const ml_variant *v, const ts_vec4f rec[ML_SLOTS], const ts_tex2d *albedo) {
-  return model_lighting_impl_f(v, rec, albedo);
+ts_vec4f model_lighting_f(const ml_variant *v, const ts_vec4f rec[ML_SLOTS], const ml_textures *tex) {
+  return model_lighting_impl_f(v, rec, tex);
 }
-ts_vec4d model_lighting_d(const ml_variant *v, const ts_vec4f rec[ML_SLOTS], const ts_tex2d *albedo) {
-  return model_lighting_impl_d(v, rec, albedo);
+ts_vec4d model_lighting_d(const ml_variant *v, const ts_vec4f rec[ML_SLOTS], const ml_textures *tex) {
+  return model_lighting_impl_d(v, rec, tex);
 }

@@ -20,7 +20,10 @@ namespace {
 // (Fibonacci sphere), for a record with the given cube and local lights.
 double sphere_integral(const ts_vec4f rec_in[ML_SLOTS], int channel, int half_lambert, int lights) {
   const int n = 20000;
-  const ml_variant v = {TS_TIER_ID_PS2B, 0, half_lambert, 0, lights};
+  ml_variant v = {};
+  v.tier = TS_TIER_ID_PS2B;
+  v.half_lambert = half_lambert;
+  v.num_lights = lights;
   ts_vec4f rec[ML_SLOTS];
   for (int k = 0; k < ML_SLOTS; ++k) rec[k] = rec_in[k];
   double sum = 0;

@@ -142,6 +142,8 @@ int cmd_probe(int argc, char **argv) {
   if (!a.has("--api") && b == Backend::EGL) api = Api::GLES3;
   std::string err;
   if (!config_supported(b, api, &err)) a.fail(err);
+  if (adapt_textures_for_api(api, &in))
+    printf("note: cube maps sampled with NEAREST on GLES (seamless filtering; see glue/conform.h)\n");
   auto ctx = GlContext::create(b, api, &err);
   if (!ctx) {
     fprintf(stderr, "tiershade probe: %s\n", err.c_str());

@@ -16,6 +16,18 @@ Target target_for_api(Api a) {
   return Target::GLSL330;
 }
 
+bool adapt_textures_for_api(Api api, FamilyInputs *in) {
+  if (api == Api::GL33) return false;
+  bool changed = false;
+  for (auto &t : in->textures) {
+    if (t.kind == TexKind::Cube && t.linear) {
+      t.linear = false;
+      changed = true;
+    }
+  }
+  return changed;
+}
+
 GLuint build_production_program(GlRenderer &r, Api api, const Variant &v, std::string *err) {
   const Target t = target_for_api(api);
   Assembled vs, fs;
@@ -57,7 +69,18 @@ std::string describe_pixel(const ShaderFamily &fam, const FamilyInputs &in, int 
 }
 
 ConformResult conform_variant(const ConformRun &run, const ShaderFamily &fam, const Variant &v,
-                              const FamilyInputs &in, InputSet set) {
+                              const FamilyInputs &in_given, InputSet set) {
+  FamilyInputs adapted;
+  const bool adapt = [&] {
+    for (const auto &t : in_given.textures)
+      if (t.kind == TexKind::Cube && t.linear && run.api != Api::GL33) return true;
+    return false;
+  }();
+  if (adapt) {
+    adapted = in_given;
+    adapt_textures_for_api(run.api, &adapted);
+  }
+  const FamilyInputs &in = adapt ? adapted : in_given;
   ConformResult res;
   res.shader = fam.name;
   res.variant = v.name();

@@ -32,6 +32,14 @@ struct ConformRun {
 
 Target target_for_api(Api a);
 
+// GLES 3 cube maps are always seamless (the API has no switch; Mesa turns it on for
+// every ES 3 context, and our "GLES 2" contexts are ES 3.2 underneath), and llvmpipe's
+// seamless LINEAR filtering is not reproducible per pixel (llvmpipe_bitexact.md: a
+// packet-wide corner branch). So on GLES the harness samples cube maps with NEAREST,
+// which is exact; LINEAR cube filtering is checked on desktop GL, where seamless is off.
+// Returns true when it changed something.
+bool adapt_textures_for_api(Api api, FamilyInputs *in);
+
 // Builds the variant's production program (its vertex shader, varyings and uniforms).
 GLuint build_production_program(GlRenderer &r, Api api, const Variant &v, std::string *err);
 // Builds the variant's conformance program for the renderer's API (nullptr err on success).

@@ -76,6 +76,13 @@ std::vector<Define> variant_defines(const Variant &v, InputMode mode) {
     case Tier::SM3: d.push_back({"TS_TIER_SM3", "1"}); break;
   }
   for (const auto &kv : v.values) d.push_back({kv.first, std::to_string(kv.second)});
+  // A combo that does not exist in this tier is defined as 0, so `#if NAME` is always valid.
+  if (v.shader)
+    for (const auto &c : v.shader->combos) {
+      bool present = false;
+      for (const auto &kv : v.values) present = present || kv.first == c.name;
+      if (!present) d.push_back({c.name, "0"});
+    }
   if (mode == InputMode::Conform) d.push_back({"TS_CONFORM", "1"});
   if (mode == InputMode::Deferred) d.push_back({"TS_DEFERRED", "1"});
   return d;

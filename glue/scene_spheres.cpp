@@ -6,6 +6,7 @@
 
 #include "frame.h"
 #include "model_lighting.h"
+#include "scene_textures.h"
 
 namespace {
 
@@ -109,6 +110,31 @@ SphereScene default_sphere_scene() {
   s.lights.push_back(point(0.3f, 1.2f, 0.35f, 0.5f, -3.5f, 2.f, 0.4f, 0.1f, 0.05f));  // green from below
   s.lights.push_back(point(0.7f, 0.15f, 0.7f, 5.f, -2.5f, 1.f, 0.5f, 0.1f, 0.05f));   // magenta rim
   s.lights.push_back(point(0.5f, 0.5f, 0.45f, -3.f, -3.f, 4.f, 0.6f, 0.1f, 0.05f));   // dim white
+  s.textures = {albedo_texture(), make_bump_normal_map("u_normal_map", 128), make_exponent_map("u_exponent_map", 64),
+                make_warp_ramp("u_light_warp"), make_sky_cube("u_envmap", 32)};
+  return s;
+}
+
+SphereScene phong_sphere_scene(const std::string &probe_path, std::string *note) {
+  SphereScene s = default_sphere_scene();
+  s.cols = s.rows = 1;
+  s.lights.resize(4);  // every tier above ps20 keeps all four local
+  s.lights[1].color[0] = 0.6f; s.lights[1].color[1] = 0.8f; s.lights[1].color[2] = 1.8f;
+  s.tone_map_scale = 0.8f;
+  s.phong.rim_boost = 2.f;
+  s.phong.boost = 4.f;
+  s.phong.albedo_tint = true;
+  float ambient[6][3];
+  TextureDesc cube;
+  std::string err;
+  if (!probe_path.empty() && cube_from_probe(probe_path, "u_envmap", 32, &cube, ambient, &err)) {
+    s.textures[4] = cube;
+    for (int i = 0; i < 6; ++i)
+      for (int c = 0; c < 3; ++c) s.ambient[i][c] = 0.35f * ambient[i][c];
+    *note = "envmap and ambient cube from " + probe_path;
+  } else {
+    *note = "procedural sky envmap (" + (probe_path.empty() ? std::string("no probe given") : err) + ")";
+  }
   return s;
 }
 
@@ -136,6 +162,11 @@ bool sphere_frame(const SphereScene &scene, int w, int h, int max_local, SphereF
       const float u = std::atan2(dx, dz) * 0.15915494f + 0.5f + 0.17f * col;
       const float v = std::acos(std::fmax(-1.f, std::fmin(1.f, dy))) * 0.31830989f + 0.29f * row;
       in.set_slot(x, y, ML_SLOT_UV, ts_v4f(2.f * u, v, 0, 0));
+      // Tangent along +u (around the vertical axis), bitangent = N x T.
+      const float tl = std::sqrt(dz * dz + dx * dx);
+      const float tx = tl > 1e-6f ? dz / tl : 1.f, tz = tl > 1e-6f ? -dx / tl : 0.f;
+      in.set_slot(x, y, ML_SLOT_TANGENT, ts_v4f(tx, 0, tz, 0));
+      in.set_slot(x, y, ML_SLOT_BITANGENT, ts_v4f(dy * tz, dz * tx - dx * tz, -dy * tx, 0));
     }
   }
 
@@ -175,7 +206,18 @@ bool sphere_frame(const SphereScene &scene, int w, int h, int max_local, SphereF
       in.set_slot(x, y, ML_SLOT_VERTEX_ATTEN, ts_v4f(va[0], va[1], va[2], va[3]));
     }
   }
-  in.textures = {albedo_texture()};
+  // Episode One material (PHONG variants): eye on +Z, far away (orthographic view).
+  const PhongMaterial &m = scene.phong;
+  in.shared[ML_SLOT_EYE] = ts_v4f(0, 0, 60, 1);
+  in.shared[ML_SLOT_PHONG] = ts_v4f(m.exponent, m.exponent_factor, m.boost, 0);
+  in.shared[ML_SLOT_FRESNEL] = ts_v4f((m.fresnel_mid - m.fresnel_min) * 2, m.fresnel_mid,
+                                      (m.fresnel_max - m.fresnel_mid) * 2, 0);
+  in.shared[ML_SLOT_PHONG_TINT] = ts_v4f(m.tint[0], m.tint[1], m.tint[2], m.albedo_tint ? 1.f : 0.f);
+  in.shared[ML_SLOT_RIM] = ts_v4f(m.rim_exponent, m.rim_boost, m.rim_mask, 0);
+  in.shared[ML_SLOT_ENVMAP] = ts_v4f(m.envmap_scale, m.envmap_fresnel, 0, 0);
+  in.shared[ML_SLOT_ENVMAP_TINT] = ts_v4f(m.envmap_tint[0], m.envmap_tint[1], m.envmap_tint[2], 0);
+  in.shared[ML_SLOT_SELF_ILLUM] = ts_v4f(m.self_illum[0], m.self_illum[1], m.self_illum[2], m.self_illum[3]);
+  in.textures = scene.textures;
   return true;
 }
 

@@ -9,14 +9,31 @@
 #include "family.h"
 #include "light_folding.h"
 
+// The Episode One material parameters (fact sheet section 5), used by PHONG variants.
+struct PhongMaterial {
+  float exponent = 20.f, exponent_factor = 149.f, boost = 1.f;
+  float fresnel_min = 0.15f, fresnel_mid = 0.5f, fresnel_max = 1.f;
+  float tint[3] = {1, 1, 1};
+  bool albedo_tint = false;
+  float rim_exponent = 4.f, rim_boost = 1.f, rim_mask = 1.f;
+  float envmap_scale = 0.25f, envmap_fresnel = 1.f;
+  float envmap_tint[3] = {1, 1, 1};
+  float self_illum[4] = {0, 0, 0, 0};  // rgb tint, amount
+};
+
 struct SphereScene {
   int cols = 5, rows = 3;
   std::vector<ts_light> lights;
   float ambient[6][3];
   float tone_map_scale = 0.6f;
+  PhongMaterial phong;
+  std::vector<TextureDesc> textures;  // u_albedo, u_normal_map, u_exponent_map, u_light_warp, u_envmap
 };
 
 SphereScene default_sphere_scene();
+// One big sphere lit for the Episode One Phong comparison: normal map, exponent map,
+// and (when the file is readable) a cube map and ambient cube from a real light probe.
+SphereScene phong_sphere_scene(const std::string &probe_path, std::string *note);
 
 struct SphereFrame {
   FamilyInputs in;          // G-buffer (normal, position, uv) + shared slots for the tier

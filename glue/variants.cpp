@@ -342,6 +342,38 @@ bool find_variant(const std::vector<ShaderDecl> &decls, const std::string &shade
         return true;
       }
     }
+    // A short name: "TIER:NAME=V,..." listing some combos; the others take their minimum.
+    const size_t colon = variant.find(':');
+    Tier tier;
+    if (colon != std::string::npos && parse_tier(variant.substr(0, colon), &tier)) {
+      std::map<std::string, int> given;
+      std::istringstream in(variant.substr(colon + 1));
+      std::string kv;
+      bool ok = true;
+      while (std::getline(in, kv, ',')) {
+        const size_t eq = kv.find('=');
+        if (eq == std::string::npos) { ok = false; break; }
+        try { given[kv.substr(0, eq)] = std::stoi(kv.substr(eq + 1)); } catch (...) { ok = false; break; }
+      }
+      for (size_t i = 0; ok && i < vars.size(); ++i) {
+        if (vars[i].tier != tier) continue;
+        bool match = true;
+        for (const auto &c : d.combos) {
+          auto it = given.find(c.name);
+          const int want = it != given.end() ? it->second : c.min;
+          if (vars[i].value(c.name, c.min) != want) match = false;
+        }
+        for (const auto &g : given) {
+          bool known = false;
+          for (const auto &c : d.combos) known = known || c.name == g.first;
+          if (!known) match = false;
+        }
+        if (match) {
+          *out = vars[i];
+          return true;
+        }
+      }
+    }
     *err = "shader '" + shader + "' has no variant '" + variant + "' (see: tiershade variants --list --shader " +
            shader + ")";
     return false;

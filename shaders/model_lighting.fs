@@ -1,11 +1,17 @@
 //------------------------------------------------------------------------------
-// model_lighting.fs: Half-Life 2 model lighting (talk: "Model lighting":
-// irradiance volume ambient cube, half-Lambert, local lights).
+// model_lighting.fs: Source model lighting.
+// Half-Life 2 (talk: "Model lighting": irradiance volume ambient cube,
+// half-Lambert, local lights):
 //   diffuse = ambientCube(N) + sum_i color_i * atten_i * D(N.L_i)
 //   out     = FinalOutput(albedo * diffuse)        D = half-Lambert or Lambert
-// Tiers: ps20 (<= 2 lights, attenuation per vertex, linear output), ps2b (<= 4
-// lights, all per pixel), sm3 (a dynamic loop over a uniform light count). Lights beyond a tier's limit are folded into
-// the ambient cube on the CPU (docs/light_folding.md).
+// Episode One Phong (talk: "Phong terms"; fact sheet section 5; PHONG = 1, ps2b
+// and sm3 only): normal map, per-light Phong specular with an exponent map,
+// masks, Fresnel ranges, rim light, light-warp ramp, envmap and self-illumination:
+//   out = FinalOutput(spec * tint + envmap + selfillum(albedo * diffuse))
+// Tiers: ps20 (<= 2 lights, attenuation per vertex, linear output, no Phong),
+// ps2b (<= 4 lights, all per pixel), sm3 (a dynamic loop over a uniform light
+// count). Lights beyond a tier's limit are folded into the ambient cube on the
+// CPU (docs/light_folding.md).
 // Variants: model_lighting.variants. C twin: c_ref/model_lighting.c.
 // Inputs (slots): c_ref/model_lighting.h and model_lighting_slots.glsl.
 //------------------------------------------------------------------------------
@@ -13,6 +19,7 @@
 #include "common_inputs.glsl"
 #include "common_ambient_cube.glsl"
 #include "common_lights.glsl"
+#include "common_phong.glsl"
 #include "common_output.glsl"
 #include "model_lighting_slots.glsl"
 
@@ -28,28 +35,88 @@ TS_VARYING_IN vec2 v_uv;
 #ifdef TS_TIER_PS20
 TS_VARYING_IN vec4 v_light_atten;  // per-vertex attenuation of lights 0..3 (model_lighting.vs)
 #endif
+#if PHONG
+TS_VARYING_IN vec3 v_tangent;    // world-space tangent and bitangent of the normal map
+TS_VARYING_IN vec3 v_bitangent;
+#endif
 
 uniform vec4 u_ambient_cube[6];  // +X -X +Y -Y +Z -Z
 uniform vec4 u_lights[5 * ML_MAX_LIGHTS];
 uniform vec4 u_params;           // x: tone-map scale, y: light count (sm3)
 uniform vec4 u_albedo_color;
-uniform sampler2D u_albedo;
+uniform sampler2D u_albedo;      // rgb albedo, a: spec mask / envmap mask / self-illum mask (Phong)
+#if PHONG
+uniform vec4 u_eye;
+uniform vec4 u_phong;            // see model_lighting_slots.glsl for these
+uniform vec4 u_fresnel_ranges;
+uniform vec4 u_phong_tint;
+uniform vec4 u_rim;
+uniform vec4 u_envmap_params;
+uniform vec4 u_envmap_tint;
+uniform vec4 u_self_illum;
+uniform sampler2D u_normal_map;  // rgb tangent normal (2x - 1), a: spec mask
+#if PHONG_EXPONENT_MAP
+uniform sampler2D u_exponent_map; // r exponent, g albedo-tint mask, a rim mask
+#endif
+#if LIGHT_WARP
+uniform sampler2D u_light_warp;  // 1D ramp indexed by the unsquared half-Lambert term
+#endif
+#if ENVMAP
+uniform samplerCube u_envmap;
+#endif
+#endif
 
 TS_DECLARE_FRAG_COLOR
 
+vec3 ml_ambient_cube(vec3 n) {
+    return ts_ambient_cube(n,
+        TS_UNIFORM_INPUT(ML_SLOT_AMBIENT + 0, u_ambient_cube[0]).rgb, TS_UNIFORM_INPUT(ML_SLOT_AMBIENT + 1, u_ambient_cube[1]).rgb,
+        TS_UNIFORM_INPUT(ML_SLOT_AMBIENT + 2, u_ambient_cube[2]).rgb, TS_UNIFORM_INPUT(ML_SLOT_AMBIENT + 3, u_ambient_cube[3]).rgb,
+        TS_UNIFORM_INPUT(ML_SLOT_AMBIENT + 4, u_ambient_cube[4]).rgb, TS_UNIFORM_INPUT(ML_SLOT_AMBIENT + 5, u_ambient_cube[5]).rgb);
+}
+
 void main() {
-    vec3 N = ts_safe_normalize(TS_PIXEL_INPUT(ML_SLOT_NORMAL, vec4(v_normal, 0.0)).xyz);
     vec3 P = TS_PIXEL_INPUT(ML_SLOT_POSITION, vec4(v_position, 1.0)).xyz;
     vec2 uv = TS_PIXEL_INPUT(ML_SLOT_UV, vec4(v_uv, 0.0, 0.0)).xy;
     vec4 params = TS_UNIFORM_INPUT(ML_SLOT_PARAMS, u_params);
 #ifdef TS_TIER_PS20
     vec4 vertex_atten = TS_PIXEL_INPUT(ML_SLOT_VERTEX_ATTEN, v_light_atten);
 #endif
+#if ALBEDO_TEXTURE
+    vec4 base = TS_TEX2D(u_albedo, uv);
+#else
+    vec4 base = TS_UNIFORM_INPUT(ML_SLOT_ALBEDO, u_albedo_color);
+#endif
 
-    vec3 diffuse = ts_ambient_cube(N,
-        TS_UNIFORM_INPUT(ML_SLOT_AMBIENT + 0, u_ambient_cube[0]).rgb, TS_UNIFORM_INPUT(ML_SLOT_AMBIENT + 1, u_ambient_cube[1]).rgb,
-        TS_UNIFORM_INPUT(ML_SLOT_AMBIENT + 2, u_ambient_cube[2]).rgb, TS_UNIFORM_INPUT(ML_SLOT_AMBIENT + 3, u_ambient_cube[3]).rgb,
-        TS_UNIFORM_INPUT(ML_SLOT_AMBIENT + 4, u_ambient_cube[4]).rgb, TS_UNIFORM_INPUT(ML_SLOT_AMBIENT + 5, u_ambient_cube[5]).rgb);
+#if PHONG
+    // Tangent-space normal map, not renormalised before the frame (fact sheet section 5).
+    vec4 nmap = TS_TEX2D(u_normal_map, uv);
+    vec3 tn = nmap.rgb * 2.0 - 1.0;
+    vec3 T = TS_PIXEL_INPUT(ML_SLOT_TANGENT, vec4(v_tangent, 0.0)).xyz;
+    vec3 B = TS_PIXEL_INPUT(ML_SLOT_BITANGENT, vec4(v_bitangent, 0.0)).xyz;
+    vec3 Ng = TS_PIXEL_INPUT(ML_SLOT_NORMAL, vec4(v_normal, 0.0)).xyz;
+    vec3 N = ts_safe_normalize(T * tn.x + B * tn.y + Ng * tn.z);
+    vec3 V = ts_safe_normalize(TS_UNIFORM_INPUT(ML_SLOT_EYE, u_eye).xyz - P);
+    float NdotV = dot(N, V);
+    vec3 R = N * (2.0 * NdotV) - V;
+    vec4 phong = TS_UNIFORM_INPUT(ML_SLOT_PHONG, u_phong);
+#if PHONG_EXPONENT_MAP
+    vec4 expmap = TS_TEX2D(u_exponent_map, uv);
+    float k = 1.0 + phong.y * expmap.r;   // 1 + 149 r by default: [1, 150]
+#else
+    vec4 expmap = vec4(1.0);
+    float k = phong.x;
+#endif
+    vec3 spec = vec3(0.0);
+#if RIM_LIGHT
+    vec4 rim_params = TS_UNIFORM_INPUT(ML_SLOT_RIM, u_rim);
+    vec3 rim = vec3(0.0);
+#endif
+#else
+    vec3 N = ts_safe_normalize(TS_PIXEL_INPUT(ML_SLOT_NORMAL, vec4(v_normal, 0.0)).xyz);
+#endif
+
+    vec3 diffuse = ml_ambient_cube(N);
 
 #ifdef TS_TIER_SM3
     int light_count = int(clamp(params.y, 0.0, float(ML_MAX_LIGHTS)));
@@ -73,18 +140,66 @@ void main() {
         float att = ts_light_attenuation(l, P, L);
 #endif
         float NdotL = dot(N, L);
+#if LIGHT_WARP
+        // Light warp: the unsquared half-Lambert term indexes a ramp, times 2 (fact sheet section 4).
+        vec3 warp = TS_TEX2D(u_light_warp, vec2(saturate(0.5 * NdotL + 0.5), 0.5)).rgb;
+        diffuse += l.color.rgb * (2.0 * warp) * att;
+#else
 #if HALF_LAMBERT
         float term = ts_half_lambert(NdotL);
 #else
         float term = ts_lambert(NdotL);
 #endif
         diffuse += l.color.rgb * (att * term);
+#endif
+#if PHONG
+        float RdotL = saturate(dot(R, L));
+        vec3 lit = l.color.rgb * (saturate(NdotL) * att);
+        spec += lit * pow(RdotL, k);
+#if RIM_LIGHT
+        rim += lit * pow(RdotL, rim_params.x);
+#endif
+#endif
     }
 
-#if ALBEDO_TEXTURE
-    vec3 albedo = TS_TEX2D(u_albedo, uv).rgb;
+#if PHONG
+    // Masks, Fresnel ranges, boost and tint (fact sheet section 5).
+    vec4 fr = TS_UNIFORM_INPUT(ML_SLOT_FRESNEL, u_fresnel_ranges);
+    float F = ts_fresnel_ranges(NdotV, fr.xyz);
+    float mask = phong.w > 0.5 ? base.a : nmap.a;
+    mask = fr.w > 0.5 ? 1.0 - mask : mask;
+    float spec_mask = mask * F;
+    spec = spec * (spec_mask * phong.z);
+    vec4 tint = TS_UNIFORM_INPUT(ML_SLOT_PHONG_TINT, u_phong_tint);
+#if PHONG_EXPONENT_MAP
+    vec3 spec_tint = tint.w > 0.5 ? ts_lerp3_from_one(base.rgb, expmap.g) : tint.rgb;
 #else
-    vec3 albedo = TS_UNIFORM_INPUT(ML_SLOT_ALBEDO, u_albedo_color).rgb;
+    vec3 spec_tint = tint.rgb;
 #endif
-    TS_FRAG_COLOR = vec4(ts_final_output(albedo * diffuse, params.x, OUTPUT_MODE), 1.0);
+#if RIM_LIGHT
+    // Rim: masked by Fresnel4, never added twice (max), plus the ambient cube seen
+    // along V on up-facing normals (+Y up here; Source's world is Z-up).
+    float fresnel4 = ts_fresnel4(NdotV);
+    float rim_mask = ts_lerp_from_one(expmap.a, rim_params.z);
+    rim = rim * (rim_mask * fresnel4);
+    spec = max(spec, rim);
+    spec += ml_ambient_cube(V) * (rim_params.y * saturate(rim_mask * fresnel4 * N.y));
+#endif
+    vec3 color = spec * spec_tint;
+#if ENVMAP
+    // Envmap on models: scale * lerp(1, F, envmapfresnel) * mask * texCUBE(R) * tint.
+    vec4 env = TS_UNIFORM_INPUT(ML_SLOT_ENVMAP, u_envmap_params);
+    float env_mask = env.z > 0.5 ? mask : (fr.w > 0.5 ? 1.0 - base.a : base.a);
+    float env_scale = env.x * ts_lerp_from_one(F, env.y) * env_mask;
+    color += TS_TEXCUBE(u_envmap, R).rgb * env_scale * TS_UNIFORM_INPUT(ML_SLOT_ENVMAP_TINT, u_envmap_tint).rgb;
+#endif
+    // Self-illumination lerps the lit albedo toward tint * albedo by base alpha:
+    // mix(albedo * diffuse, albedo * tint, t), written with the albedo factored out
+    // because NIR rewrites flrp(a*c, b*c, t) into c * flrp(a, b, t) anyway.
+    vec4 si = TS_UNIFORM_INPUT(ML_SLOT_SELF_ILLUM, u_self_illum);
+    color += base.rgb * ts_lerp3(diffuse, si.rgb, base.a * si.w);
+#else
+    vec3 color = base.rgb * diffuse;
+#endif
+    TS_FRAG_COLOR = vec4(ts_final_output(color, params.x, OUTPUT_MODE), 1.0);
 }

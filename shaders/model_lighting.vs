@@ -2,7 +2,8 @@
 // model_lighting.vs: the production vertex shader of model_lighting: world-space
 // position and normal for per-pixel lighting, the albedo uv, and on ps20 the
 // per-vertex attenuation (distance x spot cone) of each local light, which the
-// ps20 pixel shader takes interpolated (fact sheet section 4, VertexAttenInternal).
+// ps20 pixel shader takes interpolated (fact sheet section 4, VertexAttenInternal),
+// and with PHONG the normal map's tangent frame.
 //------------------------------------------------------------------------------
 #include "common_math.glsl"
 #include "common_lights.glsl"
@@ -11,6 +12,11 @@
 TS_ATTRIBUTE vec3 a_position;
 TS_ATTRIBUTE vec3 a_normal;
 TS_ATTRIBUTE vec2 a_uv;
+#if PHONG
+TS_ATTRIBUTE vec4 a_tangent;   // xyz tangent, w handedness (+1 or -1), as glTF stores it
+TS_VARYING_OUT vec3 v_tangent;
+TS_VARYING_OUT vec3 v_bitangent;
+#endif
 uniform mat4 u_model;          // object -> world (rigid or uniformly scaled)
 uniform mat4 u_view_proj;
 TS_VARYING_OUT vec3 v_normal;
@@ -26,6 +32,10 @@ void main() {
     v_position = world.xyz;
     v_normal = (u_model * vec4(a_normal, 0.0)).xyz;
     v_uv = a_uv;
+#if PHONG
+    v_tangent = (u_model * vec4(a_tangent.xyz, 0.0)).xyz;
+    v_bitangent = cross(v_normal, v_tangent) * a_tangent.w;
+#endif
 #ifdef TS_TIER_PS20
     vec4 atten = vec4(0.0);
     for (int i = 0; i < NUM_LIGHTS; ++i) {

@@ -84,11 +84,12 @@ double angle_deg(V3 a, V3 b)
 // ---- shading set-up ----------------------------------------------------------
 
 const float kDummyTexel[4] = {1.0f, 1.0f, 1.0f, 1.0f};
-const ts_tex2d kDummyAlbedo = {1, 1, kDummyTexel, TS_WRAP_REPEAT, TS_WRAP_REPEAT, TS_FILTER_NEAREST};
+const ts_tex2d kDummyAlbedoTex = {1, 1, kDummyTexel, TS_WRAP_REPEAT, TS_WRAP_REPEAT, TS_FILTER_NEAREST};
+const ml_textures kDummyAlbedo = {&kDummyAlbedoTex, nullptr, nullptr, nullptr, nullptr};
 
 ml_variant variant(int tier, int half_lambert, int num_lights)
 {
-    ml_variant v;
+    ml_variant v = {};
     v.tier = tier;
     v.albedo_texture = 0;
     v.half_lambert = half_lambert;
