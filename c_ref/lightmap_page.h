@@ -1,0 +1,45 @@
+/* c_ref/lightmap_page.h: the engine's lightmap page layout (fact sheet section 1,
+ * lightmappedgeneric_vs20.fxc): the lightmaps of a bumped face sit side by side,
+ * flat first, then the ones along b0, b1, b2, and the shader finds lightmap k at
+ * uv + k * offset with offset = (block width / page width, 0). Each block has a
+ * one-texel border (a copy of its edge) so bilinear filtering never reads the
+ * neighbouring block. Faces are packed in shelves, left to right, top to bottom. */
+#ifndef TS_LIGHTMAP_PAGE_H
+#define TS_LIGHTMAP_PAGE_H
+#include <stddef.h>
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+typedef struct {
+  int luxels_w, luxels_h; /* lightmap samples of the face, >= 2 each */
+  int bumped;             /* 1: four lightmaps (flat, b0, b1, b2); 0: the flat one only */
+} lm_face_size;
+
+typedef struct {
+  int x, y;             /* top-left texel of the face's first block (its border included) */
+  int block_w, block_h; /* luxels + 2 */
+  int count;            /* 4 or 1 lightmaps */
+  float offset[2];      /* uv offset from one lightmap of the face to the next */
+} lm_face_place;
+
+/* Packs the faces into a page_w x page_h page. Returns 0, or -1 with a message naming
+ * the face when a size is out of range or the page is full. */
+int lm_page_pack(int page_w, int page_h, const lm_face_size *faces, int n, lm_face_place *out, char *err,
+                 size_t errlen);
+
+/* The texel of luxel (i, j) of lightmap k (0 = flat) of a placed face. */
+void lm_page_texel(const lm_face_place *p, int k, int i, int j, int *tx, int *ty);
+
+/* The lightmap uv (of the flat lightmap, k = 0) of face point (a, b) in [0, 1]^2: a = 0
+ * and 1 are the centres of the first and last luxel columns. */
+void lm_page_uv(const lm_face_place *p, int page_w, int page_h, double a, double b, float uv[2]);
+
+/* Copies each block's edge luxels into its border (RGBA32F page, rows in GL order). */
+void lm_page_fill_borders(const lm_face_place *p, int page_w, float *rgba);
+
+#ifdef __cplusplus
+}
+#endif
+#endif
