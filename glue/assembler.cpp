@@ -107,8 +107,19 @@ bool parse_include(const std::string &line, std::string *name) {
   return true;
 }
 
+// True for an `#extension NAME : behavior` directive line.
+bool is_extension_directive(const std::string &line) {
+  size_t p = line.find_first_not_of(" \t");
+  if (p == std::string::npos || line[p] != '#') return false;
+  p = line.find_first_not_of(" \t", p + 1);
+  return p != std::string::npos && line.compare(p, 9, "extension") == 0;
+}
+
+// `extensions` collects the entry file's #extension lines (depth 0): ESSL (and Mesa for every
+// version) wants them before any non-preprocessor token, so assemble() puts them right after
+// #version, ahead of the prelude's precision statements; a blank line keeps their place.
 bool expand(const std::string &name, int depth, std::vector<std::string> &stack, Assembled *out,
-            std::ostringstream &o, std::string *err, const std::string &from) {
+            std::ostringstream &o, std::string *err, const std::string &from, std::string *extensions) {
   if (depth > 16) {
     *err = from + ": includes nested deeper than 16 levels";
     return false;
@@ -140,9 +151,13 @@ bool expand(const std::string &name, int depth, std::vector<std::string> &stack,
     ++lineno;
     std::string child;
     if (parse_include(line, &child)) {
-      if (!expand(child, depth + 1, stack, out, o, err, "shaders/" + name + ":" + std::to_string(lineno)))
+      if (!expand(child, depth + 1, stack, out, o, err, "shaders/" + name + ":" + std::to_string(lineno),
+                  extensions))
         return false;
       o << "#line " << (lineno + 1) << " " << id << "\n";
+    } else if (depth == 0 && is_extension_directive(line)) {
+      *extensions += line + "\n";
+      o << "\n";
     } else {
       o << line << "\n";
     }
@@ -161,11 +176,14 @@ bool assemble(const std::string &entry, Target target, Stage stage, const std::v
     return false;
   }
   std::ostringstream o;
-  o << prelude(target, stage, float_precision);
+  const std::string pre = prelude(target, stage, float_precision);
+  const size_t version_end = pre.find('\n') + 1;  // the prelude starts with the #version line
+  o << pre.substr(version_end);
   for (const auto &d : defines) o << "#define " << d.name << " " << d.value << "\n";
   std::vector<std::string> stack;
-  if (!expand(entry, 0, stack, out, o, err, "assembler")) return false;
-  out->text = o.str();
+  std::string extensions;
+  if (!expand(entry, 0, stack, out, o, err, "assembler", &extensions)) return false;
+  out->text = pre.substr(0, version_end) + extensions + o.str();
   return true;
 }
 
