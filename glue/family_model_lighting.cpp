@@ -2,6 +2,7 @@
 // cases), and the bridge to its C twin (c_ref/model_lighting.c).
 #include <cmath>
 #include <limits>
+#include <memory>
 
 #include "family.h"
 #include "model_lighting.h"
@@ -58,18 +59,29 @@ const ml_variant &cached_ml(const Variant &v) {
   return m;
 }
 
+// The texture views, rebuilt only when the frame's textures change (per thread).
+const ml_textures &cached_views(const FamilyInputs &in) {
+  thread_local const float *key[TEX_COUNT] = {};
+  thread_local std::unique_ptr<Views> views;
+  bool same = views != nullptr && in.textures.size() == TEX_COUNT;
+  for (int i = 0; same && i < TEX_COUNT; ++i) same = key[i] == in.textures[i].rgba.data();
+  if (!same) {
+    views.reset(new Views(in));
+    for (int i = 0; i < TEX_COUNT; ++i) key[i] = in.textures.at(i).rgba.data();
+  }
+  return views->tex;
+}
+
 ts_vec4f eval_f(const Variant &v, const FamilyInputs &in, int x, int y) {
   ts_vec4f rec[ML_SLOTS];
   gather(in, x, y, rec);
-  const Views views(in);
-  return model_lighting_f(&cached_ml(v), rec, &views.tex);
+  return model_lighting_f(&cached_ml(v), rec, &cached_views(in));
 }
 
 ts_vec4d eval_d(const Variant &v, const FamilyInputs &in, int x, int y) {
   ts_vec4f rec[ML_SLOTS];
   gather(in, x, y, rec);
-  const Views views(in);
-  return model_lighting_d(&cached_ml(v), rec, &views.tex);
+  return model_lighting_d(&cached_ml(v), rec, &cached_views(in));
 }
 
 void output_range(const Variant &v, float *lo, float *hi) {
