@@ -3,7 +3,7 @@
 
 static V3 FN(wl_lightmap)(const wl_variant *v, const ts_tex2d *lm, V2 uv, V2 offset, TS_REAL k) {
   V4 t = FN(sample2d)(lm, FN(lightmap_uv)(uv, offset, k));
-  if (v->tier == WL_TIER_PS20 && v->encoding == WL_LM_LDR) return M(v3)(t.x, t.y, t.z);
+  if (v->tier == WL_TIER_PS20 && v->encoding == WL_LM_LDR) return FN(lightmap_ldr_to_linear_fast)(M(v3)(t.x, t.y, t.z));
   return FN(lightmap_decode)(t, v->encoding);
 }
 
@@ -32,7 +32,6 @@ static V4 FN(world_lighting_impl)(const wl_variant *v, const ts_vec4f rec[WL_SLO
       diffuse = FN(ssbump_blend)(t, l0, l1, l2);
     }
   }
-  if (v->tier == WL_TIER_PS20 && v->encoding == WL_LM_LDR) diffuse = FN(lightmap_ldr_to_linear)(diffuse);
   V3 base_rgb = M(v3)(base.x, base.y, base.z), color;
   if (v->envmap) {
     color = M(mul3)(base_rgb, M(mul3)(diffuse, FN(xyz4)(tint_scale)));

@@ -24,23 +24,46 @@ void composite(const WorldFrame &f, int probe, const ImageF &src, ImageF *dst) {
 
 }  // namespace
 
-bool world_render_gl(GlRenderer &r, Api api, const WorldFrame &f, const WorldBake &b, const WorldPass &p, ImageF *out,
-                     std::string *err, double *draw_ms) {
-  *out = ImageF();
-  if (draw_ms) *draw_ms = 0;
+bool world_gl_setup(GlRenderer &r, Api api, const WorldFrame &f, const WorldBake &b, const WorldPass &p, WorldGl *g,
+                    std::string *err) {
   for (int probe = 0; probe < static_cast<int>(b.cubes.size()); ++probe) {
-    const FamilyInputs in = pass_inputs(f, b, p, probe);
-    GlFrameProgram fp;
-    ImageF img;
-    double ms = 0;
-    const bool ok = gl_frame_setup(r, api, kWorldLightingFamily, *p.variant, in, &fp, err) &&
-                    gl_frame_draw(r, fp, in, &img, draw_ms ? &ms : nullptr, err);
-    gl_frame_release(r, &fp);
-    if (!ok) return false;
-    if (draw_ms) *draw_ms += ms;
-    composite(f, probe, img, out);
+    g->inputs.push_back(pass_inputs(f, b, p, probe));
+    g->programs.emplace_back();
+    if (!gl_frame_setup(r, api, kWorldLightingFamily, *p.variant, g->inputs.back(), &g->programs.back(), err)) {
+      world_gl_release(r, g);
+      return false;
+    }
   }
   return true;
+}
+
+bool world_gl_draw(GlRenderer &r, const WorldGl &g, const WorldFrame &f, ImageF *out, std::string *err,
+                   double *draw_ms) {
+  *out = ImageF();
+  if (draw_ms) *draw_ms = 0;
+  for (size_t probe = 0; probe < g.programs.size(); ++probe) {
+    ImageF img;
+    double ms = 0;
+    if (!gl_frame_draw(r, g.programs[probe], g.inputs[probe], &img, draw_ms ? &ms : nullptr, err)) return false;
+    if (draw_ms) *draw_ms += ms;
+    composite(f, static_cast<int>(probe), img, out);
+  }
+  return true;
+}
+
+void world_gl_release(GlRenderer &r, WorldGl *g) {
+  for (GlFrameProgram &fp : g->programs) gl_frame_release(r, &fp);
+  g->programs.clear();
+  g->inputs.clear();
+}
+
+bool world_render_gl(GlRenderer &r, Api api, const WorldFrame &f, const WorldBake &b, const WorldPass &p, ImageF *out,
+                     std::string *err, double *draw_ms) {
+  WorldGl g;
+  if (!world_gl_setup(r, api, f, b, p, &g, err)) return false;
+  const bool ok = world_gl_draw(r, g, f, out, err, draw_ms);
+  world_gl_release(r, &g);
+  return ok;
 }
 
 void world_render_cpu(const WorldFrame &f, const WorldBake &b, const WorldPass &p, ImageF *out, int threads) {

@@ -16,7 +16,18 @@ struct WorldPass {
   bool nearest_cube = false;
 };
 
-// GL; *draw_ms (optional) receives the summed draw time of the passes.
+// GL programs and textures of every probe pass, set up once for repeated draws (timing).
+struct WorldGl {
+  std::vector<GlFrameProgram> programs;
+  std::vector<FamilyInputs> inputs;
+};
+bool world_gl_setup(GlRenderer &r, Api api, const WorldFrame &f, const WorldBake &b, const WorldPass &p, WorldGl *g,
+                    std::string *err);
+// *draw_ms (optional) receives the summed draw time of the passes.
+bool world_gl_draw(GlRenderer &r, const WorldGl &g, const WorldFrame &f, ImageF *out, std::string *err,
+                   double *draw_ms = nullptr);
+void world_gl_release(GlRenderer &r, WorldGl *g);
+// Setup, one draw, release.
 bool world_render_gl(GlRenderer &r, Api api, const WorldFrame &f, const WorldBake &b, const WorldPass &p, ImageF *out,
                      std::string *err, double *draw_ms = nullptr);
 // C float32 twin (threads: 0 = all cores).

@@ -6,7 +6,8 @@
 //   0 float    linear radiance (an fp16 texture where half floats filter)
 //   1 "4.12"   16-bit unorm holding radiance / 16, range [0, 16) (MAX_HDR_OVERBRIGHT)
 //   2 LDR      gamma-encoded and pre-divided by overbright 2: radiance = (2 t)^2.2
-//              (GammaToLinear(2c), the overbright-2 decode of common_vs_fxc.h)
+//              (GammaToLinear(2c), the overbright-2 decode of common_vs_fxc.h); ps20
+//              uses (2 t)^2 (ts_lightmap_ldr_to_linear_fast)
 //   3 RGBE     ColorRGBExp32 in an RGBA8 texture, exponent biased by 128:
 //              radiance = (c/255) 2^e = t.rgb * 2^(255 t.a - 128) (TexLightToLinear)
 // C twin: c_ref/common_lightmap.h
@@ -31,9 +32,18 @@ vec2 ts_lightmap_uv(vec2 uv, vec2 offset, float k) {
     return uv + k * offset;
 }
 
-// The gamma half of the LDR decode, applied to a sample (or to a blend of samples on ps20).
 vec3 ts_lightmap_ldr_to_linear(vec3 t) {
     return pow(t * TS_LIGHTMAP_OVERBRIGHT, vec3(TS_LIGHTMAP_LDR_GAMMA));
+}
+
+// ps20's LDR decode: (2 t)^2 for (2 t)^2.2, the approximation Source uses on the X360 for
+// overbright-2 vertex lighting (fact sheet section 2); 3 slots instead of a 9-slot vec3 pow.
+// The min() (4 = the decode of t = 1, so no stored value changes) also ends the chain of
+// multiplies: Mesa's GLSL compiler rebalances chains of 3+ multiplies (opt_rebalance_tree),
+// and base * (s * s) * tint would be regrouped in a way the twin would have to guess.
+vec3 ts_lightmap_ldr_to_linear_fast(vec3 t) {
+    vec3 s = t * TS_LIGHTMAP_OVERBRIGHT;
+    return min(s * s, TS_LIGHTMAP_OVERBRIGHT * TS_LIGHTMAP_OVERBRIGHT);
 }
 
 vec3 ts_lightmap_decode(vec4 t, int encoding) {
