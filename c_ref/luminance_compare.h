@@ -13,7 +13,7 @@ extern "C" {
 enum lc_slot { LC_SLOT_COLOR = 0, LC_SLOT_RANGE = 1, LC_SLOTS = 2, LC_PIXEL_SLOTS = 1 };
 
 typedef struct {
-  int input_encoding; /* INPUT_ENCODING: 0 linear x tone-map scale, 1 sRGB-encoded */
+  int input_encoding; /* INPUT_ENCODING: 0 linear x tone-map scale, 1 sRGB-encoded, 2 luminance image (.r) */
 } lc_variant;
 
 ts_vec4f luminance_compare_f(const lc_variant *v, const ts_vec4f rec[LC_SLOTS]);

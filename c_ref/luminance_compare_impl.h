@@ -2,6 +2,7 @@
  * shaders/luminance_compare.fs statement by statement. Instantiated by luminance_compare.c. */
 
 static TS_REAL FN(lc_lum)(const lc_variant *v, V3 c, TS_REAL tscale) {
+  if (v->input_encoding == 2) return c.x * tscale;
   if (v->input_encoding == 1) c = FN(srgb_decode3)(c);
   return FN(luminance)(c) * tscale;
 }

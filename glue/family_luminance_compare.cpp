@@ -90,9 +90,9 @@ void hard_pixel(Rng &r, int c, int encoding, ts_vec4f rec[LC_SLOTS]) {
   }
 }
 
-// One hard set serves both INPUT_ENCODING variants. Exact bucket edges depend on the
-// encoding (they are computed with the twin), so each edge case alternates between an
-// edge of the linear variant and an edge of the sRGB variant.
+// One hard set serves every INPUT_ENCODING variant. Exact bucket edges depend on the
+// encoding (they are computed with the twin), so each edge case cycles through an edge
+// of the linear, the sRGB and the luminance-image variant.
 void make_inputs(InputSet set, int w, int h, uint32_t seed, FamilyInputs *out) {
   out->resize(w, h, LC_SLOTS);
   out->case_names.clear();
@@ -106,9 +106,11 @@ void make_inputs(InputSet set, int w, int h, uint32_t seed, FamilyInputs *out) {
       } else {
         const int idx = y * w + x;
         const int c = idx % kNumHardCases;
-        const int enc = (idx / kNumHardCases) % 2;
+        const int enc = (idx / kNumHardCases) % 3;
         hard_pixel(r, c, enc, rec);
-        out->case_names.push_back(std::string(kHardCases[c]) + (enc ? " (edge of the sRGB variant)" : " (edge of the linear variant)"));
+        static const char *const kEdgeOf[3] = {" (edge of the linear variant)", " (edge of the sRGB variant)",
+                                               " (edge of the luminance-image variant)"};
+        out->case_names.push_back(std::string(kHardCases[c]) + kEdgeOf[enc]);
       }
       for (int k = 0; k < LC_SLOTS; ++k) out->set_slot(x, y, k, rec[k]);
     }

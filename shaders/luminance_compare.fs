@@ -7,7 +7,8 @@
 // A marked pixel writes 1; every other pixel is discarded, so that an occlusion
 // query counts exactly the marked pixels (glue/luminance_histogram.cpp).
 // INPUT_ENCODING 0: the float path's linear HDR frame, scaled by the tone-map scale;
-// 1: the integer path's sRGB-encoded RGBA8 frame, decoded to linear (tscale = 1).
+// 1: the integer path's sRGB-encoded RGBA8 frame, decoded to linear (tscale = 1);
+// 2: a luminance image (luminance_smooth.fs), lum = r * tscale (tscale = 1).
 // Variants: luminance_compare.variants. C twin: c_ref/luminance_compare.c.
 //------------------------------------------------------------------------------
 #include "common_math.glsl"
@@ -24,12 +25,16 @@ TS_DECLARE_FRAG_COLOR
 void main() {
     vec3 c = TS_PIXEL_INPUT(LC_SLOT_COLOR, ts_frame_texel(u_frame, gl_FragCoord.xy, u_frame_size)).rgb;
     vec4 range = TS_UNIFORM_INPUT(LC_SLOT_RANGE, u_range);
+#if INPUT_ENCODING == 2
+    float lum = c.r * range.z;
+#else
 #if INPUT_ENCODING == 1
     c = ts_srgb_decode3(c);
 #endif
     // dot(fb * tscale, w) written as dot(fb, w) * tscale: NIR factors the scalar out of
     // the dot product when the product has one use, so this is the form llvmpipe runs.
     float lum = ts_luminance(c) * range.z;
+#endif
     float mark = ts_in_bucket(lum, range.x, range.y);
     if (mark < 0.5) discard;
     TS_FRAG_COLOR = vec4(mark);
