@@ -6,7 +6,7 @@ BUILD    ?= build
 SAN      ?=
 CC       ?= gcc
 CXX      ?= g++
-PKGS     := OpenEXR libpng
+PKGS     := OpenEXR libpng OpenColorIO
 OPT      := -O2 -g
 ifeq ($(SAN),1)
 OPT      := -O1 -g -fsanitize=address,undefined -fno-omit-frame-pointer -fno-sanitize-recover=undefined
