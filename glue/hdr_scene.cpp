@@ -37,15 +37,15 @@ SphereScene hdr_daylight_scene(const std::string &probe_path, std::string *note)
   s.lights.clear();
   ts_light sun = {};
   sun.type = TS_LIGHT_DIRECTIONAL;
-  sun.color[0] = 1.6f;
-  sun.color[1] = 1.45f;
-  sun.color[2] = 1.2f;
+  sun.color[0] = 0.9f;
+  sun.color[1] = 0.82f;
+  sun.color[2] = 0.68f;
   const float d[3] = {-0.45f, -0.55f, -0.70f};
   const float n = std::sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);
   for (int i = 0; i < 3; ++i) sun.dir[i] = d[i] / n;
   s.lights.push_back(sun);
   // A hot spot on the wall, well above 1 after any sensible exposure: the bloom's source.
-  ts_light spot = point_light(16.f, 12.f, 8.f, 3.5f, 2.5f, 1.5f, 1.f, 0.f, 0.6f);
+  ts_light spot = point_light(250.f, 190.f, 120.f, 3.5f, 2.5f, 1.5f, 1.f, 0.f, 0.6f);
   spot.type = TS_LIGHT_SPOT;
   spot.dir[0] = 0.2f;
   spot.dir[1] = 0.1f;
@@ -53,8 +53,8 @@ SphereScene hdr_daylight_scene(const std::string &probe_path, std::string *note)
   const float m = std::sqrt(spot.dir[0] * spot.dir[0] + spot.dir[1] * spot.dir[1] + 1.f);
   for (int i = 0; i < 3; ++i) spot.dir[i] /= m;
   spot.spot_exponent = 1.f;
-  spot.cos_inner = std::cos(0.12f);
-  spot.cos_outer = std::cos(0.30f);
+  spot.cos_inner = std::cos(0.06f);
+  spot.cos_outer = std::cos(0.20f);
   s.lights.push_back(spot);
   s.lights.push_back(point_light(0.1f, 0.15f, 0.35f, -5.f, -1.f, 3.f, 0.5f, 0.1f, 0.05f));  // cool bounce
   float ambient[6][3];
@@ -62,11 +62,11 @@ SphereScene hdr_daylight_scene(const std::string &probe_path, std::string *note)
   std::string err;
   if (cube_from_probe(probe_path, "u_envmap", 8, &cube, ambient, &err)) {
     for (int i = 0; i < 6; ++i)
-      for (int c = 0; c < 3; ++c) s.ambient[i][c] = 0.25f * ambient[i][c];
+      for (int c = 0; c < 3; ++c) s.ambient[i][c] = 0.12f * ambient[i][c];
     *note = "sky ambient cube from " + probe_path;
   } else {
-    const float sky[6][3] = {{0.15f, 0.16f, 0.18f}, {0.12f, 0.14f, 0.15f}, {0.28f, 0.32f, 0.42f},
-                             {0.08f, 0.06f, 0.05f}, {0.15f, 0.15f, 0.16f}, {0.10f, 0.10f, 0.11f}};
+    const float sky[6][3] = {{0.07f, 0.08f, 0.09f}, {0.06f, 0.07f, 0.08f}, {0.14f, 0.16f, 0.21f},
+                             {0.04f, 0.03f, 0.03f}, {0.07f, 0.07f, 0.08f}, {0.05f, 0.05f, 0.06f}};
     for (int i = 0; i < 6; ++i)
       for (int c = 0; c < 3; ++c) s.ambient[i][c] = sky[i][c];
     *note = "procedural sky ambient cube (" + err + ")";
@@ -78,9 +78,9 @@ SphereScene hdr_daylight_scene(const std::string &probe_path, std::string *note)
 SphereScene hdr_dark_room_scene() {
   SphereScene s = default_sphere_scene();
   s.lights.clear();
-  s.lights.push_back(point_light(0.35f, 0.26f, 0.16f, -2.f, 2.f, 2.5f, 0.5f, 0.2f, 0.1f));  // a dim lamp
-  const float room[6][3] = {{0.010f, 0.009f, 0.008f}, {0.008f, 0.007f, 0.006f}, {0.012f, 0.011f, 0.010f},
-                            {0.005f, 0.004f, 0.004f}, {0.010f, 0.009f, 0.008f}, {0.006f, 0.005f, 0.005f}};
+  s.lights.push_back(point_light(0.10f, 0.075f, 0.045f, -2.f, 2.f, 2.5f, 0.5f, 0.2f, 0.1f));  // a dim lamp
+  const float room[6][3] = {{0.004f, 0.0036f, 0.0032f}, {0.003f, 0.0028f, 0.0024f}, {0.005f, 0.0045f, 0.004f},
+                            {0.002f, 0.0016f, 0.0016f}, {0.004f, 0.0036f, 0.0032f}, {0.0024f, 0.002f, 0.002f}};
   for (int i = 0; i < 6; ++i)
     for (int c = 0; c < 3; ++c) s.ambient[i][c] = room[i][c];
   s.tone_map_scale = 1.f;
