@@ -5,6 +5,8 @@
 #include "family_world_lighting.h"
 
 #include <cmath>
+#include <cstdio>
+#include <cstdlib>
 #include <limits>
 
 namespace {
@@ -12,10 +14,13 @@ namespace {
 const float kNaN = std::numeric_limits<float>::quiet_NaN();
 const float kInf = std::numeric_limits<float>::infinity();
 
-const TextureDesc *find_tex(const FamilyInputs &in, const char *sampler) {
+// The texture bound to `sampler`. Inputs without it are a programming error of the caller
+// (every builder of world_lighting inputs sets all five): stop with a message, never sample garbage.
+const TextureDesc &find_tex(const FamilyInputs &in, const char *sampler) {
   for (const TextureDesc &t : in.textures)
-    if (t.sampler == sampler) return &t;
-  return nullptr;
+    if (t.sampler == sampler) return t;
+  fprintf(stderr, "world_lighting: the inputs have no texture for sampler '%s'\n", sampler);
+  abort();
 }
 
 struct TexViews {
@@ -23,12 +28,11 @@ struct TexViews {
   ts_texcube envmap{};
   wl_textures t{};
   explicit TexViews(const FamilyInputs &in) {
-    // A missing texture is a programming error of the caller: fail loudly, never sample garbage.
-    base = tex2d_of(*find_tex(in, "u_base"));
-    normalmap = tex2d_of(*find_tex(in, "u_normalmap"));
-    lightmap = tex2d_of(*find_tex(in, "u_lightmap"));
-    mask = tex2d_of(*find_tex(in, "u_envmap_mask"));
-    envmap = texcube_of(*find_tex(in, "u_envmap"));
+    base = tex2d_of(find_tex(in, "u_base"));
+    normalmap = tex2d_of(find_tex(in, "u_normalmap"));
+    lightmap = tex2d_of(find_tex(in, "u_lightmap"));
+    mask = tex2d_of(find_tex(in, "u_envmap_mask"));
+    envmap = texcube_of(find_tex(in, "u_envmap"));
     t.base = &base;
     t.normalmap = &normalmap;
     t.lightmap = &lightmap;

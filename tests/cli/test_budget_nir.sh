@@ -67,7 +67,7 @@ crashed() {
 }
 
 # ---- JSON, ps20 ----------------------------------------------------------------------
-run budget --nir --json --tier ps20
+run budget --nir --json --tier ps20 --shader model_lighting
 if ! crashed nir_json; then
   if [ "$RC" -eq 0 ]; then pass nir_json_status; else fail nir_json_status "status $RC: $(head -n 3 "$ERR")"; fi
   # The dump goes to the capture file, never to the real stderr.
@@ -113,7 +113,7 @@ if ! crashed nir_json; then
 fi
 
 # ---- human output, every tier (the band must hold for all 84 variants) ----------------
-run budget --nir
+run budget --nir --shader model_lighting
 if ! crashed nir_human; then
   if [ "$RC" -eq 0 ]; then pass nir_human_status; else fail nir_human_status "status $RC: $(grep -m 3 -E '^(FAIL|OVER|  )' "$OUT" | tr '\n' ';')"; fi
   total=$(grep -cE '^(ok  |OVER|FAIL)' "$OUT")

@@ -313,7 +313,7 @@ if ! crashed assemble_by_name_essl300; then
   then pass assemble_by_name_essl300; else fail assemble_by_name_essl300 "status $RC; $(err1)"; fi
 fi
 
-run budget --json --tier ps20
+run budget --json --tier ps20 --shader $ML
 if ! crashed budget_json; then
   cp "$OUT" "$TMP/budget.json"
   # documented: status 1 when a variant is over budget, 0 otherwise
@@ -329,7 +329,7 @@ if ! crashed budget_json; then
   else fail budget_json_ps20_limits "ps20 limits are not 64/32/96"; fi
 fi
 
-run conform --json --size 4 --tier ps20 --backend osmesa
+run conform --json --size 4 --tier ps20 --backend osmesa --shader $ML
 if ! crashed conform_json; then
   cp "$OUT" "$TMP/conform.json"
   if [ "$RC" -eq 0 ]; then pass conform_json_status; else fail conform_json_status "status $RC: $(err1)"; fi

@@ -451,7 +451,8 @@ void check_gl_cubes() {
   kWorldLightingFamily.make_inputs(InputSet::Random, 32, 32, 99, &in);
   for (TextureDesc &t : in.textures)
     if (t.kind == TexKind::Cube) t.linear = true;
-  const BackendApi cfgs[] = {{Backend::OSMesa, Api::GL33}, {Backend::EGL, Api::GL33}, {Backend::EGL, Api::GLES3}};
+  const BackendApi cfgs[] = {{Backend::OSMesa, Api::GL33}, {Backend::EGL, Api::GL33}, {Backend::EGL, Api::GLES3},
+                             {Backend::EGL, Api::GLES2}};
   for (const BackendApi &c : cfgs) {
     auto ctx = GlContext::create(c.backend, c.api, &err);
     const std::string tag = std::string(backend_name(c.backend)) + "/" + api_name(c.api);
