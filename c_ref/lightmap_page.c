@@ -1,6 +1,8 @@
 /* c_ref/lightmap_page.c: lightmap page packing and addressing (see lightmap_page.h). */
 #include "lightmap_page.h"
 
+#include "lightmap_encoding.h"
+
 #include <stdio.h>
 #include <string.h>
 
@@ -69,4 +71,30 @@ void lm_page_fill_borders(const lm_face_place *p, int page_w, float *rgba) {
       }
     }
   }
+}
+
+void lm_page_put_bsp_face(const lm_face_place *p, int page_w, const unsigned char *rgbe, float *rgba) {
+  const int lw = p->block_w - 2, lh = p->block_h - 2;
+  for (int k = 0; k < p->count; ++k) {
+    for (int j = 0; j < lh; ++j) {
+      for (int i = 0; i < lw; ++i) {
+        const unsigned char *c = &rgbe[(((size_t)k * lh + j) * lw + i) * 4];
+        ts_rgbe v;
+        double lin[3];
+        v.r = c[0];
+        v.g = c[1];
+        v.b = c[2];
+        v.exponent = (signed char)c[3];
+        ts_rgbe_decode(v, lin);
+        int tx, ty;
+        lm_page_texel(p, k, i, j, &tx, &ty);
+        float *t = &rgba[((size_t)ty * page_w + tx) * 4];
+        t[0] = (float)lin[0];
+        t[1] = (float)lin[1];
+        t[2] = (float)lin[2];
+        t[3] = 1.0f;
+      }
+    }
+  }
+  lm_page_fill_borders(p, page_w, rgba);
 }

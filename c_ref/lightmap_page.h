@@ -36,6 +36,14 @@ void lm_page_texel(const lm_face_place *p, int k, int i, int j, int *tx, int *ty
  * and 1 are the centres of the first and last luxel columns. */
 void lm_page_uv(const lm_face_place *p, int page_w, int page_h, double a, double b, float uv[2]);
 
+/* A face's luxels as a BSP stores them for one light style (fact sheet section 1,
+ * PrecompLightmapOffsets/FinalLightFace): `count` blocks one after another (flat, then b0,
+ * b1, b2 for a bumped face), each luxels_w * luxels_h ColorRGBExp32 values, row by row (s
+ * fastest; the row order is INFERRED, the fact sheet gives only the block offsets). Decodes
+ * them (TexLightToLinear, c 2^e / 255) into the float32 page (rgb; alpha set to 1) at the
+ * face's place and fills its borders. `rgbe` holds 4 bytes per luxel: r, g, b, exponent. */
+void lm_page_put_bsp_face(const lm_face_place *p, int page_w, const unsigned char *rgbe, float *rgba);
+
 /* Copies each block's edge luxels into its border (RGBA32F page, rows in GL order). */
 void lm_page_fill_borders(const lm_face_place *p, int page_w, float *rgba);
 

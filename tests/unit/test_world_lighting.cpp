@@ -393,6 +393,24 @@ void check_page() {
   lm_page_fill_borders(&p[0], W, page.data());
   check(page[(static_cast<size_t>(ty - 1) * W + tx - 1) * 4] == 7.f && page[(static_cast<size_t>(ty) * W + tx - 1) * 4] == 7.f,
         "page: borders copy the edge luxels");
+  // A BSP face's RGBE blocks (flat, b0, b1, b2; 8x8 luxels each) decoded into the page.
+  std::vector<unsigned char> bsp(4 * 64 * 4);
+  for (int k = 0; k < 4; ++k)
+    for (int l = 0; l < 64; ++l) {
+      unsigned char *c = &bsp[(static_cast<size_t>(k) * 64 + l) * 4];
+      c[0] = static_cast<unsigned char>(128 + l);
+      c[1] = static_cast<unsigned char>(k);
+      c[2] = 0;
+      c[3] = static_cast<unsigned char>(static_cast<signed char>(k - 2));
+    }
+  std::fill(page.begin(), page.end(), 0.f);
+  lm_page_put_bsp_face(&p[2], W, bsp.data(), page.data());
+  lm_page_texel(&p[2], 3, 5, 2, &tx, &ty);  // block 3 (b2), luxel (5, 2): l = 21, e = 1
+  const float *q = &page[(static_cast<size_t>(ty) * W + tx) * 4];
+  check(q[0] == (128 + 21) * 2.f / 255.f && q[1] == 3 * 2.f / 255.f && q[3] == 1.f,
+        "page: a BSP face's RGBE blocks decode to c 2^e / 255 at uv + k offset", num(q[0]) + " " + num(q[1]));
+  lm_page_texel(&p[2], 0, 0, 0, &tx, &ty);
+  check(page[(static_cast<size_t>(ty - 1) * W + tx - 1) * 4] == 128 * 0.25f / 255.f, "page: BSP face borders filled");
   lm_face_size big = {40, 4, 1};
   rc = lm_page_pack(W, H, &big, 1, p, err, sizeof err);
   check(rc == -1 && std::string(err).find("face 0") != std::string::npos, "page: a face too wide is an error naming it",
