@@ -2,6 +2,7 @@
 // .raw; bake a 3D LUT from an OpenColorIO transform (a LUT/CDL file, config looks, CDL
 // values); convert between .cube and .raw. Bad input files: "tiershade lut: <file>[:<line>]:
 // <problem>", exit status 2, nothing written (glue/lut_io.h writes atomically).
+#include <cctype>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -52,7 +53,9 @@ bool parse_triple(const std::string &s, double v[3]) {
 void inspect(const Args &a, const std::string &path) {
   std::string err;
   std::vector<float> values;
-  const bool raw = path.size() >= 4 && path.compare(path.size() - 4, 4, ".raw") == 0;
+  std::string lower = path;
+  for (char &c : lower) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  const bool raw = lower.size() >= 4 && lower.compare(lower.size() - 4, 4, ".raw") == 0;
   if (raw) {
     Lut3D l;
     if (!read_source_raw(path, &l, &err)) a.fail(err);
@@ -80,8 +83,10 @@ void inspect(const Args &a, const std::string &path) {
 }
 
 int write_lut(const Args &a, const std::string &out, const Lut3D &l) {
-  const bool raw = out.size() >= 4 && out.compare(out.size() - 4, 4, ".raw") == 0;
-  const bool cube = out.size() >= 5 && out.compare(out.size() - 5, 5, ".cube") == 0;
+  std::string lower = out;
+  for (char &c : lower) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  const bool raw = lower.size() >= 4 && lower.compare(lower.size() - 4, 4, ".raw") == 0;
+  const bool cube = lower.size() >= 5 && lower.compare(lower.size() - 5, 5, ".cube") == 0;
   if (!raw && !cube) a.fail(out + ": the output must end in .cube or .raw");
   if (raw && l.n != kSourceRawEdge)
     a.fail(out + ": a Source .raw holds a 32^3 LUT, this one has edge " + std::to_string(l.n));
