@@ -21,7 +21,7 @@
 struct HdrSettings {
   float tone_map_scale = 1.f;
   float bloom_amount = 0.3f;    // floatcombine's bloom amount (mat_bloomscale smoothed)
-  float bloom_exponent = 1.f;   // floatcombine's lum(bloom)^exp
+  float bloom_exponent = 2.2f;  // floatcombine's lum(bloom)^exp (the SDK's value is not in the fact sheet; 2.2 as r_bloomtintexponent)
 };
 
 // The model_lighting variant a path uses: sm3, albedo texture, half-Lambert, no Phong,
