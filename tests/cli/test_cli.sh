@@ -188,7 +188,7 @@ expect_fail unknown_shader_conform  2 "no_such_shader"                        --
 expect_fail unknown_shader_probe    2 "no_such_shader"                        -- probe --shader no_such_shader --variant 0
 expect_fail unknown_variant_index   2 "'9999'|$ML"                            -- probe --shader $ML --variant 9999
 expect_fail unknown_variant_name    2 "'ps20:BOGUS=1'"                        -- assemble --shader $ML --variant ps20:BOGUS=1
-expect_fail unknown_variant_conform 2 "'ps20:ALBEDO_TEXTURE=0'"               -- conform --shader $ML --variant ps20:ALBEDO_TEXTURE=0 --backend osmesa
+expect_fail unknown_variant_conform 2 "'ps20:ALBEDO_TEXTURE=7'"               -- conform --shader $ML --variant ps20:ALBEDO_TEXTURE=7 --backend osmesa
 expect_fail variant_without_shader  2 "--variant|--shader"                    -- variants --variant 0
 expect_fail variant_without_shader_budget 2 "--variant|--shader"              -- budget --variant 0
 expect_fail backend_cpu_conform     2 "--backend"                             -- conform --backend cpu --tier ps20 --size 4
@@ -279,7 +279,7 @@ if ! crashed variants_count; then
   else fail variants_count "status $RC; stdout: $(head -c 80 "$OUT")"; fi
 fi
 TOTAL=$(head -n 1 "$OUT")
-for tc in ps20:12 ps2b:60 sm3:12; do
+for tc in ps20:12 ps2b:220 sm3:44; do
   run variants --count --shader $ML --tier "${tc%%:*}"
   crashed "variants_count_${tc%%:*}" && continue
   if [ "$RC" -eq 0 ] && [ "$(cat "$OUT")" = "${tc##*:}" ]; then pass "variants_count_${tc%%:*}"
@@ -287,7 +287,7 @@ for tc in ps20:12 ps2b:60 sm3:12; do
 done
 run variants --list --shader $ML --tier sm3
 if ! crashed variants_list; then
-  if [ "$RC" -eq 0 ] && [ "$(tail -n 1 "$OUT")" = "12 variants" ] && grep -q '^  sm3:' "$OUT"; then pass variants_list
+  if [ "$RC" -eq 0 ] && [ "$(tail -n 1 "$OUT")" = "44 variants" ] && grep -q '^  sm3:' "$OUT"; then pass variants_list
   else fail variants_list "status $RC; last line: $(tail -n 1 "$OUT")"; fi
 fi
 

@@ -753,8 +753,8 @@ void test_model_lighting() {
   const auto ps2b = enumerate_variants(*ml, {Tier::PS2B}, &err);
   const auto sm3 = enumerate_variants(*ml, {Tier::SM3}, &err);
   check(ps20.size() == 12, "model_lighting.ps20_12_variants", std::to_string(ps20.size()));
-  check(ps2b.size() == 60, "model_lighting.ps2b_60_variants", std::to_string(ps2b.size()));
-  check(sm3.size() == 12, "model_lighting.sm3_12_variants", std::to_string(sm3.size()));
+  check(ps2b.size() == 220, "model_lighting.ps2b_220_variants", std::to_string(ps2b.size()));
+  check(sm3.size() == 44, "model_lighting.sm3_44_variants", std::to_string(sm3.size()));
   bool ps20_rules = !ps20.empty();
   for (const auto &v : ps20)
     if (v.value("OUTPUT_MODE", -1) != 0 || v.value("NUM_LIGHTS", -1) < 0 || v.value("NUM_LIGHTS", -1) > 2)
@@ -765,7 +765,7 @@ void test_model_lighting() {
     if (v.value("NUM_LIGHTS", -1) != -1) sm3_loop = false;
   check(sm3_loop, "model_lighting.sm3_has_no_NUM_LIGHTS_combo");
   const auto all = enumerate_variants(*ml, all_tiers(), &err);
-  check(all.size() == 84, "model_lighting.all_84", std::to_string(all.size()));
+  check(all.size() == 276, "model_lighting.all_276", std::to_string(all.size()));
   check(!ps20.empty() && ps20[0].name() == "ps20:ALBEDO_TEXTURE=0,HALF_LAMBERT=0,OUTPUT_MODE=0,NUM_LIGHTS=0" &&
             ps20[1].name() == "ps20:ALBEDO_TEXTURE=0,HALF_LAMBERT=0,OUTPUT_MODE=0,NUM_LIGHTS=1",
         "model_lighting.first_names", ps20.empty() ? "" : ps20[0].name() + " " + ps20[1].name());
@@ -773,24 +773,32 @@ void test_model_lighting() {
   // find_variant by name and by index in the all-tier list.
   Variant v;
   err.clear();
-  const std::string name = "ps2b:ALBEDO_TEXTURE=1,HALF_LAMBERT=0,OUTPUT_MODE=2,NUM_LIGHTS=4";
+  const std::string name =
+      "ps2b:ALBEDO_TEXTURE=1,HALF_LAMBERT=0,OUTPUT_MODE=2,PHONG=0,PHONG_EXPONENT_MAP=0,RIM_LIGHT=0,ENVMAP=0,LIGHT_WARP=0,"
+      "NUM_LIGHTS=4";
   bool f = find_variant(decls, "model_lighting", name, &v, &err);
   check(f && v.name() == name && v.tier == Tier::PS2B && v.value("OUTPUT_MODE") == 2 && v.value("NUM_LIGHTS") == 4,
         "find_variant.by_name", err);
+  // A short name: the combos left out take their minimum.
+  f = find_variant(decls, "model_lighting", "ps2b:ALBEDO_TEXTURE=1,OUTPUT_MODE=2,NUM_LIGHTS=4", &v, &err);
+  check(f && v.name() == name, "find_variant.by_short_name", f ? v.name() : err);
+  err.clear();
+  f = find_variant(decls, "model_lighting", "ps2b:ALBEDO_TEXTURE=1,NO_SUCH_COMBO=1", &v, &err);
+  check(!f && contains(err, "no variant"), "find_variant.short_name_unknown_combo", "message: " + err);
   f = find_variant(decls, "model_lighting", "12", &v, &err);
   check(f && v.name() == all.at(12).name() && v.tier == Tier::PS2B, "find_variant.by_index_12",
         f ? v.name() : err);
   f = find_variant(decls, "model_lighting", "0", &v, &err);
   check(f && v.name() == all.at(0).name(), "find_variant.by_index_0", f ? v.name() : err);
-  f = find_variant(decls, "model_lighting", "83", &v, &err);
-  check(f && v.name() == all.at(83).name() && v.tier == Tier::SM3, "find_variant.by_index_last", f ? v.name() : err);
+  f = find_variant(decls, "model_lighting", "275", &v, &err);
+  check(f && v.name() == all.at(275).name() && v.tier == Tier::SM3, "find_variant.by_index_last", f ? v.name() : err);
   err.clear();
-  f = find_variant(decls, "model_lighting", "84", &v, &err);
-  check(!f && contains(err, "'84'") && contains(err, "model_lighting"), "find_variant.index_out_of_range_message",
+  f = find_variant(decls, "model_lighting", "276", &v, &err);
+  check(!f && contains(err, "'276'") && contains(err, "model_lighting"), "find_variant.index_out_of_range_message",
         "message: " + err);
   err.clear();
-  f = find_variant(decls, "model_lighting", "ps20:ALBEDO_TEXTURE=0", &v, &err);
-  check(!f && contains(err, "no variant 'ps20:ALBEDO_TEXTURE=0'"), "find_variant.unknown_name_message",
+  f = find_variant(decls, "model_lighting", "ps20:ALBEDO_TEXTURE=7", &v, &err);
+  check(!f && contains(err, "no variant 'ps20:ALBEDO_TEXTURE=7'"), "find_variant.unknown_name_message",
         "message: " + err);
   err.clear();
   f = find_variant(decls, "model_lighting", "ps20:ALBEDO_TEXTURE=0,HALF_LAMBERT=0,OUTPUT_MODE=1,NUM_LIGHTS=0", &v, &err);
