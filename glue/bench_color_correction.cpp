@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <memory>
 #include <sstream>
 
 #include "budget.h"
@@ -83,24 +84,33 @@ bool run(const BenchOptions &opt, std::string *md, std::string *err) {
   // A frame costs tens of ms: at least 21 draws per median (the machine may be shared).
   const int draws = std::max(opt.runs, 21);
 
-  auto gl_time = [&](const Variant &v, FamilyInputs &in, ImageF *img, double *ms) -> bool {
-    auto ctx = GlContext::create(Backend::OSMesa, Api::GL33, err);
-    if (!ctx) return false;
-    GlRenderer r(*ctx);
+  // Every timed program lives in one OSMesa GL 3.3 context; after the first (JIT) draw of
+  // each, the draws go round-robin, one per program per round, so that a change of machine
+  // load during the run moves every row alike and the ratios stay comparable.
+  std::string cerr;
+  auto ctx = GlContext::create(Backend::OSMesa, Api::GL33, &cerr);
+  if (!ctx) {
+    *err = "OSMesa GL 3.3: " + cerr;
+    return false;
+  }
+  GlRenderer renderer(*ctx);
+  struct Timed {
     GlFrameProgram fp;
-    if (!gl_frame_setup(r, Api::GL33, *fam, v, in, &fp, err)) return false;
-    double t = 0;
-    std::vector<double> ts;
-    bool ok = gl_frame_draw(r, fp, in, img, &t, err);  // first draw: JIT, not timed
-    for (int i = 0; ok && i < draws; ++i) {
-      ok = gl_frame_draw(r, fp, in, img, &t, err);
-      ts.push_back(t);
-    }
-    gl_frame_release(r, &fp);
-    *ms = median(ts);
-    return ok;
+    FamilyInputs in;
+    std::vector<double> ms;
+    double *out;
   };
-
+  std::vector<std::unique_ptr<Timed>> timed;
+  auto add_timed = [&](const Variant &v, FamilyInputs in, ImageF *img, double *out) -> bool {
+    auto t = std::make_unique<Timed>();
+    t->in = std::move(in);
+    t->out = out;
+    if (!gl_frame_setup(renderer, Api::GL33, *fam, v, t->in, &t->fp, err)) return false;
+    double ms = 0;
+    if (!gl_frame_draw(renderer, t->fp, t->in, img, &ms, err)) return false;  // JIT, not timed
+    timed.push_back(std::move(t));
+    return true;
+  };
   std::vector<Row> rows;
   for (int n : {16, 32, 64})
     for (int atlas : {0, 1})
@@ -123,7 +133,7 @@ bool run(const BenchOptions &opt, std::string *md, std::string *err) {
     cc_frame_inputs(frame, w1, 0, row.n, &in);
     cc_set_luts(&in, {&lut}, !row.shader);  // shader filtering binds NEAREST (docs/color_correction.md)
     ImageF gl, cpu;
-    if (!gl_time(v, in, &gl, &row.ms)) return false;
+    if (!add_timed(v, in, &gl, &row.ms)) return false;
     cpu_render_frame(*fam, v, in, &cpu);
     row.mismatched = 0;
     for (size_t i = 0; i < gl.rgba.size(); ++i)
@@ -146,13 +156,10 @@ bool run(const BenchOptions &opt, std::string *md, std::string *err) {
       row.model_max = m;
       row.model_mean = s / static_cast<double>(np);
     }
-    fprintf(stderr, "bench: color_correction %d^3 %s %s%s: %.3f ms, dE00 max %.3f mean %.4f\n", row.n,
-            row.atlas ? "atlas" : "3D", row.shader ? "shader" : "hardware", row.raw8 ? " 8-bit" : "", row.ms,
-            row.de_max, row.de_mean);
+    fprintf(stderr, "bench: color_correction %d^3 %s %s%s: dE00 max %.3f mean %.4f\n", row.n,
+            row.atlas ? "atlas" : "3D", row.shader ? "shader" : "hardware", row.raw8 ? " 8-bit" : "", row.de_max,
+            row.de_mean);
   }
-  double base_ms = 0;
-  for (const Row &r : rows)
-    if (r.n == 32 && !r.atlas && !r.shader && !r.raw8) base_ms = r.ms;
 
   // The three example transforms at Source's 32^3, hardware 3D.
   struct TRow {
@@ -182,29 +189,45 @@ bool run(const BenchOptions &opt, std::string *md, std::string *err) {
     double hw_ms, shader_ms;
   };
   std::vector<LRow> lrows;
+  lrows.reserve(5);
   {
     std::vector<Lut3D> luts(4);
     for (int i = 0; i < 4; ++i)
       if (!bake_lut(ex[i % ex.size()].transform, 32, &luts[i], err)) return false;
     const float w[4] = {0.25f, 0.25f, 0.25f, 0.25f};
     for (int k = 0; k <= 4; ++k) {
-      LRow lr{k, 0, 0};
+      lrows.push_back({k, 0, 0});
+      LRow &lr = lrows.back();  // stable: reserved above
       for (int shader : {0, 1}) {
-        if (k == 0 && shader) {
-          lr.shader_ms = lr.hw_ms;
-          continue;
-        }
+        if (k == 0 && shader) continue;  // no LUT: one program (copied after timing)
         Variant v;
         if (!find_variant(decls, "color_correction", variant_name(0, shader, k), &v, err)) return false;
         FamilyInputs in;
         cc_frame_inputs(frame, w, 0, 32, &in);
         cc_set_luts(&in, {&luts[0], &luts[1], &luts[2], &luts[3]}, !shader);
         ImageF gl;
-        if (!gl_time(v, in, &gl, shader ? &lr.shader_ms : &lr.hw_ms)) return false;
+        if (!add_timed(v, in, &gl, shader ? &lr.shader_ms : &lr.hw_ms)) return false;
       }
-      lrows.push_back(lr);
     }
   }
+
+  // Timing: round-robin over every program, then the median of each.
+  for (int round = 0; round < draws; ++round) {
+    for (auto &t : timed) {
+      ImageF img;
+      double ms = 0;
+      if (!gl_frame_draw(renderer, t->fp, t->in, &img, &ms, err)) return false;
+      t->ms.push_back(ms);
+    }
+  }
+  for (auto &t : timed) {
+    *t->out = median(t->ms);
+    gl_frame_release(renderer, &t->fp);
+  }
+  lrows[0].shader_ms = lrows[0].hw_ms;
+  double base_ms = 0;
+  for (const Row &r : rows)
+    if (r.n == 32 && !r.atlas && !r.shader && !r.raw8) base_ms = r.ms;
 
   std::ostringstream o;
   char b[512];
@@ -221,7 +244,8 @@ bool run(const BenchOptions &opt, std::string *md, std::string *err) {
     << "  measurement: llvmpipe filters RGBA32F in float, so its hardware rows equal its shader rows to rounding.\n"
     << "  Shader-filtered rows compute the weights in float on any GPU: the column repeats the measurement.\n"
     << "- **ms**: llvmpipe (OSMesa GL 3.3), median of " << draws
-    << " draws, glFinish included; **x**: ratio to the 32^3 hardware 3D row\n"
+    << " draws, glFinish included, the draws of all programs taken round-robin (so that load changes\n"
+    << "  during the run move every row alike); **x**: ratio to the 32^3 hardware 3D row\n"
     << "  of the same run. **GL = C**: channels where llvmpipe and the C twin differ (0 = bit-exact frame).\n\n"
     << "| LUT edge | storage | filtering | variant | slots alu+tex | dE00 max | dE00 mean | modelled 8-bit weights: max / mean | ms | x | GL = C |\n"
     << "|---|---|---|---|---|---|---|---|---|---|---|\n";
