@@ -136,7 +136,7 @@ void test_location() {
   const double l2 = ae_location_of_bright_fraction(&h, 0.02, -1);
   check(std::fabs(l2 - (hi - (0.01 / 0.99) * (hi - lo))) < 1e-12, "location: accumulates from the bright end",
         fmt("%g", l2));
-  // Sticky: 0.60 lies in bucket 11 ([0.5466, 0.6495]).
+  // Sticky: 0.60 lies in bucket 11 ([0.5700, 0.6495]).
   ae_settings s;
   ae_default_settings(&s);
   h = make_hist({{11, 10000}});
@@ -238,7 +238,9 @@ void test_static_convergence(double alpha, const std::string &label) {
   auto same = [&](int) -> const Scene & { return scene; };
   ae_state st;
   const auto scales = run_loop(same, 900, set, 1.0, alpha, &st);
-  // Converged: over the last 150 frames (5 s) the scale moves by less than 0.1 %.
+  // Converged: over the last 150 frames (5 s) the scale moves by less than 0.1 %. At a fixed
+  // point the sticky rule makes the target equal the current scale exactly, so the scale stops;
+  // 0.1 % leaves room only for the chase's geometric approach to a non-sticky fixed point.
   const double p2p = log2_peak_to_peak(scales, scales.size() - 150);
   check(p2p < std::log2(1.001), "controller (" + label + "): converges on a static scene (last 5 s within 0.1 %)",
         fmt("peak-to-peak %g stops, final scale %g", p2p, scales.back()));
@@ -252,13 +254,17 @@ void test_static_convergence(double alpha, const std::string &label) {
     full.measured_frame[b] = 0;
   }
   const double t = ae_target_scale(&full, &set, st.scale);
-  check(std::fabs(t / st.scale - 1.0) < 0.02, "controller (" + label + "): the converged exposure meets its own target",
+  check(std::fabs(t / st.scale - 1.0) < 0.001, "controller (" + label + "): the converged exposure meets its own target",
         fmt("target / scale = %g", t / st.scale));
-  // Also from far away on both sides (16x too dark, 16x too bright).
+  // Also from far away on both sides (16x too dark, 16x too bright). Tolerance: the sticky rule
+  // accepts any exposure that puts the 2 % point in the bucket holding 0.60, [(11/16)^1.5,
+  // (12/16)^1.5], a band log2((12/11)^1.5) = 0.19 stop wide, so the end points may differ by that.
+  const double band = 1.5 * std::log2(12.0 / 11.0);
   const auto lo = run_loop(same, 1500, set, st.scale / 16, alpha);
   const auto hi = run_loop(same, 1500, set, st.scale * 16, alpha);
-  check(std::fabs(std::log2(lo.back() / st.scale)) < 0.1 && std::fabs(std::log2(hi.back() / st.scale)) < 0.1,
-        "controller (" + label + "): reaches the same exposure from 4 stops below and above (within 0.1 stop)",
+  check(std::fabs(std::log2(lo.back() / st.scale)) < band && std::fabs(std::log2(hi.back() / st.scale)) < band,
+        "controller (" + label + "): reaches the same exposure from 4 stops below and above (within the 0.19-stop "
+        "sticky band)",
         fmt("from below %g, from above %g, reference %g", lo.back(), hi.back(), st.scale));
 }
 
