@@ -4,6 +4,7 @@
 
 BUILD    ?= build
 SAN      ?=
+JOBS     ?= $(shell nproc 2>/dev/null || echo 2)
 CC       ?= gcc
 CXX      ?= g++
 PKGS     := OpenEXR libpng OpenColorIO
@@ -73,16 +74,16 @@ $(BUILD)/tests/%: $(BUILD)/obj/tests/unit/%.o $(LIB_OBJ)
 # The README's test command: every unit test, conformance on both backends and all
 # APIs, the CLI checks, then the same suite's fast part under ASan+UBSan.
 test: deps
-	$(MAKE) all
-	$(MAKE) BUILD=build/san SAN=1 all
+	$(MAKE) -j$(JOBS) all
+	$(MAKE) -j$(JOBS) BUILD=build/san SAN=1 all
 	bash tests/run_tests.sh
 
 demo: deps
-	$(MAKE) all
+	$(MAKE) -j$(JOBS) all
 	$(BUILD)/tiershade demo -o out
 
 bench: deps
-	$(MAKE) all
+	$(MAKE) -j$(JOBS) all
 	$(BUILD)/tiershade bench -o docs/accuracy_cost.md
 
 clean:
