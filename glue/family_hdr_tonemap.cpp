@@ -86,22 +86,9 @@ void hard_pixel(Rng &r, int c, ts_vec4f rec[HT_SLOTS]) {
 }
 
 void make_inputs(InputSet set, int w, int h, uint32_t seed, FamilyInputs *out) {
-  out->resize(w, h, HT_SLOTS);
-  out->case_names.clear();
   Rng r(seed);
-  for (int y = 0; y < h; ++y) {
-    for (int x = 0; x < w; ++x) {
-      ts_vec4f rec[HT_SLOTS];
-      if (set == InputSet::Random) {
-        random_pixel(r, rec);
-      } else {
-        const int c = (y * w + x) % kNumHardCases;
-        hard_pixel(r, c, rec);
-        out->case_names.push_back(kHardCases[c]);
-      }
-      for (int k = 0; k < HT_SLOTS; ++k) out->set_slot(x, y, k, rec[k]);
-    }
-  }
+  fill_record_grid<HT_SLOTS>(set, w, h, kHardCases, kNumHardCases, out, [&](ts_vec4f *rec) { random_pixel(r, rec); },
+                   [&](int c, ts_vec4f *rec) { hard_pixel(r, c, rec); });
   out->textures = {hdr_test_texture(r, "u_bloom", kBloomW, kBloomH, true)};
 }
 

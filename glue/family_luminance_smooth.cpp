@@ -78,23 +78,10 @@ void hard_pixel(Rng &r, int c, ts_vec4f rec[LS_SLOTS]) {
 }
 
 void make_inputs(InputSet set, int w, int h, uint32_t seed, FamilyInputs *out) {
-  out->resize(w, h, LS_SLOTS);
-  out->case_names.clear();
-  out->textures.clear();
   Rng r(seed);
-  for (int y = 0; y < h; ++y) {
-    for (int x = 0; x < w; ++x) {
-      ts_vec4f rec[LS_SLOTS];
-      if (set == InputSet::Random) {
-        random_pixel(r, rec);
-      } else {
-        const int c = (y * w + x) % kNumHardCases;
-        hard_pixel(r, c, rec);
-        out->case_names.push_back(kHardCases[c]);
-      }
-      for (int k = 0; k < LS_SLOTS; ++k) out->set_slot(x, y, k, rec[k]);
-    }
-  }
+  out->textures.clear();
+  fill_record_grid<LS_SLOTS>(set, w, h, kHardCases, kNumHardCases, out, [&](ts_vec4f *rec) { random_pixel(r, rec); },
+                   [&](int c, ts_vec4f *rec) { hard_pixel(r, c, rec); });
 }
 
 void bind_uniforms(const GlFns &gl, GLuint program, const std::vector<ts_vec4f> &shared) {
