@@ -92,7 +92,8 @@
   X(BlitFramebuffer, PFNGLBLITFRAMEBUFFERPROC)                          \
   X(DrawElements, PFNGLDRAWELEMENTSPROC)                                \
   X(DrawBuffers, PFNGLDRAWBUFFERSPROC)                                  \
-  X(ReadBuffer, PFNGLREADBUFFERPROC)
+  X(ReadBuffer, PFNGLREADBUFFERPROC)                                    \
+  X(GetAttribLocation, PFNGLGETATTRIBLOCATIONPROC)
 
 struct GlFns {
 #define TS_GL_DECLARE(name, type) type name = nullptr;

@@ -45,6 +45,12 @@ bool HdrPipelineGl::init(const ShaderFamily &lit, const Variant &lit_linear, con
     return false;
   tex_linear_.assign(1, false);  // the record: NEAREST
   for (const TextureDesc &t : scene.textures) tex_linear_.push_back(t.linear);
+  return init_post(w_, h_, err);
+}
+
+bool HdrPipelineGl::init_post(int w, int h, std::string *err) {
+  w_ = w;
+  h_ = h;
   const GlFns &g = run_.gl();
   const int bw = hdr_bloom_size(w_), bh = hdr_bloom_size(h_);
   if (!make_target(g, TargetFormat::RGBA8, w_, h_, &display_, err) ||
@@ -88,8 +94,25 @@ static void size4(int w, int h, float out[4]) {
   out[3] = 1.0f / static_cast<float>(h);
 }
 
+bool HdrPipelineGl::post_float(const std::vector<float> &hdr_rgba, const HdrSettings &s, std::string *err) {
+  const GlFns &g = run_.gl();
+  if (hdr_rgba.size() != static_cast<size_t>(w_) * h_ * 4) {
+    *err = "post_float: frame size mismatch";
+    return false;
+  }
+  // Exact: every value is fp16-representable, so the upload's conversion does not round.
+  g.BindTexture(GL_TEXTURE_2D, hdr_.tex);
+  g.PixelStorei(GL_UNPACK_ALIGNMENT, 4);
+  g.TexSubImage2D(GL_TEXTURE_2D, 0, 0, 0, w_, h_, GL_RGBA, GL_FLOAT, hdr_rgba.data());
+  return post_chain(s, err);
+}
+
 bool HdrPipelineGl::float_frame(const std::vector<ts_vec4f> &shared, const HdrSettings &s, std::string *err) {
   if (!lit_pass(linear_.program, shared, 1.0f, hdr_, err)) return false;
+  return post_chain(s, err);
+}
+
+bool HdrPipelineGl::post_chain(const HdrSettings &s, std::string *err) {
   float full[4], quarter[4];
   size4(w_, h_, full);
   size4(ds_.w, ds_.h, quarter);

@@ -42,12 +42,18 @@ class HdrPipelineGl {
   bool init(const ShaderFamily &lit, const Variant &lit_linear, const Variant &lit_display, const FamilyInputs &scene,
             std::string *err);
   bool integer_frame(const std::vector<ts_vec4f> &shared, float tone_map_scale, std::string *err);
+  // Post-processing only (scene frames, whose lit pass the caller draws): the float path's
+  // targets and programs for w x h frames, then the chain from a linear frame whose values
+  // are already fp16-representable (ts_quantize_half, as an RGBA16F render target stores them).
+  bool init_post(int w, int h, std::string *err);
+  bool post_float(const std::vector<float> &hdr_rgba, const HdrSettings &s, std::string *err);
   bool float_frame(const std::vector<ts_vec4f> &shared, const HdrSettings &s, std::string *err);
   const GlTarget &display() const { return display_; }  // RGBA8, the last frame of either path
   const GlTarget &hdr() const { return hdr_; }          // RGBA16F linear frame (float path)
   const GlTarget &bloom() const { return by_; }         // RGBA16F quarter-size blurred bloom
 
  private:
+  bool post_chain(const HdrSettings &s, std::string *err);
   bool lit_pass(GLuint program, const std::vector<ts_vec4f> &shared, float scale, const GlTarget &t, std::string *err);
   PassRunner &run_;
   Api api_;
@@ -71,6 +77,9 @@ void hdr_integer_frame_c(const ShaderFamily &lit, const Variant &v, const Family
                          HdrFrameC *out);
 void hdr_float_frame_c(const ShaderFamily &lit, const Variant &v, const FamilyInputs &scene, const HdrSettings &s,
                        HdrFrameC *out);
+// The float path's post chain (bloom, tone map, sRGB, RGBA8) from a linear frame already
+// quantised to fp16 (rows bottom-up, rgba): the twin of HdrPipelineGl::post_float.
+void hdr_post_float_c(const std::vector<float> &hdr, int w, int h, const HdrSettings &s, HdrFrameC *out);
 // The float path in double with no storage rounding (intermediate images kept in float32):
 // display values in [0, 1] (sRGB-encoded), 4 doubles per pixel.
 void hdr_float_frame_reference(const ShaderFamily &lit, const Variant &v_linear, const FamilyInputs &scene,

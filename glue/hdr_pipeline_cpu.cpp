@@ -85,11 +85,15 @@ void hdr_float_frame_c(const ShaderFamily &lit, const Variant &v, const FamilyIn
   in.shared.at(ML_SLOT_PARAMS).x = 1.f;
   ImageF img;
   cpu_render_frame(lit, v, in, &img);
-  const int w = scene.w, h = scene.h;
+  std::vector<float> hdr(img.rgba.size());
+  for (size_t i = 0; i < img.rgba.size(); ++i) hdr[i] = ts_quantize_half(img.rgba[i]);
+  hdr_post_float_c(hdr, scene.w, scene.h, s, out);
+}
+
+void hdr_post_float_c(const std::vector<float> &hdr, int w, int h, const HdrSettings &s, HdrFrameC *out) {
   out->w = w;
   out->h = h;
-  out->hdr.resize(img.rgba.size());
-  for (size_t i = 0; i < img.rgba.size(); ++i) out->hdr[i] = ts_quantize_half(img.rgba[i]);
+  out->hdr = hdr;
   const bd_variant dv = {0};
   const bb_variant bxv = {0}, byv = {1};
   bloom_chain(

@@ -20,7 +20,8 @@ static const char kUsage[] =
     "  fold       fold lights beyond a tier's limit into the ambient cube, and check what it conserves\n"
     "  demo       render the lit sphere grid in each tier, on both backends and in C, to out/\n"
     "  bench      measure accuracy against time and write docs/accuracy_cost.md\n"
-    "  lut        colour-correction LUTs: inspect, bake from OpenColorIO, convert .cube <-> Source .raw\n";
+    "  lut        colour-correction LUTs: inspect, bake from OpenColorIO, convert .cube <-> Source .raw\n"
+    "  render     render a glTF scene with only the variants it needs (GL or the C fallback)\n";
 
 int main(int argc, char **argv) {
   if (argc < 2 || !strcmp(argv[1], "--help") || !strcmp(argv[1], "-h") || !strcmp(argv[1], "help")) {
@@ -34,7 +35,8 @@ int main(int argc, char **argv) {
     int (*fn)(int, char **);
   } const table[] = {{"variants", cmd_variants}, {"assemble", cmd_assemble}, {"budget", cmd_budget},
                      {"conform", cmd_conform},   {"probe", cmd_probe},       {"fold", cmd_fold},
-                     {"demo", cmd_demo},         {"bench", cmd_bench},       {"lut", cmd_lut}};
+                     {"demo", cmd_demo},         {"bench", cmd_bench},       {"lut", cmd_lut},
+                     {"render", cmd_render}};
   for (const auto &c : table)
     if (cmd == c.name) return c.fn(argc - 2, argv + 2);
   fprintf(stderr, "tiershade: unknown command '%s'\n\n%s", cmd.c_str(), kUsage);

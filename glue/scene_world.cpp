@@ -19,6 +19,7 @@ ts_vec3d unit(ts_vec3d a) { return mul(a, 1.0 / std::sqrt(dot(a, a))); }
 
 // The inward normal of a face: u x v, oriented so that it faces the room's centre.
 ts_vec3d face_normal(const WorldFace &f) {
+  if (dot(f.normal, f.normal) > 0) return unit(f.normal);
   ts_vec3d n = unit(cross(f.u, f.v));
   const ts_vec3d centre = ts_v3d(0, 1.5, -2.25);
   const ts_vec3d mid = add(f.origin, add(mul(f.u, f.su / 2), mul(f.v, f.sv / 2)));

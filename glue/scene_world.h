@@ -17,6 +17,7 @@ struct WorldFace {
   ts_vec3d origin, u, v;  // corner and unit edge directions (u = the S texture axis, v = T)
   double su, sv;          // edge lengths
   int probe;              // explicit cube-map probe, or -1 for the nearest
+  ts_vec3d normal = {0, 0, 0};  // the face's front normal; zero: u x v turned towards the demo room's centre
 };
 
 struct WorldScene {

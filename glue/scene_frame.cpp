@@ -1,0 +1,243 @@
+// tiershade glue: a scene frame end to end (glue/scene_frame.h).
+#include "scene_frame.h"
+
+#include <chrono>
+#include <cmath>
+#include <memory>
+
+#include "cc_inputs.h"
+#include "exposure_control.h"
+#include "family.h"
+#include "frame.h"
+#include "hdr_formats.h"
+#include "hdr_pipeline.h"
+#include "lut_bake.h"
+#include "lut_io.h"
+#include "luminance_histogram.h"
+#include "scene_cpu.h"
+#include "scene_gl.h"
+#include "scene_prepare.h"
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+double ms_since(Clock::time_point t0) { return std::chrono::duration<double, std::milli>(Clock::now() - t0).count(); }
+
+// The exact sRGB curve (IEC 61966-2-1), for linear outputs the render target would encode.
+float srgb_encode(float v) {
+  if (!(v > 0.f)) return 0.f;
+  if (v >= 1.f) return 1.f;
+  const double d = v;
+  return static_cast<float>(d <= 0.0031308 ? d * 12.92 : 1.055 * std::pow(d, 1.0 / 2.4) - 0.055);
+}
+
+// Auto exposure on a static frame: the running histogram (one bucket per frame) and Source's
+// controller, run for `frames` frames at 30 fps on the fp16 linear frame (float path).
+double auto_exposure(const std::vector<float> &hdr, int w, int h, const SceneHdr &sh, int frames) {
+  HistogramConfig hc;
+  hc.w = w;
+  hc.h = h;
+  hc.input_encoding = 0;
+  hc.alpha = 1.0;  // a static frame: the temporal prefilter changes nothing
+  LuminanceHistogramCpu hist(hc);
+  ae_settings s;
+  ae_default_settings(&s);
+  s.min_exposure = sh.exposure_min;
+  s.max_exposure = sh.exposure_max;
+  ae_state st;
+  ae_state_init(&st, sh.tone_map_scale, 0.0);
+  for (int f = 0; f < frames; ++f) {
+    hist.frame(hdr.data(), static_cast<float>(st.scale), f, nullptr);
+    ae_update(&st, &hist.histogram(), &s, 1.0 / 30.0);
+  }
+  return st.scale;
+}
+
+bool load_luts(const SceneHdr &sh, std::vector<Lut3D> *out, std::string *err) {
+  for (const SceneLut &l : sh.luts) {
+    Lut3D lut;
+    const std::string ext = l.path.size() > 4 ? l.path.substr(l.path.size() - 4) : "";
+    if (ext == "cube" || ext == ".raw") {
+      if (!read_lut_file(l.path, &lut, err)) return false;
+    } else {
+      TransformSpec spec;
+      spec.file = l.path;
+      ColorTransform t;
+      if (!t.open(spec, err) || !bake_lut(t, 32, &lut, err)) return false;
+    }
+    if (!out->empty() && lut.n != out->front().n) {
+      *err = l.path + ": LUT edge " + std::to_string(lut.n) + " differs from the first LUT's " +
+             std::to_string(out->front().n) + " (blended LUTs share one edge)";
+      return false;
+    }
+    out->push_back(std::move(lut));
+  }
+  return true;
+}
+
+void to_codes(const ImageF &img, std::vector<uint8_t> *codes) {
+  codes->resize(img.rgba.size());
+  for (size_t i = 0; i < img.rgba.size(); ++i) (*codes)[i] = ts_unorm8_from_float(img.rgba[i]);
+}
+
+}  // namespace
+
+ImageF display_image(const SceneRenderResult &r) {
+  ImageF img;
+  img.w = r.w;
+  img.h = r.h;
+  img.rgba.resize(r.display.size());
+  for (size_t i = 0; i < r.display.size(); ++i) img.rgba[i] = r.display[i] / 255.f;
+  return img;
+}
+
+bool render_scene(const Scene &s, const SceneSelection &sel, const SceneRenderConfig &cfg, SceneRenderResult *out,
+                  std::string *err) {
+  const auto t_frame = Clock::now();
+  SceneRenderResult res;
+  res.w = cfg.w;
+  res.h = cfg.h;
+  const bool cpu = cfg.backend == Backend::CPU;
+  const bool float_path = sel.hdr_path == "float";
+  if (float_path && !cpu && cfg.api == Api::GLES2) {
+    *err = "the float HDR path needs fp16 render targets: GLES 3.0 or GL 3.3 (--api gles3|gl33)";
+    return false;
+  }
+  auto t0 = Clock::now();
+  PreparedScene p;
+  const Api cube_api = cpu ? Api::GL33 : cfg.api;
+  if (!prepare_scene(s, sel, cfg.w, cfg.h, cube_api, s.hdr.tone_map_scale, &p, err)) return false;
+  res.prepare_ms = ms_since(t0);
+  res.notes = p.notes;
+
+  // ---- lit pass -------------------------------------------------------------------------
+  std::unique_ptr<GlContext> ctx;
+  std::unique_ptr<GlRenderer> renderer;
+  std::unique_ptr<SceneGl> sgl;
+  std::vector<int> draw_of_pixel;
+  if (cpu) {
+    t0 = Clock::now();
+    SceneVisibility vis;
+    scene_rasterize_cpu(p, &vis, cfg.threads);
+    scene_shade_cpu(p, vis, &res.lit, cfg.threads, [&](double f) {
+      if (cfg.progress) cfg.progress("C fallback lit pass", f);
+    });
+    res.lit_ms = ms_since(t0);
+    draw_of_pixel = vis.draw;
+  } else {
+    ctx = GlContext::create(cfg.backend, cfg.api, err);
+    if (!ctx) return false;
+    renderer.reset(new GlRenderer(*ctx));
+    sgl.reset(new SceneGl(*renderer, cfg.api));
+    if (!sgl->init(p, err, &res.compile_ms)) return false;
+    std::function<void(int, GLuint)> capture;
+    if (cfg.on_draw) capture = [&](int di, GLuint prog) { cfg.on_draw(sgl->gl(), p.draws[di], prog); };
+    t0 = Clock::now();
+    if (!sgl->frame(&res.lit, err, nullptr, capture)) return false;
+    res.lit_ms = ms_since(t0);
+    if (cfg.check) {
+      std::vector<float> slots;
+      if (!sgl->gbuffer(&draw_of_pixel, &slots, err)) return false;
+      ImageF c;
+      scene_shade_records(p, draw_of_pixel, slots, &c, cfg.threads);
+      DiffStats st;
+      diff_image(res.lit, c, &st);
+      res.check_mismatched = st.mismatched_pixels;
+      res.check_pixels = 0;
+      for (int d : draw_of_pixel) res.check_pixels += d >= 0;
+      res.check_max_ulp = st.max_ulp;
+    }
+  }
+
+  // ---- HDR ------------------------------------------------------------------------------
+  t0 = Clock::now();
+  const size_t n = static_cast<size_t>(cfg.w) * cfg.h;
+  std::unique_ptr<PassRunner> runner;
+  if (!cpu) runner.reset(new PassRunner(*renderer));
+  if (!float_path) {
+    res.tone_map_scale = s.hdr.tone_map_scale;
+    if (s.hdr.auto_exposure) res.notes.push_back("auto exposure runs on the float path; the integer path uses the fixed tone-map scale");
+    // Which pixels hold linear values the (sRGB) render target would encode: ps20 and world draws.
+    bool mixed = false, any_linear = false;
+    for (const PreparedDraw &d : p.draws) any_linear = any_linear || !d.display_encoded;
+    for (const PreparedDraw &d : p.draws) mixed = mixed || (d.display_encoded && any_linear);
+    if (mixed && draw_of_pixel.empty()) {
+      std::vector<float> slots;
+      if (!sgl->gbuffer(&draw_of_pixel, &slots, err)) return false;
+    }
+    res.display.resize(n * 4);
+    for (size_t i = 0; i < n; ++i) {
+      bool linear = any_linear;
+      if (mixed) linear = draw_of_pixel[i] >= 0 && !p.draws[draw_of_pixel[i]].display_encoded;
+      for (int c = 0; c < 3; ++c) {
+        const float v = res.lit.rgba[i * 4 + c];
+        res.display[i * 4 + c] = ts_unorm8_from_float(linear ? srgb_encode(v) : v);
+      }
+      res.display[i * 4 + 3] = 255;
+    }
+  } else {
+    std::vector<float> hdr(n * 4);
+    for (size_t i = 0; i < hdr.size(); ++i) hdr[i] = ts_quantize_half(res.lit.rgba[i]);
+    HdrSettings hs;
+    hs.tone_map_scale = s.hdr.tone_map_scale;
+    hs.bloom_amount = s.hdr.bloom_amount;
+    if (s.hdr.auto_exposure) {
+      hs.tone_map_scale = static_cast<float>(auto_exposure(hdr, cfg.w, cfg.h, s.hdr, cfg.exposure_frames));
+      res.auto_exposure = true;
+    }
+    res.tone_map_scale = hs.tone_map_scale;
+    if (cpu) {
+      HdrFrameC f;
+      hdr_post_float_c(hdr, cfg.w, cfg.h, hs, &f);
+      res.display = std::move(f.display);
+    } else {
+      HdrPipelineGl pipe(*runner, cfg.api);
+      if (!pipe.init_post(cfg.w, cfg.h, err) || !pipe.post_float(hdr, hs, err) ||
+          !read_rgba8(renderer->gl(), pipe.display(), &res.display, err))
+        return false;
+    }
+  }
+
+  // ---- colour correction ----------------------------------------------------------------
+  if (!s.hdr.luts.empty()) {
+    std::vector<Lut3D> luts;
+    if (!load_luts(s.hdr, &luts, err)) return false;
+    std::vector<ShaderDecl> decls;
+    if (!load_shader_decls(&decls, err)) return false;
+    const bool atlas = !cpu && cfg.api == Api::GLES2;
+    const std::string vname = std::string("ps2b:LUT_ATLAS=") + (atlas ? "1" : "0") +
+                              ",SHADER_TRILINEAR=0,NUM_LOOKUPS=" + std::to_string(luts.size());
+    Variant v;
+    if (!find_variant(decls, "color_correction", vname, &v, err)) return false;
+    const ShaderFamily *fam = find_family("color_correction");
+    float weights[4] = {0, 0, 0, 0}, sum = 0;
+    for (size_t i = 0; i < luts.size(); ++i) {
+      weights[i] = s.hdr.luts[i].weight;
+      sum += weights[i];
+    }
+    const ImageF disp = display_image(res);
+    FamilyInputs in;
+    cc_frame_inputs(disp, weights, std::max(0.f, 1.f - sum), luts[0].n, &in);
+    std::vector<const Lut3D *> lp;
+    for (const Lut3D &l : luts) lp.push_back(&l);
+    cc_set_luts(&in, lp, true);
+    ImageF cc;
+    if (cpu) {
+      cpu_render_frame(*fam, v, in, &cc, cfg.threads);
+    } else {
+      GlFrameProgram fp;
+      if (!gl_frame_setup(*renderer, cfg.api, *fam, v, in, &fp, err)) return false;
+      renderer->gl().UseProgram(fp.program);
+      fam->bind_uniforms(renderer->gl(), fp.program, in.shared);
+      const bool ok = gl_frame_draw(*renderer, fp, in, &cc, nullptr, err);
+      gl_frame_release(*renderer, &fp);
+      if (!ok) return false;
+    }
+    to_codes(cc, &res.display);
+    for (size_t i = 0; i < n; ++i) res.display[i * 4 + 3] = 255;
+  }
+  res.post_ms = ms_since(t0);
+  res.frame_ms = ms_since(t_frame);
+  *out = std::move(res);
+  return true;
+}

@@ -1,0 +1,54 @@
+// tiershade glue: one rendered frame of a scene, end to end: the variant selection's draws
+// (glue/scene_prepare.h), the lit pass on GL (glue/scene_gl.h) or by the C fallback
+// (glue/scene_cpu.h), then the HDR path the scene asks for: integer (the shaders' tone-map
+// scale and sRGB, RGBA8) or float (fp16 frame, auto exposure from the running histogram,
+// bloom, tone map; glue/hdr_pipeline.h), then colour correction with the scene's LUTs
+// (color_correction family). GL frames run every pass on GL; the C fallback runs their
+// bit-exact twins.
+#pragma once
+#include <cstdint>
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "gl_context.h"
+#include "gl_fns.h"
+#include "image_io.h"
+#include "scene.h"
+#include "scene_effects.h"
+
+struct PreparedDraw;
+
+struct SceneRenderConfig {
+  Backend backend = Backend::EGL;  // Backend::CPU: the C fallback alone
+  Api api = Api::GLES3;
+  int w = 1280, h = 720;
+  int threads = 0;     // C fallback workers (0 = all cores)
+  bool check = false;  // GL: also shade GL's own G-buffer with the C twin and compare bit for bit
+  int exposure_frames = 90;  // auto exposure: frames of the running histogram run on the static frame
+  // Progress of long stages: (stage, fraction done).
+  std::function<void(const char *, double)> progress;
+  // GL: called for each draw after its program, uniforms and textures are bound (draw capture).
+  std::function<void(const GlFns &, const PreparedDraw &, GLuint program)> on_draw;
+};
+
+struct SceneRenderResult {
+  ImageF lit;                    // the lit pass (RGBA32F; linear, or display-encoded by the shader)
+  std::vector<uint8_t> display;  // the final frame, RGBA8 codes, rows bottom-up
+  int w = 0, h = 0;
+  double tone_map_scale = 1;     // the exposure the frame was tone-mapped with
+  bool auto_exposure = false;
+  // Times (ms): preparing draws (bake, textures), compiling the selected variants (GL), the lit
+  // pass, post-processing, the whole frame (first frame: compile included).
+  double prepare_ms = 0, compile_ms = 0, lit_ms = 0, post_ms = 0, frame_ms = 0;
+  // --check: channels where GL's frame differs from the C twin on GL's G-buffer (-1: not run).
+  long check_mismatched = -1, check_pixels = 0;
+  uint32_t check_max_ulp = 0;
+  std::vector<std::string> notes;
+};
+
+bool render_scene(const Scene &s, const SceneSelection &sel, const SceneRenderConfig &cfg, SceneRenderResult *out,
+                  std::string *err);
+
+// The display frame as an image (codes / 255, rows bottom-up), for PNG/EXR writers.
+ImageF display_image(const SceneRenderResult &r);
