@@ -8,10 +8,10 @@
 namespace {
 
 int attribute_rank(const std::string &n) {
-  static const char *const kOrder[] = {"a_position", "a_normal", "a_uv", "a_tangent", "a_corner"};
-  for (int i = 0; i < 5; ++i)
+  static const char *const kOrder[] = {"a_position", "a_normal", "a_uv", "a_tangent", "a_lightmap", "a_corner"};
+  for (int i = 0; i < 6; ++i)
     if (n == kOrder[i]) return i;
-  return 5;
+  return 6;
 }
 
 using GetActive = void(APIENTRYP)(GLuint, GLuint, GLsizei, GLsizei *, GLint *, GLenum *, GLchar *);

@@ -13,7 +13,7 @@ struct ProgramVar {
   bool is_array = false;
 };
 
-// Attributes in the order a_position, a_normal, a_uv, a_tangent, a_corner, then the rest
-// by name; uniforms sorted by name. Fails (with *err) on a type gl_types.h does not know.
+// Attributes in the order a_position, a_normal, a_uv, a_tangent, a_lightmap, a_corner, then
+// the rest by name; uniforms sorted by name. Fails (with *err) on a type gl_types.h does not know.
 bool program_attributes(const GlFns &gl, GLuint program, std::vector<ProgramVar> *out, std::string *err);
 bool program_uniforms(const GlFns &gl, GLuint program, std::vector<ProgramVar> *out, std::string *err);
