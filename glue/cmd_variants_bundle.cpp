@@ -50,5 +50,6 @@ int cmd_variants_bundle(const Args &a) {
   if (a.get("-o").empty()) a.fail("-o needs a directory name");
   if (a.positional().size() > 1) a.fail("unexpected argument '" + a.positional()[1] + "'");
   if (a.positional().empty()) return explicit_bundle(a, target);
-  a.fail("scene bundles are not available yet");
+  if (a.all("--tier").size() != 1) a.fail("a scene bundle wants exactly one --tier (ps20, ps2b, sm3)");
+  a.fail(a.positional()[0] + ": scene bundles need the glTF loader, not in this build yet");
 }
