@@ -4,6 +4,7 @@
 
 #include "bundle.h"
 #include "cli.h"
+#include "scene_effects.h"
 #include "selection.h"
 
 namespace {
@@ -42,6 +43,35 @@ int explicit_bundle(const Args &a, Target target) {
   return 0;
 }
 
+int scene_bundle(const Args &a, Target target) {
+  const std::string path = a.positional()[0];
+  const auto tiers = a.all("--tier");
+  if (tiers.size() != 1) a.fail("a scene bundle wants exactly one --tier (ps20, ps2b, sm3)");
+  Tier tier;
+  if (!parse_tier(tiers[0], &tier)) a.fail("unknown tier '" + tiers[0] + "' (ps20, ps2b, sm3)");
+  if (a.has("--shader") || a.has("--variant")) a.fail("--shader and --variant do not go with a SCENE");
+  if (a.flag("--list") || a.flag("--json") || a.flag("--count")) a.fail("-o DIR does not go with --list, --json or --count");
+  Scene scene;
+  SceneSelection sel;
+  std::string err;
+  if (!load_scene(path, &scene, &err) || !select_scene_variants(scene, tier, "", &sel, &err)) a.fail(err);
+  std::vector<BundleEntry> entries;
+  for (size_t i = 0; i < sel.variants.size(); ++i)
+    entries.push_back({&sel.variants[i], i < sel.variant_why.size() ? sel.variant_why[i] : std::vector<std::string>()});
+  if (!write_bundle(entries, target, a.get("-o"), path, &err)) {
+    fprintf(stderr, "tiershade variants: %s\n", err.c_str());
+    return 1;
+  }
+  for (const auto &e : entries) {
+    printf("%s %s -> %s/%s\n", e.variant->shader->name.c_str(), e.variant->name().c_str(),
+           e.variant->shader->name.c_str(), bundle_file_stem(*e.variant).c_str());
+    for (const auto &w : e.why) printf("    %s\n", w.c_str());
+  }
+  printf("%zu variants of %d combos written to %s (%s)\n", entries.size(), sel.all_combos, a.get("-o").c_str(),
+         target_name(target));
+  return 0;
+}
+
 }  // namespace
 
 int cmd_variants_bundle(const Args &a) {
@@ -50,6 +80,5 @@ int cmd_variants_bundle(const Args &a) {
   if (a.get("-o").empty()) a.fail("-o needs a directory name");
   if (a.positional().size() > 1) a.fail("unexpected argument '" + a.positional()[1] + "'");
   if (a.positional().empty()) return explicit_bundle(a, target);
-  if (a.all("--tier").size() != 1) a.fail("a scene bundle wants exactly one --tier (ps20, ps2b, sm3)");
-  a.fail(a.positional()[0] + ": scene bundles need the glTF loader, not in this build yet");
+  return scene_bundle(a, target);
 }
