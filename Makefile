@@ -71,6 +71,15 @@ $(BUILD)/tests/%: $(BUILD)/obj/tests/unit/%.o $(LIB_OBJ)
 	@mkdir -p $(dir $@)
 	$(CXX) $(LDFLAGS) -o $@ $^ $(LDLIBS)
 
+# --- bundle test (docs/bundles.md): a bare GL program with no tiershade code (no -Iglue, no
+# library objects), only EGL, GL headers and nlohmann json; GL through eglGetProcAddress.
+BARE_GL := $(BUILD)/tests/bare_gl_render
+all: $(BARE_GL)
+$(BARE_GL): tests/bundle/bare_gl_render.cpp
+	@mkdir -p $(dir $@)
+	$(CXX) -std=c++17 $(OPT) -Wall -Wextra -Werror $(LDFLAGS) -o $@ $< -lEGL
+# --- end bundle test
+
 # The README's test command: every unit test, conformance on both backends and all
 # APIs, the CLI checks, then the same suite's fast part under ASan+UBSan.
 test: deps

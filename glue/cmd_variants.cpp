@@ -5,16 +5,25 @@
 #include "family.h"
 #include "selection.h"
 
+int cmd_variants_bundle(const Args &a);  // glue/cmd_variants_bundle.cpp
+
 int cmd_variants(int argc, char **argv) {
-  Args a("variants", argc, argv, {"--list", "--json", "--help", "--count"}, {"--shader", "--tier", "--variant"});
+  Args a("variants", argc, argv, {"--list", "--json", "--help", "--count"},
+         {"--shader", "--tier", "--variant", "--target", "-o"});
   if (a.flag("--help")) {
     puts("usage: tiershade variants [--list] [--json] [--count] [--shader S] [--tier ps20|ps2b|sm3]...\n"
+         "       tiershade variants SCENE --tier T [--target essl100|essl300|glsl330] -o DIR\n"
+         "       tiershade variants --shader S [--variant V]... [--tier T]... [--target T] -o DIR\n"
          "Lists every variant: tier x static combos x dynamic combos, minus the skip rules\n"
          "declared in shaders/<shader>.variants. A variant is named TIER:NAME=V,... and can\n"
-         "also be given by its index in the full list of its shader.");
+         "also be given by its index in the full list of its shader.\n"
+         "With -o DIR it writes a shader bundle for engines (docs/bundles.md): the self-contained\n"
+         "production GLSL of the variants a scene needs (or of the variants given), and\n"
+         "DIR/manifest.json with their defines, attributes, uniforms, sampler units and slots.\n"
+         "--target defaults to essl300. An existing DIR is replaced only if it is a bundle.");
     return 0;
   }
-  if (!a.positional().empty()) a.fail("unexpected argument '" + a.positional()[0] + "'");
+  if (a.has("-o") || a.has("--target") || !a.positional().empty()) return cmd_variants_bundle(a);
   Selection sel;
   select_variants(a, &sel);
   if (a.flag("--count")) {

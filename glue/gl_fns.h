@@ -28,6 +28,9 @@
   X(UseProgram, PFNGLUSEPROGRAMPROC)                                    \
   X(GetUniformLocation, PFNGLGETUNIFORMLOCATIONPROC)                    \
   X(GetActiveUniform, PFNGLGETACTIVEUNIFORMPROC)                        \
+  X(GetActiveAttrib, PFNGLGETACTIVEATTRIBPROC)                          \
+  X(GetUniformfv, PFNGLGETUNIFORMFVPROC)                                \
+  X(GetUniformiv, PFNGLGETUNIFORMIVPROC)                                \
   X(Uniform1i, PFNGLUNIFORM1IPROC)                                      \
   X(Uniform1f, PFNGLUNIFORM1FPROC)                                      \
   X(Uniform2f, PFNGLUNIFORM2FPROC)                                      \
