@@ -1,0 +1,517 @@
+#!/usr/bin/env python3
+# tiershade -- tools/make_scenes.py
+# Writes the three shipped glTF scenes (scenes/model_lighting.gltf, world_lighting.gltf,
+# hdr_atrium.gltf), their geometry (.bin next to each) and small procedural PNG textures
+# (scenes/textures/). Python 3 standard library only. Run once from the repo root:
+#   python3 tools/make_scenes.py
+# The output is committed; builds and tests never run this script. Format: docs/scenes.md.
+import json
+import math
+import os
+import struct
+import zlib
+
+ROOT = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..")
+SCENES = os.path.join(ROOT, "scenes")
+TEX = os.path.join(SCENES, "textures")
+
+
+# ------------------------------------------------------------------------------ PNG ---
+def write_png(path, w, h, px, channels=4):
+    """px: list of rows (top row first), each a list of per-pixel tuples of 0..255 ints."""
+    raw = bytearray()
+    for row in px:
+        raw.append(0)
+        for p in row:
+            raw.extend(bytes(max(0, min(255, int(round(c)))) for c in p[:channels]))
+
+    def chunk(tag, data):
+        c = struct.pack(">I", len(data)) + tag + data
+        return c + struct.pack(">I", zlib.crc32(tag + data) & 0xFFFFFFFF)
+
+    colour_type = {1: 0, 3: 2, 4: 6}[channels]
+    png = b"\x89PNG\r\n\x1a\n" + chunk(b"IHDR", struct.pack(">IIBBBBB", w, h, 8, colour_type, 0, 0, 0))
+    png += chunk(b"IDAT", zlib.compress(bytes(raw), 9)) + chunk(b"IEND", b"")
+    with open(path, "wb") as f:
+        f.write(png)
+
+
+def image(w, h, fn):
+    return [[fn(x, y) for x in range(w)] for y in range(h)]
+
+
+def hash01(x, y, seed=0):
+    """Deterministic value noise in [0, 1) on integer lattice points."""
+    n = (x * 374761393 + y * 668265263 + seed * 2147483647) & 0xFFFFFFFF
+    n = ((n ^ (n >> 13)) * 1274126177) & 0xFFFFFFFF
+    return ((n ^ (n >> 16)) & 0xFFFF) / 65536.0
+
+
+def smooth_noise(u, v, cells, seed):
+    """Bilinear value noise, periodic with `cells` cells over [0,1)."""
+    x, y = u * cells, v * cells
+    x0, y0 = int(math.floor(x)), int(math.floor(y))
+    fx, fy = x - x0, y - y0
+    fx, fy = fx * fx * (3 - 2 * fx), fy * fy * (3 - 2 * fy)
+
+    def at(i, j):
+        return hash01(i % cells, j % cells, seed)
+
+    a = at(x0, y0) * (1 - fx) + at(x0 + 1, y0) * fx
+    b = at(x0, y0 + 1) * (1 - fx) + at(x0 + 1, y0 + 1) * fx
+    return a * (1 - fy) + b * fy
+
+
+def normal_map(w, h, height, strength, alpha=None):
+    """Tangent-space normal map (glTF: green = image up) from height(x, y) in pixels, wrapped."""
+    hf = [[height(x, y) for x in range(w)] for y in range(h)]
+
+    def px(x, y):
+        dx = (hf[y][(x + 1) % w] - hf[y][(x - 1) % w]) * 0.5
+        dy_up = (hf[(y - 1) % h][x] - hf[(y + 1) % h][x]) * 0.5
+        n = (-strength * dx, -strength * dy_up, 1.0)
+        ln = math.sqrt(sum(c * c for c in n))
+        a = 255 if alpha is None else alpha(x, y)
+        return tuple((c / ln * 0.5 + 0.5) * 255 for c in n) + (a,)
+
+    return [[px(x, y) for x in range(w)] for y in range(h)], hf
+
+
+def ssbump_map(w, h, height, strength):
+    """Self-shadowed bump weights: for each of the three RNM basis directions, the cosine of
+    the bumped normal with it times how much of the direction the height field leaves unoccluded."""
+    nm, hf = normal_map(w, h, height, strength)
+    s6, s2, s3 = 1 / math.sqrt(6), 1 / math.sqrt(2), 1 / math.sqrt(3)
+    basis = [(math.sqrt(2 / 3), 0, s3), (-s6, s2, s3), (-s6, -s2, s3)]
+
+    def px(x, y):
+        n = [c / 255 * 2 - 1 for c in nm[y][x][:3]]
+        out = []
+        for b in basis:
+            cos = max(0.0, sum(n[i] * b[i] for i in range(3)))
+            vis = 1.0
+            for step in range(1, 6):  # march towards the basis direction in the image (+y up)
+                sx = int(round(x + b[0] * step * 1.5)) % w
+                sy = int(round(y - b[1] * step * 1.5)) % h
+                rise = (hf[sy][sx] - hf[y][x]) * strength
+                if rise > step * 1.5 * b[2] / math.sqrt(b[0] ** 2 + b[1] ** 2):
+                    vis = min(vis, 0.35 + 0.13 * step)
+            out.append(255 * cos * vis)
+        return tuple(out) + (255,)
+
+    return [[px(x, y) for x in range(w)] for y in range(h)]
+
+
+# --------------------------------------------------------------------------- math ---
+def sub(a, b):
+    return [a[i] - b[i] for i in range(3)]
+
+
+def cross(a, b):
+    return [a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]]
+
+
+def dot(a, b):
+    return sum(a[i] * b[i] for i in range(3))
+
+
+def norm(a):
+    ln = math.sqrt(dot(a, a))
+    return [c / ln for c in a] if ln > 0 else [0.0, 0.0, 0.0]
+
+
+def look_quat(eye, target, up=(0, 1, 0)):
+    """Rotation quaternion (x, y, z, w) turning the node's -Z towards target, +Y near up."""
+    f = norm(sub(target, eye))
+    z = [-c for c in f]
+    if abs(dot(norm(list(up)), z)) > 0.999:
+        up = (0, 0, 1)
+    x = norm(cross(list(up), z))
+    y = cross(z, x)
+    m00, m11, m22 = x[0], y[1], z[2]
+    tr = m00 + m11 + m22
+    if tr > 0:
+        s = math.sqrt(tr + 1) * 2
+        q = [(y[2] - z[1]) / s, (z[0] - x[2]) / s, (x[1] - y[0]) / s, 0.25 * s]
+    elif m00 > m11 and m00 > m22:
+        s = math.sqrt(1 + m00 - m11 - m22) * 2
+        q = [0.25 * s, (y[0] + x[1]) / s, (z[0] + x[2]) / s, (y[2] - z[1]) / s]
+    elif m11 > m22:
+        s = math.sqrt(1 + m11 - m00 - m22) * 2
+        q = [(y[0] + x[1]) / s, 0.25 * s, (z[1] + y[2]) / s, (z[0] - x[2]) / s]
+    else:
+        s = math.sqrt(1 + m22 - m00 - m11) * 2
+        q = [(z[0] + x[2]) / s, (z[1] + y[2]) / s, 0.25 * s, (x[1] - y[0]) / s]
+    return [round(c, 7) for c in q]
+
+
+# ----------------------------------------------------------------------- geometry ---
+def fix_winding_and_tangents(mesh):
+    """Counter-clockwise front faces (against the normals) and tangent w = sign of
+    dot(cross(N, T), B) where B is the texture's up direction (decreasing v)."""
+    P, N, T, B, idx = mesh["pos"], mesh["nrm"], mesh["tan"], mesh.pop("bit"), mesh["idx"]
+    for t in range(0, len(idx), 3):
+        a, b, c = idx[t:t + 3]
+        fn = cross(sub(P[b], P[a]), sub(P[c], P[a]))
+        navg = [N[a][i] + N[b][i] + N[c][i] for i in range(3)]
+        if dot(fn, navg) < 0:
+            idx[t + 1], idx[t + 2] = c, b
+    for i in range(len(P)):
+        w = 1.0 if dot(cross(N[i], T[i][:3]), B[i]) >= 0 else -1.0
+        T[i] = list(T[i][:3]) + [w]
+    return mesh
+
+
+def uv_sphere(r, seg, rings):
+    pos, nrm, uv, tan, bit, idx = [], [], [], [], [], []
+    for j in range(rings + 1):
+        th = math.pi * j / rings
+        for i in range(seg + 1):
+            ph = 2 * math.pi * i / seg
+            n = [math.sin(th) * math.cos(ph), math.cos(th), -math.sin(th) * math.sin(ph)]
+            pos.append([r * c for c in n])
+            nrm.append(n)
+            uv.append([i / seg, j / rings])
+            tan.append([-math.sin(ph), 0.0, -math.cos(ph)])  # dP/dphi
+            bit.append([-math.cos(th) * math.cos(ph), math.sin(th), math.cos(th) * math.sin(ph)])  # -dP/dtheta
+    for j in range(rings):
+        for i in range(seg):
+            a, b = j * (seg + 1) + i, (j + 1) * (seg + 1) + i
+            if j != 0:
+                idx += [a, b, a + 1]
+            if j != rings - 1:
+                idx += [a + 1, b, b + 1]
+    return fix_winding_and_tangents(dict(pos=pos, nrm=nrm, uv=uv, tan=tan, bit=bit, idx=idx))
+
+
+def torus(R, r, seg, sides):
+    pos, nrm, uv, tan, bit, idx = [], [], [], [], [], []
+    for j in range(sides + 1):
+        be = 2 * math.pi * j / sides
+        for i in range(seg + 1):
+            al = 2 * math.pi * i / seg
+            c = [math.cos(al), 0.0, -math.sin(al)]
+            n = [math.cos(be) * c[0], math.sin(be), math.cos(be) * c[2]]
+            pos.append([R * c[k] + r * n[k] for k in range(3)])
+            nrm.append(n)
+            uv.append([2 * i / seg, j / sides])
+            tan.append([-math.sin(al), 0.0, -math.cos(al)])
+            bit.append([-math.sin(be) * c[0], math.cos(be), -math.sin(be) * c[2]])
+    for j in range(sides):
+        for i in range(seg):
+            a, b = j * (seg + 1) + i, (j + 1) * (seg + 1) + i
+            idx += [a, b, a + 1, a + 1, b, b + 1]
+    return fix_winding_and_tangents(dict(pos=pos, nrm=nrm, uv=uv, tan=tan, bit=bit, idx=idx))
+
+
+def quad(o, U, V, su=1.0, sv=1.0):
+    """Rectangle o + a U + b V (a, b in 0..1), front face towards cross(U, V); texture u along U
+    (su repeats), texture up along V (sv repeats)."""
+    n = norm(cross(U, V))
+    t = norm(U)
+    pos, uv = [], []
+    for a, b in ((0, 0), (1, 0), (1, 1), (0, 1)):
+        pos.append([o[k] + a * U[k] + b * V[k] for k in range(3)])
+        uv.append([a * su, (1 - b) * sv])
+    return fix_winding_and_tangents(dict(pos=pos, nrm=[n] * 4, uv=uv, tan=[t] * 4, bit=[norm(V)] * 4,
+                                         idx=[0, 1, 2, 0, 2, 3]))
+
+
+def box_quads(center, size, tiles=1.0):
+    """Five faces (no bottom) of an axis-aligned box standing on y = center[1]."""
+    cx, cy, cz = center
+    sx, sy, sz = size
+    x0, x1, y0, y1, z0, z1 = cx - sx / 2, cx + sx / 2, cy, cy + sy, cz - sz / 2, cz + sz / 2
+    return [
+        quad([x0, y0, z1], [sx, 0, 0], [0, sy, 0], sx * tiles, sy * tiles),   # +Z
+        quad([x1, y0, z0], [-sx, 0, 0], [0, sy, 0], sx * tiles, sy * tiles),  # -Z
+        quad([x1, y0, z1], [0, 0, -sz], [0, sy, 0], sz * tiles, sy * tiles),  # +X
+        quad([x0, y0, z0], [0, 0, sz], [0, sy, 0], sz * tiles, sy * tiles),   # -X
+        quad([x0, y1, z1], [sx, 0, 0], [0, 0, -sz], sx * tiles, sz * tiles),  # +Y
+    ]
+
+
+# -------------------------------------------------------------------------- glTF ---
+class Gltf:
+    def __init__(self, name):
+        self.name = name
+        self.bin = bytearray()
+        self.doc = {"asset": {"version": "2.0", "generator": "tiershade tools/make_scenes.py"},
+                    "scene": 0, "scenes": [{"name": name, "nodes": []}], "nodes": [], "meshes": [],
+                    "materials": [], "textures": [], "images": [], "samplers": [{"magFilter": 9729,
+                    "minFilter": 9987, "wrapS": 10497, "wrapT": 10497}], "accessors": [], "bufferViews": [],
+                    "buffers": [], "cameras": [], "extensionsUsed": ["KHR_lights_punctual"],
+                    "extensions": {"KHR_lights_punctual": {"lights": []}}}
+        self.tex_ids = {}
+
+    def _view(self, data, target):
+        while len(self.bin) % 4:
+            self.bin.append(0)
+        off = len(self.bin)
+        self.bin.extend(data)
+        self.doc["bufferViews"].append({"buffer": 0, "byteOffset": off, "byteLength": len(data), "target": target})
+        return len(self.doc["bufferViews"]) - 1
+
+    def _acc(self, rows, typ, n):
+        flat = [float(c) for row in rows for c in row[:n]]
+        view = self._view(struct.pack("<%df" % len(flat), *flat), 34962)
+        acc = {"bufferView": view, "componentType": 5126, "count": len(rows), "type": typ}
+        if typ == "VEC3":
+            acc["min"] = [min(r[k] for r in rows) for k in range(3)]
+            acc["max"] = [max(r[k] for r in rows) for k in range(3)]
+        self.doc["accessors"].append(acc)
+        return len(self.doc["accessors"]) - 1
+
+    def primitive(self, mesh, material):
+        big = max(mesh["idx"]) > 65535
+        data = struct.pack("<%d%s" % (len(mesh["idx"]), "I" if big else "H"), *mesh["idx"])
+        view = self._view(data, 34963)
+        self.doc["accessors"].append({"bufferView": view, "componentType": 5125 if big else 5123,
+                                      "count": len(mesh["idx"]), "type": "SCALAR"})
+        ind = len(self.doc["accessors"]) - 1
+        return {"attributes": {"POSITION": self._acc(mesh["pos"], "VEC3", 3),
+                               "NORMAL": self._acc(mesh["nrm"], "VEC3", 3),
+                               "TEXCOORD_0": self._acc(mesh["uv"], "VEC2", 2),
+                               "TANGENT": self._acc(mesh["tan"], "VEC4", 4)},
+                "indices": ind, "material": material, "mode": 4}
+
+    def node(self, node, root=True):
+        self.doc["nodes"].append(node)
+        i = len(self.doc["nodes"]) - 1
+        if root:
+            self.doc["scenes"][0]["nodes"].append(i)
+        return i
+
+    def mesh(self, name, meshes_and_materials, **node):
+        root = node.pop("root", True)
+        prims = [self.primitive(m, mat) for m, mat in meshes_and_materials]
+        self.doc["meshes"].append({"name": name, "primitives": prims})
+        return self.node(dict(name=name, mesh=len(self.doc["meshes"]) - 1, **node), root)
+
+    def texture(self, file):
+        if file not in self.tex_ids:
+            self.doc["images"].append({"uri": "textures/" + file})
+            self.doc["textures"].append({"source": len(self.doc["images"]) - 1, "sampler": 0})
+            self.tex_ids[file] = len(self.doc["textures"]) - 1
+        return self.tex_ids[file]
+
+    def material(self, name, source, base=None, normal=None, color=(1, 1, 1, 1)):
+        pbr = {"baseColorFactor": list(color), "metallicFactor": 0.0, "roughnessFactor": 1.0}
+        if base:
+            pbr["baseColorTexture"] = {"index": self.texture(base)}
+        m = {"name": name, "pbrMetallicRoughness": pbr, "extras": {"source": source}}
+        if normal:
+            m["normalTexture"] = {"index": self.texture(normal)}
+        self.doc["materials"].append(m)
+        return len(self.doc["materials"]) - 1
+
+    def tex(self, file):
+        return {"index": self.texture(file)}
+
+    def light(self, name, typ, color, intensity, eye, target=None, inner=None, outer=None, source=None):
+        l = {"name": name, "type": typ, "color": list(color), "intensity": intensity}
+        if typ == "spot":
+            l["spot"] = {"innerConeAngle": inner, "outerConeAngle": outer}
+        if source:
+            l["extras"] = {"source": source}
+        lights = self.doc["extensions"]["KHR_lights_punctual"]["lights"]
+        lights.append(l)
+        node = {"name": name, "translation": list(eye),
+                "extensions": {"KHR_lights_punctual": {"light": len(lights) - 1}}}
+        if target is not None:
+            node["rotation"] = look_quat(eye, target)
+        return self.node(node)
+
+    def camera(self, name, eye, target, yfov, aspect=None):
+        cam = {"name": name, "type": "perspective", "perspective": {"yfov": yfov, "znear": 0.05, "zfar": 100.0}}
+        if aspect:
+            cam["perspective"]["aspectRatio"] = aspect
+        self.doc["cameras"].append(cam)
+        return self.node({"name": name, "camera": len(self.doc["cameras"]) - 1,
+                          "translation": list(eye), "rotation": look_quat(eye, target)})
+
+    def write(self, tiershade):
+        self.doc["buffers"].append({"uri": self.name + ".bin", "byteLength": len(self.bin)})
+        self.doc["extras"] = {"tiershade": tiershade}
+        for k in ("textures", "images"):
+            if not self.doc[k]:
+                del self.doc[k]
+        with open(os.path.join(SCENES, self.name + ".bin"), "wb") as f:
+            f.write(self.bin)
+        with open(os.path.join(SCENES, self.name + ".gltf"), "w") as f:
+            json.dump(self.doc, f, indent=1)
+            f.write("\n")
+
+
+# ----------------------------------------------------------------------- textures ---
+def make_textures():
+    os.makedirs(TEX, exist_ok=True)
+    w = lambda name, px, ch=4: write_png(os.path.join(TEX, name), len(px[0]), len(px), px, ch)
+    w("checker.png", image(128, 128, lambda x, y: (200, 190, 170) if (x // 16 + y // 16) % 2 else (70, 90, 130)), 3)
+    w("skin.png", image(128, 128, lambda x, y: tuple(c * (0.9 + 0.1 * smooth_noise(x / 128, y / 128, 16, 1))
+                                                     for c in (224, 172, 150)) + (255,)))
+    bumps = lambda x, y: 3.0 * smooth_noise(x / 128, y / 128, 24, 2) + 1.5 * smooth_noise(x / 128, y / 128, 8, 3)
+    w("skin_normal.png", normal_map(128, 128, bumps, 1.5)[0])
+    # r: exponent (pores duller), g: albedo tint mask, a: rim mask
+    w("skin_exponent.png", image(128, 128, lambda x, y: (90 + 80 * smooth_noise(x / 128, y / 128, 24, 2), 40,
+                                                         0, 255)))
+    w("metal.png", image(64, 64, lambda x, y: tuple(c * (0.85 + 0.15 * hash01(x, y // 8, 4)) for c in (180, 170, 150))
+                         + (255,)))
+    w("metal_normal.png", normal_map(64, 64, lambda x, y: 0.6 * math.sin(2 * math.pi * y / 16), 1.0)[0])
+    w("lightwarp.png", image(256, 4, lambda x, y: (255 * min(1, (x / 255) ** 0.8 * 1.1),
+                                                   255 * (x / 255) ** 1.1, 255 * (x / 255) ** 1.6, 255)))
+    w("selfillum.png", image(128, 128, lambda x, y: (60, 60, 70, 255 if (y // 8) % 3 == 0 else 0)))
+    tile_h = lambda x, y: 0.0 if (x % 32 < 2 or y % 32 < 2) else 2.0
+    w("tiles.png", image(128, 128, lambda x, y: (90, 88, 85) if tile_h(x, y) == 0 else
+                         tuple(c * (0.92 + 0.08 * smooth_noise(x / 128, y / 128, 8, 5)) for c in (205, 200, 190))), 3)
+    # alpha of the normal map = envmap mask ($normalmapalphaenvmapmask): glossy tiles, dull grout
+    w("tiles_normal.png", normal_map(128, 128, tile_h, 1.0, lambda x, y: 40 if tile_h(x, y) == 0 else 230)[0])
+    w("plaster.png", image(64, 64, lambda x, y: tuple(c * (0.93 + 0.07 * smooth_noise(x / 64, y / 64, 8, 6))
+                                                      for c in (225, 222, 215))), 3)
+    brick_h = lambda x, y: 0.0 if (y % 16 < 2 or (x + (8 if (y // 16) % 2 else 0)) % 32 < 2) else 1.5
+    w("brick.png", image(128, 128, lambda x, y: (150, 145, 140) if brick_h(x, y) == 0 else
+                         tuple(c * (0.8 + 0.2 * hash01((x + (8 if (y // 16) % 2 else 0)) // 32, y // 16, 7))
+                               for c in (160, 80, 60))), 3)
+    w("brick_normal.png", normal_map(128, 128, brick_h, 1.2)[0])
+    stone_h = lambda x, y: 4.0 * smooth_noise(x / 128, y / 128, 6, 8) + 2.0 * smooth_noise(x / 128, y / 128, 16, 9)
+    w("stone.png", image(128, 128, lambda x, y: tuple(c * (0.75 + 0.25 * smooth_noise(x / 128, y / 128, 6, 8))
+                                                      for c in (170, 165, 150))), 3)
+    w("stone_ssbump.png", ssbump_map(128, 128, stone_h, 1.2))
+    plank = lambda x, y: (x // 32) % 2
+    w("crate.png", image(128, 128, lambda x, y: tuple(c * (0.8 + 0.2 * smooth_noise(x / 128, y / 128 * 0.25, 32, 10))
+                                                      for c in ((150, 110, 70) if plank(x, y) else (135, 98, 62)))), 3)
+    edge = lambda x, y: x < 12 or x > 115 or y < 12 or y > 115
+    w("crate_mask.png", image(128, 128, lambda x, y: (230, 230, 230) if edge(x, y) else (25, 25, 25)), 3)
+    # $basealphaenvmapmask: the envmap is masked by 1 - base alpha (glossy where alpha is low)
+    w("glossy_tile.png", image(128, 128, lambda x, y: (40, 70, 110, 30) if (x // 64 + y // 64) % 2 else
+                               (210, 205, 195, 200)))
+    w("const_mask.png", image(4, 4, lambda x, y: (128, 128, 128)), 3)
+    w("marble.png", image(128, 128, lambda x, y: tuple(c * (0.75 + 0.25 * math.sin(
+        (x / 128 + 2 * smooth_noise(x / 128, y / 128, 8, 11)) * 2 * math.pi * 3) ** 2) for c in (235, 232, 225))
+                                                       + (255,)))
+
+
+# ------------------------------------------------------------------------- scenes ---
+def model_lighting():
+    g = Gltf("model_lighting")
+    plain = g.material("lambert_plain", {"shader": "VertexLitGeneric", "$halflambert": 0}, color=(0.7, 0.7, 0.72, 1))
+    checker = g.material("halflambert_checker", {"shader": "VertexLitGeneric", "$halflambert": 1}, base="checker.png")
+    skin = g.material("skin", {"shader": "VertexLitGeneric", "$phong": 1, "$phongboost": 2.0,
+                               "$phongexponenttexture": g.tex("skin_exponent.png"), "$phongexponentfactor": 60,
+                               "$phongfresnelranges": [0.3, 0.6, 1.0], "$rimlight": 1, "$rimlightexponent": 4,
+                               "$rimlightboost": 2.0, "$rimmask": 1},
+                      base="skin.png", normal="skin_normal.png")
+    metal = g.material("metal_envmap", {"shader": "VertexLitGeneric", "$phong": 1, "$phongexponent": 40,
+                                        "$phongboost": 1.5, "$phongfresnelranges": [0.15, 0.5, 1.0],
+                                        "$envmap": 1, "$envmaptint": [0.6, 0.6, 0.6], "$envmapfresnel": 0.5,
+                                        "$lightwarptexture": g.tex("lightwarp.png")},
+                       base="metal.png", normal="metal_normal.png")
+    glow = g.material("selfillum_stripes", {"shader": "VertexLitGeneric", "$selfillum": 1,
+                                            "$selfillumtint": [1.0, 0.6, 0.2]}, base="selfillum.png")
+    sphere = uv_sphere(0.6, 48, 24)
+    g.mesh("plain_sphere", [(sphere, plain)], translation=[-3.0, 0.0, 0.0])
+    g.mesh("checker_sphere", [(sphere, checker)], translation=[-1.5, 0.0, -0.5])
+    g.mesh("skin_sphere", [(sphere, skin)], translation=[0.0, 0.0, 0.0])
+    # the torus hangs under a tilted, scaled parent: the loader applies the hierarchy
+    tor = g.mesh("metal_torus", [(torus(0.55, 0.22, 48, 24), metal)], rotation=[0.5, 0.0, 0.0, 0.8660254],
+                 root=False)
+    g.node({"name": "torus_parent", "translation": [1.5, 0.0, -0.5], "scale": [1.1, 1.1, 1.1], "children": [tor]})
+    g.mesh("glow_sphere", [(sphere, glow)], translation=[3.0, 0.0, 0.0])
+    g.light("key_point", "point", (1.0, 0.9, 0.8), 20.0, (-2.5, 2.5, 2.5))
+    g.light("fill_point", "point", (0.6, 0.7, 1.0), 8.0, (3.0, 1.0, 2.5))
+    g.light("top_spot", "spot", (1.0, 1.0, 0.95), 30.0, (0.0, 4.0, 1.0), (0.0, 0.0, 0.0), 0.3, 0.5,
+            {"exponent": 2})
+    g.light("back_spot", "spot", (0.8, 0.9, 1.0), 25.0, (1.5, 1.5, -3.0), (0.0, 0.0, 0.0), 0.4, 0.7,
+            {"exponent": 1, "constant": 0, "linear": 0, "quadratic": 1})
+    g.light("sun", "directional", (1.0, 0.95, 0.85), 1.2, (0.0, 5.0, 0.0), (1.0, 4.0, -0.5))
+    g.light("ground_bounce", "directional", (0.35, 0.4, 0.5), 0.3, (0.0, -5.0, 0.0), (0.0, 5.0, 0.0))
+    g.camera("main", (0.0, 1.0, 6.0), (0.0, 0.0, 0.0), 0.7)
+    g.write({"camera": 0,
+             "probes": [{"name": "grace", "position": [0, 1, 0], "image": "../../shared/data/probes/grace.hdr",
+                         "scale": 1.0, "size": 64}],
+             "ambient": [{"position": [0, 0, 0], "from_probe": 0},
+                         {"position": [4, 0, 0], "cube": [[0.20, 0.18, 0.15], [0.05, 0.06, 0.08],
+                                                          [0.25, 0.27, 0.30], [0.04, 0.035, 0.03],
+                                                          [0.10, 0.10, 0.12], [0.08, 0.08, 0.08]]}],
+             "hdr": {"path": "integer", "tone_map_scale": 1.0}})
+
+
+def world_lighting():
+    g = Gltf("world_lighting")
+    W = "LightmappedGeneric"
+    floor = g.material("floor_tiles", {"shader": W, "$envmap": 1, "$normalmapalphaenvmapmask": 1,
+                                       "$envmaptint": [0.4, 0.4, 0.4], "$fresnelreflection": 0.3},
+                       base="tiles.png", normal="tiles_normal.png")
+    ceiling = g.material("ceiling_plaster", {"shader": W}, base="plaster.png")
+    brick = g.material("wall_brick", {"shader": W}, base="brick.png", normal="brick_normal.png")
+    stone = g.material("wall_stone_ssbump", {"shader": W, "$ssbump": 1}, base="stone.png", normal="stone_ssbump.png")
+    crate = g.material("crate_masked", {"shader": W, "$envmap": 1, "$envmapmask": g.tex("crate_mask.png"),
+                                        "probe": 1, "$envmaptint": [0.8, 0.8, 0.8]}, base="crate.png")
+    glossy = g.material("glossy_tile_basealpha", {"shader": W, "$envmap": 1, "$basealphaenvmapmask": 1,
+                                                  "$envmapcontrast": 0.3, "$envmapsaturation": 0.8},
+                        base="glossy_tile.png", normal="brick_normal.png")
+    const = g.material("plinth_const_mask", {"shader": W, "$envmap": 1, "$envmapmask": g.tex("const_mask.png"),
+                                             "$envmapscale": 0.8}, base="plaster.png")
+    X, Y, Z = 4.0, 3.0, 3.0
+    g.mesh("floor", [(quad([-X, 0, Z], [2 * X, 0, 0], [0, 0, -2 * Z], 2 * X / 2, 2 * Z / 2), floor)])
+    g.mesh("ceiling", [(quad([-X, Y, -Z], [2 * X, 0, 0], [0, 0, 2 * Z], 2 * X / 2, 2 * Z / 2), ceiling)])
+    g.mesh("wall_back", [(quad([-X, 0, -Z], [2 * X, 0, 0], [0, Y, 0], 2 * X / 2, Y / 2), brick)])
+    g.mesh("wall_front", [(quad([X, 0, Z], [-2 * X, 0, 0], [0, Y, 0], 2 * X / 2, Y / 2), brick)])
+    g.mesh("wall_left", [(quad([-X, 0, Z], [0, 0, -2 * Z], [0, Y, 0], 2 * Z / 2, Y / 2), brick)])
+    g.mesh("wall_right_ssbump", [(quad([X, 0, -Z], [0, 0, 2 * Z], [0, Y, 0], 2 * Z / 1.5, Y / 1.5), stone)])
+    g.mesh("crate", [(q, crate) for q in box_quads((-2.6, 0.0, -1.8), (1.0, 1.0, 1.0))])
+    g.mesh("pillar", [(q, glossy) for q in box_quads((2.4, 0.0, -1.6), (0.8, 1.8, 0.8), 0.5)])
+    g.mesh("plinth", [(q, const) for q in box_quads((-0.5, 0.0, -0.5), (0.6, 0.6, 0.6))])
+    g.light("lamp_left", "point", (1.0, 0.85, 0.65), 6.0, (-2.5, 2.6, -1.0))
+    g.light("lamp_right", "point", (0.7, 0.8, 1.0), 5.0, (2.5, 2.6, 1.0))
+    g.light("lamp_low", "point", (1.0, 0.95, 0.9), 3.0, (0.0, 1.2, 2.0))
+    g.camera("corner_view", (3.2, 1.7, 2.4), (-4.0, 0.8, -3.0), 1.0)
+    g.write({"camera": 0,
+             "probes": [{"name": "room_centre", "position": [0, 1.5, 0], "size": 64},
+                        {"name": "by_the_crate", "position": [-2.6, 1.0, -1.0], "size": 32}],
+             "lightmaps": {"luxels_per_unit": 8, "encoding": "rgbe", "page": [512, 256]},
+             "hdr": {"path": "integer", "tone_map_scale": 1.0}})
+
+
+def hdr_atrium():
+    g = Gltf("hdr_atrium")
+    M = "VertexLitGeneric"
+    marble = g.material("marble", {"shader": M, "$halflambert": 1}, base="marble.png")
+    floor = g.material("atrium_floor", {"shader": M, "$halflambert": 0}, base="tiles.png")
+    gold = g.material("gold", {"shader": M, "$phong": 1, "$phongexponent": 60, "$phongboost": 3.0,
+                               "$phongtint": [1.0, 0.8, 0.4], "$phongfresnelranges": [0.4, 0.7, 1.0],
+                               "$envmap": 1, "$envmaptint": [1.0, 0.8, 0.45], "$envmapfresnel": 0.3,
+                               "$rimlight": 1, "$rimlightboost": 1.5},
+                      base="metal.png", normal="metal_normal.png")
+    matte = g.material("matte_blue", {"shader": M}, color=(0.25, 0.35, 0.7, 1))
+    panel = g.material("light_panel", {"shader": M, "$selfillum": 1, "$selfillumtint": [24.0, 21.0, 17.0]},
+                       color=(1, 1, 1, 1))
+    sphere = uv_sphere(0.7, 48, 24)
+    g.mesh("floor", [(quad([-5, 0, 4], [10, 0, 0], [0, 0, -8], 5, 4), floor)])
+    g.mesh("marble_sphere", [(sphere, marble)], translation=[-1.8, 0.7, 0.0])
+    g.mesh("gold_torus", [(torus(0.6, 0.25, 48, 24), gold)], translation=[0.0, 0.85, -0.3],
+           rotation=[0.3826834, 0.0, 0.0, 0.9238795])
+    g.mesh("matte_sphere", [(sphere, matte)], translation=[1.8, 0.7, 0.0])
+    g.mesh("light_panel", [(quad([-1.5, 1.2, -3.5], [3.0, 0, 0], [0, 1.2, 0]), panel)])
+    g.light("sun_lamp", "point", (1.0, 0.92, 0.8), 200.0, (0.0, 5.0, 2.0))
+    g.light("cool_fill", "point", (0.6, 0.75, 1.0), 20.0, (-4.0, 2.0, 3.0))
+    g.light("stage_spot", "spot", (1.0, 0.95, 0.9), 120.0, (2.5, 4.5, 2.5), (0.0, 0.5, 0.0), 0.25, 0.45,
+            {"exponent": 1})
+    g.light("skylight", "directional", (0.9, 0.95, 1.0), 20.0, (0.0, 8.0, 0.0), (-0.3, 7.0, -0.4))
+    g.camera("main", (0.0, 1.8, 6.0), (0.0, 0.8, 0.0), 0.75)
+    g.write({"camera": 0,
+             "probes": [{"name": "uffizi", "position": [0, 1, 0], "image": "../../shared/data/probes/uffizi.hdr",
+                         "scale": 4.0, "size": 64}],
+             "ambient": [{"position": [0, 0.8, 0], "from_probe": 0}],
+             "hdr": {"path": "float", "tone_map_scale": 1.0, "auto_exposure": True, "exposure_min": 0.02,
+                     "exposure_max": 4.0, "bloom": 0.3,
+                     "luts": [{"file": "luts/day_for_night.cube", "weight": 0.3},
+                              {"file": "luts/desaturate.cube", "weight": 0.2}]}})
+
+
+if __name__ == "__main__":
+    make_textures()
+    model_lighting()
+    world_lighting()
+    hdr_atrium()
+    print("wrote scenes/model_lighting.gltf, scenes/world_lighting.gltf, scenes/hdr_atrium.gltf")
