@@ -8,11 +8,13 @@
 
 #include "cli.h"
 #include "conform.h"
+#include "draw_dump.h"
 #include "gl_render.h"
 #include "image_io.h"
 #include "scene.h"
 #include "scene_effects.h"
 #include "scene_frame.h"
+#include "scene_prepare.h"
 
 namespace {
 
@@ -49,17 +51,20 @@ bool compile_all(const SceneSelection &sel, Backend b, Api api, double *ms, std:
 
 int cmd_render(int argc, char **argv) {
   Args a("render", argc, argv, {"--help", "--check", "--quiet", "--progress", "--compile-all"},
-         {"--tier", "--backend", "--api", "--hdr", "--size", "-o", "--threads", "--exposure-frames"});
+         {"--tier", "--backend", "--api", "--hdr", "--size", "-o", "--threads", "--exposure-frames", "--dump-draws"});
   if (a.flag("--help")) {
     puts("usage: tiershade render SCENE.gltf [--tier ps20|ps2b|sm3] [--backend egl|osmesa|cpu]\n"
          "                        [--api gles3|gles2|gl33] [--hdr integer|float] [--size WxH] -o OUT\n"
          "                        [--check] [--compile-all] [--threads N] [--progress] [--quiet]\n"
+         "                        [--dump-draws DIR]\n"
          "Renders a glTF 2.0 scene (docs/scenes.md) with only the shader variants it needs and writes\n"
          "OUT.exr (the lit pass, RGBA32F as the shaders wrote it) and OUT.png (the final frame).\n"
          "Defaults: sm3, EGL surfaceless GLES 3.0 (OSMesa: GL 3.3), the scene's HDR path, 1280x720.\n"
          "--backend cpu renders with the C fallback alone (its own rasteriser, the bit-exact twins).\n"
          "--check: on GL, also shades GL's own G-buffer with the C twin and fails unless equal bit for bit.\n"
-         "--compile-all: also compiles every combo of the families used, to measure what the selection saved.");
+         "--compile-all: also compiles every combo of the families used, to measure what the selection saved.\n"
+         "--dump-draws DIR: GL: writes the draws (geometry, uniform values, textures) and the lit frame, for\n"
+         "a bare engine to replay with a shader bundle (docs/bundles.md; tests/bundle/bare_gl_render).");
     return 0;
   }
   if (a.positional().size() != 1) a.fail("expected one scene file (tiershade render SCENE.gltf -o OUT)");
@@ -85,6 +90,25 @@ int cmd_render(int argc, char **argv) {
   cfg.exposure_frames = a.get_int("--exposure-frames", cfg.exposure_frames, 1, 10000);
   cfg.check = a.flag("--check");
   if (cfg.check && cfg.backend == Backend::CPU) a.fail("--check compares GL with C: it needs a GL backend");
+  if (a.has("--dump-draws") && cfg.backend == Backend::CPU) a.fail("--dump-draws captures GL draws: it needs a GL backend");
+  DumpFrame dump;
+  std::string dump_err;
+  if (a.has("--dump-draws")) {
+    cfg.on_draw = [&](const GlFns &gl, const PreparedDraw &d, GLuint prog) {
+      DumpDraw dd;
+      dd.shader = d.variant->shader->name;
+      dd.variant = d.variant->name();
+      dd.position = d.position;
+      dd.normal = d.normal;
+      dd.uv = d.uv;
+      dd.tangent = d.tangent;
+      dd.lightmap = d.lightmap;
+      dd.indices = d.indices;
+      dd.textures = d.textures;
+      if (!dump_capture_uniforms(gl, prog, &dd.uniforms, &dump_err) && dump_err.empty()) dump_err = "uniform capture failed";
+      dump.draws.push_back(std::move(dd));
+    };
+  }
   const bool quiet = a.flag("--quiet");
   const bool show_progress = a.flag("--progress") || isatty(2);
   if (show_progress)
@@ -123,6 +147,16 @@ int cmd_render(int argc, char **argv) {
     return 1;
   }
   const double total_ms = std::chrono::duration<double, std::milli>(Clock::now() - t0).count();
+  if (a.has("--dump-draws")) {
+    dump.w = res.w;
+    dump.h = res.h;
+    dump.depth_format = "DEPTH_COMPONENT24";  // as glue/scene_gl.cpp allocates it
+    dump.rgba = res.lit.rgba;
+    if (!dump_err.empty() || !write_draw_dump(a.get("--dump-draws"), dump, &dump_err)) {
+      fprintf(stderr, "tiershade render: --dump-draws: %s\n", dump_err.c_str());
+      return 1;
+    }
+  }
   if (!write_exr(out + ".exr", res.lit, &err) || !write_png(out + ".png", display_image(res), Encode::Linear, &err)) {
     fprintf(stderr, "tiershade render: %s\n", err.c_str());
     return 1;

@@ -85,7 +85,7 @@ bool SceneGl::init(const PreparedScene &p, std::string *err, double *compile_ms)
   g.TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
   g.GenRenderbuffers(1, &depth_);
   g.BindRenderbuffer(GL_RENDERBUFFER, depth_);
-  g.RenderbufferStorage(GL_RENDERBUFFER, api_ == Api::GLES2 ? GL_DEPTH_COMPONENT16 : GL_DEPTH_COMPONENT24, p.w, p.h);
+  g.RenderbufferStorage(GL_RENDERBUFFER, GL_DEPTH_COMPONENT24, p.w, p.h);
   g.BindFramebuffer(GL_FRAMEBUFFER, fbo_);
   g.FramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, color_, 0);
   g.FramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER, depth_);

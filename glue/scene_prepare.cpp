@@ -307,7 +307,8 @@ bool prepare_scene(const Scene &s, const SceneSelection &sel, int w, int h, Api 
   }
   const SceneCamera &cam = s.cameras[s.camera];
   double vp[16];
-  camera_matrix(cam, cam.aspect > 0 ? cam.aspect : static_cast<double>(w) / h, vp);
+  // The output's aspect: a glTF aspectRatio that differs would stretch the picture.
+  camera_matrix(cam, static_cast<double>(w) / h, vp);
   for (int i = 0; i < 16; ++i) {
     ps.view_proj[i] = static_cast<float>(vp[i]);
     ps.model[i] = (i % 5 == 0) ? 1.f : 0.f;
