@@ -44,6 +44,9 @@ struct ShaderFamily {
   int pixel_slots;  // slots that stay per pixel in deferred frames
   // Sets the production uniforms from the shared slots (deferred frames).
   void (*bind_uniforms)(const GlFns &gl, GLuint program, const std::vector<ts_vec4f> &shared);
+  // Optional fast path: out[i] = eval_f(v, in, x0 + i, y) for i < count, bit for bit, computed
+  // several pixels at a time (SIMD). cpu_render_frame uses it when set; nullptr = per pixel.
+  void (*eval_row_f)(const Variant &v, const FamilyInputs &in, int x0, int y, int count, ts_vec4f *out) = nullptr;
 };
 
 const ShaderFamily *find_family(const std::string &name);

@@ -6,6 +6,7 @@
 
 #include "family.h"
 #include "model_lighting.h"
+#include "model_lighting_batch.h"
 
 namespace {
 
@@ -76,6 +77,23 @@ ts_vec4f eval_f(const Variant &v, const FamilyInputs &in, int x, int y) {
   ts_vec4f rec[ML_SLOTS];
   gather(in, x, y, rec);
   return model_lighting_f(&cached_ml(v), rec, &cached_views(in));
+}
+
+// The batch twin straight on the record texture: slot k of pixels (x0.., y) is a run of
+// texels (stride 1); slots past in.slots are the frame's shared ones (stride 0).
+void eval_row_f(const Variant &v, const FamilyInputs &in, int x0, int y, int count, ts_vec4f *out) {
+  static_assert(sizeof(ts_vec4f) == 4 * sizeof(float), "ts_vec4f is 4 packed floats");
+  ml_batch_input b;
+  for (int k = 0; k < ML_SLOTS; ++k) {
+    if (k < in.slots) {
+      b.slot[k] = reinterpret_cast<const ts_vec4f *>(&in.records[(static_cast<size_t>(y + k * in.h) * in.w + x0) * 4]);
+      b.stride[k] = 1;
+    } else {
+      b.slot[k] = &in.shared.at(k);
+      b.stride[k] = 0;
+    }
+  }
+  model_lighting_f_batch(&cached_ml(v), &b, &cached_views(in), out, count);
 }
 
 ts_vec4d eval_d(const Variant &v, const FamilyInputs &in, int x, int y) {
@@ -338,5 +356,6 @@ void bind_uniforms(const GlFns &gl, GLuint program, const std::vector<ts_vec4f> 
 
 const ShaderFamily kModelLightingFamily = {
     "model_lighting", ML_SLOTS, slot_names(), make_inputs, eval_f, eval_d, output_range, ML_PIXEL_SLOTS, bind_uniforms,
+    eval_row_f,
 };
 const FamilyRegistrar kRegister(&kModelLightingFamily);

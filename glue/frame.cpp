@@ -2,6 +2,7 @@
 #include "frame.h"
 
 #include <algorithm>
+#include <cstring>
 #include <thread>
 
 #include "conform.h"
@@ -58,6 +59,15 @@ void cpu_render_frame(const ShaderFamily &f, const Variant &v, const FamilyInput
   out->w = in.w;
   out->h = in.h;
   out->rgba.assign(static_cast<size_t>(in.w) * in.h * 4, 0.f);
+  if (f.eval_row_f) {  // the family's SIMD path: a row per call
+    parallel_rows(in.h, threads, [&](int y) {
+      thread_local std::vector<ts_vec4f> row;
+      row.resize(static_cast<size_t>(in.w));
+      f.eval_row_f(v, in, 0, y, in.w, row.data());
+      std::memcpy(&out->rgba[static_cast<size_t>(y) * in.w * 4], row.data(), row.size() * sizeof(ts_vec4f));
+    });
+    return;
+  }
   parallel_rows(in.h, threads, [&](int y) {
     for (int x = 0; x < in.w; ++x) {
       const ts_vec4f c = f.eval_f(v, in, x, y);

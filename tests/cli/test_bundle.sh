@@ -130,11 +130,12 @@ fi
 
 # --- scenes: tiershade render --dump-draws replayed by the bare program --------------------
 scenes=("$HERE"/scenes/*.gltf)
-"$TS" render --help > /dev/null 2>&1; have_render=$?
+have_render=1
+"$TS" render --help 2>&1 | grep -q -- '--dump-draws' && have_render=0
 if [ ! -x "$BARE" ]; then
   fail "bare program" "$BARE is missing (make builds it)"
 elif [ $have_render -ne 0 ] || [ ! -e "${scenes[0]}" ]; then
-  skip "scene bundles" "tiershade render or scenes/*.gltf not there yet"
+  skip "scene bundles" "tiershade render --dump-draws or scenes/*.gltf not there yet"
 else
   # corrupt DIR: sets the first element of every u_view_proj to 0.5 (2.0 if it was 0.5).
   corrupt() {
@@ -147,11 +148,11 @@ else
     for tier in sm3 ps20; do
       for pair in essl300:gles3 glsl330:gl33 essl100:gles2; do
         target=${pair%%:*} api=${pair##*:} name="$s $tier $target"
-        rm -rf bb dd frame.exr
+        rm -rf bb dd frame.exr frame.png
         run variants "$scene" --tier $tier --target $target -o bb
         if crashed "$name bundle"; then continue; fi
         if [ "$RC" -ne 0 ]; then fail "$name bundle" "status $RC: $(head -n 1 "$ERR")"; continue; fi
-        run render "$scene" --tier $tier --backend egl --api $api --size 160x90 -o frame.exr --dump-draws dd
+        run render "$scene" --tier $tier --backend egl --api $api --size 160x90 -o frame --dump-draws dd
         if crashed "$name render"; then continue; fi
         if [ "$RC" -ne 0 ] || [ ! -s dd/draws.json ]; then fail "$name render --dump-draws" "status $RC: $(head -n 1 "$ERR")"; continue; fi
         got=$("${TIMEOUT[@]}" "$BARE" --bundle bb --dump dd --api $api 2>&1); st=$?

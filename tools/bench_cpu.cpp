@@ -1,0 +1,102 @@
+// ============================================================================
+// tiershade -- tools/bench_cpu.cpp
+// A small timing harness for the C fallback, not part of `make test` or `make all`:
+// the model_lighting rows of `tiershade bench` (1024x1024 sphere grid / Phong ball),
+// llvmpipe (OSMesa GL 3.3) and cpu_render_frame (2 threads) in the same run, and
+// whether the two frames are bit-equal. Build (after `make all`):
+//   g++ -std=c++17 -O2 -ffp-contract=off -Iglue -Ic_ref -Ibuild/gen tools/bench_cpu.cpp \
+//       $(ls build/obj/c_ref/*.o build/obj/glue/*.o | grep -v main.o) build/obj/gen/shader_sources.o \
+//       -lOSMesa -lEGL $(pkg-config --libs OpenEXR libpng OpenColorIO) -lpthread -lm -o build/bench_cpu
+// Usage: build/bench_cpu [runs] [row-substring]
+// ============================================================================
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+#include <string>
+#include <vector>
+
+#include "frame.h"
+#include "gl_context.h"
+#include "scene_spheres.h"
+#include "variants.h"
+
+namespace {
+double now_ms() {
+  return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now().time_since_epoch()).count();
+}
+double median(std::vector<double> v) {
+  std::sort(v.begin(), v.end());
+  return v.empty() ? 0 : v[v.size() / 2];
+}
+struct Row {
+  const char *label, *variant;
+  int max_local;
+  bool phong_scene;
+};
+}  // namespace
+
+int main(int argc, char **argv) {
+  const int runs = argc > 1 ? atoi(argv[1]) : 5;
+  const char *only = argc > 2 ? argv[2] : "";
+  const int n = 1024;
+  std::vector<ShaderDecl> decls;
+  std::string err;
+  if (!load_shader_decls(&decls, &err)) return fprintf(stderr, "%s\n", err.c_str()), 1;
+  const ShaderFamily *fam = find_family("model_lighting");
+  const Row rows[] = {
+      {"ps20", "ps20:ALBEDO_TEXTURE=1,HALF_LAMBERT=1,NUM_LIGHTS=2", 2, false},
+      {"ps2b", "ps2b:ALBEDO_TEXTURE=1,HALF_LAMBERT=1,OUTPUT_MODE=1,NUM_LIGHTS=4", 4, false},
+      {"sm3", "sm3:ALBEDO_TEXTURE=1,HALF_LAMBERT=1,OUTPUT_MODE=2", 4, false},
+      {"ps2b Phong", "ps2b:ALBEDO_TEXTURE=1,HALF_LAMBERT=1,OUTPUT_MODE=2,PHONG=1,PHONG_EXPONENT_MAP=1,NUM_LIGHTS=4", 4,
+       true},
+      {"ps2b full",
+       "ps2b:ALBEDO_TEXTURE=1,HALF_LAMBERT=1,OUTPUT_MODE=2,PHONG=1,PHONG_EXPONENT_MAP=1,RIM_LIGHT=1,ENVMAP=1,NUM_LIGHTS=4", 4,
+       true},
+      {"sm3 full", "sm3:ALBEDO_TEXTURE=1,HALF_LAMBERT=1,OUTPUT_MODE=2,PHONG=1,PHONG_EXPONENT_MAP=1,RIM_LIGHT=1,ENVMAP=1", 4,
+       true},
+  };
+  const SphereScene grid = default_sphere_scene();
+  std::string note;
+  const SphereScene ball = phong_sphere_scene("../shared/data/probes/grace.hdr", &note);
+  printf("%-12s %10s %10s %8s %10s\n", "row", "llvmpipe", "C 2thr", "C/llvm", "mismatch");
+  for (const Row &row : rows) {
+    if (*only && !strstr(row.label, only)) continue;
+    Variant v;
+    if (!find_variant(decls, "model_lighting", row.variant, &v, &err)) return fprintf(stderr, "%s\n", err.c_str()), 1;
+    SphereFrame frame;
+    if (!sphere_frame(row.phong_scene ? ball : grid, n, n, row.max_local, &frame, &err))
+      return fprintf(stderr, "%s\n", err.c_str()), 1;
+    ImageF gl_img, cpu;
+    std::vector<double> tg, tc;
+    {
+      auto ctx = GlContext::create(Backend::OSMesa, Api::GL33, &err);
+      if (!ctx) return fprintf(stderr, "%s\n", err.c_str()), 1;
+      GlRenderer r(*ctx);
+      GlFrameProgram fp;
+      if (!gl_frame_setup(r, Api::GL33, *fam, v, frame.in, &fp, &err)) return fprintf(stderr, "%s\n", err.c_str()), 1;
+      double ms = 0;
+      gl_frame_draw(r, fp, frame.in, &gl_img, &ms, &err);
+      for (int i = 0; i < runs; ++i) {
+        gl_frame_draw(r, fp, frame.in, &gl_img, &ms, &err);
+        tg.push_back(ms);
+      }
+      gl_frame_release(r, &fp);
+    }
+    for (int i = 0; i < runs; ++i) {
+      const double t0 = now_ms();
+      cpu_render_frame(*fam, v, frame.in, &cpu, 2);
+      tc.push_back(now_ms() - t0);
+    }
+    long mism = 0;
+    for (size_t p = 0; p < cpu.rgba.size(); ++p) {
+      const float a = cpu.rgba[p], b = gl_img.rgba[p];
+      if (std::memcmp(&a, &b, 4) != 0 && !(a != a && b != b)) ++mism;
+    }
+    const double g = median(tg), c = median(tc);
+    printf("%-12s %10.2f %10.2f %8.2f %10ld\n", row.label, g, c, c / g, mism);
+    fflush(stdout);
+  }
+  return 0;
+}
