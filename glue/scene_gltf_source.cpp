@@ -136,8 +136,6 @@ bool read_source(const tinygltf::Model &m, const tinygltf::Value &src, const std
     for (const auto &n : needs_phong)
       if (n.on && !mat->phong) return e.fail(place, quoted(n.key) + " needs \"$phong\": 1 (ps2b/sm3 Phong feature)");
     if (mat->phong) {
-      if (mat->base_texture.image < 0)
-        return e.fail(place, "\"$phong\" needs a pbrMetallicRoughness.baseColorTexture (Phong models are textured)");
       if (explicit_half_lambert && !mat->half_lambert)
         return e.fail(place + ".$halflambert", "0 conflicts with \"$phong\" (Phong forces half-Lambert)");
       mat->half_lambert = true;
