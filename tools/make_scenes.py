@@ -417,13 +417,13 @@ def model_lighting():
                  root=False)
     g.node({"name": "torus_parent", "translation": [1.5, 0.0, -0.5], "scale": [1.1, 1.1, 1.1], "children": [tor]})
     g.mesh("glow_sphere", [(sphere, glow)], translation=[3.0, 0.0, 0.0])
-    g.light("key_point", "point", (1.0, 0.9, 0.8), 20.0, (-2.5, 2.5, 2.5))
-    g.light("fill_point", "point", (0.6, 0.7, 1.0), 8.0, (3.0, 1.0, 2.5))
-    g.light("top_spot", "spot", (1.0, 1.0, 0.95), 30.0, (0.0, 4.0, 1.0), (0.0, 0.0, 0.0), 0.3, 0.5,
+    g.light("key_point", "point", (1.0, 0.9, 0.8), 10.0, (-2.5, 2.5, 2.5))
+    g.light("fill_point", "point", (0.6, 0.7, 1.0), 4.0, (3.0, 1.0, 2.5))
+    g.light("top_spot", "spot", (1.0, 1.0, 0.95), 15.0, (0.0, 4.0, 1.0), (0.0, 0.0, 0.0), 0.3, 0.5,
             {"exponent": 2})
-    g.light("back_spot", "spot", (0.8, 0.9, 1.0), 25.0, (1.5, 1.5, -3.0), (0.0, 0.0, 0.0), 0.4, 0.7,
+    g.light("back_spot", "spot", (0.8, 0.9, 1.0), 12.0, (1.5, 1.5, -3.0), (0.0, 0.0, 0.0), 0.4, 0.7,
             {"exponent": 1, "constant": 0, "linear": 0, "quadratic": 1})
-    g.light("sun", "directional", (1.0, 0.95, 0.85), 1.2, (0.0, 5.0, 0.0), (1.0, 4.0, -0.5))
+    g.light("sun", "directional", (1.0, 0.95, 0.85), 0.6, (0.0, 5.0, 0.0), (1.0, 4.0, -0.5))
     g.light("ground_bounce", "directional", (0.35, 0.4, 0.5), 0.3, (0.0, -5.0, 0.0), (0.0, 5.0, 0.0))
     g.camera("main", (0.0, 1.0, 6.0), (0.0, 0.0, 0.0), 0.7)
     g.write({"camera": 0,
@@ -457,8 +457,8 @@ def world_lighting():
     g.mesh("ceiling", [(quad([-X, Y, -Z], [2 * X, 0, 0], [0, 0, 2 * Z], 2 * X / 2, 2 * Z / 2), ceiling)])
     g.mesh("wall_back", [(quad([-X, 0, -Z], [2 * X, 0, 0], [0, Y, 0], 2 * X / 2, Y / 2), brick)])
     g.mesh("wall_front", [(quad([X, 0, Z], [-2 * X, 0, 0], [0, Y, 0], 2 * X / 2, Y / 2), brick)])
-    g.mesh("wall_left", [(quad([-X, 0, Z], [0, 0, -2 * Z], [0, Y, 0], 2 * Z / 2, Y / 2), brick)])
-    g.mesh("wall_right_ssbump", [(quad([X, 0, -Z], [0, 0, 2 * Z], [0, Y, 0], 2 * Z / 1.5, Y / 1.5), stone)])
+    g.mesh("wall_left_ssbump", [(quad([-X, 0, Z], [0, 0, -2 * Z], [0, Y, 0], 2 * Z / 1.5, Y / 1.5), stone)])
+    g.mesh("wall_right", [(quad([X, 0, -Z], [0, 0, 2 * Z], [0, Y, 0], 2 * Z / 2, Y / 2), brick)])
     g.mesh("crate", [(q, crate) for q in box_quads((-2.6, 0.0, -1.8), (1.0, 1.0, 1.0))])
     g.mesh("pillar", [(q, glossy) for q in box_quads((2.4, 0.0, -1.6), (0.8, 1.8, 0.8), 0.5)])
     g.mesh("plinth", [(q, const) for q in box_quads((-0.5, 0.0, -0.5), (0.6, 0.6, 0.6))])
@@ -503,7 +503,7 @@ def hdr_atrium():
              "probes": [{"name": "uffizi", "position": [0, 1, 0], "image": "../../shared/data/probes/uffizi.hdr",
                          "scale": 4.0, "size": 64}],
              "ambient": [{"position": [0, 0.8, 0], "from_probe": 0}],
-             "hdr": {"path": "float", "tone_map_scale": 1.0, "auto_exposure": True, "exposure_min": 0.02,
+             "hdr": {"path": "float", "tone_map_scale": 0.3, "auto_exposure": True, "exposure_min": 0.02,
                      "exposure_max": 4.0, "bloom": 0.3,
                      "luts": [{"file": "luts/day_for_night.cube", "weight": 0.3},
                               {"file": "luts/desaturate.cube", "weight": 0.2}]}})
