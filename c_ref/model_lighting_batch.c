@@ -61,42 +61,6 @@
 #include "model_lighting_simd_impl.h"
 #endif
 
-static int g_forced = -1;
-static int g_host = -1;
-
-static int host_isa(void) {
-  if (g_host < 0) {
-#ifdef TS_BATCH_X86
-    __builtin_cpu_init();
-    g_host = __builtin_cpu_supports("avx2") ? TS_BATCH_AVX2 : TS_BATCH_SSE2;
-#else
-    g_host = TS_BATCH_SCALAR;
-#endif
-  }
-  return g_host;
-}
-
-static int host_fma(void) {
-#ifdef TS_BATCH_X86
-  __builtin_cpu_init();
-  return __builtin_cpu_supports("fma");
-#else
-  return 0;
-#endif
-}
-
-void ts_batch_force_isa(int isa) { g_forced = isa; }
-
-int ts_batch_isa(void) {
-  int isa = host_isa();
-  if (g_forced >= 0 && g_forced < isa) isa = g_forced;
-  if (ts_math_fused()) {
-    /* fused mads need the FMA instance (AVX2+FMA); anything else runs the scalar twin */
-    if (isa != TS_BATCH_AVX2 || !host_fma()) isa = TS_BATCH_SCALAR;
-  }
-  return isa;
-}
-
 static void batch_scalar(const ml_variant *v, const ml_batch_input *in, const ml_textures *tex, ts_vec4f *out,
                          int count) {
   for (int i = 0; i < count; ++i) {

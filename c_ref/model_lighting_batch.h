@@ -12,12 +12,13 @@
  * points at its one value; a G-buffer slot of a row of pixels has stride 1. For whole records
  * stored one after the other (ts_vec4f recs[count][ML_SLOTS]) use model_lighting_f_records().
  * Any count >= 0 works; a multiple of 8 is fastest. The fused-mad mode is read from ts_math
- * (ts_math_fused()) at each call, and the instruction set is chosen once from the host
- * (AVX2 with FMA when llvmpipe fuses, else AVX2 or SSE2; elsewhere the scalar twin).
+ * (ts_math_fused()) at each call, and the instruction set is chosen from the host (ts_batch.h:
+ * AVX2 with FMA when llvmpipe fuses, else AVX2 or SSE2; elsewhere the scalar twin).
  * Verified bit for bit against model_lighting_f by tests/unit/test_fast_path.cpp. */
 #ifndef TS_MODEL_LIGHTING_BATCH_H
 #define TS_MODEL_LIGHTING_BATCH_H
 #include "model_lighting.h"
+#include "ts_batch.h"
 
 #ifdef __cplusplus
 extern "C" {
@@ -34,11 +35,6 @@ void model_lighting_f_batch(const ml_variant *v, const ml_batch_input *in, const
 /* The same for whole records: recs[i * ML_SLOTS + k] is slot k of pixel i. */
 void model_lighting_f_records(const ml_variant *v, const ts_vec4f *recs, const ml_textures *tex, ts_vec4f *out,
                               int count);
-
-/* Instruction sets of the batch path (tests and benchmarks). */
-enum { TS_BATCH_SCALAR = 0, TS_BATCH_SSE2 = 1, TS_BATCH_AVX2 = 2 };
-int ts_batch_isa(void);                /* what the next call will use (given the fused mode) */
-void ts_batch_force_isa(int isa);      /* -1 = automatic; a level the host lacks is lowered */
 
 #ifdef __cplusplus
 }

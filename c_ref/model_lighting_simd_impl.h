@@ -9,28 +9,11 @@
 
 /* Slot k of the block's pixels (pix[j] = pixel index of lane j). */
 TSV_INL V4v VFN(ml_rec)(const ml_batch_input *in, int k, const size_t *pix) {
-  const float *p = (const float *)in->slot[k];
-  const size_t s = (size_t)in->stride[k] * 4u;
-  V4v r;
-  if (s == 0) {
-    r.x = VFN(splat)(p[0]); r.y = VFN(splat)(p[1]); r.z = VFN(splat)(p[2]); r.w = VFN(splat)(p[3]);
-    return r;
-  }
-  float t[4][TSV_W];
-  for (int j = 0; j < TSV_W; ++j) {
-    const float *q = p + pix[j] * s;
-    t[0][j] = q[0]; t[1][j] = q[1]; t[2][j] = q[2]; t[3][j] = q[3];
-  }
-  return VFN(load4)(t);
+  return VFN(rec_load)(in->slot[k], in->stride[k], pix);
 }
 
 TSV_INL V3v VFN(ml_rec3)(const ml_batch_input *in, int k, const size_t *pix) {
   return VFN(xyz)(VFN(ml_rec)(in, k, pix));
-}
-
-/* common_math.h safe_normalize: v * inversesqrt(max(dot(v, v), 1e-30)). */
-TSV_INL V3v VFN(safe_normalize)(V3v v) {
-  return VFN(scale3)(v, VFN(inversesqrt)(VFN(max)(VFN(dot3)(v, v), VFN(splat)(1.0e-30f))));
 }
 
 /* common_ambient_cube.h, with the cube read from slots ML_SLOT_AMBIENT.. */

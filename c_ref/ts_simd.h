@@ -169,3 +169,29 @@ TSV_INL V4v VFN(sel4)(VI m, V4v a, V4v b) {
   r.z = VFN(sel)(m, a.z, b.z); r.w = VFN(sel)(m, a.w, b.w);
   return r;
 }
+
+/* Slot values of a block: lane j reads base[pix[j] * stride] (stride 0: one value, broadcast). */
+TSV_INL V4v VFN(rec_load)(const ts_vec4f *base, int stride, const size_t *pix) {
+  const float *p = (const float *)base;
+  const size_t s = (size_t)stride * 4u;
+  V4v r;
+  if (s == 0) {
+    r.x = VFN(splat)(p[0]); r.y = VFN(splat)(p[1]); r.z = VFN(splat)(p[2]); r.w = VFN(splat)(p[3]);
+    return r;
+  }
+  float t[4][TSV_W];
+  for (int j = 0; j < TSV_W; ++j) {
+    const float *q = p + pix[j] * s;
+    t[0][j] = q[0]; t[1][j] = q[1]; t[2][j] = q[2]; t[3][j] = q[3];
+  }
+  __builtin_memcpy(&r.x, t[0], sizeof(VF));
+  __builtin_memcpy(&r.y, t[1], sizeof(VF));
+  __builtin_memcpy(&r.z, t[2], sizeof(VF));
+  __builtin_memcpy(&r.w, t[3], sizeof(VF));
+  return r;
+}
+
+/* common_math.h safe_normalize: v * inversesqrt(max(dot(v, v), 1e-30)). */
+TSV_INL V3v VFN(safe_normalize)(V3v v) {
+  return VFN(scale3)(v, VFN(inversesqrt)(VFN(max)(VFN(dot3)(v, v), VFN(splat)(1.0e-30f))));
+}

@@ -4,6 +4,8 @@
 // shared with the demo and the benchmark through family_world_lighting.h.
 #include "family_world_lighting.h"
 
+#include "world_lighting_batch.h"
+
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -51,6 +53,24 @@ ts_vec4f eval_f(const Variant &v, const FamilyInputs &in, int x, int y) {
   const wl_variant w = wl_variant_of(v);
   const TexViews tv(in);
   return world_lighting_f(&w, rec, &tv.t);
+}
+
+// The batch twin on the record texture's row (stride 1); shared slots have stride 0.
+void eval_row_f(const Variant &v, const FamilyInputs &in, int x0, int y, int count, ts_vec4f *out) {
+  static_assert(sizeof(ts_vec4f) == 4 * sizeof(float), "ts_vec4f is 4 packed floats");
+  wl_batch_input b;
+  for (int k = 0; k < WL_SLOTS; ++k) {
+    if (k < in.slots) {
+      b.slot[k] = reinterpret_cast<const ts_vec4f *>(&in.records[(static_cast<size_t>(y + k * in.h) * in.w + x0) * 4]);
+      b.stride[k] = 1;
+    } else {
+      b.slot[k] = &in.shared.at(k);
+      b.stride[k] = 0;
+    }
+  }
+  const wl_variant w = wl_variant_of(v);
+  const TexViews tv(in);
+  world_lighting_f_batch(&w, &b, &tv.t, out, count);
 }
 
 ts_vec4d eval_d(const Variant &v, const FamilyInputs &in, int x, int y) {
@@ -363,6 +383,6 @@ void wl_bind_uniforms(const GlFns &gl, GLuint program, const std::vector<ts_vec4
 
 const ShaderFamily kWorldLightingFamily = {
     "world_lighting", WL_SLOTS, slot_names(), make_inputs, eval_f, eval_d, output_range, WL_PIXEL_SLOTS,
-    wl_bind_uniforms,
+    wl_bind_uniforms, eval_row_f,
 };
 static const FamilyRegistrar kRegister(&kWorldLightingFamily);

@@ -2,11 +2,12 @@
 // tiershade -- tools/bench_cpu.cpp
 // A small timing harness for the C fallback, not part of `make test` or `make all`:
 // the model_lighting rows of `tiershade bench` (1024x1024 sphere grid / Phong ball),
-// llvmpipe (OSMesa GL 3.3) and cpu_render_frame (2 threads) in the same run, and
-// whether the two frames are bit-equal. Build (after `make all`):
+// llvmpipe (OSMesa GL 3.3) and cpu_render_frame (2 threads) in the same run: the per-pixel
+// scalar path (the family with eval_row_f cleared) and the fast path, and whether the GL and
+// both C frames are bit-equal. Build (after `make all`):
 //   g++ -std=c++17 -O2 -ffp-contract=off -Iglue -Ic_ref -Ibuild/gen tools/bench_cpu.cpp \
 //       $(ls build/obj/c_ref/*.o build/obj/glue/*.o | grep -v main.o) build/obj/gen/shader_sources.o \
-//       -lOSMesa -lEGL $(pkg-config --libs OpenEXR libpng OpenColorIO) -lpthread -lm -o build/bench_cpu
+//       -lOSMesa -lEGL $(pkg-config --libs OpenEXR libpng OpenColorIO tinygltf) -lpthread -lm -o build/bench_cpu
 // Usage: build/bench_cpu [runs] [row-substring]
 // ============================================================================
 #include <algorithm>
@@ -60,7 +61,9 @@ int main(int argc, char **argv) {
   const SphereScene grid = default_sphere_scene();
   std::string note;
   const SphereScene ball = phong_sphere_scene("../shared/data/probes/grace.hdr", &note);
-  printf("%-12s %10s %10s %8s %10s\n", "row", "llvmpipe", "C 2thr", "C/llvm", "mismatch");
+  printf("%-12s %10s %12s %8s %10s %8s %10s\n", "row", "llvmpipe", "C scalar", "C/llvm", "C fast", "C/llvm", "mismatch");
+  ShaderFamily scalar_fam = *fam;
+  scalar_fam.eval_row_f = nullptr;
   for (const Row &row : rows) {
     if (*only && !strstr(row.label, only)) continue;
     Variant v;
@@ -68,8 +71,8 @@ int main(int argc, char **argv) {
     SphereFrame frame;
     if (!sphere_frame(row.phong_scene ? ball : grid, n, n, row.max_local, &frame, &err))
       return fprintf(stderr, "%s\n", err.c_str()), 1;
-    ImageF gl_img, cpu;
-    std::vector<double> tg, tc;
+    ImageF gl_img, cpu, cpu_scalar;
+    std::vector<double> tg, tc, ts;
     {
       auto ctx = GlContext::create(Backend::OSMesa, Api::GL33, &err);
       if (!ctx) return fprintf(stderr, "%s\n", err.c_str()), 1;
@@ -85,17 +88,22 @@ int main(int argc, char **argv) {
       gl_frame_release(r, &fp);
     }
     for (int i = 0; i < runs; ++i) {
-      const double t0 = now_ms();
+      double t0 = now_ms();
       cpu_render_frame(*fam, v, frame.in, &cpu, 2);
       tc.push_back(now_ms() - t0);
+      if (i < 3) {  // the slow path: 3 frames are enough
+        t0 = now_ms();
+        cpu_render_frame(scalar_fam, v, frame.in, &cpu_scalar, 2);
+        ts.push_back(now_ms() - t0);
+      }
     }
     long mism = 0;
     for (size_t p = 0; p < cpu.rgba.size(); ++p) {
-      const float a = cpu.rgba[p], b = gl_img.rgba[p];
-      if (std::memcmp(&a, &b, 4) != 0 && !(a != a && b != b)) ++mism;
+      const float a = cpu.rgba[p], b = gl_img.rgba[p], c = cpu_scalar.rgba[p];
+      if (std::memcmp(&a, &b, 4) != 0 || std::memcmp(&a, &c, 4) != 0) ++mism;
     }
-    const double g = median(tg), c = median(tc);
-    printf("%-12s %10.2f %10.2f %8.2f %10ld\n", row.label, g, c, c / g, mism);
+    const double g = median(tg), c = median(tc), sc = median(ts);
+    printf("%-12s %10.2f %12.2f %8.2f %10.2f %8.2f %10ld\n", row.label, g, sc, sc / g, c, c / g, mism);
     fflush(stdout);
   }
   return 0;

@@ -7,7 +7,8 @@
 // input grids (64x64, make_inputs) and on a deferred-style grid (6 per-pixel slots, the
 // other 36 shared, stride 0), through the family glue (eval_row_f against eval_f, rows
 // starting and ending off a multiple of 8) and through model_lighting_f_records in chunks
-// of 1..13 pixels (every tail length). Each instruction set the host has (AVX2, SSE2) in
+// of 1..13 pixels (every tail length); and the same row check for every world_lighting variant
+// (c_ref/world_lighting_batch.c) on its random, hard and deferred grids. Each instruction set the host has (AVX2, SSE2) in
 // each fused-mad mode it can run (fused only where the host has FMA: that is when llvmpipe
 // fuses; GALLIUM_OVERRIDE_CPU_CAPS=sse4.1 makes it unfused, which ts_math_set_fused(0)
 // stands for here).
@@ -91,6 +92,39 @@ struct Tally {
   }
   std::string detail() const { return std::to_string(bad) + " of " + std::to_string(pixels) + " pixels differ; first " + first; }
 };
+
+// eval_row_f against eval_f for every variant of `fam` on `in`, in the current fused mode, for each
+// instruction set in `isas` the host runs; rows start and end off the 8-pixel blocks.
+void check_family_rows(const ShaderFamily &fam, const std::vector<Variant> &variants, const FamilyInputs &in,
+                       const char *grid, int fused) {
+  const struct {
+    int level;
+    const char *name;
+  } isas[2] = {{TS_BATCH_AVX2, "avx2"}, {TS_BATCH_SSE2, "sse2"}};
+  for (const auto &isa : isas) {
+    ts_batch_force_isa(isa.level);
+    if (ts_batch_isa() != isa.level) continue;
+    Tally t;
+    std::vector<ts_vec4f> got(static_cast<size_t>(in.w));
+    for (const Variant &v : variants) {
+      for (int y = 0; y < in.h; ++y) {
+        const int x0 = y % 5, count = in.w - x0 - (y % 3);
+        fam.eval_row_f(v, in, x0, y, count, got.data());
+        for (int p = 0; p < count; ++p) {
+          const ts_vec4f want = fam.eval_f(v, in, x0 + p, y);
+          t.add(same_bits(got[p], want), v.name() + " pixel (" + std::to_string(x0 + p) + "," + std::to_string(y) + ")",
+                got[p], want);
+        }
+      }
+    }
+    check(t.bad == 0,
+          std::string(fam.name) + " " + isa.name + (fused ? " fused " : " unfused ") + grid +
+              ": eval_row_f = eval_f, all " + std::to_string(variants.size()) + " variants (" + std::to_string(t.pixels) +
+              " pixels)",
+          t.detail());
+  }
+  ts_batch_force_isa(-1);
+}
 
 }  // namespace
 
@@ -232,6 +266,29 @@ int main() {
     check(phong && differ > 0, "the check discriminates: fused fast path vs unfused scalar twin differ",
           std::to_string(differ) + " pixels differ");
     printf("  (%ld of %d pixels differ between the fused fast path and the unfused twin)\n", differ, in.w * in.h);
+  }
+
+  // world_lighting: the same row check on its random, hard and deferred grids.
+  {
+    const ShaderFamily *wl = find_family("world_lighting");
+    const ShaderDecl *wdecl = nullptr;
+    for (const ShaderDecl &d : decls)
+      if (d.name == "world_lighting") wdecl = &d;
+    check(wl && wl->eval_row_f && wdecl, "world_lighting has a fast path");
+    if (wl && wl->eval_row_f && wdecl) {
+      const std::vector<Variant> wvars = enumerate_variants(*wdecl, all_tiers(), &err);
+      FamilyInputs wr, wh;
+      wl->make_inputs(InputSet::Random, n, n, 4321u, &wr);
+      wl->make_inputs(InputSet::Hard, n, n, 8765u, &wh);
+      const FamilyInputs wd = deferred_copy(wr, wl->pixel_slots);
+      for (int fused : fused_modes) {
+        ts_math_set_fused(fused);
+        check_family_rows(*wl, wvars, wr, "random", fused);
+        check_family_rows(*wl, wvars, wh, "hard", fused);
+        check_family_rows(*wl, wvars, wd, "deferred", fused);
+      }
+      ts_math_set_fused(host_fma);
+    }
   }
 
   // The API on an empty batch writes nothing.
