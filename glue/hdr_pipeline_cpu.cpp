@@ -8,6 +8,7 @@
 #include "hdr_pipeline.h"
 #include "hdr_tonemap.h"
 #include "model_lighting.h"
+#include "parallel_rows.h"
 
 namespace {
 
@@ -90,7 +91,8 @@ void hdr_float_frame_c(const ShaderFamily &lit, const Variant &v, const FamilyIn
   hdr_post_float_c(hdr, scene.w, scene.h, s, out);
 }
 
-void hdr_post_float_c(const std::vector<float> &hdr, int w, int h, const HdrSettings &s, HdrFrameC *out) {
+void hdr_post_float_c(const std::vector<float> &hdr, int w, int h, const HdrSettings &s, HdrFrameC *out,
+                      int threads) {
   out->w = w;
   out->h = h;
   out->hdr = hdr;
@@ -103,7 +105,7 @@ void hdr_post_float_c(const std::vector<float> &hdr, int w, int h, const HdrSett
   const ts_tex2d bloom = tex_of(out->bloom, out->bw, out->bh, true);
   const ht_variant tv = {2};
   out->display.resize(static_cast<size_t>(w) * h * 4);
-  for (int y = 0; y < h; ++y)
+  scene_parallel_rows(h, threads, [&](int y) {
     for (int x = 0; x < w; ++x) {
       const size_t i = static_cast<size_t>(y) * w + x;
       const float *fb = &out->hdr[i * 4];
@@ -115,6 +117,7 @@ void hdr_post_float_c(const std::vector<float> &hdr, int w, int h, const HdrSett
       out->display[i * 4 + 2] = ts_unorm8_from_float(c.z);
       out->display[i * 4 + 3] = ts_unorm8_from_float(c.w);
     }
+  });
 }
 
 void hdr_float_frame_reference(const ShaderFamily &lit, const Variant &v_linear, const FamilyInputs &scene,

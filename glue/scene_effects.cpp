@@ -59,7 +59,10 @@ const Variant *match(const std::vector<Variant> &all, const ShaderDecl *d, Tier 
 void model_choice(const Scene &s, const ScenePrimitive &p, const SceneMaterial &m, Tier tier, bool float_path,
                   Wanted *w, SceneDrawChoice *c) {
   const bool sm2b = tier != Tier::PS20;
-  const bool phong = sm2b && m.phong;
+  // Self-illumination is computed in the shader's Phong path only (model_lighting.fs): a
+  // $selfillum material without $phong takes that path with the specular term off.
+  const bool phong_for_self_illum = sm2b && !m.phong && m.self_illum;
+  const bool phong = sm2b && (m.phong || phong_for_self_illum);
   const bool has_probe = !s.probes.empty();
   const bool textured = m.base_texture.image >= 0;
   if (phong)
@@ -82,7 +85,9 @@ void model_choice(const Scene &s, const ScenePrimitive &p, const SceneMaterial &
   }
   w->set("OUTPUT_MODE", out_mode, out_why);
   if (sm2b) {
-    w->set("PHONG", phong ? 1 : 0, m.phong ? "$phong" : "no $phong");
+    w->set("PHONG", phong ? 1 : 0,
+           m.phong ? "$phong"
+                   : (phong_for_self_illum ? "$selfillum lives in the Phong path: Phong with $phongboost 0" : "no $phong"));
     if (phong) {
       w->set("PHONG_EXPONENT_MAP", m.phong_exponent_texture.image >= 0 ? 1 : 0,
              m.phong_exponent_texture.image >= 0 ? "$phongexponenttexture" : "constant $phongexponent: no exponent fetch");
@@ -96,6 +101,8 @@ void model_choice(const Scene &s, const ScenePrimitive &p, const SceneMaterial &
     }
   } else if (m.phong) {
     c->why.push_back("$phong dropped: ps20 has no Phong (talk: Phong is an Episode One ps_2_b feature)");
+  } else if (m.self_illum) {
+    c->why.push_back("$selfillum dropped: ps20 has no Phong path, where self-illumination is computed");
   }
   const int n = static_cast<int>(s.lights.size());
   const int local = std::min(n, max_local_lights(tier));

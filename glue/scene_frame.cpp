@@ -6,17 +6,18 @@
 #include <memory>
 
 #include "cc_inputs.h"
-#include "exposure_control.h"
+#include "color_correction.h"
+#include "parallel_rows.h"
 #include "family.h"
 #include "frame.h"
 #include "hdr_formats.h"
 #include "hdr_pipeline.h"
 #include "lut_bake.h"
 #include "lut_io.h"
-#include "luminance_histogram.h"
 #include "scene_cpu.h"
 #include "scene_gl.h"
 #include "scene_prepare.h"
+#include "static_exposure.h"
 
 namespace {
 
@@ -29,28 +30,6 @@ float srgb_encode(float v) {
   if (v >= 1.f) return 1.f;
   const double d = v;
   return static_cast<float>(d <= 0.0031308 ? d * 12.92 : 1.055 * std::pow(d, 1.0 / 2.4) - 0.055);
-}
-
-// Auto exposure on a static frame: the running histogram (one bucket per frame) and Source's
-// controller, run for `frames` frames at 30 fps on the fp16 linear frame (float path).
-double auto_exposure(const std::vector<float> &hdr, int w, int h, const SceneHdr &sh, int frames) {
-  HistogramConfig hc;
-  hc.w = w;
-  hc.h = h;
-  hc.input_encoding = 0;
-  hc.alpha = 1.0;  // a static frame: the temporal prefilter changes nothing
-  LuminanceHistogramCpu hist(hc);
-  ae_settings s;
-  ae_default_settings(&s);
-  s.min_exposure = sh.exposure_min;
-  s.max_exposure = sh.exposure_max;
-  ae_state st;
-  ae_state_init(&st, sh.tone_map_scale, 0.0);
-  for (int f = 0; f < frames; ++f) {
-    hist.frame(hdr.data(), static_cast<float>(st.scale), f, nullptr);
-    ae_update(&st, &hist.histogram(), &s, 1.0 / 30.0);
-  }
-  return st.scale;
 }
 
 bool load_luts(const SceneHdr &sh, std::vector<Lut3D> *out, std::string *err) {
@@ -182,13 +161,16 @@ bool render_scene(const Scene &s, const SceneSelection &sel, const SceneRenderCo
     hs.tone_map_scale = s.hdr.tone_map_scale;
     hs.bloom_amount = s.hdr.bloom_amount;
     if (s.hdr.auto_exposure) {
-      hs.tone_map_scale = static_cast<float>(auto_exposure(hdr, cfg.w, cfg.h, s.hdr, cfg.exposure_frames));
+      const StaticLuminance lum(hdr.data(), cfg.w, cfg.h);
+      hs.tone_map_scale = static_cast<float>(
+          run_static_exposure(lum, s.hdr.tone_map_scale, s.hdr.exposure_min, s.hdr.exposure_max, cfg.exposure_frames)
+              .scale);
       res.auto_exposure = true;
     }
     res.tone_map_scale = hs.tone_map_scale;
     if (cpu) {
       HdrFrameC f;
-      hdr_post_float_c(hdr, cfg.w, cfg.h, hs, &f);
+      hdr_post_float_c(hdr, cfg.w, cfg.h, hs, &f, cfg.threads);
       res.display = std::move(f.display);
     } else {
       HdrPipelineGl pipe(*runner, cfg.api);
@@ -223,7 +205,25 @@ bool render_scene(const Scene &s, const SceneSelection &sel, const SceneRenderCo
     cc_set_luts(&in, lp, true);
     ImageF cc;
     if (cpu) {
-      cpu_render_frame(*fam, v, in, &cc, cfg.threads);
+      // The twin per pixel with the LUT views made once (the family's generic eval remakes them).
+      const cc_variant cv = {v.value("LUT_ATLAS"), v.value("SHADER_TRILINEAR"), v.value("NUM_LOOKUPS")};
+      cc_luts views;
+      cc_luts_of(in, &views);
+      cc.w = in.w;
+      cc.h = in.h;
+      cc.rgba.assign(n * 4, 0.f);
+      scene_parallel_rows(in.h, cfg.threads, [&](int y) {
+        for (int x = 0; x < in.w; ++x) {
+          ts_vec4f rec[CC_SLOTS];
+          for (int k = 0; k < CC_SLOTS; ++k) rec[k] = in.slot(x, y, k);
+          const ts_vec4f c = color_correction_f(&cv, rec, &views);
+          float *o = &cc.rgba[(static_cast<size_t>(y) * in.w + x) * 4];
+          o[0] = c.x;
+          o[1] = c.y;
+          o[2] = c.z;
+          o[3] = c.w;
+        }
+      });
     } else {
       GlFrameProgram fp;
       if (!gl_frame_setup(*renderer, cfg.api, *fam, v, in, &fp, err)) return false;

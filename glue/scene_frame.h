@@ -25,7 +25,7 @@ struct SceneRenderConfig {
   int w = 1280, h = 720;
   int threads = 0;     // C fallback workers (0 = all cores)
   bool check = false;  // GL: also shade GL's own G-buffer with the C twin and compare bit for bit
-  int exposure_frames = 90;  // auto exposure: frames of the running histogram run on the static frame
+  int exposure_frames = 300;  // auto exposure: frames (at 30 fps) of the running histogram on the still frame
   // Progress of long stages: (stage, fraction done).
   std::function<void(const char *, double)> progress;
   // GL: called for each draw after its program, uniforms and textures are bound (draw capture).

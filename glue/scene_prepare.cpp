@@ -238,7 +238,9 @@ bool model_draw(const Scene &s, const PreparedScene &ps, const SceneDrawChoice &
       d->shared[ML_SLOT_LIGHT0 + 5 * i + k] = v4(packed[k][0], packed[k][1], packed[k][2], packed[k][3]);
   }
   d->shared[ML_SLOT_EYE] = v4(ps.eye[0], ps.eye[1], ps.eye[2], 1);
-  d->shared[ML_SLOT_PHONG] = v4(m.phong_exponent, m.phong_exponent_factor, m.phong_boost, m.base_alpha_phong_mask ? 1.f : 0.f);
+  // A $selfillum material without $phong runs the Phong path with the specular term off.
+  const float boost = m.phong ? m.phong_boost : 0.f;
+  d->shared[ML_SLOT_PHONG] = v4(m.phong_exponent, m.phong_exponent_factor, boost, m.base_alpha_phong_mask ? 1.f : 0.f);
   const float *fr = m.phong_fresnel_ranges;
   d->shared[ML_SLOT_FRESNEL] = v4((fr[1] - fr[0]) * 2, fr[1], (fr[2] - fr[1]) * 2, m.invert_phong_mask ? 1.f : 0.f);
   d->shared[ML_SLOT_PHONG_TINT] = v4(m.phong_tint[0], m.phong_tint[1], m.phong_tint[2], m.phong_albedo_tint ? 1.f : 0.f);
