@@ -9,10 +9,10 @@ int cmd_variants_bundle(const Args &a);  // glue/cmd_variants_bundle.cpp
 
 int cmd_variants(int argc, char **argv) {
   Args a("variants", argc, argv, {"--list", "--json", "--help", "--count"},
-         {"--shader", "--tier", "--variant", "--target", "-o"});
+         {"--shader", "--tier", "--variant", "--target", "-o", "--hdr"});
   if (a.flag("--help")) {
     puts("usage: tiershade variants [--list] [--json] [--count] [--shader S] [--tier ps20|ps2b|sm3]...\n"
-         "       tiershade variants SCENE --tier T [--target essl100|essl300|glsl330] -o DIR\n"
+         "       tiershade variants SCENE --tier T [--target essl100|essl300|glsl330] [--hdr integer|float] -o DIR\n"
          "       tiershade variants --shader S [--variant V]... [--tier T]... [--target T] -o DIR\n"
          "Lists every variant: tier x static combos x dynamic combos, minus the skip rules\n"
          "declared in shaders/<shader>.variants. A variant is named TIER:NAME=V,... and can\n"

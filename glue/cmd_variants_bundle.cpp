@@ -54,7 +54,7 @@ int scene_bundle(const Args &a, Target target) {
   Scene scene;
   SceneSelection sel;
   std::string err;
-  if (!load_scene(path, &scene, &err) || !select_scene_variants(scene, tier, "", &sel, &err)) a.fail(err);
+  if (!load_scene(path, &scene, &err) || !select_scene_variants(scene, tier, a.get("--hdr"), &sel, &err)) a.fail(err);
   std::vector<BundleEntry> entries;
   for (size_t i = 0; i < sel.variants.size(); ++i)
     entries.push_back({&sel.variants[i], i < sel.variant_why.size() ? sel.variant_why[i] : std::vector<std::string>()});
