@@ -170,6 +170,38 @@ TSV_INL V4v VFN(sel4)(VI m, V4v a, V4v b) {
   return r;
 }
 
+/* Four consecutive floats at p[j] for each lane j, as x, y, z, w vectors (SoA). */
+#if TSV_AVX
+TSV_INL V4v VFN(gather4)(const float *const p[TSV_W]) {
+  /* one 128-bit load per lane, lanes j and j+4 in one register, then a 4x4 transpose per half */
+  const __m256 r0 = _mm256_insertf128_ps(_mm256_castps128_ps256(_mm_loadu_ps(p[0])), _mm_loadu_ps(p[4]), 1);
+  const __m256 r1 = _mm256_insertf128_ps(_mm256_castps128_ps256(_mm_loadu_ps(p[1])), _mm_loadu_ps(p[5]), 1);
+  const __m256 r2 = _mm256_insertf128_ps(_mm256_castps128_ps256(_mm_loadu_ps(p[2])), _mm_loadu_ps(p[6]), 1);
+  const __m256 r3 = _mm256_insertf128_ps(_mm256_castps128_ps256(_mm_loadu_ps(p[3])), _mm_loadu_ps(p[7]), 1);
+  const __m256 t0 = _mm256_unpacklo_ps(r0, r1), t1 = _mm256_unpackhi_ps(r0, r1);
+  const __m256 t2 = _mm256_unpacklo_ps(r2, r3), t3 = _mm256_unpackhi_ps(r2, r3);
+  V4v r;
+  r.x = (VF)_mm256_shuffle_ps(t0, t2, 0x44);
+  r.y = (VF)_mm256_shuffle_ps(t0, t2, 0xEE);
+  r.z = (VF)_mm256_shuffle_ps(t1, t3, 0x44);
+  r.w = (VF)_mm256_shuffle_ps(t1, t3, 0xEE);
+  return r;
+}
+#else
+TSV_INL V4v VFN(gather4)(const float *const p[TSV_W]) {
+  float t[4][TSV_W];
+  V4v r;
+  for (int j = 0; j < TSV_W; ++j) {
+    t[0][j] = p[j][0]; t[1][j] = p[j][1]; t[2][j] = p[j][2]; t[3][j] = p[j][3];
+  }
+  __builtin_memcpy(&r.x, t[0], sizeof(VF));
+  __builtin_memcpy(&r.y, t[1], sizeof(VF));
+  __builtin_memcpy(&r.z, t[2], sizeof(VF));
+  __builtin_memcpy(&r.w, t[3], sizeof(VF));
+  return r;
+}
+#endif
+
 /* Slot values of a block: lane j reads base[pix[j] * stride] (stride 0: one value, broadcast). */
 TSV_INL V4v VFN(rec_load)(const ts_vec4f *base, int stride, const size_t *pix) {
   const float *p = (const float *)base;
@@ -179,16 +211,9 @@ TSV_INL V4v VFN(rec_load)(const ts_vec4f *base, int stride, const size_t *pix) {
     r.x = VFN(splat)(p[0]); r.y = VFN(splat)(p[1]); r.z = VFN(splat)(p[2]); r.w = VFN(splat)(p[3]);
     return r;
   }
-  float t[4][TSV_W];
-  for (int j = 0; j < TSV_W; ++j) {
-    const float *q = p + pix[j] * s;
-    t[0][j] = q[0]; t[1][j] = q[1]; t[2][j] = q[2]; t[3][j] = q[3];
-  }
-  __builtin_memcpy(&r.x, t[0], sizeof(VF));
-  __builtin_memcpy(&r.y, t[1], sizeof(VF));
-  __builtin_memcpy(&r.z, t[2], sizeof(VF));
-  __builtin_memcpy(&r.w, t[3], sizeof(VF));
-  return r;
+  const float *q[TSV_W];
+  for (int j = 0; j < TSV_W; ++j) q[j] = p + pix[j] * s;
+  return VFN(gather4)(q);
 }
 
 /* common_math.h safe_normalize: v * inversesqrt(max(dot(v, v), 1e-30)). */

@@ -1,8 +1,8 @@
 /* tiershade -- c_ref/ts_simd_sampler.h
  * c_ref/ts_sampler.c on TSV_W lanes: RGBA32F 2D LINEAR (REPEAT / CLAMP_TO_EDGE, POT / NPOT)
  * and cube maps (CLAMP_TO_EDGE, seamless off), same addressing and lerps, bit for bit.
- * Addressing and filtering are vector code; the texel reads are one scalar load per lane and
- * corner. NEAREST filtering, which no frame of ours uses, calls the scalar sampler per lane.
+ * Addressing and filtering are vector code; the texel reads are one RGBA load per lane and
+ * corner, transposed to SoA (ts_simd.h gather4). NEAREST filtering, which no frame of ours uses, calls the scalar sampler per lane.
  * Included after c_ref/ts_simd.h, once per instruction set (no include guard). */
 
 /* lp_build_sample_wrap_linear (ts_sampler.c wrap_linear), then fetch_safe's clamp. */
@@ -65,22 +65,18 @@ TSV_INL V4v VFN(load4)(const float t[4][TSV_W]) {
 static V4v VFN(bilinear)(const float *const tx[TSV_W], int w, int h, int wrap_s, int wrap_t, VF u, VF v) {
   VI x0, x1, y0, y1;
   VF wx, wy;
-  float t00[4][TSV_W], t10[4][TSV_W], t01[4][TSV_W], t11[4][TSV_W];
+  const float *p00[TSV_W], *p10[TSV_W], *p01[TSV_W], *p11[TSV_W];
   VFN(wrap_linear)(u, w, wrap_s, &x0, &x1, &wx);
   VFN(wrap_linear)(v, h, wrap_t, &y0, &y1, &wy);
   for (int j = 0; j < TSV_W; ++j) {
     const float *r0 = tx[j] + (size_t)y0[j] * (size_t)w * 4u, *r1 = tx[j] + (size_t)y1[j] * (size_t)w * 4u;
-    const float *p00 = r0 + (size_t)x0[j] * 4u, *p10 = r0 + (size_t)x1[j] * 4u;
-    const float *p01 = r1 + (size_t)x0[j] * 4u, *p11 = r1 + (size_t)x1[j] * 4u;
-    for (int c = 0; c < 4; ++c) {
-      t00[c][j] = p00[c];
-      t10[c][j] = p10[c];
-      t01[c][j] = p01[c];
-      t11[c][j] = p11[c];
-    }
+    p00[j] = r0 + (size_t)x0[j] * 4u;
+    p10[j] = r0 + (size_t)x1[j] * 4u;
+    p01[j] = r1 + (size_t)x0[j] * 4u;
+    p11[j] = r1 + (size_t)x1[j] * 4u;
   }
-  return VFN(lerp4)(wy, VFN(lerp4)(wx, VFN(load4)(t00), VFN(load4)(t10)),
-                    VFN(lerp4)(wx, VFN(load4)(t01), VFN(load4)(t11)));
+  return VFN(lerp4)(wy, VFN(lerp4)(wx, VFN(gather4)(p00), VFN(gather4)(p10)),
+                    VFN(lerp4)(wx, VFN(gather4)(p01), VFN(gather4)(p11)));
 }
 
 static V4v VFN(texture2D)(const ts_tex2d *t, VF u, VF v) {

@@ -21,6 +21,9 @@
 #include "frame.h"
 #include "gl_context.h"
 #include "scene_spheres.h"
+#include "scene_world.h"
+#include "ts_batch.h"
+#include "world_render.h"
 #include "variants.h"
 
 namespace {
@@ -104,6 +107,59 @@ int main(int argc, char **argv) {
     }
     const double g = median(tg), c = median(tc), sc = median(ts);
     printf("%-12s %10.2f %12.2f %8.2f %10.2f %8.2f %10ld\n", row.label, g, sc, sc / g, c, c / g, mism);
+    fflush(stdout);
+  }
+  // world_lighting: the demo's room (one pass per cube-map probe) at 1024x512, the demo's tiers.
+  // "C scalar" here is the batch API forced to the scalar twin (ts_batch_force_isa).
+  if (*only && !strstr("world", only)) return 0;
+  const WorldScene scene = default_world_scene();
+  WorldBake bake;
+  WorldFrame wf;
+  if (!bake_world(scene, &bake, &err) || !world_frame(scene, bake, 1024, 512, &wf, &err))
+    return fprintf(stderr, "%s\n", err.c_str()), 1;
+  const char *wrows[3][2] = {{"world ps20", "ps20:BUMPMAP=1,LIGHTMAP_ENCODING=1,ENVMAP=1,ENVMAPMASK=1"},
+                             {"world ps2b", "ps2b:BUMPMAP=1,LIGHTMAP_ENCODING=0,ENVMAP=1,ENVMAPMASK=1"},
+                             {"world sm3", "sm3:BUMPMAP=1,LIGHTMAP_ENCODING=0,ENVMAP=1,ENVMAPMASK=1"}};
+  for (const auto &wr : wrows) {
+    Variant v;
+    if (!find_variant(decls, "world_lighting", wr[1], &v, &err)) return fprintf(stderr, "%s\n", err.c_str()), 1;
+    const TextureDesc page = encode_page(scene, bake, v.value("LIGHTMAP_ENCODING"));
+    const WorldPass pass{&v, &page, false, false};
+    ImageF gl_img, cpu, cpu_scalar;
+    std::vector<double> tg, tc, ts;
+    {
+      auto ctx = GlContext::create(Backend::OSMesa, Api::GL33, &err);
+      if (!ctx) return fprintf(stderr, "%s\n", err.c_str()), 1;
+      GlRenderer r(*ctx);
+      WorldGl g;
+      if (!world_gl_setup(r, Api::GL33, wf, bake, pass, &g, &err)) return fprintf(stderr, "%s\n", err.c_str()), 1;
+      double ms = 0;
+      world_gl_draw(r, g, wf, &gl_img, &err, &ms);
+      for (int i = 0; i < runs; ++i) {
+        world_gl_draw(r, g, wf, &gl_img, &err, &ms);
+        tg.push_back(ms);
+      }
+      world_gl_release(r, &g);
+    }
+    for (int i = 0; i < runs; ++i) {
+      double t0 = now_ms();
+      world_render_cpu(wf, bake, pass, &cpu, 2);
+      tc.push_back(now_ms() - t0);
+      if (i < 3) {
+        ts_batch_force_isa(TS_BATCH_SCALAR);
+        t0 = now_ms();
+        world_render_cpu(wf, bake, pass, &cpu_scalar, 2);
+        ts.push_back(now_ms() - t0);
+        ts_batch_force_isa(-1);
+      }
+    }
+    long mism = 0;
+    for (size_t p = 0; p < cpu.rgba.size(); ++p) {
+      const float a = cpu.rgba[p], b = gl_img.rgba[p], c = cpu_scalar.rgba[p];
+      if (std::memcmp(&a, &b, 4) != 0 || std::memcmp(&a, &c, 4) != 0) ++mism;
+    }
+    const double gm = median(tg), cm = median(tc), sm = median(ts);
+    printf("%-12s %10.2f %12.2f %8.2f %10.2f %8.2f %10ld\n", wr[0], gm, sm, sm / gm, cm, cm / gm, mism);
     fflush(stdout);
   }
   return 0;
