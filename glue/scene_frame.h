@@ -47,6 +47,26 @@ struct SceneRenderResult {
   std::vector<std::string> notes;
 };
 
+// A renderer kept across frames (benchmarks): init() prepares the draws and, on GL, compiles
+// the selected variants and uploads everything; frame() renders one frame (the first one
+// also JIT-compiles the shaders on llvmpipe).
+class SceneRenderer {
+ public:
+  SceneRenderer();
+  ~SceneRenderer();
+  SceneRenderer(const SceneRenderer &) = delete;
+  SceneRenderer &operator=(const SceneRenderer &) = delete;
+  bool init(const Scene &s, const SceneSelection &sel, const SceneRenderConfig &cfg, std::string *err);
+  bool frame(SceneRenderResult *out, std::string *err);
+  double prepare_ms() const;
+  double compile_ms() const;
+
+ private:
+  struct Impl;
+  Impl *impl_;
+};
+
+// One frame: init + frame; res->frame_ms includes both.
 bool render_scene(const Scene &s, const SceneSelection &sel, const SceneRenderConfig &cfg, SceneRenderResult *out,
                   std::string *err);
 
