@@ -240,9 +240,11 @@ std::string basename_of(const std::string &p) {
 }  // namespace
 
 int cmd_bench(int argc, char **argv) {
-  Args a("bench", argc, argv, {"--help"}, {"-o", "--size", "--runs"});
+  Args a("bench", argc, argv, {"--help"}, {"-o", "--size", "--runs", "--section"});
   if (a.flag("--help")) {
-    puts("usage: tiershade bench [-o docs/accuracy_cost.md] [--size N] [--runs K]\n"
+    puts("usage: tiershade bench [-o docs/accuracy_cost.md] [--size N] [--runs K] [--section NAME]\n"
+         "--section NAME runs one registered section (e.g. scenes, world_lighting) and prints its\n"
+         "markdown without writing any file.\n"
          "Measures, for each tier of each shader family, in one run: instruction slots, llvmpipe\n"
          "milliseconds per N x N frame (median of K draws; OSMesa GL 3.3 and EGL GLES 3.0), the\n"
          "cold first frame (compile + JIT, Mesa's shader cache off), the C fallback's milliseconds\n"
@@ -259,6 +261,22 @@ int cmd_bench(int argc, char **argv) {
   cx.cores = std::max(1u, std::thread::hardware_concurrency());
   // Cold compile + JIT for the first-frame column; identical output either way.
   setenv("MESA_SHADER_CACHE_DISABLE", "true", 1);
+  if (a.has("--section")) {
+    BenchOptions bopt;
+    bopt.size = cx.n;
+    bopt.runs = cx.runs;
+    for (const BenchSection *s : bench_sections()) {
+      if (a.get("--section") != s->name) continue;
+      std::string section, e;
+      if (!s->run(bopt, &section, &e)) {
+        fprintf(stderr, "tiershade bench: %s: %s\n", s->name, e.c_str());
+        return 1;
+      }
+      printf("%s", section.c_str());
+      return 0;
+    }
+    a.fail("no bench section '" + a.get("--section") + "'");
+  }
   std::string err;
   if (!load_shader_decls(&cx.decls, &err)) a.fail(err);
   cx.fam = find_family("model_lighting");
