@@ -18,6 +18,18 @@
 
 namespace {
 
+// Peak resident memory of this process (VmHWM of /proc/self/status), MiB; -1 if unknown.
+double peak_mib() {
+  FILE *f = fopen("/proc/self/status", "r");
+  if (!f) return -1;
+  char line[256];
+  double kib = -1;
+  while (fgets(line, sizeof line, f))
+    if (sscanf(line, "VmHWM: %lf kB", &kib) == 1) break;
+  fclose(f);
+  return kib < 0 ? -1 : kib / 1024.0;
+}
+
 using Clock = std::chrono::steady_clock;
 
 bool parse_size(const std::string &s, int *w, int *h) {
@@ -50,7 +62,7 @@ bool compile_all(const SceneSelection &sel, Backend b, Api api, double *ms, std:
 }  // namespace
 
 int cmd_render(int argc, char **argv) {
-  Args a("render", argc, argv, {"--help", "--check", "--quiet", "--progress", "--compile-all"},
+  Args a("render", argc, argv, {"--help", "--check", "--quiet", "--progress", "--compile-all", "--report-memory"},
          {"--tier", "--backend", "--api", "--hdr", "--size", "-o", "--threads", "--exposure-frames", "--dump-draws"});
   if (a.flag("--help")) {
     puts("usage: tiershade render SCENE.gltf [--tier ps20|ps2b|sm3] [--backend egl|osmesa|cpu]\n"
@@ -94,7 +106,7 @@ int cmd_render(int argc, char **argv) {
   DumpFrame dump;
   std::string dump_err;
   if (a.has("--dump-draws")) {
-    cfg.on_draw = [&](const GlFns &gl, const PreparedDraw &d, GLuint prog) {
+    cfg.on_draw = [&](const GlFns &gl, const PreparedScene &ps, const PreparedDraw &d, GLuint prog) {
       DumpDraw dd;
       dd.shader = d.variant->shader->name;
       dd.variant = d.variant->name();
@@ -104,7 +116,7 @@ int cmd_render(int argc, char **argv) {
       dd.tangent = d.tangent;
       dd.lightmap = d.lightmap;
       dd.indices = d.indices;
-      dd.textures = d.textures;
+      for (int t : d.tex) dd.textures.push_back(ps.textures.at(t));
       if (!dump_capture_uniforms(gl, prog, &dd.uniforms, &dump_err) && dump_err.empty()) dump_err = "uniform capture failed";
       dump.draws.push_back(std::move(dd));
     };
@@ -184,10 +196,15 @@ int cmd_render(int argc, char **argv) {
     if (res.auto_exposure) printf("auto exposure: tone-map scale %.4f\n", res.tone_map_scale);
     printf("wrote %s.exr (lit pass) and %s.png\n", out.c_str(), out.c_str());
   }
+  if (!quiet || a.flag("--report-memory")) {
+    printf("peak memory: %.1f MiB\n", peak_mib());
+  }
   if (cfg.check) {
     printf("check: GL frame vs the C twin on GL's G-buffer: %ld of %ld covered pixels differ (max %u ULP)\n",
            res.check_mismatched, res.check_pixels, res.check_max_ulp);
-    if (res.check_mismatched != 0) return 1;
+    printf("check: HDR path and colour correction on GL vs their C twins on GL's lit frame: %ld of %ld channels differ\n",
+           res.check_post_mismatched, res.check_post_channels);
+    if (res.check_mismatched != 0 || res.check_post_mismatched != 0) return 1;
   }
   return 0;
 }

@@ -36,29 +36,32 @@ void store(std::vector<float> *img, size_t i, ts_vec4f c, bool half) {
 // The three bloom passes of the float path; `half`: store in fp16 (GL) or float32 (reference).
 template <class Down, class Blur>
 void bloom_chain(const std::vector<float> &hdr, int w, int h, Down down, Blur blur, bool half, std::vector<float> *out,
-                 int *bw_out, int *bh_out) {
+                 int *bw_out, int *bh_out, int threads = 1) {
   const int bw = hdr_bloom_size(w), bh = hdr_bloom_size(h);
   const size_t n = static_cast<size_t>(bw) * bh;
   std::vector<float> ds(n * 4), bx(n * 4);
   out->assign(n * 4, 0.f);
   const ts_tex2d src = tex_of(hdr, w, h, true);
-  for (int y = 0; y < bh; ++y)
+  scene_parallel_rows(bh, threads, [&](int y) {
     for (int x = 0; x < bw; ++x) {
       const ts_vec4f rec[BD_SLOTS] = {centre(x, y), size_of(w, h), ts_v4f(0.3f, 0.59f, 0.11f, 2.2f)};
       store(&ds, static_cast<size_t>(y) * bw + x, down(rec, &src), half);
     }
+  });
   const ts_tex2d tds = tex_of(ds, bw, bh, true);
-  for (int y = 0; y < bh; ++y)
+  scene_parallel_rows(bh, threads, [&](int y) {
     for (int x = 0; x < bw; ++x) {
       const ts_vec4f rec[BB_SLOTS] = {centre(x, y), size_of(bw, bh), ts_v4f(1.f, 0.f, 0.f, 0.f)};
       store(&bx, static_cast<size_t>(y) * bw + x, blur(0, rec, &tds), half);
     }
+  });
   const ts_tex2d tbx = tex_of(bx, bw, bh, true);
-  for (int y = 0; y < bh; ++y)
+  scene_parallel_rows(bh, threads, [&](int y) {
     for (int x = 0; x < bw; ++x) {
       const ts_vec4f rec[BB_SLOTS] = {centre(x, y), size_of(bw, bh), ts_v4f(1.f, 0.f, 0.f, 0.f)};
       store(out, static_cast<size_t>(y) * bw + x, blur(1, rec, &tbx), half);
     }
+  });
   *bw_out = bw;
   *bh_out = bh;
 }
@@ -101,7 +104,7 @@ void hdr_post_float_c(const std::vector<float> &hdr, int w, int h, const HdrSett
   bloom_chain(
       out->hdr, w, h, [&](const ts_vec4f *rec, const ts_tex2d *t) { return bloom_downsample_f(&dv, rec, t); },
       [&](int dir, const ts_vec4f *rec, const ts_tex2d *t) { return bloom_blur_f(dir ? &byv : &bxv, rec, t); }, true,
-      &out->bloom, &out->bw, &out->bh);
+      &out->bloom, &out->bw, &out->bh, threads);
   const ts_tex2d bloom = tex_of(out->bloom, out->bw, out->bh, true);
   const ht_variant tv = {2};
   out->display.resize(static_cast<size_t>(w) * h * 4);

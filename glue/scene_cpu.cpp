@@ -64,9 +64,9 @@ void make_ctx(const PreparedScene &p, std::vector<DrawCtx> *out) {
     c.world = d.world;
     for (int k = 0; k < 4; ++k) {
       const int idx = k < 3 ? k : 3;
-      c.t2[k] = tex2d_of(d.textures.at(idx));
+      c.t2[k] = tex2d_of(p.texture(d, idx));
     }
-    c.cube = texcube_of(d.textures.at(4));
+    c.cube = texcube_of(p.texture(d, 4));
     if (d.world) {
       c.wl = wl_variant_of(*d.variant);
       // u_base u_normalmap u_lightmap u_envmap_mask u_envmap

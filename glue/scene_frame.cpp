@@ -54,10 +54,6 @@ bool load_luts(const SceneHdr &sh, std::vector<Lut3D> *out, std::string *err) {
   return true;
 }
 
-void to_codes(const ImageF &img, std::vector<uint8_t> *codes) {
-  codes->resize(img.rgba.size());
-  for (size_t i = 0; i < img.rgba.size(); ++i) (*codes)[i] = ts_unorm8_from_float(img.rgba[i]);
-}
 
 }  // namespace
 
@@ -87,18 +83,26 @@ struct SceneRenderer::Impl {
   std::vector<ShaderDecl> decls;
   Variant cc_var;
   const ShaderFamily *cc_family = nullptr;
-  FamilyInputs cc_in;
-  GlFrameProgram cc_prog;
+  FamilyInputs cc_in;  // shared slots and LUT textures (the colour is per pixel)
+  GLuint cc_program = 0;
+  std::vector<GLuint> cc_lut_tex;
+  std::vector<GLenum> cc_lut_kind;
+  GlTarget cc_src, cc_dst;
   bool cc_ready = false;
   ~Impl() {
-    if (cc_ready && renderer) gl_frame_release(*renderer, &cc_prog);
+    if (renderer) {
+      for (GLuint t : cc_lut_tex) renderer->delete_texture(t);
+      free_target(renderer->gl(), &cc_src);
+      free_target(renderer->gl(), &cc_dst);
+    }
     pipe.reset();
     runner.reset();
     sgl.reset();
     renderer.reset();
     ctx.reset();
   }
-  bool colour_correct(SceneRenderResult *res, std::string *err);
+  bool colour_correct(SceneRenderResult *res, bool on_cpu, std::string *err);
+  bool post(SceneRenderResult *res, bool on_cpu, const std::vector<int> &draw_of_pixel, std::string *err);
 };
 
 SceneRenderer::SceneRenderer() : impl_(new Impl) {}
@@ -143,64 +147,142 @@ bool SceneRenderer::init(const Scene &s, const SceneSelection &sel, const SceneR
   return true;
 }
 
-bool SceneRenderer::Impl::colour_correct(SceneRenderResult *res, std::string *err) {
+bool SceneRenderer::Impl::colour_correct(SceneRenderResult *res, bool on_cpu, std::string *err) {
   const size_t n = static_cast<size_t>(cfg.w) * cfg.h;
   float weights[4] = {0, 0, 0, 0}, sum = 0;
   for (size_t i = 0; i < luts.size(); ++i) {
     weights[i] = s->hdr.luts[i].weight;
     sum += weights[i];
   }
-  const ImageF disp = display_image(*res);
-  cc_frame_inputs(disp, weights, std::max(0.f, 1.f - sum), luts[0].n, &cc_in);
-  std::vector<const Lut3D *> lp;
-  for (const Lut3D &l : luts) lp.push_back(&l);
-  cc_set_luts(&cc_in, lp, true);
-  ImageF cc;
-  const FamilyInputs &in = cc_in;
+  // The shared slots (weights, default weight, LUT addressing) and the LUT textures; the
+  // colour comes from the display frame itself (u_frame, RGBA8 as the tone map wrote it).
+  if (cc_in.textures.empty()) {
+    ImageF one;
+    one.w = one.h = 1;
+    one.rgba = {0, 0, 0, 1};
+    cc_frame_inputs(one, weights, std::max(0.f, 1.f - sum), luts[0].n, &cc_in);
+    std::vector<const Lut3D *> lp;
+    for (const Lut3D &l : luts) lp.push_back(&l);
+    cc_set_luts(&cc_in, lp, true);
+  }
   const Variant &v = cc_var;
-  if (cpu) {
-    // The twin per pixel with the LUT views made once (the family's generic eval remakes them).
+  if (on_cpu) {
     const cc_variant cv = {v.value("LUT_ATLAS"), v.value("SHADER_TRILINEAR"), v.value("NUM_LOOKUPS")};
     cc_luts views;
-    cc_luts_of(in, &views);
-    cc.w = in.w;
-    cc.h = in.h;
-    cc.rgba.assign(n * 4, 0.f);
-    scene_parallel_rows(in.h, cfg.threads, [&](int y) {
-      for (int x = 0; x < in.w; ++x) {
+    cc_luts_of(cc_in, &views);
+    std::vector<uint8_t> out(n * 4);
+    scene_parallel_rows(cfg.h, cfg.threads, [&](int y) {
+      for (int x = 0; x < cfg.w; ++x) {
+        const size_t i = (static_cast<size_t>(y) * cfg.w + x) * 4;
+        const uint8_t *c8 = &res->display[i];
         ts_vec4f rec[CC_SLOTS];
-        for (int k = 0; k < CC_SLOTS; ++k) rec[k] = in.slot(x, y, k);
+        for (int k = 0; k < CC_SLOTS; ++k) rec[k] = cc_in.shared.at(k);
+        rec[CC_SLOT_COLOR] = ts_v4f(ts_unorm8_to_float(c8[0]), ts_unorm8_to_float(c8[1]), ts_unorm8_to_float(c8[2]),
+                                    ts_unorm8_to_float(c8[3]));
         const ts_vec4f c = color_correction_f(&cv, rec, &views);
-        float *o = &cc.rgba[(static_cast<size_t>(y) * in.w + x) * 4];
-        o[0] = c.x;
-        o[1] = c.y;
-        o[2] = c.z;
-        o[3] = c.w;
+        out[i + 0] = ts_unorm8_from_float(c.x);
+        out[i + 1] = ts_unorm8_from_float(c.y);
+        out[i + 2] = ts_unorm8_from_float(c.z);
+        out[i + 3] = ts_unorm8_from_float(c.w);
       }
     });
-  } else {
-    if (!cc_ready) {
-      if (!gl_frame_setup(*renderer, cfg.api, *cc_family, v, in, &cc_prog, err)) return false;
-      cc_ready = true;
-    } else {
-      // The record (the display frame) changed: upload it again.
-      const TextureDesc rec = in.record_texture();
-      renderer->delete_texture(cc_prog.textures.at(0).second);
-      cc_prog.textures[0].second = renderer->upload_texture(rec);
-    }
-    renderer->gl().UseProgram(cc_prog.program);
-    cc_family->bind_uniforms(renderer->gl(), cc_prog.program, in.shared);
-    if (!gl_frame_draw(*renderer, cc_prog, in, &cc, nullptr, err)) return false;
+    res->display = std::move(out);
+    return true;
   }
-  to_codes(cc, &res->display);
-  for (size_t i = 0; i < n; ++i) res->display[i * 4 + 3] = 255;
+  const GlFns &g = renderer->gl();
+  if (!cc_ready) {
+    cc_program = runner->program(cfg.api, "color_correction", v.name(), err);
+    if (!cc_program) return false;
+    for (const TextureDesc &t : cc_in.textures) {
+      cc_lut_tex.push_back(renderer->upload_texture(t));
+      cc_lut_kind.push_back(t.kind == TexKind::Tex3D ? GL_TEXTURE_3D : GL_TEXTURE_2D);
+    }
+    if (!make_target(g, TargetFormat::RGBA8, cfg.w, cfg.h, &cc_dst, err)) return false;
+    if (!float_path && !make_target(g, TargetFormat::RGBA8, cfg.w, cfg.h, &cc_src, err)) return false;
+    cc_ready = true;
+  }
+  GLuint frame_tex = 0;
+  if (float_path) {
+    frame_tex = pipe->display().tex;  // the tone map's RGBA8 output, still on the GPU
+  } else {
+    g.BindTexture(GL_TEXTURE_2D, cc_src.tex);
+    g.PixelStorei(GL_UNPACK_ALIGNMENT, 4);
+    g.TexSubImage2D(GL_TEXTURE_2D, 0, 0, 0, cfg.w, cfg.h, GL_RGBA, GL_UNSIGNED_BYTE, res->display.data());
+    frame_tex = cc_src.tex;
+  }
+  g.UseProgram(cc_program);
+  cc_family->bind_uniforms(g, cc_program, cc_in.shared);
+  for (size_t k = 0; k < cc_lut_tex.size(); ++k) {  // units 1.. (unit 0: u_frame, bound by the pass)
+    g.ActiveTexture(GL_TEXTURE1 + static_cast<GLenum>(k));
+    g.BindTexture(cc_lut_kind[k], cc_lut_tex[k]);
+    const GLint loc = g.GetUniformLocation(cc_program, cc_in.textures[k].sampler.c_str());
+    if (loc >= 0) g.Uniform1i(loc, static_cast<GLint>(k + 1));
+  }
+  if (!runner->draw(cc_program, cc_dst, {{"u_frame", frame_tex, false}}, nullptr, err)) return false;
+  return read_rgba8(g, cc_dst, &res->display, err);
+}
+
+// The HDR path and colour correction of a lit frame: res->lit -> res->display, on GL or by
+// the C twins (on_cpu; also used by --check on GL's own lit frame).
+bool SceneRenderer::Impl::post(SceneRenderResult *res, bool on_cpu, const std::vector<int> &draw_of_pixel_in,
+                               std::string *err) {
+  std::vector<int> draw_of_pixel = draw_of_pixel_in;
+  const size_t n = static_cast<size_t>(cfg.w) * cfg.h;
+  const Scene &s = *this->s;
+  if (!float_path) {
+    res->tone_map_scale = s.hdr.tone_map_scale;
+    if (s.hdr.auto_exposure)
+      res->notes.push_back("auto exposure runs on the float path; the integer path uses the fixed tone-map scale");
+    // Which pixels hold linear values the (sRGB) render target would encode: ps20 and world draws.
+    bool mixed = false, any_linear = false;
+    for (const PreparedDraw &d : p.draws) any_linear = any_linear || !d.display_encoded;
+    for (const PreparedDraw &d : p.draws) mixed = mixed || (d.display_encoded && any_linear);
+    if (mixed && draw_of_pixel.empty()) {
+      std::vector<float> slots;
+      if (!sgl->gbuffer(&draw_of_pixel, &slots, err)) return false;
+    }
+    res->display.resize(n * 4);
+    for (size_t i = 0; i < n; ++i) {
+      bool linear = any_linear;
+      if (mixed) linear = draw_of_pixel[i] >= 0 && !p.draws[draw_of_pixel[i]].display_encoded;
+      for (int c = 0; c < 3; ++c) {
+        const float v = res->lit.rgba[i * 4 + c];
+        res->display[i * 4 + c] = ts_unorm8_from_float(linear ? srgb_encode(v) : v);
+      }
+      res->display[i * 4 + 3] = 255;
+    }
+  } else {
+    // The lit frame as the fp16 target stores it (writes round toward zero; c_ref/hdr_formats.h):
+    // from here on, and in OUT.exr, the float path's frame is these fp16 values.
+    for (float &v : res->lit.rgba) v = ts_quantize_half(v);
+    const std::vector<float> &hdr = res->lit.rgba;
+    HdrSettings hs;
+    hs.tone_map_scale = s.hdr.tone_map_scale;
+    hs.bloom_amount = s.hdr.bloom_amount;
+    if (s.hdr.auto_exposure) {
+      const StaticLuminance lum(hdr.data(), cfg.w, cfg.h);
+      hs.tone_map_scale = static_cast<float>(
+          run_static_exposure(lum, s.hdr.tone_map_scale, s.hdr.exposure_min, s.hdr.exposure_max, cfg.exposure_frames)
+              .scale);
+      res->auto_exposure = true;
+    }
+    res->tone_map_scale = hs.tone_map_scale;
+    if (on_cpu) {
+      HdrFrameC f;
+      hdr_post_float_c(hdr, cfg.w, cfg.h, hs, &f, cfg.threads);
+      res->display = std::move(f.display);
+    } else {
+      if (!pipe->post_float(hdr, hs, err) || !read_rgba8(renderer->gl(), pipe->display(), &res->display, err))
+        return false;
+    }
+  }
+  if (!luts.empty() && !colour_correct(res, on_cpu, err)) return false;
   return true;
 }
 
 bool SceneRenderer::frame(SceneRenderResult *out, std::string *err) {
   Impl &m = *impl_;
   const SceneRenderConfig &cfg = m.cfg;
-  const Scene &s = *m.s;
   PreparedScene &p = m.p;
   const auto t_frame = Clock::now();
   SceneRenderResult res;
@@ -209,7 +291,7 @@ bool SceneRenderer::frame(SceneRenderResult *out, std::string *err) {
   res.notes = p.notes;
   res.prepare_ms = m.prepare_ms;
   res.compile_ms = m.compile_ms;
-  const bool cpu = m.cpu, float_path = m.float_path;
+  const bool cpu = m.cpu;
 
   // ---- lit pass -------------------------------------------------------------------------
   auto t0 = Clock::now();
@@ -224,7 +306,7 @@ bool SceneRenderer::frame(SceneRenderResult *out, std::string *err) {
     draw_of_pixel = vis.draw;
   } else {
     std::function<void(int, GLuint)> capture;
-    if (cfg.on_draw) capture = [&](int di, GLuint prog) { cfg.on_draw(m.sgl->gl(), p.draws[di], prog); };
+    if (cfg.on_draw) capture = [&](int di, GLuint prog) { cfg.on_draw(m.sgl->gl(), p, p.draws[di], prog); };
     if (!m.sgl->frame(&res.lit, err, &res.lit_ms, capture)) return false;
     if (cfg.check) {
       std::vector<float> slots;
@@ -240,55 +322,17 @@ bool SceneRenderer::frame(SceneRenderResult *out, std::string *err) {
     }
   }
 
-  // ---- HDR ------------------------------------------------------------------------------
   t0 = Clock::now();
-  const size_t n = static_cast<size_t>(cfg.w) * cfg.h;
-  if (!float_path) {
-    res.tone_map_scale = s.hdr.tone_map_scale;
-    if (s.hdr.auto_exposure)
-      res.notes.push_back("auto exposure runs on the float path; the integer path uses the fixed tone-map scale");
-    // Which pixels hold linear values the (sRGB) render target would encode: ps20 and world draws.
-    bool mixed = false, any_linear = false;
-    for (const PreparedDraw &d : p.draws) any_linear = any_linear || !d.display_encoded;
-    for (const PreparedDraw &d : p.draws) mixed = mixed || (d.display_encoded && any_linear);
-    if (mixed && draw_of_pixel.empty()) {
-      std::vector<float> slots;
-      if (!m.sgl->gbuffer(&draw_of_pixel, &slots, err)) return false;
-    }
-    res.display.resize(n * 4);
-    for (size_t i = 0; i < n; ++i) {
-      bool linear = any_linear;
-      if (mixed) linear = draw_of_pixel[i] >= 0 && !p.draws[draw_of_pixel[i]].display_encoded;
-      for (int c = 0; c < 3; ++c) {
-        const float v = res.lit.rgba[i * 4 + c];
-        res.display[i * 4 + c] = ts_unorm8_from_float(linear ? srgb_encode(v) : v);
-      }
-      res.display[i * 4 + 3] = 255;
-    }
-  } else {
-    std::vector<float> hdr(n * 4);
-    for (size_t i = 0; i < hdr.size(); ++i) hdr[i] = ts_quantize_half(res.lit.rgba[i]);
-    HdrSettings hs;
-    hs.tone_map_scale = s.hdr.tone_map_scale;
-    hs.bloom_amount = s.hdr.bloom_amount;
-    if (s.hdr.auto_exposure) {
-      const StaticLuminance lum(hdr.data(), cfg.w, cfg.h);
-      hs.tone_map_scale = static_cast<float>(
-          run_static_exposure(lum, s.hdr.tone_map_scale, s.hdr.exposure_min, s.hdr.exposure_max, cfg.exposure_frames)
-              .scale);
-      res.auto_exposure = true;
-    }
-    res.tone_map_scale = hs.tone_map_scale;
-    if (cpu) {
-      HdrFrameC f;
-      hdr_post_float_c(hdr, cfg.w, cfg.h, hs, &f, cfg.threads);
-      res.display = std::move(f.display);
-    } else {
-      if (!m.pipe->post_float(hdr, hs, err) || !read_rgba8(m.renderer->gl(), m.pipe->display(), &res.display, err))
-        return false;
-    }
+  if (cfg.check && !cpu) {
+    // The post chain on GL against its C twin, both from GL's lit frame.
+    SceneRenderResult c = res;
+    if (!m.post(&c, true, draw_of_pixel, err) || !m.post(&res, false, draw_of_pixel, err)) return false;
+    res.check_post_channels = static_cast<long>(res.display.size());
+    res.check_post_mismatched = 0;
+    for (size_t i = 0; i < res.display.size(); ++i) res.check_post_mismatched += res.display[i] != c.display[i];
+  } else if (!m.post(&res, cpu, draw_of_pixel, err)) {
+    return false;
   }
-  if (!m.luts.empty() && !m.colour_correct(&res, err)) return false;
   res.post_ms = ms_since(t0);
   res.frame_ms = ms_since(t_frame);
   *out = std::move(res);

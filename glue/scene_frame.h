@@ -18,6 +18,7 @@
 #include "scene_effects.h"
 
 struct PreparedDraw;
+struct PreparedScene;
 
 struct SceneRenderConfig {
   Backend backend = Backend::EGL;  // Backend::CPU: the C fallback alone
@@ -29,7 +30,7 @@ struct SceneRenderConfig {
   // Progress of long stages: (stage, fraction done).
   std::function<void(const char *, double)> progress;
   // GL: called for each draw after its program, uniforms and textures are bound (draw capture).
-  std::function<void(const GlFns &, const PreparedDraw &, GLuint program)> on_draw;
+  std::function<void(const GlFns &, const PreparedScene &, const PreparedDraw &, GLuint program)> on_draw;
 };
 
 struct SceneRenderResult {
@@ -44,6 +45,9 @@ struct SceneRenderResult {
   // --check: channels where GL's frame differs from the C twin on GL's G-buffer (-1: not run).
   long check_mismatched = -1, check_pixels = 0;
   uint32_t check_max_ulp = 0;
+  // --check: display channels where GL's HDR path and colour correction differ from their C twins
+  // run on GL's lit frame (-1: not run).
+  long check_post_mismatched = -1, check_post_channels = 0;
   std::vector<std::string> notes;
 };
 

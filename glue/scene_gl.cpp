@@ -22,8 +22,7 @@ SceneGl::~SceneGl() {
   for (GLuint p : programs_) r_.delete_program(p);
   for (auto &v : gb_programs_)
     for (GLuint p : v) r_.delete_program(p);
-  for (auto &v : textures_)
-    for (GLuint t : v) r_.delete_texture(t);
+  for (GLuint t : textures_) r_.delete_texture(t);
   for (Buffers &b : buffers_) {
     g.DeleteBuffers(5, b.vbo);
     g.DeleteBuffers(1, &b.ibo);
@@ -57,10 +56,8 @@ bool SceneGl::init(const PreparedScene &p, std::string *err, double *compile_ms)
   if (compile_ms) *compile_ms = ms_since(t0);
   g.GenVertexArrays(1, &vao_);
   g.BindVertexArray(vao_);
+  for (const TextureDesc &t : p.textures) textures_.push_back(r_.upload_texture(t));
   for (const PreparedDraw &d : p.draws) {
-    std::vector<GLuint> tex;
-    for (const TextureDesc &t : d.textures) tex.push_back(r_.upload_texture(t));
-    textures_.push_back(tex);
     Buffers b;
     const std::vector<float> *arrays[5] = {&d.position, &d.normal, &d.uv, &d.tangent, &d.lightmap};
     g.GenBuffers(5, b.vbo);
@@ -125,10 +122,11 @@ bool SceneGl::bind_draw(size_t i, GLuint program, bool production, std::string *
   }
   f->bind_uniforms(g, program, d.shared);
   if (production) {
-    for (size_t t = 0; t < d.textures.size(); ++t) {
+    for (size_t t = 0; t < d.tex.size(); ++t) {
+      const TextureDesc &td = p_->textures.at(d.tex[t]);
       g.ActiveTexture(GL_TEXTURE0 + static_cast<GLenum>(t));
-      g.BindTexture(d.textures[t].kind == TexKind::Cube ? GL_TEXTURE_CUBE_MAP : GL_TEXTURE_2D, textures_[i][t]);
-      const GLint loc = g.GetUniformLocation(program, d.textures[t].sampler.c_str());
+      g.BindTexture(td.kind == TexKind::Cube ? GL_TEXTURE_CUBE_MAP : GL_TEXTURE_2D, textures_.at(d.tex[t]));
+      const GLint loc = g.GetUniformLocation(program, td.sampler.c_str());
       if (loc >= 0) g.Uniform1i(loc, static_cast<GLint>(t));
     }
   }

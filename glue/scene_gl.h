@@ -43,7 +43,7 @@ class SceneGl {
   std::vector<std::string> variant_names_;
   std::vector<GLuint> programs_;           // per unique variant
   std::vector<int> prog_of_draw_;
-  std::vector<std::vector<GLuint>> textures_;  // per draw, in PreparedDraw::textures order
+  std::vector<GLuint> textures_;  // per PreparedScene::textures entry
   struct Buffers {
     GLuint vbo[5] = {0, 0, 0, 0, 0};  // position, normal, uv, tangent, lightmap
     GLuint ibo = 0;

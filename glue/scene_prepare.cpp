@@ -64,6 +64,16 @@ float srgb_to_linear(float c) {
   return static_cast<float>(v <= 0.04045 ? v / 12.92 : std::pow((v + 0.055) / 1.055, 2.4));
 }
 
+TextureDesc black_cube() {
+  TextureDesc t;
+  t.sampler = "u_envmap";
+  t.kind = TexKind::Cube;
+  t.w = t.h = 1;
+  t.rgba.assign(24, 0.f);
+  for (int f = 0; f < 6; ++f) t.rgba[f * 4 + 3] = 1.f;
+  return t;
+}
+
 TextureDesc solid(const char *sampler, float r, float g, float b, float a) {
   TextureDesc t;
   t.sampler = sampler;
@@ -94,6 +104,32 @@ TextureDesc image_texture(const Scene &s, const SceneTextureRef &ref, const char
 }
 
 ts_vec4f v4(float x, float y, float z, float w) { return ts_v4f(x, y, z, w); }
+
+// Every texture once: draws that sample the same image the same way share one entry.
+struct TexturePool {
+  std::vector<TextureDesc> *out;
+  std::map<std::string, int> index;
+  template <class Make>
+  int get(const std::string &key, Make make) {
+    auto it = index.find(key);
+    if (it != index.end()) return it->second;
+    out->push_back(make());
+    const int i = static_cast<int>(out->size()) - 1;
+    index[key] = i;
+    return i;
+  }
+};
+std::string key_of(const char *sampler, const SceneTextureRef &r, bool srgb, const float *factor) {
+  std::string k = std::string(sampler) + "|" + std::to_string(r.image) + "|" + (r.linear ? "L" : "N") +
+                  (r.repeat ? "R" : "C") + (srgb ? "s" : "l");
+  if (factor)
+    for (int c = 0; c < 4; ++c) k += "|" + std::to_string(factor[c]);
+  return k;
+}
+std::string key_solid(const char *sampler, float r, float g, float b, float a) {
+  return std::string(sampler) + "|solid|" + std::to_string(r) + "," + std::to_string(g) + "," + std::to_string(b) +
+         "," + std::to_string(a);
+}
 
 // Probe cube maps and irradiance (ambient) cubes, made on first use.
 struct Probes {
@@ -183,7 +219,7 @@ void copy_geometry(const ScenePrimitive &p, PreparedDraw *d) {
 }
 
 bool model_draw(const Scene &s, const PreparedScene &ps, const SceneDrawChoice &c, Tier tier, Probes *probes, Api api,
-                PreparedDraw *d, std::string *err) {
+                TexturePool *pool, PreparedDraw *d, std::string *err) {
   const ScenePrimitive &p = s.primitives[c.primitive];
   const SceneMaterial &m = s.materials[p.material];
   const Variant &v = *c.variant;
@@ -249,37 +285,41 @@ bool model_draw(const Scene &s, const PreparedScene &ps, const SceneDrawChoice &
   d->shared[ML_SLOT_ENVMAP_TINT] = v4(m.envmap_tint[0], m.envmap_tint[1], m.envmap_tint[2], 0);
   d->shared[ML_SLOT_SELF_ILLUM] = v4(m.self_illum_tint[0], m.self_illum_tint[1], m.self_illum_tint[2], m.self_illum ? 1.f : 0.f);
   // Textures: only what the variant samples is real; the others are 1x1 placeholders.
-  d->textures.clear();
+  d->tex.clear();
   if (v.value("ALBEDO_TEXTURE")) {
     if (m.base_texture.image >= 0)
-      d->textures.push_back(image_texture(s, m.base_texture, "u_albedo", true, m.base_color));
+      d->tex.push_back(pool->get(key_of("u_albedo", m.base_texture, true, m.base_color), [&] { return image_texture(s, m.base_texture, "u_albedo", true, m.base_color); }));
     else
-      d->textures.push_back(solid("u_albedo", m.base_color[0], m.base_color[1], m.base_color[2], m.base_color[3]));
+      d->tex.push_back(pool->get(key_solid("u_albedo", m.base_color[0], m.base_color[1], m.base_color[2], m.base_color[3]), [&] { return solid("u_albedo", m.base_color[0], m.base_color[1], m.base_color[2], m.base_color[3]); }));
   } else {
-    d->textures.push_back(solid("u_albedo", 1, 1, 1, 1));
+    d->tex.push_back(pool->get(key_solid("u_albedo", 1, 1, 1, 1), [&] { return solid("u_albedo", 1, 1, 1, 1); }));
   }
   const bool phong = v.value("PHONG") != 0;
   if (phong && m.normal_texture.image >= 0)
-    d->textures.push_back(image_texture(s, m.normal_texture, "u_normal_map", false, nullptr));
+    d->tex.push_back(pool->get(key_of("u_normal_map", m.normal_texture, false, nullptr), [&] { return image_texture(s, m.normal_texture, "u_normal_map", false, nullptr); }));
   else
-    d->textures.push_back(solid("u_normal_map", 0.5f, 0.5f, 1.f, 1.f));
+    d->tex.push_back(pool->get(key_solid("u_normal_map", 0.5f, 0.5f, 1.f, 1.f), [&] { return solid("u_normal_map", 0.5f, 0.5f, 1.f, 1.f); }));
   if (v.value("PHONG_EXPONENT_MAP"))
-    d->textures.push_back(image_texture(s, m.phong_exponent_texture, "u_exponent_map", false, nullptr));
+    d->tex.push_back(pool->get(key_of("u_exponent_map", m.phong_exponent_texture, false, nullptr), [&] { return image_texture(s, m.phong_exponent_texture, "u_exponent_map", false, nullptr); }));
   else
-    d->textures.push_back(solid("u_exponent_map", 1, 1, 1, 1));
+    d->tex.push_back(pool->get(key_solid("u_exponent_map", 1, 1, 1, 1), [&] { return solid("u_exponent_map", 1, 1, 1, 1); }));
   if (v.value("LIGHT_WARP"))
-    d->textures.push_back(image_texture(s, m.light_warp_texture, "u_light_warp", false, nullptr));
+    d->tex.push_back(pool->get(key_of("u_light_warp", m.light_warp_texture, false, nullptr), [&] { return image_texture(s, m.light_warp_texture, "u_light_warp", false, nullptr); }));
   else
-    d->textures.push_back(solid("u_light_warp", 1, 1, 1, 1));
-  TextureDesc env = solid("u_envmap", 0, 0, 0, 1);
-  env.kind = TexKind::Cube;
-  env.rgba.assign(24, 0.f);
+    d->tex.push_back(pool->get(key_solid("u_light_warp", 1, 1, 1, 1), [&] { return solid("u_light_warp", 1, 1, 1, 1); }));
+  int pi = -1;
   if (v.value("ENVMAP")) {
-    const int pi = nearest_probe(s, center, m.probe);
-    if (!probes->cube(pi, &env, nullptr, err)) return false;
-    if (api != Api::GL33) env.linear = false;  // GLES cube maps are always seamless
+    pi = nearest_probe(s, center, m.probe);
+    if (!probes->cube(pi, nullptr, nullptr, err)) return false;
   }
-  d->textures.push_back(env);
+  d->tex.push_back(pool->get("u_envmap|" + std::to_string(pi), [&] {
+    TextureDesc env = black_cube();
+    if (pi >= 0) {
+      probes->cube(pi, &env, nullptr, nullptr);
+      if (api != Api::GL33) env.linear = false;  // GLES cube maps are always seamless
+    }
+    return env;
+  }));
   d->display_encoded = v.value("OUTPUT_MODE") != 0;
   copy_geometry(p, d);
   return true;
@@ -318,6 +358,7 @@ bool prepare_scene(const Scene &s, const SceneSelection &sel, int w, int h, Api 
   for (int k = 0; k < 3; ++k) ps.eye[k] = static_cast<float>(cam.eye[k]);
   const Tier tier = sel.variants.empty() ? Tier::SM3 : sel.variants[0].tier;
   Probes probes{s, 0, {}, {}, {}, false};
+  TexturePool pool{&ps.textures, {}};
 
   // World: faces from the World primitives, baked only if some draw is a world draw.
   WorldScene ws;
@@ -408,7 +449,7 @@ bool prepare_scene(const Scene &s, const SceneSelection &sel, int w, int h, Api 
     d.choice = &c;
     d.variant = c.variant;
     if (c.family == "model_lighting") {
-      if (!model_draw(s, ps, c, tier, &probes, api, &d, err)) return false;
+      if (!model_draw(s, ps, c, tier, &probes, api, &pool, &d, err)) return false;
       ps.draws.push_back(std::move(d));
       continue;
     }
@@ -455,29 +496,33 @@ bool prepare_scene(const Scene &s, const SceneSelection &sel, int w, int h, Api 
     d.shared[WL_SLOT_FOG_COLOR] = v4(0, 0, 0, 0);  // no fog
     d.shared[WL_SLOT_FOG_PARAMS] = v4(0, 0, 0, 0);
     if (m.base_texture.image >= 0)
-      d.textures.push_back(image_texture(s, m.base_texture, "u_base", true, m.base_color));
+      d.tex.push_back(pool.get(key_of("u_base", m.base_texture, true, m.base_color), [&] { return image_texture(s, m.base_texture, "u_base", true, m.base_color); }));
     else
-      d.textures.push_back(solid("u_base", m.base_color[0], m.base_color[1], m.base_color[2], m.base_color[3]));
+      d.tex.push_back(pool.get(key_solid("u_base", m.base_color[0], m.base_color[1], m.base_color[2], m.base_color[3]), [&] { return solid("u_base", m.base_color[0], m.base_color[1], m.base_color[2], m.base_color[3]); }));
     if (v.value("BUMPMAP") && m.normal_texture.image >= 0)
-      d.textures.push_back(image_texture(s, m.normal_texture, "u_normalmap", false, nullptr));
+      d.tex.push_back(pool.get(key_of("u_normalmap", m.normal_texture, false, nullptr), [&] { return image_texture(s, m.normal_texture, "u_normalmap", false, nullptr); }));
     else
-      d.textures.push_back(solid("u_normalmap", 0.5f, 0.5f, 1.f, 1.f));
-    d.textures.push_back(page);
+      d.tex.push_back(pool.get(key_solid("u_normalmap", 0.5f, 0.5f, 1.f, 1.f), [&] { return solid("u_normalmap", 0.5f, 0.5f, 1.f, 1.f); }));
+    d.tex.push_back(pool.get("u_lightmap|" + std::to_string(enc), [&] { return page; }));
     if (v.value("ENVMAPMASK") == 1)
-      d.textures.push_back(image_texture(s, m.envmap_mask_texture, "u_envmap_mask", false, nullptr));
+      d.tex.push_back(pool.get(key_of("u_envmap_mask", m.envmap_mask_texture, false, nullptr), [&] { return image_texture(s, m.envmap_mask_texture, "u_envmap_mask", false, nullptr); }));
     else
-      d.textures.push_back(solid("u_envmap_mask", 1, 1, 1, 1));
-    TextureDesc env = solid("u_envmap", 0, 0, 0, 1);
-    env.kind = TexKind::Cube;
-    env.rgba.assign(24, 0.f);
+      d.tex.push_back(pool.get(key_solid("u_envmap_mask", 1, 1, 1, 1), [&] { return solid("u_envmap_mask", 1, 1, 1, 1); }));
+    int pi = -1;
     if (v.value("ENVMAP")) {
       const D3 mid = D3{f.origin.x, f.origin.y, f.origin.z} + t * (f.su / 2) + b * (f.sv / 2);
       const double cc[3] = {mid.x, mid.y, mid.z};
-      const int pi = nearest_probe(s, cc, m.probe);
-      if (!probes.cube(pi, &env, nullptr, err)) return false;
-      if (api != Api::GL33) env.linear = false;
+      pi = nearest_probe(s, cc, m.probe);
+      if (!probes.cube(pi, nullptr, nullptr, err)) return false;
     }
-    d.textures.push_back(env);
+    d.tex.push_back(pool.get("u_envmap|" + std::to_string(pi), [&] {
+      TextureDesc env = black_cube();
+      if (pi >= 0) {
+        probes.cube(pi, &env, nullptr, nullptr);
+        if (api != Api::GL33) env.linear = false;
+      }
+      return env;
+    }));
     ps.draws.push_back(std::move(d));
   }
   ps.probes_made = static_cast<int>(probes.cubes.size());

@@ -21,7 +21,8 @@ struct PreparedDraw {
   std::vector<float> lightmap;          // world: 4 per vertex (lightmap uv, offset to the next lightmap)
   std::vector<uint32_t> indices;
   std::vector<ts_vec4f> shared;         // the family's full record with the shared slots set
-  std::vector<TextureDesc> textures;    // model: u_albedo u_normal_map u_exponent_map u_light_warp u_envmap;
+  std::vector<int> tex;                 // indices into PreparedScene::textures, in sampler order:
+                                        // model: u_albedo u_normal_map u_exponent_map u_light_warp u_envmap;
                                         // world: u_base u_normalmap u_lightmap u_envmap_mask u_envmap
   bool display_encoded = false;         // output already sRGB-encoded (model OUTPUT_MODE 2)
 };
@@ -32,6 +33,8 @@ struct PreparedScene {
   float model[16];      // identity: primitives are in world space
   float eye[3];
   std::vector<PreparedDraw> draws;
+  std::vector<TextureDesc> textures;  // every texture once, shared by the draws that sample it
+  const TextureDesc &texture(const PreparedDraw &d, int k) const { return textures.at(d.tex.at(k)); }
   float tone_map_scale = 1.f;  // of the shaders' output (integer path); the float path tone-maps later
   // What was made, for the report.
   int probes_made = 0, lightmap_texels = 0;

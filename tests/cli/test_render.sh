@@ -6,9 +6,10 @@
 # Checks: bad command lines and bad scene files give one clear line on stderr naming the
 # problem (and the file), a non-zero status and no output files; every shipped scene in every
 # tier, on EGL GLES 3.0 (and OSMesa GL 3.3, EGL GLES 2.0 for some), renders with --check: the
-# GL forward frame equals, bit for bit, the C twin shading GL's own G-buffer (tolerance 0 ULP:
-# the same inputs through the same arithmetic); the C fallback writes both files; ps20 never
-# builds a Phong variant; a scene with probes removed never builds ENVMAP=1.
+# GL forward frame equals, bit for bit, the C twin shading GL's own G-buffer, and the HDR path
+# and colour correction on GL equal their C twins run on GL's lit frame (tolerance 0: the same
+# inputs through the same arithmetic); the C fallback writes both files; ps20 never builds a
+# Phong variant; a constant envmap mask skips its fetch.
 # Prints "PASS name" / "FAIL name: detail"; exits 1 if any check failed.
 set -u
 if [ $# -ne 1 ]; then
@@ -77,13 +78,15 @@ check() {  # name, args...
   shift
   run "$@" --size 96x54 --check --quiet -o "$TMP/c"
   if crashed; then fail "$name" "crashed (status $RC): $(head -c 300 "$ERR")"; return; fi
-  local line
-  line=$(grep '^check:' "$OUT")
-  if [ "$RC" -ne 0 ] || ! echo "$line" | grep -qE ': 0 of [1-9][0-9]* covered pixels differ'; then
-    fail "$name" "status $RC: ${line:-$(head -n 2 "$ERR")}"
+  local line post
+  line=$(grep '^check: GL frame' "$OUT")
+  post=$(grep '^check: HDR path' "$OUT")
+  if [ "$RC" -ne 0 ] || ! echo "$line" | grep -qE ': 0 of [1-9][0-9]* covered pixels differ' ||
+     ! echo "$post" | grep -qE ': 0 of [1-9][0-9]* channels differ'; then
+    fail "$name" "status $RC: ${line:-$(head -n 2 "$ERR")} ${post}"
     return
   fi
-  pass "$name: ${line#check: }"
+  pass "$name: ${line#check: }; post: ${post##*: }"
 }
 for s in model_lighting world_lighting hdr_atrium; do
   for t in ps20 ps2b sm3; do check "$s $t egl gles3" "scenes/$s.gltf" --tier $t; done
