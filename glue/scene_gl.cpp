@@ -163,7 +163,12 @@ bool SceneGl::draw_all(const std::vector<GLuint> &progs, bool production, int gb
       if (loc >= 0) g.Uniform1f(loc, static_cast<float>(i));
     }
     if (before_draw) before_draw(static_cast<int>(i), prog);
+    const auto td = Clock::now();
     g.DrawElements(GL_TRIANGLES, buffers_[i].count, GL_UNSIGNED_INT, nullptr);
+    if (getenv("TS_DRAW_MS")) {
+      g.Finish();
+      fprintf(stderr, "draw %zu %s: %.1f ms\n", i, p_->draws[i].variant->name().c_str(), ms_since(td));
+    }
   }
   g.Disable(GL_DEPTH_TEST);
   const GLenum e = g.GetError();
