@@ -268,37 +268,57 @@ void scene_rasterize_cpu(const PreparedScene &p, SceneVisibility *vis, int threa
     vertex_stage(p, p.draws[di], &clip, &vary);
     setup(p, static_cast<int>(di), clip, &tris);
   }
-  parallel_rows(p.h, threads, [&](int, int y) {
-    const int64_t py = static_cast<int64_t>(y) * kSub + kSub / 2;
-    for (const ScreenTri &s : tris) {
-      if (y < s.y0 || y > s.y1) continue;
+  if (getenv("TS_DRAW_MS")) fprintf(stderr, "C raster setup: %zu triangles\n", tris.size());
+  // Bands of kBand rows, each with the triangles that reach it (in draw order, so that equal
+  // depths keep the first draw, as GL_LESS does); workers take whole bands.
+  const int kBand = 8;
+  const int bands = (p.h + kBand - 1) / kBand;
+  std::vector<std::vector<int>> band_tris(static_cast<size_t>(bands));
+  for (size_t i = 0; i < tris.size(); ++i)
+    for (int b = tris[i].y0 / kBand; b <= tris[i].y1 / kBand; ++b) band_tris[static_cast<size_t>(b)].push_back(static_cast<int>(i));
+  parallel_rows(bands, threads, [&](int, int band) {
+    for (int ti : band_tris[static_cast<size_t>(band)]) {
+      const ScreenTri &s = tris[static_cast<size_t>(ti)];
       const double inv_area = 1.0 / static_cast<double>(s.area);
-      for (int x = s.x0; x <= s.x1; ++x) {
-        const int64_t px = static_cast<int64_t>(x) * kSub + kSub / 2;
-        __int128 e[3];
-        bool in = true;
-        for (int k = 0; k < 3 && in; ++k) {
-          const int a = (k + 1) % 3, b = (k + 2) % 3;  // edge a -> b, opposite vertex k
-          const int64_t dx = s.X[b] - s.X[a], dy = s.Y[b] - s.Y[a];
-          e[k] = static_cast<__int128>(dx) * (py - s.Y[a]) - static_cast<__int128>(dy) * (px - s.X[a]);
-          in = e[k] > 0 || (e[k] == 0 && top_left(dx, dy));
+      const int ya = std::max(s.y0, band * kBand), yb = std::min(s.y1, band * kBand + kBand - 1);
+      // Edge k (a -> b, opposite vertex k): e = dx (py - Ya) - dy (px - Xa), stepped along x.
+      // 64-bit when the coordinates are small enough for exact products, else 128-bit.
+      bool small = true;
+      for (int k = 0; k < 3; ++k) small = small && std::llabs(s.X[k]) < (1LL << 27) && std::llabs(s.Y[k]) < (1LL << 27);
+      for (int y = ya; y <= yb; ++y) {
+        const int64_t py = static_cast<int64_t>(y) * kSub + kSub / 2;
+        for (int x = s.x0; x <= s.x1; ++x) {
+          const int64_t px = static_cast<int64_t>(x) * kSub + kSub / 2;
+          double l[3];
+          bool in = true;
+          for (int k = 0; k < 3 && in; ++k) {
+            const int a = (k + 1) % 3, b = (k + 2) % 3;
+            const int64_t dx = s.X[b] - s.X[a], dy = s.Y[b] - s.Y[a];
+            if (small) {
+              const int64_t e = dx * (py - s.Y[a]) - dy * (px - s.X[a]);
+              in = e > 0 || (e == 0 && top_left(dx, dy));
+              l[k] = static_cast<double>(e) * inv_area;
+            } else {
+              const __int128 e = static_cast<__int128>(dx) * (py - s.Y[a]) - static_cast<__int128>(dy) * (px - s.X[a]);
+              in = e > 0 || (e == 0 && top_left(dx, dy));
+              l[k] = static_cast<double>(e) * inv_area;
+            }
+          }
+          if (!in) continue;
+          const double z = l[0] * s.z[0] + l[1] * s.z[1] + l[2] * s.z[2];
+          const size_t i = static_cast<size_t>(y) * p.w + x;
+          if (!(z < vis->depth[i]) || z < 0.0) continue;
+          const double q[3] = {l[0] * s.invw[0], l[1] * s.invw[1], l[2] * s.invw[2]};
+          const double qs = q[0] + q[1] + q[2];
+          double B[3] = {0, 0, 0};
+          for (int k = 0; k < 3; ++k)
+            for (int j = 0; j < 3; ++j) B[j] += q[k] / qs * s.bary[k][j];
+          vis->depth[i] = static_cast<float>(z);
+          vis->draw[i] = s.draw;
+          vis->tri[i] = s.tri;
+          vis->b1[i] = static_cast<float>(B[1]);
+          vis->b2[i] = static_cast<float>(B[2]);
         }
-        if (!in) continue;
-        const double l[3] = {static_cast<double>(e[0]) * inv_area, static_cast<double>(e[1]) * inv_area,
-                             static_cast<double>(e[2]) * inv_area};
-        const double z = l[0] * s.z[0] + l[1] * s.z[1] + l[2] * s.z[2];
-        const size_t i = static_cast<size_t>(y) * p.w + x;
-        if (!(z < vis->depth[i]) || z < 0.0) continue;
-        const double q[3] = {l[0] * s.invw[0], l[1] * s.invw[1], l[2] * s.invw[2]};
-        const double qs = q[0] + q[1] + q[2];
-        double B[3] = {0, 0, 0};
-        for (int k = 0; k < 3; ++k)
-          for (int j = 0; j < 3; ++j) B[j] += q[k] / qs * s.bary[k][j];
-        vis->depth[i] = static_cast<float>(z);
-        vis->draw[i] = s.draw;
-        vis->tri[i] = s.tri;
-        vis->b1[i] = static_cast<float>(B[1]);
-        vis->b2[i] = static_cast<float>(B[2]);
       }
     }
   });

@@ -6,6 +6,7 @@
 #include <memory>
 
 #include "cc_inputs.h"
+#include "cc_cpu.h"
 #include "color_correction.h"
 #include "parallel_rows.h"
 #include "family.h"
@@ -170,23 +171,7 @@ bool SceneRenderer::Impl::colour_correct(SceneRenderResult *res, bool on_cpu, st
     const cc_variant cv = {v.value("LUT_ATLAS"), v.value("SHADER_TRILINEAR"), v.value("NUM_LOOKUPS")};
     cc_luts views;
     cc_luts_of(cc_in, &views);
-    std::vector<uint8_t> out(n * 4);
-    scene_parallel_rows(cfg.h, cfg.threads, [&](int y) {
-      for (int x = 0; x < cfg.w; ++x) {
-        const size_t i = (static_cast<size_t>(y) * cfg.w + x) * 4;
-        const uint8_t *c8 = &res->display[i];
-        ts_vec4f rec[CC_SLOTS];
-        for (int k = 0; k < CC_SLOTS; ++k) rec[k] = cc_in.shared.at(k);
-        rec[CC_SLOT_COLOR] = ts_v4f(ts_unorm8_to_float(c8[0]), ts_unorm8_to_float(c8[1]), ts_unorm8_to_float(c8[2]),
-                                    ts_unorm8_to_float(c8[3]));
-        const ts_vec4f c = color_correction_f(&cv, rec, &views);
-        out[i + 0] = ts_unorm8_from_float(c.x);
-        out[i + 1] = ts_unorm8_from_float(c.y);
-        out[i + 2] = ts_unorm8_from_float(c.z);
-        out[i + 3] = ts_unorm8_from_float(c.w);
-      }
-    });
-    res->display = std::move(out);
+    cc_apply_rgba8_c(cv, cc_in.shared.data(), views, cfg.w, cfg.h, &res->display, cfg.threads);
     return true;
   }
   const GlFns &g = renderer->gl();
@@ -299,6 +284,7 @@ bool SceneRenderer::frame(SceneRenderResult *out, std::string *err) {
   if (cpu) {
     SceneVisibility vis;
     scene_rasterize_cpu(p, &vis, cfg.threads);
+    if (getenv("TS_DRAW_MS")) fprintf(stderr, "C rasterise: %.1f ms\n", ms_since(t0));
     scene_shade_cpu(p, vis, &res.lit, cfg.threads, [&](double f) {
       if (cfg.progress) cfg.progress("C fallback lit pass", f);
     });
