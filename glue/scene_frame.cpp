@@ -149,7 +149,6 @@ bool SceneRenderer::init(const Scene &s, const SceneSelection &sel, const SceneR
 }
 
 bool SceneRenderer::Impl::colour_correct(SceneRenderResult *res, bool on_cpu, std::string *err) {
-  const size_t n = static_cast<size_t>(cfg.w) * cfg.h;
   float weights[4] = {0, 0, 0, 0}, sum = 0;
   for (size_t i = 0; i < luts.size(); ++i) {
     weights[i] = s->hdr.luts[i].weight;
