@@ -1,7 +1,10 @@
 // tiershade glue: a scene frame end to end (glue/scene_frame.h).
 #include "scene_frame.h"
 
+#include <atomic>
 #include <chrono>
+#include <cstring>
+#include <thread>
 #include <cmath>
 #include <memory>
 
@@ -90,7 +93,16 @@ struct SceneRenderer::Impl {
   std::vector<GLenum> cc_lut_kind;
   GlTarget cc_src, cc_dst;
   bool cc_ready = false;
+  // Shader warm-up on a second core (see start_warmup).
+  std::thread warm;
+  std::atomic<int> main_next{-1};
+  void join_warmup() {
+    if (warm.joinable()) warm.join();
+  }
+  void start_warmup();
   ~Impl() {
+    main_next.store(1 << 30);
+    join_warmup();
     if (renderer) {
       for (GLuint t : cc_lut_tex) renderer->delete_texture(t);
       free_target(renderer->gl(), &cc_src);
@@ -105,6 +117,30 @@ struct SceneRenderer::Impl {
   bool colour_correct(SceneRenderResult *res, bool on_cpu, std::string *err);
   bool post(SceneRenderResult *res, bool on_cpu, const std::vector<int> &draw_of_pixel, std::string *err);
 };
+
+// llvmpipe JIT-compiles a shader variant at its first draw, on the drawing thread. With Mesa's
+// shader cache on (MESA_SHADER_CACHE_DISABLE unset), a second context on a second core draws
+// the scene's draws from the last one down into a tiny target, so that the variants the main
+// thread reaches later come out of the cache; it stops where the main thread has got to.
+// Same shaders, same state, same variants: the frame is unchanged (the --check tests run with
+// and without it). TIERSHADE_NO_WARMUP=1 turns it off.
+void SceneRenderer::Impl::start_warmup() {
+  const char *off = getenv("TIERSHADE_NO_WARMUP");
+  const char *nocache = getenv("MESA_SHADER_CACHE_DISABLE");
+  if ((off && *off && strcmp(off, "0") != 0) || (nocache && (!strcmp(nocache, "true") || !strcmp(nocache, "1"))))
+    return;
+  if (std::thread::hardware_concurrency() < 2 || p.draws.size() < 2) return;
+  main_next.store(-1);
+  warm = std::thread([this] {
+    std::string e;
+    auto c = GlContext::create(cfg.backend, cfg.api, &e);
+    if (!c) return;
+    GlRenderer r(*c);
+    SceneGl g(r, cfg.api);
+    if (!g.init(p, &e, nullptr, 16, 16)) return;
+    g.warm(&main_next);
+  });
+}
 
 SceneRenderer::SceneRenderer() : impl_(new Impl) {}
 SceneRenderer::~SceneRenderer() { delete impl_; }
@@ -135,11 +171,17 @@ bool SceneRenderer::init(const Scene &s, const SceneSelection &sel, const SceneR
   }
   m.prepare_ms = ms_since(t0);
   if (m.cpu) return true;
+  m.start_warmup();
   m.ctx = GlContext::create(cfg.backend, cfg.api, err);
-  if (!m.ctx) return false;
+  if (!m.ctx) {
+    m.main_next.store(1 << 30);
+    m.join_warmup();
+    return false;
+  }
   m.renderer.reset(new GlRenderer(*m.ctx));
   m.sgl.reset(new SceneGl(*m.renderer, cfg.api));
   if (!m.sgl->init(m.p, err, &m.compile_ms)) return false;
+  m.sgl->set_progress(&m.main_next);
   m.runner.reset(new PassRunner(*m.renderer));
   if (m.float_path) {
     m.pipe.reset(new HdrPipelineGl(*m.runner, cfg.api));
@@ -292,7 +334,10 @@ bool SceneRenderer::frame(SceneRenderResult *out, std::string *err) {
   } else {
     std::function<void(int, GLuint)> capture;
     if (cfg.on_draw) capture = [&](int di, GLuint prog) { cfg.on_draw(m.sgl->gl(), p, p.draws[di], prog); };
-    if (!m.sgl->frame(&res.lit, err, &res.lit_ms, capture)) return false;
+    const bool ok = m.sgl->frame(&res.lit, err, &res.lit_ms, capture);
+    m.main_next.store(1 << 30);
+    m.join_warmup();
+    if (!ok) return false;
     if (cfg.check) {
       std::vector<float> slots;
       if (!m.sgl->gbuffer(&draw_of_pixel, &slots, err)) return false;

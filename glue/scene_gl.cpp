@@ -33,8 +33,10 @@ SceneGl::~SceneGl() {
   if (depth_) g.DeleteRenderbuffers(1, &depth_);
 }
 
-bool SceneGl::init(const PreparedScene &p, std::string *err, double *compile_ms) {
+bool SceneGl::init(const PreparedScene &p, std::string *err, double *compile_ms, int target_w, int target_h) {
   p_ = &p;
+  tw_ = target_w > 0 ? target_w : p.w;
+  th_ = target_h > 0 ? target_h : p.h;
   const GlFns &g = gl();
   const auto t0 = Clock::now();
   for (const PreparedDraw &d : p.draws) {
@@ -77,12 +79,12 @@ bool SceneGl::init(const PreparedScene &p, std::string *err, double *compile_ms)
   g.GenFramebuffers(1, &fbo_);
   g.GenTextures(1, &color_);
   g.BindTexture(GL_TEXTURE_2D, color_);
-  g.TexImage2D(GL_TEXTURE_2D, 0, GL_RGBA32F, p.w, p.h, 0, GL_RGBA, GL_FLOAT, nullptr);
+  g.TexImage2D(GL_TEXTURE_2D, 0, GL_RGBA32F, tw_, th_, 0, GL_RGBA, GL_FLOAT, nullptr);
   g.TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
   g.TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
   g.GenRenderbuffers(1, &depth_);
   g.BindRenderbuffer(GL_RENDERBUFFER, depth_);
-  g.RenderbufferStorage(GL_RENDERBUFFER, GL_DEPTH_COMPONENT24, p.w, p.h);
+  g.RenderbufferStorage(GL_RENDERBUFFER, GL_DEPTH_COMPONENT24, tw_, th_);
   g.BindFramebuffer(GL_FRAMEBUFFER, fbo_);
   g.FramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, color_, 0);
   g.FramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER, depth_);
@@ -147,7 +149,7 @@ bool SceneGl::draw_all(const std::vector<GLuint> &progs, bool production, int gb
   const GlFns &g = gl();
   g.BindFramebuffer(GL_FRAMEBUFFER, fbo_);
   g.BindVertexArray(vao_);
-  g.Viewport(0, 0, p_->w, p_->h);
+  g.Viewport(0, 0, tw_, th_);
   g.Disable(GL_BLEND);
   g.Disable(GL_CULL_FACE);
   g.Enable(GL_DEPTH_TEST);
@@ -162,6 +164,7 @@ bool SceneGl::draw_all(const std::vector<GLuint> &progs, bool production, int gb
       const GLint loc = g.GetUniformLocation(prog, "u_draw_index");
       if (loc >= 0) g.Uniform1f(loc, static_cast<float>(i));
     }
+    if (progress_) progress_->store(static_cast<int>(i));
     if (before_draw) before_draw(static_cast<int>(i), prog);
     const auto td = Clock::now();
     g.DrawElements(GL_TRIANGLES, buffers_[i].count, GL_UNSIGNED_INT, nullptr);
@@ -179,6 +182,30 @@ bool SceneGl::draw_all(const std::vector<GLuint> &progs, bool production, int gb
     return false;
   }
   return true;
+}
+
+void SceneGl::warm(const std::atomic<int> *main_next) {
+  const GlFns &g = gl();
+  g.BindFramebuffer(GL_FRAMEBUFFER, fbo_);
+  g.BindVertexArray(vao_);
+  g.Viewport(0, 0, tw_, th_);
+  g.Disable(GL_BLEND);
+  g.Disable(GL_CULL_FACE);
+  g.Enable(GL_DEPTH_TEST);
+  g.DepthFunc(GL_LESS);
+  g.DepthMask(GL_TRUE);
+  g.Clear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+  std::vector<bool> done(programs_.size(), false);
+  std::string err;
+  for (int i = static_cast<int>(p_->draws.size()) - 1; i >= 0; --i) {
+    if (main_next->load() >= i) break;
+    const int k = prog_of_draw_[static_cast<size_t>(i)];
+    if (done[static_cast<size_t>(k)]) continue;
+    done[static_cast<size_t>(k)] = true;
+    if (!bind_draw(static_cast<size_t>(i), programs_[static_cast<size_t>(k)], true, &err)) break;
+    g.DrawElements(GL_TRIANGLES, buffers_[static_cast<size_t>(i)].count, GL_UNSIGNED_INT, nullptr);
+    g.Finish();
+  }
 }
 
 bool SceneGl::read(std::vector<float> *rgba) {

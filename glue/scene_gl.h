@@ -4,6 +4,7 @@
 // passes (shaders/scene_gbuffer.fs): the same vertex shader and depth, writing the records the
 // production fragment shader received, so that the C twin can shade exactly what GL shaded.
 #pragma once
+#include <atomic>
 #include <functional>
 #include <string>
 #include <vector>
@@ -20,7 +21,16 @@ class SceneGl {
   SceneGl &operator=(const SceneGl &) = delete;
   // Compiles the variants (one program per unique variant), uploads geometry and textures.
   // *compile_ms receives the time of compiling and linking the programs.
-  bool init(const PreparedScene &p, std::string *err, double *compile_ms = nullptr);
+  // target_w/h > 0: a smaller colour/depth target than the frame's (shader warm-up contexts).
+  bool init(const PreparedScene &p, std::string *err, double *compile_ms = nullptr, int target_w = 0,
+            int target_h = 0);
+  // Shader warm-up (another context on another thread, Mesa's shader cache on): draws the
+  // draws from the last one down, each once into the small target, so that llvmpipe JIT-
+  // compiles their shader variants and stores them in the cache; stops at the first draw the
+  // main thread has already reached (*main_next: the index of the draw it is about to issue).
+  void warm(const std::atomic<int> *main_next);
+  // The main thread's progress, read by a warm-up thread (nullptr: none).
+  void set_progress(std::atomic<int> *next) { progress_ = next; }
   // Draws the frame into the RGBA32F target (clear colour 0,0,0,0; depth 1) and reads it back.
   // before_draw (optional) is called after a draw's program, uniforms and textures are bound.
   bool frame(ImageF *out, std::string *err, double *draw_ms = nullptr,
@@ -40,6 +50,8 @@ class SceneGl {
   GlRenderer &r_;
   Api api_;
   const PreparedScene *p_ = nullptr;
+  int tw_ = 0, th_ = 0;  // target size
+  std::atomic<int> *progress_ = nullptr;
   std::vector<std::string> variant_names_;
   std::vector<GLuint> programs_;           // per unique variant
   std::vector<int> prog_of_draw_;

@@ -95,6 +95,9 @@ check "model_lighting sm3 osmesa gl33" scenes/model_lighting.gltf --tier sm3 --b
 check "world_lighting ps2b egl gl33" scenes/world_lighting.gltf --tier ps2b --api gl33
 check "model_lighting ps20 egl gles2" scenes/model_lighting.gltf --tier ps20 --api gles2
 check "hdr_atrium sm3 egl gles2, integer path" scenes/hdr_atrium.gltf --tier sm3 --api gles2 --hdr integer
+# The shader warm-up thread (glue/scene_frame.cpp) off, and on with an empty shader cache.
+TIERSHADE_NO_WARMUP=1 check "model_lighting ps2b, no warm-up" scenes/model_lighting.gltf --tier ps2b
+MESA_SHADER_CACHE_DIR="$TMP/cache" check "model_lighting sm3, warm-up, empty cache" scenes/model_lighting.gltf --tier sm3
 
 # --- the C fallback and the selection -------------------------------------------------------
 run scenes/world_lighting.gltf --backend cpu --size 64x36 -o "$TMP/cpu"
