@@ -21,20 +21,13 @@
 #include "scene_cpu.h"
 #include "scene_gl.h"
 #include "scene_prepare.h"
+#include "srgb_codes.h"
 #include "static_exposure.h"
 
 namespace {
 
 using Clock = std::chrono::steady_clock;
 double ms_since(Clock::time_point t0) { return std::chrono::duration<double, std::milli>(Clock::now() - t0).count(); }
-
-// The exact sRGB curve (IEC 61966-2-1), for linear outputs the render target would encode.
-float srgb_encode(float v) {
-  if (!(v > 0.f)) return 0.f;
-  if (v >= 1.f) return 1.f;
-  const double d = v;
-  return static_cast<float>(d <= 0.0031308 ? d * 12.92 : 1.055 * std::pow(d, 1.0 / 2.4) - 0.055);
-}
 
 bool load_luts(const SceneHdr &sh, std::vector<Lut3D> *out, std::string *err) {
   for (const SceneLut &l : sh.luts) {
@@ -273,7 +266,7 @@ bool SceneRenderer::Impl::post(SceneRenderResult *res, bool on_cpu, const std::v
       if (mixed) linear = draw_of_pixel[i] >= 0 && !p.draws[draw_of_pixel[i]].display_encoded;
       for (int c = 0; c < 3; ++c) {
         const float v = res->lit.rgba[i * 4 + c];
-        res->display[i * 4 + c] = ts_unorm8_from_float(linear ? srgb_encode(v) : v);
+        res->display[i * 4 + c] = linear ? srgb_code(v) : ts_unorm8_from_float(v);
       }
       res->display[i * 4 + 3] = 255;
     }

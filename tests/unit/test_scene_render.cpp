@@ -23,7 +23,9 @@
 #include "scene.h"
 #include "scene_effects.h"
 #include "scene_frame.h"
+#include "srgb_codes.h"
 #include "static_exposure.h"
+#include <cstring>
 
 namespace {
 
@@ -175,10 +177,38 @@ void test_cpu_vs_gl() {
   }
 }
 
+void test_srgb_codes() {
+  // Every threshold's neighbourhood, then a sweep of bit patterns and special values.
+  long bad = 0, n = 0;
+  std::string first;
+  auto one = [&](float v) {
+    ++n;
+    if (srgb_code(v) != srgb_code_direct(v) && bad++ == 0) first = std::to_string(v);
+  };
+  for (uint32_t b = 0; b < 0x7f800000u; b += 997) {
+    float v;
+    std::memcpy(&v, &b, 4);
+    one(v);
+    one(-v);
+  }
+  for (float v : {0.f, -0.f, 1e-40f, 1.f, 0.5f, 65504.f, std::numeric_limits<float>::infinity(),
+                  -std::numeric_limits<float>::infinity(), std::numeric_limits<float>::quiet_NaN()})
+    one(v);
+  for (int c = 0; c < 256; ++c) {
+    const float t = c / 255.f;  // near each code's value, both sides, one ulp at a time
+    float v = std::pow(t, 2.4f);
+    for (int k = 0; k < 64; ++k) v = std::nextafter(v, 0.f);
+    for (int k = 0; k < 128; ++k, v = std::nextafter(v, 2.f)) one(v);
+  }
+  printf("INFO sRGB codes by thresholds: %ld values compared\n", n);
+  check(bad == 0, "sRGB codes by thresholds == the direct formula", first);
+}
+
 }  // namespace
 
 int main() {
   ts_math_init();
+  test_srgb_codes();
   test_static_counts();
   test_selection();
   test_cpu_vs_gl();
