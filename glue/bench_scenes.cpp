@@ -120,6 +120,7 @@ struct Row {
   double first_ms = 0, first_nowarm_ms = 0;  // a fresh process, empty shader cache, warm-up on / off
   double gl_frame = 0, gl_lit = 0;  // medians of warm frames
   double c_frame = 0, c_lit = 0;
+  double uber_frame = 0, uber_lit = 0;  // llvmpipe, every feature compiled in (no selection)
 };
 
 bool compile_all_ms(const SceneSelection &sel, double *ms, std::string *err) {
@@ -163,6 +164,22 @@ bool measure(const Scene &s, Tier tier, const std::string &hdr, int runs, Row *r
   row->gl_lit = median(lit);
   frame.clear();
   lit.clear();
+  {
+    SceneSelection uber;
+    if (!select_scene_variants(s, tier, hdr, &uber, err, true)) return false;
+    SceneRenderer gl;
+    SceneRenderResult res;
+    if (!gl.init(s, uber, cfg, err) || !gl.frame(&res, err)) return false;
+    for (int i = 0; i < runs; ++i) {
+      if (!gl.frame(&res, err)) return false;
+      frame.push_back(res.frame_ms);
+      lit.push_back(res.lit_ms);
+    }
+    row->uber_frame = median(frame);
+    row->uber_lit = median(lit);
+    frame.clear();
+    lit.clear();
+  }
   cfg.backend = Backend::CPU;
   SceneRenderer c;
   SceneRenderResult res;
@@ -211,16 +228,21 @@ bool run(const BenchOptions &opt, std::string *md, std::string *err) {
     << "and without it (TIERSHADE_NO_WARMUP=1). **compile all**:\n"
     << "compiling and linking every combo of the families the scene uses (their JIT would come on top, at\n"
     << "first draw); **selected**: the same for the selected variants. **frame** includes the HDR path and\n"
-    << "colour correction; **lit** is the lit pass alone (GL: draws + glFinish; C: rasterise + shade).\n\n"
+    << "colour correction; **lit** is the lit pass alone (GL: draws + glFinish; C: rasterise + shade).\n"
+    << "**all features**: the same scene on llvmpipe with every draw's variant having every feature compiled\n"
+    << "in (what an engine without selection runs; unused features off by uniforms); **lit x saved**: its lit\n"
+    << "pass over the selection's.\n\n"
     << "| scene | tier | HDR path | variants / combos | compile ms selected / all | x saved | first frame ms (warm-up / none) | "
-       "llvmpipe frame ms | llvmpipe lit ms | C frame ms | C lit ms | C / llvmpipe frame | C / llvmpipe lit |\n"
-    << "|---|---|---|---|---|---|---|---|---|---|---|---|---|\n";
+       "llvmpipe frame ms | llvmpipe lit ms | all features: frame / lit ms | lit x saved | C frame ms | C lit ms | "
+       "C / llvmpipe frame | C / llvmpipe lit |\n"
+    << "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n";
   for (const Row &r : rows) {
     o << "| " << r.scene.substr(7) << " | " << r.tier << " | " << r.hdr << " | " << r.variants << " / " << r.combos
       << " | " << f1(r.compile_sel) << " / " << f1(r.compile_all) << " | "
       << f1(r.compile_all / std::max(1e-3, r.compile_sel)) << " | " << f1(r.first_ms) << " / "
       << f1(r.first_nowarm_ms) << " | " << f1(r.gl_frame)
-      << " | " << f1(r.gl_lit) << " | " << f1(r.c_frame) << " | " << f1(r.c_lit) << " | "
+      << " | " << f1(r.gl_lit) << " | " << f1(r.uber_frame) << " / " << f1(r.uber_lit) << " | "
+      << f2(r.uber_lit / std::max(1e-3, r.gl_lit)) << " | " << f1(r.c_frame) << " | " << f1(r.c_lit) << " | "
       << f2(r.c_frame / std::max(1e-3, r.gl_frame)) << " | " << f2(r.c_lit / std::max(1e-3, r.gl_lit)) << " |\n";
   }
   o << "\nPeak resident memory of one `tiershade render SCENE --size 1280x720` process (the scene's default tier\n"

@@ -3,6 +3,7 @@
 // final display frame). Prints the variants built and why, and what the selection saved.
 #include <unistd.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cstdio>
 
@@ -44,7 +45,7 @@ bool parse_size(const std::string &s, int *w, int *h) {
 
 // Compiles and links every combo of the families the scene uses (the baseline the selection
 // is measured against), in a context like the render's; returns the time in ms.
-bool compile_all(const SceneSelection &sel, Backend b, Api api, double *ms, std::string *err) {
+bool compile_all_programs(const SceneSelection &sel, Backend b, Api api, double *ms, std::string *err) {
   auto ctx = GlContext::create(b, api, err);
   if (!ctx) return false;
   GlRenderer r(*ctx);
@@ -56,6 +57,27 @@ bool compile_all(const SceneSelection &sel, Backend b, Api api, double *ms, std:
   }
   ctx->gl().Finish();
   *ms = std::chrono::duration<double, std::milli>(Clock::now() - t0).count();
+  return true;
+}
+
+// The first frame (init included) and the median of 3 further frames, in ms.
+bool warm_frame_ms(const Scene &s, const SceneSelection &sel, const SceneRenderConfig &cfg, double *first,
+                   double *frame, double *lit, std::string *err) {
+  const auto t0 = Clock::now();
+  SceneRenderer r;
+  SceneRenderResult res;
+  if (!r.init(s, sel, cfg, err) || !r.frame(&res, err)) return false;
+  if (first) *first = std::chrono::duration<double, std::milli>(Clock::now() - t0).count();
+  std::vector<double> t, l;
+  for (int i = 0; i < 5; ++i) {
+    if (!r.frame(&res, err)) return false;
+    t.push_back(res.frame_ms);
+    l.push_back(res.lit_ms);
+  }
+  std::sort(t.begin(), t.end());
+  std::sort(l.begin(), l.end());
+  *frame = t[2];
+  *lit = l[2];
   return true;
 }
 
@@ -181,14 +203,32 @@ int cmd_render(int argc, char **argv) {
       printf("compile: %.1f ms for the %zu selected variants", res.compile_ms, sel.variants.size());
       if (a.flag("--compile-all")) {
         double all_ms = 0;
-        if (!compile_all(sel, cfg.backend, cfg.api, &all_ms, &err)) {
+        if (!compile_all_programs(sel, cfg.backend, cfg.api, &all_ms, &err)) {
           fprintf(stderr, "\ntiershade render: compiling every combo: %s\n", err.c_str());
           return 1;
         }
         printf("; every combo: %.1f ms (%d programs), %.1fx the selection\n", all_ms, sel.all_combos,
                all_ms / std::max(1e-3, res.compile_ms));
+        // The frame an engine without selection would draw: every feature compiled in.
+        SceneSelection uber;
+        SceneRenderConfig c2 = cfg;
+        c2.check = false;
+        c2.on_draw = nullptr;
+        c2.progress = nullptr;
+        double sel_frame = 0, sel_lit = 0, uber_first = 0, uber_frame = 0, uber_lit = 0;
+        if (!select_scene_variants(scene, tier, hdr, &uber, &err, true) ||
+            !warm_frame_ms(scene, sel, c2, nullptr, &sel_frame, &sel_lit, &err) ||
+            !warm_frame_ms(scene, uber, c2, &uber_first, &uber_frame, &uber_lit, &err)) {
+          fprintf(stderr, "tiershade render: all-features frame: %s\n", err.c_str());
+          return 1;
+        }
+        printf("all features compiled in (%zu variants): first frame %.1f ms, frame %.1f ms, lit pass %.1f ms\n"
+               "the selection (%zu variants):         first frame %.1f ms, frame %.1f ms, lit pass %.1f ms"
+               " (medians of 5; lit pass %.2fx faster)\n",
+               uber.variants.size(), uber_first, uber_frame, uber_lit, sel.variants.size(), res.frame_ms, sel_frame,
+               sel_lit, uber_lit / std::max(1e-3, sel_lit));
       } else {
-        printf(" (--compile-all measures every combo)\n");
+        printf(" (--compile-all measures every combo and the all-features frame)\n");
       }
     }
     printf("frame %dx%d: prepare %.1f ms, lit pass %.1f ms, post %.1f ms, frame %.1f ms, total with loading %.1f ms\n",

@@ -173,7 +173,7 @@ void world_choice(const Scene &s, const SceneMaterial &m, Wanted *w, SceneDrawCh
 }  // namespace
 
 bool select_scene_variants(const Scene &s, Tier tier, const std::string &hdr_path_in, SceneSelection *out,
-                           std::string *err) {
+                           std::string *err, bool all_features) {
   SceneSelection sel;
   if (!load_shader_decls(&sel.decls, err)) return false;
   sel.hdr_path = hdr_path_in.empty() ? s.hdr.path : hdr_path_in;
@@ -212,6 +212,21 @@ bool select_scene_variants(const Scene &s, Tier tier, const std::string &hdr_pat
       model_choice(s, p, m, tier, float_path, &w, &c);
     }
     c.family = d->name;
+    if (all_features) {
+      // Every feature on: only the HDR-path, encoding and light-count choices stay derived.
+      for (auto &kv : w.values) {
+        const std::string &k = kv.first;
+        if (k == "ALBEDO_TEXTURE" || k == "PHONG" || k == "PHONG_EXPONENT_MAP" || k == "RIM_LIGHT" || k == "ENVMAP" ||
+            k == "LIGHT_WARP" || k == "ENVMAPMASK")
+          kv.second = 1;
+        if (k == "HALF_LAMBERT" && tier != Tier::PS20) kv.second = 1;  // Phong needs it
+        if (k == "BUMPMAP") kv.second = 1;
+        if (k == "NUM_LIGHTS") kv.second = tier == Tier::PS20 ? 2 : 4;
+      }
+      c.why.assign(1, "all features compiled in (the baseline without selection)");
+      w.why.clear();
+      c.mask_constant = false;
+    }
     const Variant *v = match(sel.all_storage, d, tier, w);
     if (!v) {
       std::string vals;

@@ -36,5 +36,9 @@ struct SceneSelection {
 };
 
 // Tier names as in the variants files: "ps20" | "ps2b" | "sm3". hdr_path: "" = the scene's.
+// all_features: the baseline an engine without selection would run: every draw takes its
+// family's variant with every feature compiled in (Phong, exponent map, rim, envmap, light
+// warp, the tier's full light count; RNM, envmap and mask texture), features its material does
+// not use switched off by uniforms (boost 0, scale 0) or fed placeholder textures.
 bool select_scene_variants(const Scene &s, Tier tier, const std::string &hdr_path, SceneSelection *out,
-                           std::string *err);
+                           std::string *err, bool all_features = false);

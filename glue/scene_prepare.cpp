@@ -280,8 +280,10 @@ bool model_draw(const Scene &s, const PreparedScene &ps, const SceneDrawChoice &
   const float *fr = m.phong_fresnel_ranges;
   d->shared[ML_SLOT_FRESNEL] = v4((fr[1] - fr[0]) * 2, fr[1], (fr[2] - fr[1]) * 2, m.invert_phong_mask ? 1.f : 0.f);
   d->shared[ML_SLOT_PHONG_TINT] = v4(m.phong_tint[0], m.phong_tint[1], m.phong_tint[2], m.phong_albedo_tint ? 1.f : 0.f);
-  d->shared[ML_SLOT_RIM] = v4(m.rim_exponent, m.rim_boost, m.rim_mask, 0);
-  d->shared[ML_SLOT_ENVMAP] = v4(m.envmap_scale, m.envmap_fresnel, 0, 0);
+  // Features the material does not use contribute nothing (they are compiled in only in the
+  // all-features baseline): rim boost 0, envmap scale 0.
+  d->shared[ML_SLOT_RIM] = v4(m.rim_exponent, m.rim_light ? m.rim_boost : 0.f, m.rim_mask, 0);
+  d->shared[ML_SLOT_ENVMAP] = v4(m.envmap ? m.envmap_scale : 0.f, m.envmap_fresnel, 0, 0);
   d->shared[ML_SLOT_ENVMAP_TINT] = v4(m.envmap_tint[0], m.envmap_tint[1], m.envmap_tint[2], 0);
   d->shared[ML_SLOT_SELF_ILLUM] = v4(m.self_illum_tint[0], m.self_illum_tint[1], m.self_illum_tint[2], m.self_illum ? 1.f : 0.f);
   // Textures: only what the variant samples is real; the others are 1x1 placeholders.
@@ -299,16 +301,25 @@ bool model_draw(const Scene &s, const PreparedScene &ps, const SceneDrawChoice &
     d->tex.push_back(pool->get(key_of("u_normal_map", m.normal_texture, false, nullptr), [&] { return image_texture(s, m.normal_texture, "u_normal_map", false, nullptr); }));
   else
     d->tex.push_back(pool->get(key_solid("u_normal_map", 0.5f, 0.5f, 1.f, 1.f), [&] { return solid("u_normal_map", 0.5f, 0.5f, 1.f, 1.f); }));
-  if (v.value("PHONG_EXPONENT_MAP"))
+  if (v.value("PHONG_EXPONENT_MAP") && m.phong_exponent_texture.image >= 0)
     d->tex.push_back(pool->get(key_of("u_exponent_map", m.phong_exponent_texture, false, nullptr), [&] { return image_texture(s, m.phong_exponent_texture, "u_exponent_map", false, nullptr); }));
   else
     d->tex.push_back(pool->get(key_solid("u_exponent_map", 1, 1, 1, 1), [&] { return solid("u_exponent_map", 1, 1, 1, 1); }));
-  if (v.value("LIGHT_WARP"))
+  if (v.value("LIGHT_WARP") && m.light_warp_texture.image >= 0)
     d->tex.push_back(pool->get(key_of("u_light_warp", m.light_warp_texture, false, nullptr), [&] { return image_texture(s, m.light_warp_texture, "u_light_warp", false, nullptr); }));
   else
-    d->tex.push_back(pool->get(key_solid("u_light_warp", 1, 1, 1, 1), [&] { return solid("u_light_warp", 1, 1, 1, 1); }));
+    d->tex.push_back(pool->get("u_light_warp|identity", [&] {
+      // An identity ramp (value = u), for a LIGHT_WARP variant whose material has no ramp.
+      TextureDesc t = solid("u_light_warp", 1, 1, 1, 1);
+      t.w = 256;
+      t.linear = true;
+      t.rgba.resize(256 * 4);
+      for (int i = 0; i < 256; ++i)
+        for (int c = 0; c < 4; ++c) t.rgba[i * 4 + c] = c < 3 ? (i + 0.5f) / 256.f : 1.f;
+      return t;
+    }));
   int pi = -1;
-  if (v.value("ENVMAP")) {
+  if (v.value("ENVMAP") && !s.probes.empty()) {
     pi = nearest_probe(s, center, m.probe);
     if (!probes->cube(pi, nullptr, nullptr, err)) return false;
   }
@@ -491,7 +502,8 @@ bool prepare_scene(const Scene &s, const SceneSelection &sel, int w, int h, Api 
     const float lm_scale = v.value("BUMPMAP") ? 1.7320508f : 1.f;
     d.shared[WL_SLOT_TINT_SCALE] = v4(lm_scale, lm_scale, lm_scale, ps.tone_map_scale);
     const float mk = c.mask_constant ? c.mask_value : 1.f;
-    d.shared[WL_SLOT_ENV_TINT] = v4(m.envmap_tint[0] * mk, m.envmap_tint[1] * mk, m.envmap_tint[2] * mk, m.envmap_scale);
+    d.shared[WL_SLOT_ENV_TINT] = v4(m.envmap_tint[0] * mk, m.envmap_tint[1] * mk, m.envmap_tint[2] * mk,
+                                    m.envmap ? m.envmap_scale : 0.f);
     d.shared[WL_SLOT_ENV_PARAMS] = v4(m.envmap_contrast, m.envmap_saturation, 1.f - m.fresnel_reflection, m.fresnel_reflection);
     d.shared[WL_SLOT_FOG_COLOR] = v4(0, 0, 0, 0);  // no fog
     d.shared[WL_SLOT_FOG_PARAMS] = v4(0, 0, 0, 0);
@@ -504,12 +516,12 @@ bool prepare_scene(const Scene &s, const SceneSelection &sel, int w, int h, Api 
     else
       d.tex.push_back(pool.get(key_solid("u_normalmap", 0.5f, 0.5f, 1.f, 1.f), [&] { return solid("u_normalmap", 0.5f, 0.5f, 1.f, 1.f); }));
     d.tex.push_back(pool.get("u_lightmap|" + std::to_string(enc), [&] { return page; }));
-    if (v.value("ENVMAPMASK") == 1)
+    if (v.value("ENVMAPMASK") == 1 && m.envmap_mask_texture.image >= 0)
       d.tex.push_back(pool.get(key_of("u_envmap_mask", m.envmap_mask_texture, false, nullptr), [&] { return image_texture(s, m.envmap_mask_texture, "u_envmap_mask", false, nullptr); }));
     else
       d.tex.push_back(pool.get(key_solid("u_envmap_mask", 1, 1, 1, 1), [&] { return solid("u_envmap_mask", 1, 1, 1, 1); }));
     int pi = -1;
-    if (v.value("ENVMAP")) {
+    if (v.value("ENVMAP") && !s.probes.empty()) {
       const D3 mid = D3{f.origin.x, f.origin.y, f.origin.z} + t * (f.su / 2) + b * (f.sv / 2);
       const double cc[3] = {mid.x, mid.y, mid.z};
       pi = nearest_probe(s, cc, m.probe);
