@@ -142,6 +142,7 @@ int cmd_render(int argc, char **argv) {
       if (!dump_capture_uniforms(gl, prog, &dd.uniforms, &dump_err) && dump_err.empty()) dump_err = "uniform capture failed";
       dump.draws.push_back(std::move(dd));
     };
+    cfg.on_lit = [&](const ImageF &lit) { dump.rgba = lit.rgba; };
   }
   const bool quiet = a.flag("--quiet");
   const bool show_progress = a.flag("--progress") || isatty(2);
@@ -185,7 +186,6 @@ int cmd_render(int argc, char **argv) {
     dump.w = res.w;
     dump.h = res.h;
     dump.depth_format = "DEPTH_COMPONENT24";  // as glue/scene_gl.cpp allocates it
-    dump.rgba = res.lit.rgba;
     if (!dump_err.empty() || !write_draw_dump(a.get("--dump-draws"), dump, &dump_err)) {
       fprintf(stderr, "tiershade render: --dump-draws: %s\n", dump_err.c_str());
       return 1;
@@ -214,6 +214,7 @@ int cmd_render(int argc, char **argv) {
         SceneRenderConfig c2 = cfg;
         c2.check = false;
         c2.on_draw = nullptr;
+        c2.on_lit = nullptr;
         c2.progress = nullptr;
         double sel_frame = 0, sel_lit = 0, uber_first = 0, uber_frame = 0, uber_lit = 0;
         if (!select_scene_variants(scene, tier, hdr, &uber, &err, true) ||

@@ -23,6 +23,8 @@ int cmd_variants(int argc, char **argv) {
          "--target defaults to essl300. An existing DIR is replaced only if it is a bundle.");
     return 0;
   }
+  if (!a.positional().empty() && !a.has("-o"))
+    a.fail("unexpected argument '" + a.positional()[0] + "' (a scene bundle: tiershade variants SCENE --tier T -o DIR)");
   if (a.has("-o") || a.has("--target") || !a.positional().empty()) return cmd_variants_bundle(a);
   Selection sel;
   select_variants(a, &sel);

@@ -129,6 +129,15 @@ void SceneRenderer::Impl::start_warmup() {
     auto c = GlContext::create(cfg.backend, cfg.api, &e);
     if (!c) return;
     GlRenderer r(*c);
+    if (float_path) {
+      // The post-processing programs first: the main thread needs them last.
+      PassRunner run(r);
+      HdrPipelineGl pipe(run, cfg.api);
+      std::vector<float> black(16 * 16 * 4, 0.f);
+      HdrSettings hs;
+      if (!pipe.init_post(16, 16, &e) || !pipe.post_float(black, hs, &e)) return;
+      c->gl().Finish();
+    }
     SceneGl g(r, cfg.api);
     if (!g.init(p, &e, nullptr, 16, 16)) return;
     g.warm(&main_next);
@@ -331,6 +340,7 @@ bool SceneRenderer::frame(SceneRenderResult *out, std::string *err) {
     m.main_next.store(1 << 30);
     m.join_warmup();
     if (!ok) return false;
+    if (cfg.on_lit) cfg.on_lit(res.lit);
     if (cfg.check) {
       std::vector<float> slots;
       if (!m.sgl->gbuffer(&draw_of_pixel, &slots, err)) return false;

@@ -31,6 +31,8 @@ struct SceneRenderConfig {
   std::function<void(const char *, double)> progress;
   // GL: called for each draw after its program, uniforms and textures are bound (draw capture).
   std::function<void(const GlFns &, const PreparedScene &, const PreparedDraw &, GLuint program)> on_draw;
+  // Called with the lit pass as drawn (before the float path stores it as fp16).
+  std::function<void(const ImageF &lit)> on_lit;
 };
 
 struct SceneRenderResult {
