@@ -335,12 +335,18 @@ bool SceneRenderer::frame(SceneRenderResult *out, std::string *err) {
     draw_of_pixel = vis.draw;
   } else {
     std::function<void(int, GLuint)> capture;
-    if (cfg.on_draw) capture = [&](int di, GLuint prog) { cfg.on_draw(m.sgl->gl(), p, p.draws[di], prog); };
+    if (cfg.on_draw || cfg.progress)
+      capture = [&](int di, GLuint prog) {
+        if (cfg.on_draw) cfg.on_draw(m.sgl->gl(), p, p.draws[di], prog);
+        if (cfg.progress) cfg.progress("GL lit pass (a variant's first draw JIT-compiles it)",
+                                       static_cast<double>(di) / p.draws.size());
+      };
     const bool ok = m.sgl->frame(&res.lit, err, &res.lit_ms, capture);
     m.main_next.store(1 << 30);
     m.join_warmup();
     if (!ok) return false;
     if (cfg.on_lit) cfg.on_lit(res.lit);
+    if (cfg.progress) cfg.progress("GL lit pass (a variant's first draw JIT-compiles it)", 1.0);
     if (cfg.check) {
       std::vector<float> slots;
       if (!m.sgl->gbuffer(&draw_of_pixel, &slots, err)) return false;
