@@ -17,6 +17,7 @@
 #define TSV_AVX 1
 #include "ts_simd.h"
 #include "ts_simd_sampler.h"
+#include "ts_simd_sampler_nearest.h"
 #include "world_lighting_simd_impl.h"
 #pragma GCC pop_options
 #undef TSV_W
@@ -37,6 +38,7 @@
 #define TSV_AVX 1
 #include "ts_simd.h"
 #include "ts_simd_sampler.h"
+#include "ts_simd_sampler_nearest.h"
 #include "world_lighting_simd_impl.h"
 #pragma GCC pop_options
 #undef TSV_W
@@ -55,6 +57,7 @@
 #define TSV_AVX 0
 #include "ts_simd.h"
 #include "ts_simd_sampler.h"
+#include "ts_simd_sampler_nearest.h"
 #include "world_lighting_simd_impl.h"
 #endif
 

@@ -3,7 +3,7 @@
  * headers, float32) on TSV_W pixels at once, in SoA, statement by statement, so that every lane
  * gives the scalar twin's bits. Combos stay scalar `if`s; the per-pixel "full envmap" test on
  * the record's contrast/saturation/R0 becomes a select. Included by world_lighting_batch.c after
- * ts_simd.h and ts_simd_sampler.h. */
+ * ts_simd.h, ts_simd_sampler.h and ts_simd_sampler_nearest.h (VFN(tex2d): NEAREST or LINEAR). */
 
 TSV_INL V4v VFN(wl_rec)(const wl_batch_input *in, int k, const size_t *pix) {
   return VFN(rec_load)(in->slot[k], in->stride[k], pix);
@@ -17,7 +17,7 @@ TSV_INL V4v VFN(wl_rec)(const wl_batch_input *in, int k, const size_t *pix) {
 /* common_lightmap.h */
 static V3v VFN(wl_lightmap)(const wl_variant *v, const ts_tex2d *lm, VF u, VF w, VF ox, VF oy, float k) {
   const VF kv = VFN(splat)(k);
-  const V4v t = VFN(texture2D)(lm, u + kv * ox, w + kv * oy);
+  const V4v t = VFN(tex2d)(lm, u + kv * ox, w + kv * oy);
   const V3v rgb = VFN(v3)(t.x, t.y, t.z);
   if (v->tier == WL_TIER_PS20 && v->encoding == WL_LM_LDR) {
     const V3v s = VFN(scale3)(rgb, VFN(splat)(2.0f));
@@ -84,14 +84,14 @@ static void VFN(wl_block)(const wl_variant *v, const wl_batch_input *in, const w
   const V4v uv = VFN(wl_rec)(in, WL_SLOT_UV, pix);
   const V4v lm_offset = VFN(wl_rec)(in, WL_SLOT_LM_OFFSET, pix);
   const V4v tint_scale = VFN(wl_rec)(in, WL_SLOT_TINT_SCALE, pix);
-  const V4v base = VFN(texture2D)(tx->base, uv.x, uv.y);
+  const V4v base = VFN(tex2d)(tx->base, uv.x, uv.y);
 
   V3v diffuse, n = VFN(v3)(zero, zero, one);
   V4v bump = {zero, zero, zero, zero};
   if (v->bumpmap == WL_BUMP_NONE) {
     diffuse = VFN(wl_lightmap)(v, tx->lightmap, uv.z, uv.w, lm_offset.x, lm_offset.y, 0.0f);
   } else {
-    bump = VFN(texture2D)(tx->normalmap, uv.x, uv.y);
+    bump = VFN(tex2d)(tx->normalmap, uv.x, uv.y);
     const V3v l0 = VFN(wl_lightmap)(v, tx->lightmap, uv.z, uv.w, lm_offset.x, lm_offset.y, 1.0f);
     const V3v l1 = VFN(wl_lightmap)(v, tx->lightmap, uv.z, uv.w, lm_offset.x, lm_offset.y, 2.0f);
     const V3v l2 = VFN(wl_lightmap)(v, tx->lightmap, uv.z, uv.w, lm_offset.x, lm_offset.y, 3.0f);
@@ -121,7 +121,7 @@ static void VFN(wl_block)(const wl_variant *v, const wl_batch_input *in, const w
     const V3v tint = VFN(xyz)(env_tint);
     V3v spec;
     if (v->envmapmask == WL_MASK_TEXTURE) {
-      const V4v m = VFN(texture2D)(tx->envmap_mask, uv.x, uv.y);
+      const V4v m = VFN(tex2d)(tx->envmap_mask, uv.x, uv.y);
       spec = VFN(mul3)(env, VFN(mul3)(VFN(xyz)(m), tint));
     } else if (v->envmapmask == WL_MASK_NORMAL_ALPHA) {
       spec = VFN(mul3)(env, VFN(scale3)(tint, bump.w));
@@ -164,6 +164,12 @@ static void VFN(wl_batch)(const wl_variant *v, const wl_batch_input *in, const w
     for (int j = 0; j < TSV_W; ++j) pix[j] = (size_t)first + (size_t)(j < n ? j : n - 1);
     V3v c;
     VFN(wl_block)(v, in, tx, pix, &c);
-    for (int j = 0; j < n; ++j) out[first + j] = ts_v4f(c.x[j], c.y[j], c.z[j], 1.0f);
+    for (int j = 0; j < n; ++j) {
+      ts_vec4f *o = &out[first + j];
+      o->x = c.x[j];
+      o->y = c.y[j];
+      o->z = c.z[j];
+      o->w = 1.0f;
+    }
   }
 }

@@ -85,6 +85,7 @@ void make_ctx(const PreparedScene &p, std::vector<DrawCtx> *out) {
 
 const int kVary = 24;  // 6 slots x 4
 const int kPixelSlots = 6;  // ML_PIXEL_SLOTS == WL_PIXEL_SLOTS
+const int kChunk = 64;      // pixels per batched call of scene_shade_cpu (a multiple of 8)
 
 // The production vertex shaders' outputs (model_lighting.vs, world_lighting.vs) in float.
 void vertex_stage(const PreparedScene &p, const PreparedDraw &d, std::vector<float> *clip, std::vector<float> *vary) {
@@ -143,6 +144,15 @@ void vertex_stage(const PreparedScene &p, const PreparedDraw &d, std::vector<flo
   }
 }
 
+// Four floats as one vector (GCC vector extension: SSE on x86; each lane an IEEE float op).
+typedef float F4 __attribute__((vector_size(16)));
+inline F4 load4(const float *p) {
+  F4 v;
+  std::memcpy(&v, p, sizeof v);
+  return v;
+}
+inline F4 splat4(float s) { return F4{s, s, s, s}; }
+
 // Shades n pixels of one draw with the batched twin: pixel slot k of pixel i at
 // pix[k * pitch + i], the shared slots from the draw's record.
 void shade_run(const DrawCtx &c, const ts_vec4f *pix, int pitch, int n, ts_vec4f *res) {
@@ -179,11 +189,43 @@ struct ScreenTri {
   double bary[3][3];  // each screen vertex as barycentrics of the original triangle
   __int128 area;
   int x0, x1, y0, y1;
+  // Derived once in setup: 1 / area; edge k (a -> b, opposite vertex k) as dx, dy and its
+  // top-left bias (an edge value of 0 covers the pixel iff the edge is top or left); small:
+  // every coordinate below 2^27, so the edge values are exact in 64 bits; unit: not clipped,
+  // each screen vertex is one original vertex (bary rows are unit vectors; ui[j]: the screen
+  // vertex that is original vertex j).
+  double inv_area;
+  int64_t dx[3], dy[3];
+  int bias[3];
+  bool small, unit;
+  int ui[3];
 };
 
 const int kSub = 256;  // llvmpipe rasterises with 8 sub-pixel bits
 
 bool top_left(int64_t dx, int64_t dy) { return dy < 0 || (dy == 0 && dx > 0); }
+
+void finish_setup(ScreenTri *s) {
+  s->inv_area = 1.0 / static_cast<double>(s->area);
+  s->small = true;
+  for (int k = 0; k < 3; ++k) {
+    const int a = (k + 1) % 3, b = (k + 2) % 3;
+    s->dx[k] = s->X[b] - s->X[a];
+    s->dy[k] = s->Y[b] - s->Y[a];
+    s->bias[k] = top_left(s->dx[k], s->dy[k]) ? 0 : 1;
+    s->small = s->small && std::llabs(s->X[k]) < (1LL << 27) && std::llabs(s->Y[k]) < (1LL << 27);
+  }
+  s->unit = true;
+  for (int j = 0; j < 3; ++j) {
+    s->ui[j] = -1;
+    for (int k = 0; k < 3; ++k) {
+      const double v = s->bary[k][j];
+      if (v == 1.0 && !std::signbit(v)) s->ui[j] = s->ui[j] < 0 ? k : 3;
+      else if (!(v == 0.0 && !std::signbit(v))) s->unit = false;
+    }
+    if (s->ui[j] < 0 || s->ui[j] > 2) s->unit = false;
+  }
+}
 
 void setup(const PreparedScene &p, int di, const std::vector<float> &clip, std::vector<ScreenTri> *out) {
   const PreparedDraw &d = p.draws[di];
@@ -246,7 +288,88 @@ void setup(const PreparedScene &p, int di, const std::vector<float> &clip, std::
       s.y0 = static_cast<int>(std::max<int64_t>(0, ymin / kSub - 1));
       s.y1 = static_cast<int>(std::min<int64_t>(p.h - 1, ymax / kSub + 1));
       if (s.x0 > s.x1 || s.y0 > s.y1) continue;
+      finish_setup(&s);
       out->push_back(s);
+    }
+  }
+}
+
+// floor(a / b) and ceil(a / b) for b > 0.
+int64_t floor_div(int64_t a, int64_t b) { return a >= 0 ? a / b : -((-a + b - 1) / b); }
+int64_t ceil_div(int64_t a, int64_t b) { return -floor_div(-a, b); }
+
+// The visible pixel (y, x) of s with edge values e (double): depth test LESS, then the
+// perspective-correct barycentrics. The operations and their order are the reference's.
+inline void shade_pixel(const ScreenTri &s, SceneVisibility *vis, size_t i, double l0, double l1, double l2) {
+  const double z = l0 * s.z[0] + l1 * s.z[1] + l2 * s.z[2];
+  if (!(z < vis->depth[i]) || z < 0.0) return;
+  const double q[3] = {l0 * s.invw[0], l1 * s.invw[1], l2 * s.invw[2]};
+  const double qs = q[0] + q[1] + q[2];
+  double B1, B2;
+  if (s.unit) {
+    // Rows of unit vectors: the sum over k of q[k] / qs * bary[k][j] is +0 + ... with one
+    // non-zero term (q >= 0 and finite inside the triangle), which is that term exactly.
+    B1 = q[s.ui[1]] / qs;
+    B2 = q[s.ui[2]] / qs;
+  } else {
+    double B[3] = {0, 0, 0};
+    for (int k = 0; k < 3; ++k)
+      for (int j = 0; j < 3; ++j) B[j] += q[k] / qs * s.bary[k][j];
+    B1 = B[1];
+    B2 = B[2];
+  }
+  vis->depth[i] = static_cast<float>(z);
+  vis->draw[i] = s.draw;
+  vis->tri[i] = s.tri;
+  vis->b1[i] = static_cast<float>(B1);
+  vis->b2[i] = static_cast<float>(B2);
+}
+
+// Rows ya..yb of a triangle with 64-bit edge values: per row, the covered span from the
+// three edge inequalities (exact integer division), then the edge values stepped along x.
+void raster_small(const ScreenTri &s, SceneVisibility *vis, int ya, int yb) {
+  const int w = vis->w;
+  int64_t A[3], C[3];  // e_k(x) = C_k(y) + A_k x at the pixel centre (x, y)
+  for (int k = 0; k < 3; ++k) A[k] = -s.dy[k] * kSub;
+  for (int y = ya; y <= yb; ++y) {
+    const int64_t py = static_cast<int64_t>(y) * kSub + kSub / 2;
+    int64_t lo = s.x0, hi = s.x1;
+    for (int k = 0; k < 3; ++k) {
+      const int a = (k + 1) % 3;
+      C[k] = s.dx[k] * (py - s.Y[a]) - s.dy[k] * (kSub / 2 - s.X[a]);
+      // covered: e > 0, or e == 0 on a top-left edge: e >= bias
+      if (A[k] > 0) lo = std::max(lo, ceil_div(s.bias[k] - C[k], A[k]));
+      else if (A[k] < 0) hi = std::min(hi, floor_div(C[k] - s.bias[k], -A[k]));
+      else if (C[k] < s.bias[k]) hi = lo - 1;
+    }
+    if (lo > hi) continue;
+    int64_t e0 = C[0] + A[0] * lo, e1 = C[1] + A[1] * lo, e2 = C[2] + A[2] * lo;
+    const size_t row = static_cast<size_t>(y) * w;
+    for (int64_t x = lo; x <= hi; ++x) {
+      shade_pixel(s, vis, row + static_cast<size_t>(x), static_cast<double>(e0) * s.inv_area,
+                  static_cast<double>(e1) * s.inv_area, static_cast<double>(e2) * s.inv_area);
+      e0 += A[0];
+      e1 += A[1];
+      e2 += A[2];
+    }
+  }
+}
+
+// The general case (coordinates up to 1e9 * 256): 128-bit edge values per pixel.
+void raster_wide(const ScreenTri &s, SceneVisibility *vis, int ya, int yb) {
+  for (int y = ya; y <= yb; ++y) {
+    const int64_t py = static_cast<int64_t>(y) * kSub + kSub / 2;
+    for (int x = s.x0; x <= s.x1; ++x) {
+      const int64_t px = static_cast<int64_t>(x) * kSub + kSub / 2;
+      double l[3];
+      bool in = true;
+      for (int k = 0; k < 3 && in; ++k) {
+        const int a = (k + 1) % 3;
+        const __int128 e = static_cast<__int128>(s.dx[k]) * (py - s.Y[a]) - static_cast<__int128>(s.dy[k]) * (px - s.X[a]);
+        in = e >= s.bias[k];
+        l[k] = static_cast<double>(e) * s.inv_area;
+      }
+      if (in) shade_pixel(s, vis, static_cast<size_t>(y) * vis->w + x, l[0], l[1], l[2]);
     }
   }
 }
@@ -257,11 +380,12 @@ void scene_rasterize_cpu(const PreparedScene &p, SceneVisibility *vis, int threa
   const size_t n = static_cast<size_t>(p.w) * p.h;
   vis->w = p.w;
   vis->h = p.h;
-  vis->draw.assign(n, -1);
-  vis->tri.assign(n, -1);
-  vis->b1.assign(n, 0.f);
-  vis->b2.assign(n, 0.f);
-  vis->depth.assign(n, 1.f);
+  // Kept between frames when the size is the same; each band resets its own rows below.
+  vis->draw.resize(n);
+  vis->tri.resize(n);
+  vis->b1.resize(n);
+  vis->b2.resize(n);
+  vis->depth.resize(n);
   std::vector<ScreenTri> tris;
   std::vector<float> clip, vary;
   for (size_t di = 0; di < p.draws.size(); ++di) {
@@ -277,49 +401,18 @@ void scene_rasterize_cpu(const PreparedScene &p, SceneVisibility *vis, int threa
   for (size_t i = 0; i < tris.size(); ++i)
     for (int b = tris[i].y0 / kBand; b <= tris[i].y1 / kBand; ++b) band_tris[static_cast<size_t>(b)].push_back(static_cast<int>(i));
   parallel_rows(bands, threads, [&](int, int band) {
+    const int ra = band * kBand, rb = std::min(p.h, ra + kBand);
+    const size_t i0 = static_cast<size_t>(ra) * p.w, i1 = static_cast<size_t>(rb) * p.w;
+    std::fill(vis->draw.begin() + i0, vis->draw.begin() + i1, -1);
+    std::fill(vis->tri.begin() + i0, vis->tri.begin() + i1, -1);
+    std::fill(vis->b1.begin() + i0, vis->b1.begin() + i1, 0.f);
+    std::fill(vis->b2.begin() + i0, vis->b2.begin() + i1, 0.f);
+    std::fill(vis->depth.begin() + i0, vis->depth.begin() + i1, 1.f);
     for (int ti : band_tris[static_cast<size_t>(band)]) {
       const ScreenTri &s = tris[static_cast<size_t>(ti)];
-      const double inv_area = 1.0 / static_cast<double>(s.area);
-      const int ya = std::max(s.y0, band * kBand), yb = std::min(s.y1, band * kBand + kBand - 1);
-      // Edge k (a -> b, opposite vertex k): e = dx (py - Ya) - dy (px - Xa), stepped along x.
-      // 64-bit when the coordinates are small enough for exact products, else 128-bit.
-      bool small = true;
-      for (int k = 0; k < 3; ++k) small = small && std::llabs(s.X[k]) < (1LL << 27) && std::llabs(s.Y[k]) < (1LL << 27);
-      for (int y = ya; y <= yb; ++y) {
-        const int64_t py = static_cast<int64_t>(y) * kSub + kSub / 2;
-        for (int x = s.x0; x <= s.x1; ++x) {
-          const int64_t px = static_cast<int64_t>(x) * kSub + kSub / 2;
-          double l[3];
-          bool in = true;
-          for (int k = 0; k < 3 && in; ++k) {
-            const int a = (k + 1) % 3, b = (k + 2) % 3;
-            const int64_t dx = s.X[b] - s.X[a], dy = s.Y[b] - s.Y[a];
-            if (small) {
-              const int64_t e = dx * (py - s.Y[a]) - dy * (px - s.X[a]);
-              in = e > 0 || (e == 0 && top_left(dx, dy));
-              l[k] = static_cast<double>(e) * inv_area;
-            } else {
-              const __int128 e = static_cast<__int128>(dx) * (py - s.Y[a]) - static_cast<__int128>(dy) * (px - s.X[a]);
-              in = e > 0 || (e == 0 && top_left(dx, dy));
-              l[k] = static_cast<double>(e) * inv_area;
-            }
-          }
-          if (!in) continue;
-          const double z = l[0] * s.z[0] + l[1] * s.z[1] + l[2] * s.z[2];
-          const size_t i = static_cast<size_t>(y) * p.w + x;
-          if (!(z < vis->depth[i]) || z < 0.0) continue;
-          const double q[3] = {l[0] * s.invw[0], l[1] * s.invw[1], l[2] * s.invw[2]};
-          const double qs = q[0] + q[1] + q[2];
-          double B[3] = {0, 0, 0};
-          for (int k = 0; k < 3; ++k)
-            for (int j = 0; j < 3; ++j) B[j] += q[k] / qs * s.bary[k][j];
-          vis->depth[i] = static_cast<float>(z);
-          vis->draw[i] = s.draw;
-          vis->tri[i] = s.tri;
-          vis->b1[i] = static_cast<float>(B[1]);
-          vis->b2[i] = static_cast<float>(B[2]);
-        }
-      }
+      const int ya = std::max(s.y0, ra), yb = std::min(s.y1, rb - 1);
+      if (s.small) raster_small(s, vis, ya, yb);
+      else raster_wide(s, vis, ya, yb);
     }
   });
 }
@@ -333,38 +426,48 @@ void scene_shade_cpu(const PreparedScene &p, const SceneVisibility &vis, ImageF 
   for (size_t di = 0; di < p.draws.size(); ++di) vertex_stage(p, p.draws[di], &clip, &vary[di]);
   out->w = p.w;
   out->h = p.h;
-  out->rgba.assign(static_cast<size_t>(p.w) * p.h * 4, 0.f);
+  out->rgba.resize(static_cast<size_t>(p.w) * p.h * 4);  // every pixel is written below
   std::atomic<int> rows{0};
+  // Per thread: the run's pixel slots and results (kept across rows).
+  const int nthreads = threads <= 0 ? static_cast<int>(std::max(1u, std::thread::hardware_concurrency())) : threads;
+  std::vector<std::vector<ts_vec4f>> pix_of(static_cast<size_t>(nthreads));
   parallel_rows(p.h, threads, [&](int t, int y) {
     // Runs of pixels of one draw are shaded together by the batched twins (8 pixels per
     // instruction where the host has AVX2; the same bits as one pixel at a time).
-    std::vector<ts_vec4f> pix(static_cast<size_t>(kPixelSlots) * p.w);
-    std::vector<ts_vec4f> res(static_cast<size_t>(p.w));
+    std::vector<ts_vec4f> &pix = pix_of[static_cast<size_t>(t)];
+    pix.resize(static_cast<size_t>(kPixelSlots) * kChunk);
     const size_t row = static_cast<size_t>(y) * p.w;
+    float *orow = &out->rgba[row * 4];
     int x = 0;
     while (x < p.w) {
       const int d = vis.draw[row + x];
       if (d < 0) {
+        std::memset(orow + static_cast<size_t>(x) * 4, 0, 4 * sizeof(float));
         ++x;
         continue;
       }
       int x1 = x;
       while (x1 < p.w && vis.draw[row + x1] == d) ++x1;
-      const int n = x1 - x;
-      const std::vector<float> &vd = vary[d];
+      ts_vec4f *orow_px = reinterpret_cast<ts_vec4f *>(orow) + x;
+      // In chunks of kChunk pixels, so that the slots stay in L1 between the two loops.
+      const float *vd = vary[d].data();
       const uint32_t *indices = p.draws[d].indices.data();
-      for (int i = 0; i < n; ++i) {
-        const size_t q = row + x + i;
-        const uint32_t *idx = &indices[static_cast<size_t>(vis.tri[q]) * 3];
-        const float b1 = vis.b1[q], b2 = vis.b2[q], b0 = 1.f - b1 - b2;
-        const float *v0 = &vd[idx[0] * kVary], *v1 = &vd[idx[1] * kVary], *v2 = &vd[idx[2] * kVary];
-        for (int k = 0; k < kPixelSlots; ++k) {
-          float *o = &pix[static_cast<size_t>(k) * p.w + i].x;
-          for (int c = 0; c < 4; ++c) o[c] = v0[k * 4 + c] * b0 + v1[k * 4 + c] * b1 + v2[k * 4 + c] * b2;
+      for (int c0 = x; c0 < x1; c0 += kChunk) {
+        const int n = std::min(kChunk, x1 - c0);
+        for (int i = 0; i < n; ++i) {
+          const size_t q = row + c0 + i;
+          const uint32_t *idx = &indices[static_cast<size_t>(vis.tri[q]) * 3];
+          const float b1 = vis.b1[q], b2 = vis.b2[q], b0 = 1.f - b1 - b2;
+          const float *v0 = &vd[idx[0] * kVary], *v1 = &vd[idx[1] * kVary], *v2 = &vd[idx[2] * kVary];
+          // v0 b0 + v1 b1 + v2 b2 per component, four components per operation (float, unfused).
+          const F4 B0 = splat4(b0), B1 = splat4(b1), B2 = splat4(b2);
+          for (int k = 0; k < kPixelSlots; ++k) {
+            const F4 o = load4(v0 + k * 4) * B0 + load4(v1 + k * 4) * B1 + load4(v2 + k * 4) * B2;
+            std::memcpy(&pix[static_cast<size_t>(k) * kChunk + i], &o, sizeof o);
+          }
         }
+        shade_run(ctx[d], pix.data(), kChunk, n, orow_px + (c0 - x));
       }
-      shade_run(ctx[d], pix.data(), p.w, n, res.data());
-      std::memcpy(&out->rgba[(row + x) * 4], res.data(), static_cast<size_t>(n) * sizeof(ts_vec4f));
       x = x1;
     }
     const int done = ++rows;

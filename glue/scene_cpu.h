@@ -12,6 +12,8 @@
 #include "image_io.h"
 #include "scene_prepare.h"
 
+// A buffer passed again at the same size is reused (reset by the rasteriser's bands, not
+// reallocated).
 struct SceneVisibility {
   int w = 0, h = 0;
   std::vector<int32_t> draw, tri;  // -1: background
