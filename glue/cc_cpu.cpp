@@ -1,23 +1,32 @@
-// tiershade glue: colour correction of an RGBA8 frame by the C twin (glue/cc_cpu.h).
+// tiershade glue: colour correction of an RGBA8 frame by the C twin (glue/cc_cpu.h), a row at
+// a time through the batch twin (c_ref/color_correction_batch.h: 8 or 4 pixels per SIMD call,
+// color_correction_f's bits): the colours are the row's texels fetched as float, the other
+// slots are the shared record (stride 0).
 #include "cc_cpu.h"
 
+#include "color_correction_batch.h"
 #include "hdr_formats.h"
+#include "hdr_post_batch.h"
 #include "parallel_rows.h"
 
 void cc_apply_rgba8_c(const cc_variant &v, const ts_vec4f *shared, const cc_luts &luts, int w, int h,
                       std::vector<uint8_t> *frame, int threads) {
   scene_parallel_rows(h, threads, [&](int y) {
+    uint8_t *c8 = &(*frame)[static_cast<size_t>(y) * w * 4];
+    std::vector<ts_vec4f> colour(static_cast<size_t>(w)), out(static_cast<size_t>(w));
     for (int x = 0; x < w; ++x) {
-      uint8_t *c8 = &(*frame)[(static_cast<size_t>(y) * w + x) * 4];
-      ts_vec4f rec[CC_SLOTS];
-      for (int k = 0; k < CC_SLOTS; ++k) rec[k] = shared[k];
-      rec[CC_SLOT_COLOR] = ts_v4f(ts_unorm8_to_float(c8[0]), ts_unorm8_to_float(c8[1]), ts_unorm8_to_float(c8[2]),
-                                  ts_unorm8_to_float(c8[3]));
-      const ts_vec4f c = color_correction_f(&v, rec, &luts);
-      c8[0] = ts_unorm8_from_float(c.x);
-      c8[1] = ts_unorm8_from_float(c.y);
-      c8[2] = ts_unorm8_from_float(c.z);
-      c8[3] = ts_unorm8_from_float(c.w);
+      const uint8_t *p = c8 + static_cast<size_t>(x) * 4;
+      colour[x] = ts_v4f(ts_unorm8_to_float(p[0]), ts_unorm8_to_float(p[1]), ts_unorm8_to_float(p[2]),
+                         ts_unorm8_to_float(p[3]));
     }
+    cc_batch_input in;
+    for (int k = 0; k < CC_SLOTS; ++k) {
+      in.slot[k] = &shared[k];
+      in.stride[k] = 0;
+    }
+    in.slot[CC_SLOT_COLOR] = colour.data();
+    in.stride[CC_SLOT_COLOR] = 1;
+    color_correction_f_batch(&v, &in, &luts, out.data(), w);
+    ts_unorm8_from_float_batch(&out[0].x, c8, out.size() * 4);
   });
 }

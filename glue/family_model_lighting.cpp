@@ -4,6 +4,7 @@
 #include <limits>
 #include <memory>
 
+#include "family_model_lighting.h"
 #include "family.h"
 #include "model_lighting.h"
 #include "model_lighting_batch.h"
@@ -13,20 +14,6 @@ namespace {
 const float kNaN = std::numeric_limits<float>::quiet_NaN();
 const float kInf = std::numeric_limits<float>::infinity();
 
-ml_variant to_ml(const Variant &v) {
-  ml_variant m = {};
-  m.tier = v.tier == Tier::PS20 ? TS_TIER_ID_PS20 : v.tier == Tier::PS2B ? TS_TIER_ID_PS2B : TS_TIER_ID_SM3;
-  m.albedo_texture = v.value("ALBEDO_TEXTURE");
-  m.half_lambert = v.value("HALF_LAMBERT");
-  m.output_mode = v.value("OUTPUT_MODE");
-  m.num_lights = v.value("NUM_LIGHTS");
-  m.phong = v.value("PHONG");
-  m.exponent_map = v.value("PHONG_EXPONENT_MAP");
-  m.rim_light = v.value("RIM_LIGHT");
-  m.envmap = v.value("ENVMAP");
-  m.light_warp = v.value("LIGHT_WARP");
-  return m;
-}
 
 // The C views of the family's textures, in make_inputs' order.
 enum { TEX_ALBEDO, TEX_NORMAL, TEX_EXPONENT, TEX_WARP, TEX_ENVMAP, TEX_COUNT };
@@ -45,14 +32,14 @@ void gather(const FamilyInputs &in, int x, int y, ts_vec4f rec[ML_SLOTS]) {
   for (int k = 0; k < ML_SLOTS; ++k) rec[k] = in.slot(x, y, k);
 }
 
-// to_ml looks combos up by name: cache it per thread for the frame's variant.
+// ml_variant_of looks combos up by name: cache it per thread for the frame's variant.
 const ml_variant &cached_ml(const Variant &v) {
   thread_local Tier last_tier = Tier::SM3;
   thread_local std::vector<std::pair<std::string, int>> last_values;
   thread_local bool valid = false;
   thread_local ml_variant m;
   if (!valid || last_tier != v.tier || last_values != v.values) {
-    m = to_ml(v);
+    m = ml_variant_of(v);
     last_tier = v.tier;
     last_values = v.values;
     valid = true;
@@ -353,6 +340,21 @@ void bind_uniforms(const GlFns &gl, GLuint program, const std::vector<ts_vec4f> 
 }
 
 }  // namespace
+
+ml_variant ml_variant_of(const Variant &v) {
+  ml_variant m = {};
+  m.tier = v.tier == Tier::PS20 ? TS_TIER_ID_PS20 : v.tier == Tier::PS2B ? TS_TIER_ID_PS2B : TS_TIER_ID_SM3;
+  m.albedo_texture = v.value("ALBEDO_TEXTURE");
+  m.half_lambert = v.value("HALF_LAMBERT");
+  m.output_mode = v.value("OUTPUT_MODE");
+  m.num_lights = v.value("NUM_LIGHTS");
+  m.phong = v.value("PHONG");
+  m.exponent_map = v.value("PHONG_EXPONENT_MAP");
+  m.rim_light = v.value("RIM_LIGHT");
+  m.envmap = v.value("ENVMAP");
+  m.light_warp = v.value("LIGHT_WARP");
+  return m;
+}
 
 const ShaderFamily kModelLightingFamily = {
     "model_lighting", ML_SLOTS, slot_names(), make_inputs, eval_f, eval_d, output_range, ML_PIXEL_SLOTS, bind_uniforms,

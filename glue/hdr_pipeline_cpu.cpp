@@ -1,11 +1,16 @@
 // tiershade glue: the C twins of the integer and float HDR paths, and the double
-// reference of the float path (see hdr_pipeline.h). Each pass calls its family's twin
-// per pixel with the record the GL pass would read: the fragment position (pixel
-// centre), the sizes and parameters the GL glue passes as uniforms.
+// reference of the float path (see hdr_pipeline.h). Each pass shades a row at a time with the
+// records the GL pass would read: the fragment position (pixel centre) per pixel, the sizes
+// and parameters the GL glue passes as uniforms shared by the row. The float path runs the
+// batch twins (c_ref/hdr_post_batch.h: 8 or 4 pixels per SIMD call, the scalar twins' bits);
+// the double reference calls its twins per pixel.
+#include <cstring>
+
 #include "bloom_blur.h"
 #include "bloom_downsample.h"
 #include "hdr_formats.h"
 #include "hdr_pipeline.h"
+#include "hdr_post_batch.h"
 #include "hdr_tonemap.h"
 #include "model_lighting.h"
 #include "parallel_rows.h"
@@ -28,12 +33,23 @@ ts_tex2d tex_of(const std::vector<float> &rgba, int w, int h, bool linear) {
 
 ts_vec4f centre(int x, int y) { return ts_v4f(static_cast<float>(x) + 0.5f, static_cast<float>(y) + 0.5f, 0.f, 0.f); }
 
-void store(std::vector<float> *img, size_t i, ts_vec4f c, bool half) {
-  const float v[4] = {c.x, c.y, c.z, c.w};
-  for (int k = 0; k < 4; ++k) (*img)[i * 4 + k] = half ? ts_quantize_half(v[k]) : v[k];
+// Pixel centres of row y, x = 0..w-1.
+void centres(int y, int w, std::vector<ts_vec4f> *pos) {
+  pos->resize(static_cast<size_t>(w));
+  for (int x = 0; x < w; ++x) (*pos)[x] = centre(x, y);
+}
+
+// A row of results into an RGBA float image at pixel i: fp16-quantised (GL) or as is (reference).
+void store_row(std::vector<float> *img, size_t i, const std::vector<ts_vec4f> &row, bool half) {
+  const float *src = &row[0].x;
+  float *dst = img->data() + i * 4;
+  if (half) ts_quantize_half_batch(src, dst, row.size() * 4);
+  else std::memcpy(dst, src, row.size() * sizeof(ts_vec4f));
 }
 
 // The three bloom passes of the float path; `half`: store in fp16 (GL) or float32 (reference).
+// down(pos, rec, count, tex, out) and blur(dir, pos, rec, count, tex, out) shade `count` pixels
+// of a row: pos[i] is pixel i's centre, rec the slots shared by the row (its position slot unused).
 template <class Down, class Blur>
 void bloom_chain(const std::vector<float> &hdr, int w, int h, Down down, Blur blur, bool half, std::vector<float> *out,
                  int *bw_out, int *bh_out, int threads = 1) {
@@ -42,25 +58,27 @@ void bloom_chain(const std::vector<float> &hdr, int w, int h, Down down, Blur bl
   std::vector<float> ds(n * 4), bx(n * 4);
   out->assign(n * 4, 0.f);
   const ts_tex2d src = tex_of(hdr, w, h, true);
+  const ts_vec4f drec[BD_SLOTS] = {ts_v4f(0.f, 0.f, 0.f, 0.f), size_of(w, h), ts_v4f(0.3f, 0.59f, 0.11f, 2.2f)};
+  const ts_vec4f brec[BB_SLOTS] = {ts_v4f(0.f, 0.f, 0.f, 0.f), size_of(bw, bh), ts_v4f(1.f, 0.f, 0.f, 0.f)};
   scene_parallel_rows(bh, threads, [&](int y) {
-    for (int x = 0; x < bw; ++x) {
-      const ts_vec4f rec[BD_SLOTS] = {centre(x, y), size_of(w, h), ts_v4f(0.3f, 0.59f, 0.11f, 2.2f)};
-      store(&ds, static_cast<size_t>(y) * bw + x, down(rec, &src), half);
-    }
+    std::vector<ts_vec4f> pos, row(static_cast<size_t>(bw));
+    centres(y, bw, &pos);
+    down(pos.data(), drec, bw, &src, row.data());
+    store_row(&ds, static_cast<size_t>(y) * bw, row, half);
   });
   const ts_tex2d tds = tex_of(ds, bw, bh, true);
   scene_parallel_rows(bh, threads, [&](int y) {
-    for (int x = 0; x < bw; ++x) {
-      const ts_vec4f rec[BB_SLOTS] = {centre(x, y), size_of(bw, bh), ts_v4f(1.f, 0.f, 0.f, 0.f)};
-      store(&bx, static_cast<size_t>(y) * bw + x, blur(0, rec, &tds), half);
-    }
+    std::vector<ts_vec4f> pos, row(static_cast<size_t>(bw));
+    centres(y, bw, &pos);
+    blur(0, pos.data(), brec, bw, &tds, row.data());
+    store_row(&bx, static_cast<size_t>(y) * bw, row, half);
   });
   const ts_tex2d tbx = tex_of(bx, bw, bh, true);
   scene_parallel_rows(bh, threads, [&](int y) {
-    for (int x = 0; x < bw; ++x) {
-      const ts_vec4f rec[BB_SLOTS] = {centre(x, y), size_of(bw, bh), ts_v4f(1.f, 0.f, 0.f, 0.f)};
-      store(out, static_cast<size_t>(y) * bw + x, blur(1, rec, &tbx), half);
-    }
+    std::vector<ts_vec4f> pos, row(static_cast<size_t>(bw));
+    centres(y, bw, &pos);
+    blur(1, pos.data(), brec, bw, &tbx, row.data());
+    store_row(out, static_cast<size_t>(y) * bw, row, half);
   });
   *bw_out = bw;
   *bh_out = bh;
@@ -102,24 +120,28 @@ void hdr_post_float_c(const std::vector<float> &hdr, int w, int h, const HdrSett
   const bd_variant dv = {0};
   const bb_variant bxv = {0}, byv = {1};
   bloom_chain(
-      out->hdr, w, h, [&](const ts_vec4f *rec, const ts_tex2d *t) { return bloom_downsample_f(&dv, rec, t); },
-      [&](int dir, const ts_vec4f *rec, const ts_tex2d *t) { return bloom_blur_f(dir ? &byv : &bxv, rec, t); }, true,
-      &out->bloom, &out->bw, &out->bh, threads);
+      out->hdr, w, h,
+      [&](const ts_vec4f *pos, const ts_vec4f *rec, int count, const ts_tex2d *t, ts_vec4f *o) {
+        const bd_batch_input in = {{pos, &rec[BD_SLOT_SIZE], &rec[BD_SLOT_SHAPE]}, {1, 0, 0}};
+        bloom_downsample_f_batch(&dv, &in, t, o, count);
+      },
+      [&](int dir, const ts_vec4f *pos, const ts_vec4f *rec, int count, const ts_tex2d *t, ts_vec4f *o) {
+        const bb_batch_input in = {{pos, &rec[BB_SLOT_SIZE], &rec[BB_SLOT_PARAMS]}, {1, 0, 0}};
+        bloom_blur_f_batch(dir ? &byv : &bxv, &in, t, o, count);
+      },
+      true, &out->bloom, &out->bw, &out->bh, threads);
   const ts_tex2d bloom = tex_of(out->bloom, out->bw, out->bh, true);
   const ht_variant tv = {2};
   out->display.resize(static_cast<size_t>(w) * h * 4);
+  const ts_vec4f size = size_of(w, h), params = ts_v4f(s.tone_map_scale, s.bloom_amount, s.bloom_exponent, 0.f);
   scene_parallel_rows(h, threads, [&](int y) {
-    for (int x = 0; x < w; ++x) {
-      const size_t i = static_cast<size_t>(y) * w + x;
-      const float *fb = &out->hdr[i * 4];
-      const ts_vec4f rec[HT_SLOTS] = {centre(x, y), ts_v4f(fb[0], fb[1], fb[2], fb[3]), size_of(w, h),
-                                      ts_v4f(s.tone_map_scale, s.bloom_amount, s.bloom_exponent, 0.f)};
-      const ts_vec4f c = hdr_tonemap_f(&tv, rec, &bloom);
-      out->display[i * 4 + 0] = ts_unorm8_from_float(c.x);
-      out->display[i * 4 + 1] = ts_unorm8_from_float(c.y);
-      out->display[i * 4 + 2] = ts_unorm8_from_float(c.z);
-      out->display[i * 4 + 3] = ts_unorm8_from_float(c.w);
-    }
+    const size_t i = static_cast<size_t>(y) * w;
+    std::vector<ts_vec4f> pos, fb(static_cast<size_t>(w)), row(static_cast<size_t>(w));
+    centres(y, w, &pos);
+    std::memcpy(fb.data(), &out->hdr[i * 4], fb.size() * sizeof(ts_vec4f));
+    const ht_batch_input in = {{pos.data(), fb.data(), &size, &params}, {1, 1, 0, 0}};
+    hdr_tonemap_f_batch(&tv, &in, &bloom, row.data(), w);
+    ts_unorm8_from_float_batch(&row[0].x, &out->display[i * 4], row.size() * 4);
   });
 }
 
@@ -140,8 +162,19 @@ void hdr_float_frame_reference(const ShaderFamily &lit, const Variant &v_linear,
   std::vector<float> bloom;
   int bw = 0, bh = 0;
   bloom_chain(
-      hdr, w, h, [&](const ts_vec4f *rec, const ts_tex2d *t) { return to_f(bloom_downsample_d(&dv, rec, t)); },
-      [&](int dir, const ts_vec4f *rec, const ts_tex2d *t) { return to_f(bloom_blur_d(dir ? &byv : &bxv, rec, t)); },
+      hdr, w, h,
+      [&](const ts_vec4f *pos, const ts_vec4f *rec, int count, const ts_tex2d *t, ts_vec4f *o) {
+        for (int x = 0; x < count; ++x) {
+          const ts_vec4f r[BD_SLOTS] = {pos[x], rec[BD_SLOT_SIZE], rec[BD_SLOT_SHAPE]};
+          o[x] = to_f(bloom_downsample_d(&dv, r, t));
+        }
+      },
+      [&](int dir, const ts_vec4f *pos, const ts_vec4f *rec, int count, const ts_tex2d *t, ts_vec4f *o) {
+        for (int x = 0; x < count; ++x) {
+          const ts_vec4f r[BB_SLOTS] = {pos[x], rec[BB_SLOT_SIZE], rec[BB_SLOT_PARAMS]};
+          o[x] = to_f(bloom_blur_d(dir ? &byv : &bxv, r, t));
+        }
+      },
       false, &bloom, &bw, &bh);
   const ts_tex2d tb = tex_of(bloom, bw, bh, true);
   const ht_variant tv = {2};

@@ -144,8 +144,9 @@ bool SceneGl::bind_draw(size_t i, GLuint program, bool production, std::string *
   return true;
 }
 
-bool SceneGl::draw_all(const std::vector<GLuint> &progs, bool production, int gb_slot, std::string *err,
-                       const std::function<void(int, GLuint)> &before_draw) {
+// The state of every scene pass: the target, no blending or culling, depth test LESS (as an
+// engine draws opaque geometry; the draw dump documents the same state, docs/bundles.md).
+void SceneGl::begin_pass() {
   const GlFns &g = gl();
   g.BindFramebuffer(GL_FRAMEBUFFER, fbo_);
   g.BindVertexArray(vao_);
@@ -155,6 +156,12 @@ bool SceneGl::draw_all(const std::vector<GLuint> &progs, bool production, int gb
   g.Enable(GL_DEPTH_TEST);
   g.DepthFunc(GL_LESS);
   g.DepthMask(GL_TRUE);
+}
+
+bool SceneGl::draw_all(const std::vector<GLuint> &progs, bool production, int gb_slot, std::string *err,
+                       const std::function<void(int, GLuint)> &before_draw) {
+  const GlFns &g = gl();
+  begin_pass();
   g.ClearColor(0.f, 0.f, 0.f, 0.f);
   g.Clear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
   for (size_t i = 0; i < p_->draws.size(); ++i) {
@@ -186,14 +193,7 @@ bool SceneGl::draw_all(const std::vector<GLuint> &progs, bool production, int gb
 
 void SceneGl::warm(const std::atomic<int> *main_next) {
   const GlFns &g = gl();
-  g.BindFramebuffer(GL_FRAMEBUFFER, fbo_);
-  g.BindVertexArray(vao_);
-  g.Viewport(0, 0, tw_, th_);
-  g.Disable(GL_BLEND);
-  g.Disable(GL_CULL_FACE);
-  g.Enable(GL_DEPTH_TEST);
-  g.DepthFunc(GL_LESS);
-  g.DepthMask(GL_TRUE);
+  begin_pass();
   g.Clear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
   std::vector<bool> done(programs_.size(), false);
   std::string err;

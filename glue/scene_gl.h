@@ -43,6 +43,7 @@ class SceneGl {
   GLuint program_of(int draw) const { return programs_.at(prog_of_draw_.at(draw)); }
 
  private:
+  void begin_pass();
   bool bind_draw(size_t i, GLuint program, bool production, std::string *err);
   bool draw_all(const std::vector<GLuint> &progs, bool production, int gb_slot, std::string *err,
                 const std::function<void(int, GLuint)> &before_draw);

@@ -10,53 +10,15 @@
 # Needs only bash, coreutils, grep and awk.
 set -u
 
-if [ $# -ne 1 ]; then
-  echo "usage: $0 path/to/tiershade" >&2
-  exit 2
-fi
-TS=$1
-case $TS in
-  /*) ;;
-  *) TS="$PWD/$TS" ;;
-esac
-if [ ! -x "$TS" ] || [ -d "$TS" ]; then
-  echo "FAIL setup: '$1' is not an executable file"
-  exit 1
-fi
-
+. "$(dirname "${BASH_SOURCE[0]}")/lib.sh"
+cli_setup nir_test 50 "$@"
+unset ST_DEBUG
 # The consistency band of glue/cmd_budget.cpp (kNirRatioLo, kNirRatioHi).
 BAND_LO=0.8
 BAND_HI=5.0
-
-TMP=$(mktemp -d "${TMPDIR:-/tmp}/tiershade_nir_test.XXXXXX") || { echo "FAIL setup: mktemp"; exit 1; }
-trap 'rm -rf "$TMP"' EXIT
-trap 'exit 129' HUP INT TERM PIPE
-cd "$TMP" || exit 1
-unset TIERSHADE_SHADER_DIR ST_DEBUG
 # tiershade's capture files go here, so the test can check that they are removed.
 mkdir "$TMP/tmpdir" || exit 1
 export TMPDIR="$TMP/tmpdir"
-case ${ASAN_OPTIONS:-} in
-  *detect_leaks=*) ;;
-  *) export ASAN_OPTIONS="${ASAN_OPTIONS:+$ASAN_OPTIONS:}detect_leaks=0" ;;  # Mesa keeps allocations
-esac
-
-FAILED=0
-pass() { echo "PASS $1"; }
-fail() {
-  FAILED=$((FAILED + 1))
-  local d=${2//$'\n'/|}
-  echo "FAIL $1: ${d:0:600}"
-}
-TIMEOUT=()
-if command -v timeout > /dev/null 2>&1; then TIMEOUT=(timeout -k 5 50); fi
-OUT="$TMP/stdout"
-ERR="$TMP/stderr"
-RC=0
-run() {
-  "${TIMEOUT[@]}" "$TS" "$@" > "$OUT" 2> "$ERR" < /dev/null
-  RC=$?
-}
 # crashed NAME: FAIL and return 0 when the last run crashed, timed out or had a sanitizer report.
 crashed() {
   if [ "$RC" -ge 124 ] || grep -qE 'Sanitizer|runtime error:|terminate called|Segmentation fault' "$ERR"; then

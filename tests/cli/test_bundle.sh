@@ -11,45 +11,9 @@
 # replays the --dump-draws capture bit for bit, and a corrupted dump is caught.
 # Prints "PASS name" / "FAIL name: detail" ("SKIP name: why"); exits 1 if any check failed.
 set -u
-if [ $# -ne 1 ]; then
-  echo "usage: $0 path/to/tiershade" >&2
-  exit 2
-fi
-TS=$1
-HERE=$(cd "$(dirname "${BASH_SOURCE[0]}")/../.." && pwd)
-case $TS in /*) ;; *) TS="$PWD/$TS" ;; esac
-if [ ! -x "$TS" ] || [ -d "$TS" ]; then
-  echo "FAIL setup: '$1' is not an executable file"
-  exit 1
-fi
+. "$(dirname "${BASH_SOURCE[0]}")/lib.sh"
+cli_setup bundle_cli 300 "$@"
 BARE=$(dirname "$TS")/tests/bare_gl_render
-TMP=$(mktemp -d "${TMPDIR:-/tmp}/tiershade_bundle_cli.XXXXXX") || { echo "FAIL setup: mktemp"; exit 1; }
-trap 'rm -rf "$TMP"' EXIT
-cd "$TMP" || exit 1
-unset TIERSHADE_SHADER_DIR
-case ${ASAN_OPTIONS:-} in
-  *detect_leaks=*) ;;
-  *) export ASAN_OPTIONS="${ASAN_OPTIONS:+$ASAN_OPTIONS:}detect_leaks=0" ;;
-esac
-
-FAILED=0
-PASSED=0
-pass() { PASSED=$((PASSED + 1)); echo "PASS $1"; }
-fail() {
-  FAILED=$((FAILED + 1))
-  local d=${2//$'\n'/|}
-  echo "FAIL $1: ${d:0:600}"
-}
-skip() { echo "SKIP $1: $2"; }
-TIMEOUT=()
-if command -v timeout > /dev/null 2>&1; then TIMEOUT=(timeout -k 5 300); fi
-OUT="$TMP/stdout"
-ERR="$TMP/stderr"
-RC=0
-run() {
-  "${TIMEOUT[@]}" "$TS" "$@" > "$OUT" 2> "$ERR" < /dev/null
-  RC=$?
-}
 crashed() {
   if [ "$RC" -ge 124 ] && [ "$RC" -ne 125 ] || grep -qE 'AddressSanitizer|LeakSanitizer|UndefinedBehaviorSanitizer|runtime error:|terminate called|Segmentation fault' "$ERR"; then
     fail "$1" "crashed or timed out (status $RC): $(head -n 1 "$ERR")"
@@ -169,5 +133,4 @@ else
   done
 fi
 
-echo "$PASSED passed, $FAILED failed"
-[ "$FAILED" -eq 0 ]
+cli_finish

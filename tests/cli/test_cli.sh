@@ -14,56 +14,8 @@
 # status 0 and well-formed output. Needs only bash, coreutils, grep and awk.
 set -u
 
-if [ $# -ne 1 ]; then
-  echo "usage: $0 path/to/tiershade" >&2
-  exit 2
-fi
-TS=$1
-HERE=$(cd "$(dirname "${BASH_SOURCE[0]}")/../.." && pwd)   # the repository, for scenes/
-case $TS in
-  /*) ;;
-  *) TS="$PWD/$TS" ;;
-esac
-if [ ! -x "$TS" ] || [ -d "$TS" ]; then
-  echo "FAIL setup: '$1' is not an executable file"
-  exit 1
-fi
-
-TMP=$(mktemp -d "${TMPDIR:-/tmp}/tiershade_cli.XXXXXX") || { echo "FAIL setup: mktemp"; exit 1; }
-trap 'rm -rf "$TMP"' EXIT
-trap 'exit 129' HUP INT TERM PIPE
-cd "$TMP" || exit 1                 # nothing may depend on the caller's directory
-unset TIERSHADE_SHADER_DIR          # use the embedded shader library
-# Sanitizer builds: memory errors and UB must still be reported (they are FAILs below),
-# but leak reports are not meaningful here: Mesa keeps allocations of its own (OSMesa
-# buffers, llvmpipe state, some in driver modules unloaded by eglTerminate). A caller
-# who sets detect_leaks explicitly keeps that choice.
-case ${ASAN_OPTIONS:-} in
-  *detect_leaks=*) ;;
-  *) export ASAN_OPTIONS="${ASAN_OPTIONS:+$ASAN_OPTIONS:}detect_leaks=0" ;;
-esac
-
-FAILED=0
-PASSED=0
-pass() { PASSED=$((PASSED + 1)); echo "PASS $1"; }
-fail() {
-  FAILED=$((FAILED + 1))
-  local d=${2//$'\n'/|}
-  echo "FAIL $1: ${d:0:600}"
-}
-skip() { echo "SKIP $1: $2"; }
-
-TIMEOUT=()
-if command -v timeout > /dev/null 2>&1; then TIMEOUT=(timeout -k 5 120); fi
-
-OUT="$TMP/stdout"
-ERR="$TMP/stderr"
-RC=0
-# run ARGS...: runs tiershade, sets RC, stdout in $OUT, stderr in $ERR.
-run() {
-  "${TIMEOUT[@]}" "$TS" "$@" > "$OUT" 2> "$ERR" < /dev/null
-  RC=$?
-}
+. "$(dirname "${BASH_SOURCE[0]}")/lib.sh"
+cli_setup cli 120 "$@"
 # shows the first line of stderr (for details)
 err1() { head -n 1 "$ERR"; }
 nlines() { grep -c '' "$1"; }

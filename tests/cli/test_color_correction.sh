@@ -10,46 +10,9 @@
 # a timeout or a sanitizer report is always a FAIL.
 set -u
 
-if [ $# -ne 1 ]; then
-  echo "usage: $0 path/to/tiershade" >&2
-  exit 2
-fi
-TS=$1
-HERE=$(cd "$(dirname "${BASH_SOURCE[0]}")/../.." && pwd)   # the repository, for scenes/luts
-case $TS in
-  /*) ;;
-  *) TS="$PWD/$TS" ;;
-esac
-if [ ! -x "$TS" ] || [ -d "$TS" ]; then
-  echo "FAIL setup: '$1' is not an executable file"
-  exit 1
-fi
-TMP=$(mktemp -d "${TMPDIR:-/tmp}/tiershade_cc_cli.XXXXXX") || { echo "FAIL setup: mktemp"; exit 1; }
-trap 'rm -rf "$TMP"' EXIT
-cd "$TMP" || exit 1
-case ${ASAN_OPTIONS:-} in
-  *detect_leaks=*) ;;
-  *) export ASAN_OPTIONS="${ASAN_OPTIONS:+$ASAN_OPTIONS:}detect_leaks=0" ;;
-esac
+. "$(dirname "${BASH_SOURCE[0]}")/lib.sh"
+cli_setup cc_cli 120 "$@"
 LUTS=$HERE/scenes/luts
-
-FAILED=0
-PASSED=0
-pass() { PASSED=$((PASSED + 1)); echo "PASS $1"; }
-fail() {
-  FAILED=$((FAILED + 1))
-  local d=${2//$'\n'/|}
-  echo "FAIL $1: ${d:0:600}"
-}
-TIMEOUT=()
-if command -v timeout > /dev/null 2>&1; then TIMEOUT=(timeout -k 5 120); fi
-OUT="$TMP/stdout"
-ERR="$TMP/stderr"
-RC=0
-run() {
-  "${TIMEOUT[@]}" "$TS" "$@" > "$OUT" 2> "$ERR" < /dev/null
-  RC=$?
-}
 crashed() {
   if [ "$RC" -ge 124 ] && [ "$RC" -ne 125 ] || grep -qE 'AddressSanitizer|LeakSanitizer|UndefinedBehaviorSanitizer|runtime error:|terminate called|Segmentation fault' "$ERR"; then
     fail "$1" "crashed or timed out (status $RC): $(head -n 1 "$ERR")"
@@ -139,5 +102,4 @@ expect_error "bake into a missing directory" 1 \
   "tiershade lut: out/no/dir/x.cube: cannot write (No such file or directory)" out/no/dir/x.cube -- \
   lut bake --sat 0.5 --size 4 -o out/no/dir/x.cube
 
-echo "$PASSED passed, $FAILED failed"
-[ "$FAILED" -eq 0 ]
+cli_finish

@@ -12,32 +12,9 @@
 # Phong variant; a constant envmap mask skips its fetch.
 # Prints "PASS name" / "FAIL name: detail"; exits 1 if any check failed.
 set -u
-if [ $# -ne 1 ]; then
-  echo "usage: $0 path/to/tiershade" >&2
-  exit 2
-fi
-TS=$1
-HERE=$(cd "$(dirname "${BASH_SOURCE[0]}")/../.." && pwd)
-case $TS in /*) ;; *) TS="$PWD/$TS" ;; esac
-TMP=$(mktemp -d "${TMPDIR:-/tmp}/tiershade_render_cli.XXXXXX") || { echo "FAIL setup: mktemp"; exit 1; }
-trap 'rm -rf "$TMP"' EXIT
-case ${ASAN_OPTIONS:-} in
-  *detect_leaks=*) ;;
-  *) export ASAN_OPTIONS="${ASAN_OPTIONS:+$ASAN_OPTIONS:}detect_leaks=0" ;;
-esac
-FAILED=0
-PASSED=0
-pass() { PASSED=$((PASSED + 1)); echo "PASS $1"; }
-fail() {
-  FAILED=$((FAILED + 1))
-  local d=${2//$'\n'/|}
-  echo "FAIL $1: ${d:0:600}"
-}
-TIMEOUT=()
-if command -v timeout > /dev/null 2>&1; then TIMEOUT=(timeout -k 5 600); fi
-OUT="$TMP/stdout"
-ERR="$TMP/stderr"
-RC=0
+. "$(dirname "${BASH_SOURCE[0]}")/lib.sh"
+cli_setup render_cli 600 "$@"
+# render ARGS... from the repository (the scenes name their files relatively).
 run() {
   (cd "$HERE" && "${TIMEOUT[@]}" "$TS" render "$@" > "$OUT" 2> "$ERR" < /dev/null)
   RC=$?
@@ -111,5 +88,4 @@ run scenes/world_lighting.gltf --backend cpu --size 32x18 -o "$TMP/w"
 if [ "$RC" -eq 0 ] && grep -q 'is constant' "$OUT" && grep -q 'BUMPMAP=0: no \$bumpmap' "$OUT"; then
   pass "world: a constant envmap mask skips the fetch, a face without a normal map skips RNM"
 else fail "world: constant mask and flat faces" "status $RC: $(grep -m1 ENVMAPMASK "$OUT")"; fi
-echo "$PASSED passed, $FAILED failed"
-[ "$FAILED" -eq 0 ]
+cli_finish

@@ -23,6 +23,7 @@
 #include <vector>
 
 #include "family.h"
+#include "family_model_lighting.h"
 #include "model_lighting_batch.h"
 
 namespace {
@@ -48,20 +49,6 @@ std::string show(const ts_vec4f &c) {
   return b;
 }
 
-ml_variant to_ml(const Variant &v) {
-  ml_variant m = {};
-  m.tier = v.tier == Tier::PS20 ? TS_TIER_ID_PS20 : v.tier == Tier::PS2B ? TS_TIER_ID_PS2B : TS_TIER_ID_SM3;
-  m.albedo_texture = v.value("ALBEDO_TEXTURE");
-  m.half_lambert = v.value("HALF_LAMBERT");
-  m.output_mode = v.value("OUTPUT_MODE");
-  m.num_lights = v.value("NUM_LIGHTS");
-  m.phong = v.value("PHONG");
-  m.exponent_map = v.value("PHONG_EXPONENT_MAP");
-  m.rim_light = v.value("RIM_LIGHT");
-  m.envmap = v.value("ENVMAP");
-  m.light_warp = v.value("LIGHT_WARP");
-  return m;
-}
 
 // A deferred-style copy of a grid: the first `pixel` slots per pixel, the rest shared
 // (taken from pixel (0, 0)), as sphere frames and the scene renderer pass them.
@@ -205,7 +192,7 @@ int main() {
             for (int x = 0; x < in.w; ++x)
               for (int k = 0; k < ML_SLOTS; ++k) all[(static_cast<size_t>(y) * in.w + x) * ML_SLOTS + k] = in.slot(x, y, k);
         }
-        const ml_variant m = to_ml(v);
+        const ml_variant m = ml_variant_of(v);
         for (int i = 0; i < 2; ++i) {
           if (!have[i]) continue;
           ts_batch_force_isa(isas[i].level);
@@ -294,7 +281,7 @@ int main() {
   // The API on an empty batch writes nothing.
   {
     ts_vec4f sentinel = ts_v4f(7, 7, 7, 7);
-    const ml_variant m = to_ml(variants.front());
+    const ml_variant m = ml_variant_of(variants.front());
     const Views views(grids[0].in);
     model_lighting_f_records(&m, nullptr, &views.tex, &sentinel, 0);
     check(same_bits(sentinel, ts_v4f(7, 7, 7, 7)), "count 0 writes nothing");
