@@ -97,6 +97,12 @@ static void VFN(cc_batch)(const cc_variant *v, const cc_batch_input *in, const c
       result = VFN(add3)(result, VFN(scale3)(VFN(cc_lookup)(v, luts, i, &a), w[i]));
     result = VFN(saturate3)(result);
     const VF alpha = VFN(saturate)(color.w);
-    for (int j = 0; j < n; ++j) out[first + j] = ts_v4f(result.x[j], result.y[j], result.z[j], alpha[j]);
+    for (int j = 0; j < n; ++j) {
+      ts_vec4f *o = &out[first + j];
+      o->x = result.x[j];
+      o->y = result.y[j];
+      o->z = result.z[j];
+      o->w = alpha[j];
+    }
   }
 }

@@ -13,7 +13,12 @@ TSV_INL int VFN(hp_pix)(int first, int count, size_t *pix) {
 }
 
 TSV_INL void VFN(hp_store)(V3v c, VF a, ts_vec4f *out, int n) {
-  for (int j = 0; j < n; ++j) out[j] = ts_v4f(c.x[j], c.y[j], c.z[j], a[j]);
+  for (int j = 0; j < n; ++j) {
+    out[j].x = c.x[j];
+    out[j].y = c.y[j];
+    out[j].z = c.z[j];
+    out[j].w = a[j];
+  }
 }
 
 /* common_output.h */

@@ -11,13 +11,17 @@
 
 void cc_apply_rgba8_c(const cc_variant &v, const ts_vec4f *shared, const cc_luts &luts, int w, int h,
                       std::vector<uint8_t> *frame, int threads) {
+  float code[256];  // the RGBA8 texel fetch, code by code
+  for (int c = 0; c < 256; ++c) code[c] = ts_unorm8_to_float(static_cast<uint8_t>(c));
   scene_parallel_rows(h, threads, [&](int y) {
     uint8_t *c8 = &(*frame)[static_cast<size_t>(y) * w * 4];
     std::vector<ts_vec4f> colour(static_cast<size_t>(w)), out(static_cast<size_t>(w));
     for (int x = 0; x < w; ++x) {
       const uint8_t *p = c8 + static_cast<size_t>(x) * 4;
-      colour[x] = ts_v4f(ts_unorm8_to_float(p[0]), ts_unorm8_to_float(p[1]), ts_unorm8_to_float(p[2]),
-                         ts_unorm8_to_float(p[3]));
+      colour[x].x = code[p[0]];
+      colour[x].y = code[p[1]];
+      colour[x].z = code[p[2]];
+      colour[x].w = code[p[3]];
     }
     cc_batch_input in;
     for (int k = 0; k < CC_SLOTS; ++k) {
