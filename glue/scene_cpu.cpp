@@ -29,6 +29,13 @@ void parallel_rows(int h, int threads, Fn fn) {
   for (auto &th : pool) th.join();
 }
 
+// A new buffer of n copies of v in *out (made aside, then swapped in: the old one is freed).
+template <class T>
+void fresh_buffer(std::vector<T> *out, size_t n, T v) {
+  std::vector<T> b(n, v);
+  out->swap(b);
+}
+
 ml_variant ml_of(const Variant &v) {
   ml_variant m = {};
   m.tier = v.tier == Tier::PS20 ? TS_TIER_ID_PS20 : v.tier == Tier::PS2B ? TS_TIER_ID_PS2B : TS_TIER_ID_SM3;
@@ -54,6 +61,11 @@ struct DrawCtx {
   ml_textures mt;
   wl_textures wt;
   std::vector<ts_vec4f> rec;  // shared slots (pixel slots overwritten per pixel)
+  // The pixel slots the variant reads (world_lighting_impl.h: the normal, tangent, binormal
+  // and eye vectors only for ENVMAP, the tangent frame only with a bump map); the others are
+  // not interpolated.
+  int used[6];
+  int nused = 0;
 };
 
 void make_ctx(const PreparedScene &p, std::vector<DrawCtx> *out) {
@@ -77,6 +89,13 @@ void make_ctx(const PreparedScene &p, std::vector<DrawCtx> *out) {
       c.mt = {&c.t2[0], &c.t2[1], &c.t2[2], &c.t2[3], &c.cube};
     }
     c.rec = d.shared;
+    c.nused = 0;
+    for (int k = 0; k < 6; ++k) {
+      bool use = true;
+      if (d.world && !c.wl.envmap) use = k == WL_SLOT_UV || k == WL_SLOT_LM_OFFSET;
+      if (d.world && c.wl.envmap && c.wl.bumpmap == WL_BUMP_NONE) use = k != WL_SLOT_TANGENT && k != WL_SLOT_BINORMAL;
+      if (use) c.used[c.nused++] = k;
+    }
   }
 }
 
@@ -312,11 +331,10 @@ inline void shade_pixel(const ScreenTri &s, SceneVisibility *vis, size_t i, doub
     B1 = q[s.ui[1]] / qs;
     B2 = q[s.ui[2]] / qs;
   } else {
-    double B[3] = {0, 0, 0};
-    for (int k = 0; k < 3; ++k)
-      for (int j = 0; j < 3; ++j) B[j] += q[k] / qs * s.bary[k][j];
-    B1 = B[1];
-    B2 = B[2];
+    // B[j] = sum over k of q[k] / qs * bary[k][j], from 0 in k order (B[0] is not kept).
+    const double r0 = q[0] / qs, r1 = q[1] / qs, r2 = q[2] / qs;
+    B1 = ((0.0 + r0 * s.bary[0][1]) + r1 * s.bary[1][1]) + r2 * s.bary[2][1];
+    B2 = ((0.0 + r0 * s.bary[0][2]) + r1 * s.bary[1][2]) + r2 * s.bary[2][2];
   }
   vis->depth[i] = static_cast<float>(z);
   vis->draw[i] = s.draw;
@@ -380,18 +398,27 @@ void scene_rasterize_cpu(const PreparedScene &p, SceneVisibility *vis, int threa
   const size_t n = static_cast<size_t>(p.w) * p.h;
   vis->w = p.w;
   vis->h = p.h;
-  // Kept between frames when the size is the same; each band resets its own rows below.
-  vis->draw.resize(n);
-  vis->tri.resize(n);
-  vis->b1.resize(n);
-  vis->b2.resize(n);
-  vis->depth.resize(n);
+  // A buffer of this size is reset by the bands below; a new one is made on two threads (its
+  // page faults are most of the cost), next to the vertex stage and triangle setup.
+  const bool reuse = vis->draw.size() == n && vis->tri.size() == n && vis->b1.size() == n && vis->b2.size() == n &&
+                     vis->depth.size() == n;
+  std::thread maker;
+  if (!reuse) {
+    maker = std::thread([vis, n] {
+      fresh_buffer<int32_t>(&vis->draw, n, -1);
+      fresh_buffer<int32_t>(&vis->tri, n, -1);
+      fresh_buffer(&vis->b1, n, 0.f);
+    });
+    fresh_buffer(&vis->b2, n, 0.f);
+    fresh_buffer(&vis->depth, n, 1.f);
+  }
   std::vector<ScreenTri> tris;
   std::vector<float> clip, vary;
   for (size_t di = 0; di < p.draws.size(); ++di) {
     vertex_stage(p, p.draws[di], &clip, &vary);
     setup(p, static_cast<int>(di), clip, &tris);
   }
+  if (maker.joinable()) maker.join();
   if (getenv("TS_DRAW_MS")) fprintf(stderr, "C raster setup: %zu triangles\n", tris.size());
   // Bands of kBand rows, each with the triangles that reach it (in draw order, so that equal
   // depths keep the first draw, as GL_LESS does); workers take whole bands.
@@ -402,12 +429,14 @@ void scene_rasterize_cpu(const PreparedScene &p, SceneVisibility *vis, int threa
     for (int b = tris[i].y0 / kBand; b <= tris[i].y1 / kBand; ++b) band_tris[static_cast<size_t>(b)].push_back(static_cast<int>(i));
   parallel_rows(bands, threads, [&](int, int band) {
     const int ra = band * kBand, rb = std::min(p.h, ra + kBand);
-    const size_t i0 = static_cast<size_t>(ra) * p.w, i1 = static_cast<size_t>(rb) * p.w;
-    std::fill(vis->draw.begin() + i0, vis->draw.begin() + i1, -1);
-    std::fill(vis->tri.begin() + i0, vis->tri.begin() + i1, -1);
-    std::fill(vis->b1.begin() + i0, vis->b1.begin() + i1, 0.f);
-    std::fill(vis->b2.begin() + i0, vis->b2.begin() + i1, 0.f);
-    std::fill(vis->depth.begin() + i0, vis->depth.begin() + i1, 1.f);
+    if (reuse) {
+      const size_t i0 = static_cast<size_t>(ra) * p.w, i1 = static_cast<size_t>(rb) * p.w;
+      std::fill(vis->draw.begin() + i0, vis->draw.begin() + i1, -1);
+      std::fill(vis->tri.begin() + i0, vis->tri.begin() + i1, -1);
+      std::fill(vis->b1.begin() + i0, vis->b1.begin() + i1, 0.f);
+      std::fill(vis->b2.begin() + i0, vis->b2.begin() + i1, 0.f);
+      std::fill(vis->depth.begin() + i0, vis->depth.begin() + i1, 1.f);
+    }
     for (int ti : band_tris[static_cast<size_t>(band)]) {
       const ScreenTri &s = tris[static_cast<size_t>(ti)];
       const int ya = std::max(s.y0, ra), yb = std::min(s.y1, rb - 1);
@@ -426,7 +455,8 @@ void scene_shade_cpu(const PreparedScene &p, const SceneVisibility &vis, ImageF 
   for (size_t di = 0; di < p.draws.size(); ++di) vertex_stage(p, p.draws[di], &clip, &vary[di]);
   out->w = p.w;
   out->h = p.h;
-  out->rgba.resize(static_cast<size_t>(p.w) * p.h * 4);  // every pixel is written below
+  if (out->rgba.size() != static_cast<size_t>(p.w) * p.h * 4)  // every pixel is written below
+    fresh_buffer(&out->rgba, static_cast<size_t>(p.w) * p.h * 4, 0.f);
   std::atomic<int> rows{0};
   // Per thread: the run's pixel slots and results (kept across rows).
   const int nthreads = threads <= 0 ? static_cast<int>(std::max(1u, std::thread::hardware_concurrency())) : threads;
@@ -450,23 +480,28 @@ void scene_shade_cpu(const PreparedScene &p, const SceneVisibility &vis, ImageF 
       while (x1 < p.w && vis.draw[row + x1] == d) ++x1;
       ts_vec4f *orow_px = reinterpret_cast<ts_vec4f *>(orow) + x;
       // In chunks of kChunk pixels, so that the slots stay in L1 between the two loops.
+      const DrawCtx &c = ctx[d];
       const float *vd = vary[d].data();
       const uint32_t *indices = p.draws[d].indices.data();
+      const int32_t *tri = vis.tri.data() + row;
+      const float *vb1 = vis.b1.data() + row, *vb2 = vis.b2.data() + row;
+      ts_vec4f *pp = pix.data();
       for (int c0 = x; c0 < x1; c0 += kChunk) {
         const int n = std::min(kChunk, x1 - c0);
         for (int i = 0; i < n; ++i) {
-          const size_t q = row + c0 + i;
-          const uint32_t *idx = &indices[static_cast<size_t>(vis.tri[q]) * 3];
-          const float b1 = vis.b1[q], b2 = vis.b2[q], b0 = 1.f - b1 - b2;
+          const int q = c0 + i;
+          const uint32_t *idx = &indices[static_cast<size_t>(tri[q]) * 3];
+          const float b1 = vb1[q], b2 = vb2[q], b0 = 1.f - b1 - b2;
           const float *v0 = &vd[idx[0] * kVary], *v1 = &vd[idx[1] * kVary], *v2 = &vd[idx[2] * kVary];
           // v0 b0 + v1 b1 + v2 b2 per component, four components per operation (float, unfused).
           const F4 B0 = splat4(b0), B1 = splat4(b1), B2 = splat4(b2);
-          for (int k = 0; k < kPixelSlots; ++k) {
-            const F4 o = load4(v0 + k * 4) * B0 + load4(v1 + k * 4) * B1 + load4(v2 + k * 4) * B2;
-            std::memcpy(&pix[static_cast<size_t>(k) * kChunk + i], &o, sizeof o);
+          for (int u = 0; u < c.nused; ++u) {
+            const int k = c.used[u];
+            const F4 v = load4(v0 + k * 4) * B0 + load4(v1 + k * 4) * B1 + load4(v2 + k * 4) * B2;
+            std::memcpy(&pp[static_cast<size_t>(k) * kChunk + i], &v, sizeof v);
           }
         }
-        shade_run(ctx[d], pix.data(), kChunk, n, orow_px + (c0 - x));
+        shade_run(c, pp, kChunk, n, orow_px + (c0 - x));
       }
       x = x1;
     }
