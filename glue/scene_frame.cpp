@@ -15,6 +15,7 @@
 #include "family.h"
 #include "frame.h"
 #include "hdr_formats.h"
+#include "hdr_post_batch.h"
 #include "hdr_pipeline.h"
 #include "lut_bake.h"
 #include "lut_io.h"
@@ -282,7 +283,7 @@ bool SceneRenderer::Impl::post(SceneRenderResult *res, bool on_cpu, const std::v
   } else {
     // The lit frame as the fp16 target stores it (writes round toward zero; c_ref/hdr_formats.h):
     // from here on, and in OUT.exr, the float path's frame is these fp16 values.
-    for (float &v : res->lit.rgba) v = ts_quantize_half(v);
+    ts_quantize_half_batch(res->lit.rgba.data(), res->lit.rgba.data(), res->lit.rgba.size());
     const std::vector<float> &hdr = res->lit.rgba;
     HdrSettings hs;
     hs.tone_map_scale = s.hdr.tone_map_scale;

@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 
 #include "exposure_control.h"
 #include "luminance_compare.h"
@@ -19,6 +20,32 @@ bool twin_marks(const float *p, float lo, float hi, float scale) {
   rec[LC_SLOT_RANGE] = ts_v4f(lo, hi, scale, 0.0f);
   return luminance_compare_f(&v, rec).x == 1.0f;
 }
+// Ascending order of finite floats by an LSD radix sort of their order-preserving keys (sign
+// flipped for positives, all bits flipped for negatives), 3 passes of 11 bits; -0 sorts before
+// +0, which compare equal, so the order is the same as std::sort's for every query here.
+void radix_sort(std::vector<float> *v) {
+  const size_t n = v->size();
+  std::vector<uint32_t> a(n), b(n);
+  for (size_t i = 0; i < n; ++i) {
+    uint32_t u;
+    std::memcpy(&u, &(*v)[i], 4);
+    a[i] = (u & 0x80000000u) ? ~u : (u | 0x80000000u);
+  }
+  for (int pass = 0; pass < 3; ++pass) {
+    const int shift = pass * 11;
+    size_t count[2049] = {0};
+    for (uint32_t k : a) ++count[((k >> shift) & 2047u) + 1];
+    for (int i = 0; i < 2048; ++i) count[i + 1] += count[i];
+    for (uint32_t k : a) b[count[(k >> shift) & 2047u]++] = k;
+    a.swap(b);
+  }
+  for (size_t i = 0; i < n; ++i) {
+    const uint32_t k = a[i];
+    const uint32_t u = (k & 0x80000000u) ? (k & 0x7fffffffu) : ~k;
+    std::memcpy(&(*v)[i], &u, 4);
+  }
+}
+
 }  // namespace
 
 StaticLuminance::StaticLuminance(const float *rgba, int w, int h, double wx, double wy) {
@@ -33,7 +60,7 @@ StaticLuminance::StaticLuminance(const float *rgba, int w, int h, double wx, dou
         odd_.insert(odd_.end(), p, p + 4);
       }
     }
-  std::sort(sorted_.begin(), sorted_.end());
+  radix_sort(&sorted_);
 }
 
 uint32_t StaticLuminance::count(int bucket, float scale) const {
