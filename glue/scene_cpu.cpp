@@ -317,6 +317,8 @@ void setup(const PreparedScene &p, int di, const std::vector<float> &clip, std::
 int64_t floor_div(int64_t a, int64_t b) { return a >= 0 ? a / b : -((-a + b - 1) / b); }
 int64_t ceil_div(int64_t a, int64_t b) { return -floor_div(-a, b); }
 
+typedef double D2 __attribute__((vector_size(16)));  // GCC vector extension: one SSE2 register
+
 // The visible pixel (y, x) of s with edge values e (double): depth test LESS, then the
 // perspective-correct barycentrics. The operations and their order are the reference's.
 inline void shade_pixel(const ScreenTri &s, SceneVisibility *vis, size_t i, double l0, double l1, double l2) {
@@ -328,11 +330,13 @@ inline void shade_pixel(const ScreenTri &s, SceneVisibility *vis, size_t i, doub
   if (s.unit) {
     // Rows of unit vectors: the sum over k of q[k] / qs * bary[k][j] is +0 + ... with one
     // non-zero term (q >= 0 and finite inside the triangle), which is that term exactly.
-    B1 = q[s.ui[1]] / qs;
-    B2 = q[s.ui[2]] / qs;
+    const D2 r = D2{q[s.ui[1]], q[s.ui[2]]} / D2{qs, qs};  // two IEEE divisions in one instruction
+    B1 = r[0];
+    B2 = r[1];
   } else {
     // B[j] = sum over k of q[k] / qs * bary[k][j], from 0 in k order (B[0] is not kept).
-    const double r0 = q[0] / qs, r1 = q[1] / qs, r2 = q[2] / qs;
+    const D2 r01 = D2{q[0], q[1]} / D2{qs, qs};
+    const double r0 = r01[0], r1 = r01[1], r2 = q[2] / qs;
     B1 = ((0.0 + r0 * s.bary[0][1]) + r1 * s.bary[1][1]) + r2 * s.bary[2][1];
     B2 = ((0.0 + r0 * s.bary[0][2]) + r1 * s.bary[1][2]) + r2 * s.bary[2][2];
   }
@@ -481,6 +485,9 @@ void scene_shade_cpu(const PreparedScene &p, const SceneVisibility &vis, ImageF 
       ts_vec4f *orow_px = reinterpret_cast<ts_vec4f *>(orow) + x;
       // In chunks of kChunk pixels, so that the slots stay in L1 between the two loops.
       const DrawCtx &c = ctx[d];
+      int used[kPixelSlots];  // locals: the slot stores below cannot alias them
+      const int nused = c.nused;
+      std::copy(c.used, c.used + nused, used);
       const float *vd = vary[d].data();
       const uint32_t *indices = p.draws[d].indices.data();
       const int32_t *tri = vis.tri.data() + row;
@@ -495,8 +502,8 @@ void scene_shade_cpu(const PreparedScene &p, const SceneVisibility &vis, ImageF 
           const float *v0 = &vd[idx[0] * kVary], *v1 = &vd[idx[1] * kVary], *v2 = &vd[idx[2] * kVary];
           // v0 b0 + v1 b1 + v2 b2 per component, four components per operation (float, unfused).
           const F4 B0 = splat4(b0), B1 = splat4(b1), B2 = splat4(b2);
-          for (int u = 0; u < c.nused; ++u) {
-            const int k = c.used[u];
+          for (int u = 0; u < nused; ++u) {
+            const int k = used[u];
             const F4 v = load4(v0 + k * 4) * B0 + load4(v1 + k * 4) * B1 + load4(v2 + k * 4) * B2;
             std::memcpy(&pp[static_cast<size_t>(k) * kChunk + i], &v, sizeof v);
           }
