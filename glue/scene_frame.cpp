@@ -79,6 +79,7 @@ struct SceneRenderer::Impl {
   // Colour correction: the LUTs, the variant and (GL) its program with the LUT textures.
   std::vector<Lut3D> luts;
   std::vector<ShaderDecl> decls;
+  SceneVisibility vis;  // the C fallback's visibility buffer, kept across frames
   Variant cc_var;
   const ShaderFamily *cc_family = nullptr;
   FamilyInputs cc_in;  // shared slots and LUT textures (the colour is per pixel)
@@ -255,7 +256,8 @@ bool SceneRenderer::Impl::colour_correct(SceneRenderResult *res, bool on_cpu, st
 // the C twins (on_cpu; also used by --check on GL's own lit frame).
 bool SceneRenderer::Impl::post(SceneRenderResult *res, bool on_cpu, const std::vector<int> &draw_of_pixel_in,
                                std::string *err) {
-  std::vector<int> draw_of_pixel = draw_of_pixel_in;
+  std::vector<int> own;  // GL's draw indices, fetched only when needed
+  const std::vector<int> *dop = &draw_of_pixel_in;
   const size_t n = static_cast<size_t>(cfg.w) * cfg.h;
   const Scene &s = *this->s;
   if (!float_path) {
@@ -266,10 +268,12 @@ bool SceneRenderer::Impl::post(SceneRenderResult *res, bool on_cpu, const std::v
     bool mixed = false, any_linear = false;
     for (const PreparedDraw &d : p.draws) any_linear = any_linear || !d.display_encoded;
     for (const PreparedDraw &d : p.draws) mixed = mixed || (d.display_encoded && any_linear);
-    if (mixed && draw_of_pixel.empty()) {
+    if (mixed && dop->empty()) {
       std::vector<float> slots;
-      if (!sgl->gbuffer(&draw_of_pixel, &slots, err)) return false;
+      if (!sgl->gbuffer(&own, &slots, err)) return false;
+      dop = &own;
     }
+    const std::vector<int> &draw_of_pixel = *dop;
     res->display.resize(n * 4);
     for (size_t i = 0; i < n; ++i) {
       bool linear = any_linear;
@@ -326,14 +330,14 @@ bool SceneRenderer::frame(SceneRenderResult *out, std::string *err) {
   auto t0 = Clock::now();
   std::vector<int> draw_of_pixel;
   if (cpu) {
-    SceneVisibility vis;
+    SceneVisibility &vis = m.vis;  // kept across frames: reset, not reallocated
     scene_rasterize_cpu(p, &vis, cfg.threads);
     if (getenv("TS_DRAW_MS")) fprintf(stderr, "C rasterise: %.1f ms\n", ms_since(t0));
     scene_shade_cpu(p, vis, &res.lit, cfg.threads, [&](double f) {
       if (cfg.progress) cfg.progress("C fallback lit pass", f);
     });
     res.lit_ms = ms_since(t0);
-    draw_of_pixel = vis.draw;
+    draw_of_pixel.swap(vis.draw);
   } else {
     std::function<void(int, GLuint)> capture;
     if (cfg.on_draw || cfg.progress)
@@ -373,6 +377,7 @@ bool SceneRenderer::frame(SceneRenderResult *out, std::string *err) {
   } else if (!m.post(&res, cpu, draw_of_pixel, err)) {
     return false;
   }
+  if (cpu) draw_of_pixel.swap(m.vis.draw);
   res.post_ms = ms_since(t0);
   res.frame_ms = ms_since(t_frame);
   *out = std::move(res);
