@@ -71,11 +71,47 @@ bool child_peak_mib(const std::vector<std::string> &args, double *mib, std::stri
   return true;
 }
 
-// The first frame as a user gets it: a fresh `tiershade render` process with an empty shader
-// cache directory (cold), warm-up on or off; its "total with loading" (scene load, draws
-// prepared, variants compiled, first frame with JIT, output written).
+// The first frame as a user gets it: the wall time of a fresh `tiershade render` process with
+// an empty shader-cache directory (cold), warm-up on or off, from its start to its exit: process
+// start, scene loaded, draws prepared, variants compiled, first frame with JIT, EXR and PNG
+// written. One process is noisy (JIT threads, page faults), so the median of 3, each with its
+// own empty cache.
+bool child_first_frame_once(const std::string &exe, const std::string &scene, Tier tier, const std::string &hdr,
+                            bool warmup, double *ms, double *peak_mib, std::string *err) {
+  char dir[] = "/tmp/tiershade_cold_cache_XXXXXX";
+  if (!mkdtemp(dir)) {
+    *err = "mkdtemp failed";
+    return false;
+  }
+  const std::string out = std::string(dir) + "/frame";
+  const std::string cmd = std::string("exec env -u MESA_SHADER_CACHE_DISABLE MESA_SHADER_CACHE_DIR='") + dir +
+                          "/cache' " + (warmup ? "" : "TIERSHADE_NO_WARMUP=1 ") + "'" + exe + "' render '" + scene +
+                          "' --tier " + tier_name(tier) + " --hdr " + hdr + " --size 1280x720 --quiet --report-memory -o '" +
+                          out + "' 2>/dev/null";
+  fflush(stdout);
+  const auto t0 = Clock::now();
+  FILE *p = popen(cmd.c_str(), "r");
+  if (!p) {
+    *err = "cannot run " + cmd;
+    return false;
+  }
+  char line[512];
+  *peak_mib = -1;
+  while (fgets(line, sizeof line, p)) sscanf(line, "peak memory: %lf MiB", peak_mib);
+  const int status = pclose(p);
+  *ms = ms_since(t0);
+  const std::string rm = std::string("rm -rf '") + dir + "'";
+  if (system(rm.c_str()) != 0) {}
+  if (status != 0 || *peak_mib < 0) {
+    *err = "tiershade render " + scene + " failed or did not report its memory";
+    return false;
+  }
+  return true;
+}
+
+// Median wall time of 3 cold processes; the largest peak memory of the 3.
 bool child_first_frame_ms(const std::string &scene, Tier tier, const std::string &hdr, bool warmup, double *ms,
-                          std::string *err) {
+                          double *peak_mib, std::string *err) {
   char exe[4096];
   const ssize_t len = readlink("/proc/self/exe", exe, sizeof exe - 1);
   if (len <= 0) {
@@ -83,33 +119,14 @@ bool child_first_frame_ms(const std::string &scene, Tier tier, const std::string
     return false;
   }
   exe[len] = 0;
-  char dir[] = "/tmp/tiershade_cold_cache_XXXXXX";
-  if (!mkdtemp(dir)) {
-    *err = "mkdtemp failed";
-    return false;
+  std::vector<double> t(3);
+  *peak_mib = 0;
+  for (double &v : t) {
+    double mib = 0;
+    if (!child_first_frame_once(exe, scene, tier, hdr, warmup, &v, &mib, err)) return false;
+    *peak_mib = std::max(*peak_mib, mib);
   }
-  const std::string out = std::string(dir) + "/frame";
-  const std::string cmd = std::string("env -u MESA_SHADER_CACHE_DISABLE MESA_SHADER_CACHE_DIR='") + dir + "/cache' " +
-                          (warmup ? "" : "TIERSHADE_NO_WARMUP=1 ") + "'" + exe + "' render '" + scene + "' --tier " +
-                          tier_name(tier) + " --hdr " + hdr + " --size 1280x720 -o '" + out + "' 2>/dev/null";
-  FILE *p = popen(cmd.c_str(), "r");
-  if (!p) {
-    *err = "cannot run " + cmd;
-    return false;
-  }
-  char line[1024];
-  *ms = -1;
-  while (fgets(line, sizeof line, p)) {
-    const char *t = strstr(line, "total with loading ");
-    if (t) sscanf(t, "total with loading %lf ms", ms);
-  }
-  const int status = pclose(p);
-  const std::string rm = std::string("rm -rf '") + dir + "'";
-  if (system(rm.c_str()) != 0) {}
-  if (status != 0 || *ms < 0) {
-    *err = "tiershade render " + scene + " failed";
-    return false;
-  }
+  *ms = median(t);
   return true;
 }
 
@@ -118,6 +135,7 @@ struct Row {
   int variants = 0, combos = 0;
   double compile_sel = 0, compile_all = 0;
   double first_ms = 0, first_nowarm_ms = 0;  // a fresh process, empty shader cache, warm-up on / off
+  double peak_mib = 0;                        // that process's VmHWM (warm-up on)
   double gl_frame = 0, gl_lit = 0;  // medians of warm frames
   double c_frame = 0, c_lit = 0;
   double uber_frame = 0, uber_lit = 0;  // llvmpipe, every feature compiled in (no selection)
@@ -191,9 +209,10 @@ bool measure(const Scene &s, Tier tier, const std::string &hdr, int runs, Row *r
   }
   row->c_frame = median(frame);
   row->c_lit = median(lit);
+  double nowarm_mib = 0;
   return compile_all_ms(sel, &row->compile_all, err) &&
-         child_first_frame_ms(s.path, tier, hdr, true, &row->first_ms, err) &&
-         child_first_frame_ms(s.path, tier, hdr, false, &row->first_nowarm_ms, err);
+         child_first_frame_ms(s.path, tier, hdr, true, &row->first_ms, &row->peak_mib, err) &&
+         child_first_frame_ms(s.path, tier, hdr, false, &row->first_nowarm_ms, &nowarm_mib, err);
 }
 
 bool run(const BenchOptions &opt, std::string *md, std::string *err) {
@@ -222,25 +241,26 @@ bool run(const BenchOptions &opt, std::string *md, std::string *err) {
     << "The shipped glTF scenes (docs/scenes.md) rendered by `tiershade render`'s code: EGL GLES 3.0 on llvmpipe\n"
     << "(forward draws of the selected production variants, then the HDR path and colour correction) and the\n"
     << "C fallback (its own rasteriser and the bit-exact batched twins, " << "both cores). Medians of " << runs
-    << " warm frames; **first frame**: a fresh `tiershade render` process with an empty shader-cache directory:\n"
-    << "scene loaded, draws prepared (lightmap bake, probe cube maps), the selected variants compiled, linked and\n"
-    << "JIT-compiled by their first draw, the frame written; with the shader warm-up thread (glue/scene_frame.cpp)\n"
-    << "and without it (TIERSHADE_NO_WARMUP=1). **compile all**:\n"
+    << " warm frames; **first frame**: the wall time of a fresh `tiershade render` process with an empty\n"
+    << "shader-cache directory, from its start to its exit (process start, scene loaded, draws prepared: lightmap\n"
+    << "bake, probe cube maps; the selected variants compiled, linked and JIT-compiled by their first draw; EXR and\n"
+    << "PNG written), median of 3 processes; with the shader warm-up thread (glue/scene_frame.cpp) and without it\n"
+    << "(TIERSHADE_NO_WARMUP=1); **peak MiB**: the largest VmHWM of the 3 (warm-up on). **compile all**:\n"
     << "compiling and linking every combo of the families the scene uses (their JIT would come on top, at\n"
     << "first draw); **selected**: the same for the selected variants. **frame** includes the HDR path and\n"
     << "colour correction; **lit** is the lit pass alone (GL: draws + glFinish; C: rasterise + shade).\n"
     << "**all features**: the same scene on llvmpipe with every draw's variant having every feature compiled\n"
     << "in (what an engine without selection runs; unused features off by uniforms); **lit x saved**: its lit\n"
     << "pass over the selection's.\n\n"
-    << "| scene | tier | HDR path | variants / combos | compile ms selected / all | x saved | first frame ms (warm-up / none) | "
+    << "| scene | tier | HDR path | variants / combos | compile ms selected / all | x saved | first frame ms (warm-up / none) | peak MiB | "
        "llvmpipe frame ms | llvmpipe lit ms | all features: frame / lit ms | lit x saved | C frame ms | C lit ms | "
        "C / llvmpipe frame | C / llvmpipe lit |\n"
-    << "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n";
+    << "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n";
   for (const Row &r : rows) {
     o << "| " << r.scene.substr(7) << " | " << r.tier << " | " << r.hdr << " | " << r.variants << " / " << r.combos
       << " | " << f1(r.compile_sel) << " / " << f1(r.compile_all) << " | "
       << f1(r.compile_all / std::max(1e-3, r.compile_sel)) << " | " << f1(r.first_ms) << " / "
-      << f1(r.first_nowarm_ms) << " | " << f1(r.gl_frame)
+      << f1(r.first_nowarm_ms) << " | " << f1(r.peak_mib) << " | " << f1(r.gl_frame)
       << " | " << f1(r.gl_lit) << " | " << f1(r.uber_frame) << " / " << f1(r.uber_lit) << " | "
       << f2(r.uber_lit / std::max(1e-3, r.gl_lit)) << " | " << f1(r.c_frame) << " | " << f1(r.c_lit) << " | "
       << f2(r.c_frame / std::max(1e-3, r.gl_frame)) << " | " << f2(r.c_lit / std::max(1e-3, r.gl_lit)) << " |\n";

@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
+#include <thread>
 
 #include "cli.h"
 #include "conform.h"
@@ -191,8 +192,17 @@ int cmd_render(int argc, char **argv) {
       return 1;
     }
   }
-  if (!write_exr(out + ".exr", res.lit, &err) || !write_png(out + ".png", display_image(res), Encode::Linear, &err)) {
-    fprintf(stderr, "tiershade render: %s\n", err.c_str());
+  // The two files on two threads (each is written to a temporary file and renamed, so neither is
+  // ever partial); if one fails, the other is removed: a failed run leaves no frame behind.
+  std::string png_err;
+  bool png_ok = false;
+  std::thread png_writer([&] { png_ok = write_png(out + ".png", display_image(res), Encode::Linear, &png_err); });
+  const bool exr_ok = write_exr(out + ".exr", res.lit, &err);
+  png_writer.join();
+  if (!exr_ok || !png_ok) {
+    if (exr_ok) unlink((out + ".exr").c_str());
+    if (png_ok) unlink((out + ".png").c_str());
+    fprintf(stderr, "tiershade render: %s\n", (exr_ok ? png_err : err).c_str());
     return 1;
   }
   if (!quiet) {

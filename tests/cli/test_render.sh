@@ -48,6 +48,16 @@ printf '{"asset": {"version": "2.0"}, "scenes": [' > "$TMP/broken.gltf"
 bad "broken scene file" 1 "broken\.gltf" "$TMP/broken.gltf" -o "$TMP/o"
 bad "float path on ES 2" 1 "float HDR path needs fp16" scenes/hdr_atrium.gltf --api gles2 --size 32x18 -o "$TMP/o"
 bad "output directory missing" 1 "no_such_dir" scenes/model_lighting.gltf --size 32x18 --backend cpu -o "$TMP/no_such_dir/o"
+# The EXR and the PNG are written in parallel: when one cannot be written (here o.png is a
+# directory, so its rename fails), the other must not be left behind.
+mkdir -p "$TMP/o.png"
+run scenes/model_lighting.gltf --size 32x18 --backend cpu -o "$TMP/o"
+if crashed; then fail "one output fails" "crashed (status $RC): $(head -c 300 "$ERR")"
+elif [ "$RC" -ne 1 ]; then fail "one output fails" "status $RC, expected 1: $(head -n 2 "$ERR")"
+elif ! grep -q "o\.png" "$ERR"; then fail "one output fails" "stderr does not name o.png: $(head -n 2 "$ERR")"
+elif [ -e "$TMP/o.exr" ]; then fail "one output fails" "left o.exr behind"
+else pass "one output fails"; fi
+rmdir "$TMP/o.png"
 
 # --- GL frame = C twin on GL's G-buffer, every scene and tier -------------------------------
 check() {  # name, args...
