@@ -21,7 +21,8 @@ static const char kUsage[] =
     "  demo       render the lit sphere grid in each tier, on both backends and in C, to out/\n"
     "  bench      measure accuracy against time and write docs/accuracy_cost.md\n"
     "  lut        colour-correction LUTs: inspect, bake from OpenColorIO, convert .cube <-> Source .raw\n"
-    "  render     render a glTF scene with only the variants it needs (GL or the C fallback)\n";
+    "  render     render a glTF scene with only the variants it needs (GL or the C fallback)\n"
+    "  bake       write a scene's lightmap page (EXR) for its extras.tiershade.lightmaps.image\n";
 
 int main(int argc, char **argv) {
   if (argc < 2 || !strcmp(argv[1], "--help") || !strcmp(argv[1], "-h") || !strcmp(argv[1], "help")) {
@@ -36,7 +37,7 @@ int main(int argc, char **argv) {
   } const table[] = {{"variants", cmd_variants}, {"assemble", cmd_assemble}, {"budget", cmd_budget},
                      {"conform", cmd_conform},   {"probe", cmd_probe},       {"fold", cmd_fold},
                      {"demo", cmd_demo},         {"bench", cmd_bench},       {"lut", cmd_lut},
-                     {"render", cmd_render}};
+                     {"render", cmd_render}, {"bake", cmd_bake}};
   for (const auto &c : table)
     if (cmd == c.name) return c.fn(argc - 2, argv + 2);
   fprintf(stderr, "tiershade: unknown command '%s'\n\n%s", cmd.c_str(), kUsage);

@@ -142,6 +142,12 @@ struct SceneLightmaps {
   double luxels_per_unit = 6;
   std::string encoding = "rgbe";  // "float" | "412" | "ldr" | "rgbe" (world_lighting LIGHTMAP_ENCODING)
   int page_w = 512, page_h = 256;
+  // "image": a baked page read from a file (EXR or Radiance HDR, relative to the scene file) in
+  // tiershade's page layout (written by `tiershade bake`), instead of baking the luxels at load.
+  // Empty path: baked from the scene's lights. Texels: page_w x page_h RGBA float, row 0 at the
+  // bottom (GL texture rows), alpha 1; finite and >= 0 (checked at load).
+  std::string image;
+  std::vector<float> image_rgba;
 };
 
 struct Scene {

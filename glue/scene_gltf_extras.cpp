@@ -1,6 +1,7 @@
 // tiershade glue: KHR_lights_punctual lights to ts_light (checked by ts_light_pack), and the
 // scene settings of the root `extras.tiershade` object: camera, probes, ambient samples,
 // HDR and lightmaps (docs/scenes.md). Unknown keys, wrong types and ranges are errors.
+#include <cmath>
 #include <cstring>
 
 #include "image_io.h"
@@ -97,8 +98,7 @@ bool read_probes(const tinygltf::Value &v, const std::string &place, const std::
       const std::string path = join_path(dir, rel);
       if (!file_exists(path)) return e.fail(pp + ".image", "file not found: " + path);
       ImageF img;
-      const bool exr = path.size() > 4 && path.compare(path.size() - 4, 4, ".exr") == 0;
-      const bool hdr = path.size() > 4 && path.compare(path.size() - 4, 4, ".hdr") == 0;
+      const bool exr = ends_with(path, ".exr"), hdr = ends_with(path, ".hdr");
       if (!exr && !hdr) return e.fail(pp + ".image", path + ": expected a .hdr or .exr file");
       if (!(exr ? read_exr(path, &img, &msg) : read_hdr(path, &img, &msg))) return e.fail(pp + ".image", msg);
       SceneImage si;
@@ -196,8 +196,9 @@ bool read_hdr_settings(const tinygltf::Value &v, const std::string &place, const
   return true;
 }
 
-bool read_lightmaps(const tinygltf::Value &v, const std::string &place, SceneLightmaps *l, Err &e) {
-  if (!check_keys(v, place, {"luxels_per_unit", "encoding", "page"}, e)) return false;
+bool read_lightmaps(const tinygltf::Value &v, const std::string &place, const std::string &dir, SceneLightmaps *l,
+                    Err &e) {
+  if (!check_keys(v, place, {"luxels_per_unit", "encoding", "page", "image"}, e)) return false;
   if (v.Has("luxels_per_unit") && !read_number(v.Get("luxels_per_unit"), place + ".luxels_per_unit", 0.01, 1024,
                                                &l->luxels_per_unit, e))
     return false;
@@ -212,6 +213,40 @@ bool read_lightmaps(const tinygltf::Value &v, const std::string &place, SceneLig
     if (!read_int(p.Get(0), place + ".page[0]", 16, 8192, &l->page_w, e) ||
         !read_int(p.Get(1), place + ".page[1]", 16, 8192, &l->page_h, e))
       return false;
+  }
+  if (v.Has("image")) {
+    // A baked page (docs/scenes.md, "Lightmap pages"): its size is the page size.
+    const std::string ip = place + ".image";
+    std::string rel;
+    if (!read_string(v.Get("image"), ip, &rel, e)) return false;
+    const std::string path = join_path(dir, rel);
+    if (!file_exists(path)) return e.fail(ip, "file not found: " + path);
+    const bool exr = ends_with(path, ".exr"), hdr = ends_with(path, ".hdr");
+    if (!exr && !hdr) return e.fail(ip, path + ": expected a .exr or .hdr file");
+    ImageF img;
+    std::string msg;
+    if (!(exr ? read_exr(path, &img, &msg) : read_hdr(path, &img, &msg))) return e.fail(ip, msg);
+    if (v.Has("page") && (img.w != l->page_w || img.h != l->page_h))
+      return e.fail(ip, path + ": " + std::to_string(img.w) + " x " + std::to_string(img.h) +
+                            " texels, but \"page\" is " + std::to_string(l->page_w) + " x " +
+                            std::to_string(l->page_h));
+    if (img.w < 16 || img.h < 16 || img.w > 8192 || img.h > 8192)
+      return e.fail(ip, path + ": " + std::to_string(img.w) + " x " + std::to_string(img.h) +
+                            " texels, a page is 16..8192 each way");
+    for (int y = 0; y < img.h; ++y)
+      for (int x = 0; x < img.w; ++x)
+        for (int c = 0; c < 3; ++c) {
+          const float t = img.rgba[(static_cast<size_t>(y) * img.w + x) * 4 + c];
+          if (!std::isfinite(t) || t < 0)
+            return e.fail(ip, path + ": texel (" + std::to_string(x) + ", " + std::to_string(y) + ") channel " +
+                                  "RGB"[c] + " is " + (std::isfinite(t) ? std::to_string(t) : (std::isnan(t) ? std::string("NaN") : std::string("Inf"))) +
+                                  ": lightmap radiance must be finite and >= 0");
+        }
+    for (size_t i = 3; i < img.rgba.size(); i += 4) img.rgba[i] = 1.f;
+    l->page_w = img.w;
+    l->page_h = img.h;
+    l->image = path;
+    l->image_rgba = std::move(img.rgba);
   }
   return true;
 }
@@ -229,7 +264,7 @@ bool convert_tiershade_extras(const tinygltf::Model &m, const std::string &dir, 
     if (t.Has("probes") && !read_probes(t.Get("probes"), place + ".probes", dir, s, e)) return false;
     if (t.Has("ambient") && !read_ambient(t.Get("ambient"), place + ".ambient", s, e)) return false;
     if (t.Has("hdr") && !read_hdr_settings(t.Get("hdr"), place + ".hdr", dir, &s->hdr, e)) return false;
-    if (t.Has("lightmaps") && !read_lightmaps(t.Get("lightmaps"), place + ".lightmaps", &s->lightmaps, e)) return false;
+    if (t.Has("lightmaps") && !read_lightmaps(t.Get("lightmaps"), place + ".lightmaps", dir, &s->lightmaps, e)) return false;
   }
   for (const SceneMaterial &mat : s->materials)
     if (mat.probe >= static_cast<int>(s->probes.size()))

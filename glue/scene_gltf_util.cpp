@@ -5,6 +5,7 @@
 #include <sys/stat.h>
 
 #include <cstdio>
+#include <cstring>
 
 namespace scene_gltf {
 
@@ -87,6 +88,11 @@ std::string dir_of(const std::string &path) {
 std::string join_path(const std::string &dir, const std::string &rel) {
   if (!rel.empty() && rel[0] == '/') return rel;
   return dir + rel;
+}
+
+bool ends_with(const std::string &path, const char *suffix) {
+  const size_t n = strlen(suffix);
+  return path.size() > n && path.compare(path.size() - n, n, suffix) == 0;
 }
 
 bool file_exists(const std::string &path, long long *size) {

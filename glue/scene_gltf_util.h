@@ -47,6 +47,8 @@ bool read_vec(const tinygltf::Value &v, const std::string &place, int n, double 
 std::string dir_of(const std::string &path);
 std::string join_path(const std::string &dir, const std::string &rel);
 bool file_exists(const std::string &path, long long *size = nullptr);
+// True when path ends with suffix (e.g. ".exr") and has a name before it.
+bool ends_with(const std::string &path, const char *suffix);
 
 // Part 2 (glue/scene_gltf_source.cpp): glTF materials with their Source keys; images are
 // already in s->images with the glTF image indices.

@@ -441,10 +441,18 @@ bool prepare_scene(const Scene &s, const SceneSelection &sel, int w, int h, Api 
     ws.page_w = s.lightmaps.page_w;
     ws.page_h = s.lightmaps.page_h;
     ws.cube_size = cube_size;
+    const bool from_file = !s.lightmaps.image_rgba.empty();
+    ws.bake_luxels = !from_file;
     if (!bake_world(ws, &bake, err)) {
       *err = s.path + ": lightmap bake: " + *err;
       return false;
     }
+    // A page from the scene's lightmaps.image: the placement above is its layout (the same
+    // faces, density and page size as the bake that wrote it; docs/scenes.md).
+    if (from_file) bake.page = s.lightmaps.image_rgba;
+    ps.lightmap_page = bake.page;
+    ps.lightmap_w = ws.page_w;
+    ps.lightmap_h = ws.page_h;
     probes.have_world = true;
     probes.world_cubes.assign(s.probes.size(), TextureDesc());
     for (size_t i = 0; i < s.probes.size(); ++i)

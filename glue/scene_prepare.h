@@ -38,6 +38,10 @@ struct PreparedScene {
   float tone_map_scale = 1.f;  // of the shaders' output (integer path); the float path tone-maps later
   // What was made, for the report.
   int probes_made = 0, lightmap_texels = 0;
+  // The world's lightmap page in float32 before its run-time encoding (baked, or the scene's
+  // lightmaps.image): lightmap_w x lightmap_h RGBA, row 0 at the bottom; empty without world draws.
+  std::vector<float> lightmap_page;
+  int lightmap_w = 0, lightmap_h = 0;
   double bake_ms = 0;
   std::vector<std::string> notes;
 };

@@ -139,7 +139,7 @@ bool bake_world(const WorldScene &s, WorldBake *out, std::string *err) {
   }
   out->page.assign(static_cast<size_t>(s.page_w) * s.page_h * 4, 0.f);
   for (size_t i = 0; i < out->page.size(); i += 4) out->page[i + 3] = 1.f;
-  for (size_t fi = 0; fi < s.faces.size(); ++fi) {
+  for (size_t fi = 0; s.bake_luxels && fi < s.faces.size(); ++fi) {
     const WorldFace &f = s.faces[fi];
     const ts_vec3d n = face_normal(f);
     ts_vec3d bump[3];

@@ -30,6 +30,7 @@ struct WorldScene {
   int page_w = 512, page_h = 256;
   int cube_size = 64;
   float tone_map_scale = 0.45f;
+  bool bake_luxels = true;  // false: the page is left black (alpha 1) for a page read from a file
 };
 
 WorldScene default_world_scene();

@@ -22,6 +22,7 @@
 #include <string>
 #include <vector>
 
+#include "image_io.h"
 #include "scene.h"
 
 namespace {
@@ -352,6 +353,21 @@ void test_bad_scenes() {
     return edit(kBase, "{\"shader\":\"VertexLitGeneric\"}", "{\"shader\":\"VertexLitGeneric\"," + keys + "}");
   };
   auto extras = [](const std::string &ts) { return edit(kBase, "\"asset\":", "\"extras\":{\"tiershade\":" + ts + "},\"asset\":"); };
+  // Lightmap pages (extras.tiershade.lightmaps.image): a good 32 x 16 one, one with a NaN, one
+  // with a negative texel, one too small to be a page.
+  auto page = [](const std::string &name, int w, int h, int bad_x, int bad_y, float bad) {
+    ImageF img;
+    img.w = w;
+    img.h = h;
+    img.rgba.assign(static_cast<size_t>(w) * h * 4, 0.25f);
+    if (bad_x >= 0) img.rgba[(static_cast<size_t>(bad_y) * w + bad_x) * 4 + 1] = bad;
+    std::string e;
+    if (!write_exr(g_dir + "/" + name, img, &e)) check(false, "test setup: write " + name, e);
+  };
+  page("page.exr", 32, 16, -1, -1, 0);
+  page("page_nan.exr", 32, 16, 3, 2, std::nanf(""));
+  page("page_neg.exr", 32, 16, 5, 7, -1.f);
+  page("page_tiny.exr", 8, 8, -1, -1, 0);
   write_file("short.bin", tri_bin().substr(0, 40));
   write_file("bad.glb", std::string("glTX\2\0\0\0\x18\0\0\0\0\0\0\0JSON\0\0\0\0", 24));
   const std::vector<Bad> cases = {
@@ -395,6 +411,20 @@ void test_bad_scenes() {
        extras("{\"hdr\":{\"luts\":[{\"file\":\"tri.bin\"},{\"file\":\"tri.bin\"},{\"file\":\"tri.bin\"},"
               "{\"file\":\"tri.bin\"},{\"file\":\"tri.bin\"}]}}"),
        "extras.tiershade.hdr.luts: 5 LUTs"},
+      {"lightmap page missing", "lmmiss.gltf", extras("{\"lightmaps\":{\"image\":\"none.exr\"}}"),
+       "extras.tiershade.lightmaps.image: file not found"},
+      {"lightmap page not an image", "lmbin.gltf", extras("{\"lightmaps\":{\"image\":\"tri.bin\"}}"),
+       "extras.tiershade.lightmaps.image: " /* + path */},
+      {"lightmap page size differs from page", "lmsize.gltf",
+       extras("{\"lightmaps\":{\"page\":[512,256],\"image\":\"page.exr\"}}"), "32 x 16 texels, but \"page\" is 512 x 256"},
+      {"lightmap page with a NaN", "lmnan.gltf", extras("{\"lightmaps\":{\"image\":\"page_nan.exr\"}}"),
+       "page_nan.exr: texel (3, 2) channel G is NaN"},
+      {"lightmap page with a negative texel", "lmneg.gltf", extras("{\"lightmaps\":{\"image\":\"page_neg.exr\"}}"),
+       "page_neg.exr: texel (5, 7) channel G is -1"},
+      {"lightmap page too small", "lmtiny.gltf", extras("{\"lightmaps\":{\"image\":\"page_tiny.exr\"}}"),
+       "8 x 8 texels, a page is 16..8192"},
+      {"lightmap image not a string", "lmtype.gltf", extras("{\"lightmaps\":{\"image\":3}}"),
+       "extras.tiershade.lightmaps.image"},
       {"non-triangle mode", "lines.gltf", edit(kBase, "\"material\":0", "\"material\":0,\"mode\":1"),
        "meshes[0].primitives[0]: mode 1"},
       {"node cycle", "cycle.gltf", edit(kBase, "{\"mesh\":0,", "{\"children\":[0],\"mesh\":0,"), "nodes[0]: appears twice"},
@@ -426,6 +456,14 @@ void test_bad_scenes() {
     check(!ok && contains(err, path + ": ") && contains(err, b.place) && s.path == "untouched" && s.primitives.empty(),
           std::string("bad scene: ") + b.name, ok ? "loaded" : err);
   }
+  // A good page: its size becomes the page size, its alpha 1, its path kept.
+  write_file("lmok.gltf", extras("{\"lightmaps\":{\"image\":\"page.exr\"}}"));
+  Scene s;
+  std::string err;
+  const bool ok = load_scene(g_dir + "/lmok.gltf", &s, &err);
+  check(ok && s.lightmaps.page_w == 32 && s.lightmaps.page_h == 16 && s.lightmaps.image_rgba.size() == 32 * 16 * 4 &&
+            s.lightmaps.image_rgba[1] == 0.25f && s.lightmaps.image_rgba[3] == 1.f && contains(s.lightmaps.image, "page.exr"),
+        "lightmaps.image: a 32 x 16 page read, its size the page size", err);
 }
 
 }  // namespace
