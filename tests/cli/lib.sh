@@ -6,7 +6,7 @@
 # repository), makes $TMP (removed on exit) and cds into it, makes leak reports of sanitizer
 # builds quiet (Mesa keeps allocations of its own; memory errors and UB still fail), and
 # defines pass/fail/skip (counted), run ARGS... (tiershade with a timeout; status in $RC,
-# output in $OUT and $ERR) and cli_finish (the "N passed, N failed" line and the exit status).
+# output in $OUT and $ERR), cli_crashed and cli_finish (the "N passed, N failed" line and the exit status).
 
 cli_setup() {
   local name=$1 seconds=$2
@@ -50,6 +50,11 @@ skip() { echo "SKIP $1: $2"; }
 run() {
   "${TIMEOUT[@]}" "$TS" "$@" > "$OUT" 2> "$ERR" < /dev/null
   RC=$?
+}
+# cli_crashed: true when the last run crashed, tripped a sanitizer or timed out.
+cli_crashed() {
+  grep -qE 'AddressSanitizer|LeakSanitizer|UndefinedBehaviorSanitizer|runtime error:|terminate called|Segmentation fault' "$ERR" ||
+    [ "$RC" -ge 124 ]
 }
 cli_finish() {
   echo "$PASSED passed, $FAILED failed"

@@ -14,10 +14,6 @@
 set -u
 . "$(dirname "${BASH_SOURCE[0]}")/lib.sh"
 cli_setup bake_cli 600 "$@"
-crashed() {
-  grep -qE 'AddressSanitizer|LeakSanitizer|UndefinedBehaviorSanitizer|runtime error:|terminate called|Segmentation fault' "$ERR" ||
-    [ "$RC" -ge 124 ]
-}
 # render/bake from the repository (the scenes name their files relatively).
 in_repo() {
   (cd "$HERE" && "${TIMEOUT[@]}" "$TS" "$@" > "$OUT" 2> "$ERR" < /dev/null)
@@ -27,7 +23,7 @@ expect() {  # name, expected status, stderr pattern, file that must not exist, a
   local name=$1 want=$2 pat=$3 none=$4
   shift 4
   in_repo "$@"
-  if crashed; then fail "$name" "crashed (status $RC): $(head -c 300 "$ERR")"; return; fi
+  if cli_crashed; then fail "$name" "crashed (status $RC): $(head -c 300 "$ERR")"; return; fi
   if [ "$RC" -ne "$want" ]; then fail "$name" "status $RC, expected $want: $(head -n 2 "$ERR")"; return; fi
   if ! grep -qE -- "$pat" "$ERR"; then fail "$name" "stderr lacks /$pat/: $(head -n 2 "$ERR")"; return; fi
   if [ -e "$none" ]; then fail "$name" "wrote $none"; return; fi
@@ -59,7 +55,7 @@ same_frame() {  # name, extra args...: the baked scene and the copy reading page
   in_repo render scenes/world_lighting.gltf --size 96x54 --quiet "$@" -o "$TMP/baked"
   local rc1=$RC
   in_repo render "$TMP/wl/from_page.gltf" --size 96x54 --quiet "$@" -o "$TMP/read"
-  if crashed; then fail "$name" "crashed (status $RC): $(head -c 300 "$ERR")"; return; fi
+  if cli_crashed; then fail "$name" "crashed (status $RC): $(head -c 300 "$ERR")"; return; fi
   if [ "$rc1" -ne 0 ] || [ "$RC" -ne 0 ]; then fail "$name" "status $rc1 / $RC: $(head -n 2 "$ERR")"; return; fi
   if ! cmp -s "$TMP/baked.exr" "$TMP/read.exr" || ! cmp -s "$TMP/baked.png" "$TMP/read.png"; then
     fail "$name" "the frames differ"

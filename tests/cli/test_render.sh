@@ -19,10 +19,6 @@ run() {
   (cd "$HERE" && "${TIMEOUT[@]}" "$TS" render "$@" > "$OUT" 2> "$ERR" < /dev/null)
   RC=$?
 }
-crashed() {
-  grep -qE 'AddressSanitizer|LeakSanitizer|UndefinedBehaviorSanitizer|runtime error:|terminate called|Segmentation fault' "$ERR" ||
-    [ "$RC" -ge 124 ]
-}
 
 # --- bad input -----------------------------------------------------------------------------
 bad() {  # name, expected status, stderr pattern, args...
@@ -30,7 +26,7 @@ bad() {  # name, expected status, stderr pattern, args...
   shift 3
   rm -f "$TMP"/o.png "$TMP"/o.exr
   run "$@"
-  if crashed; then fail "$name" "crashed (status $RC): $(head -c 300 "$ERR")"; return; fi
+  if cli_crashed; then fail "$name" "crashed (status $RC): $(head -c 300 "$ERR")"; return; fi
   if [ "$RC" -ne "$want" ]; then fail "$name" "status $RC, expected $want: $(head -n 2 "$ERR")"; return; fi
   if ! grep -qE -- "$pat" "$ERR"; then fail "$name" "stderr lacks /$pat/: $(head -n 2 "$ERR")"; return; fi
   if [ -e "$TMP/o.png" ] || [ -e "$TMP/o.exr" ]; then fail "$name" "left an output file"; return; fi
@@ -52,7 +48,7 @@ bad "output directory missing" 1 "no_such_dir" scenes/model_lighting.gltf --size
 # directory, so its rename fails), the other must not be left behind.
 mkdir -p "$TMP/o.png"
 run scenes/model_lighting.gltf --size 32x18 --backend cpu -o "$TMP/o"
-if crashed; then fail "one output fails" "crashed (status $RC): $(head -c 300 "$ERR")"
+if cli_crashed; then fail "one output fails" "crashed (status $RC): $(head -c 300 "$ERR")"
 elif [ "$RC" -ne 1 ]; then fail "one output fails" "status $RC, expected 1: $(head -n 2 "$ERR")"
 elif ! grep -q "o\.png" "$ERR"; then fail "one output fails" "stderr does not name o.png: $(head -n 2 "$ERR")"
 elif [ -e "$TMP/o.exr" ]; then fail "one output fails" "left o.exr behind"
@@ -64,7 +60,7 @@ check() {  # name, args...
   local name=$1
   shift
   run "$@" --size 96x54 --check --quiet -o "$TMP/c"
-  if crashed; then fail "$name" "crashed (status $RC): $(head -c 300 "$ERR")"; return; fi
+  if cli_crashed; then fail "$name" "crashed (status $RC): $(head -c 300 "$ERR")"; return; fi
   local line post
   line=$(grep '^check: GL frame' "$OUT")
   post=$(grep '^check: HDR path' "$OUT")
