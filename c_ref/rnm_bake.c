@@ -88,6 +88,20 @@ int rnm_bake_texel(ts_vec3d pos, ts_vec3d face_normal, const ts_vec3d bump[3], c
       }
       if (!unit3(d, &L)) continue; /* the light sits on the texel: no direction, no light */
       falloff = 1.0 / denom;
+      if (l->spot) { /* vrad's spot cone (rnm_bake.h) */
+        ts_vec3d axis;
+        if (!unit3(l->spot_dir, &axis) || !(l->cos_inner > l->cos_outer) || !(l->cos_inner <= 1.0) ||
+            !(l->cos_outer >= -1.0) || !(l->exponent >= 0.0) || !isfinite(l->exponent)) {
+          snprintf(err, errlen, "rnm_bake_texel: light %d (spot) needs a non-zero axis, cos_inner > cos_outer "
+                   "within [-1, 1] and a finite exponent >= 0", i);
+          return -1;
+        }
+        const double dot2 = -dot3(L, axis);
+        if (dot2 <= l->cos_outer) continue; /* outside the cone */
+        const double mult = dot2 >= l->cos_inner ? 1.0
+                                                 : pow((dot2 - l->cos_outer) / (l->cos_inner - l->cos_outer), l->exponent);
+        falloff *= dot2 * mult;
+      }
     }
     const double dot0 = fmax(0.0, dot3(n, L));
     if (dot0 == 0.0) continue; /* behind the face: feeds neither the flat nor the bumped maps */

@@ -20,6 +20,9 @@ typedef struct {
   ts_vec3d dir;      /* directional light: the direction the light travels (unit) */
   ts_vec3d color;    /* linear intensity */
   double atten[3];   /* point light: falloff 1 / (a0 + a1 d + a2 d^2) */
+  int spot;          /* 1: the point light is a spot shining along spot_dir */
+  ts_vec3d spot_dir; /* spot: the direction the light travels (non-zero) */
+  double cos_inner, cos_outer, exponent; /* spot cone, cos_inner > cos_outer; exponent >= 0 */
 } rnm_light;
 
 /* The tangent-space basis b0, b1, b2 (fact sheet section 1), k = 0..2. */
@@ -36,7 +39,12 @@ int rnm_bump_basis(ts_vec3d s_vec, ts_vec3d t_vec, ts_vec3d face_normal, ts_vec3
  * along bump[0..2]. Per light: contribution = color * falloff * max(0, n . L) for each
  * normal (cosine-weighted, negatives clamped), and a light behind the face
  * (face normal . L <= 0) feeds none of the three bumped values (GatherSampleLightSSE).
- * Returns 0, or -1 with a message when an input is not finite or a falloff is <= 0. */
+ * A spot multiplies its falloff as vrad does (fact sheet, "vrad old-style attenuation":
+ * GatherSampleStandardLightSSE): by dot2 = cos(angle between the spot axis and the
+ * light-to-texel direction), by 0 outside the outer cone (dot2 <= cos_outer), and between
+ * the cones by ((dot2 - cos_outer) / (cos_inner - cos_outer))^exponent.
+ * Returns 0, or -1 with a message when an input is not finite, a falloff is <= 0 or a
+ * spot's axis or cone is degenerate. */
 int rnm_bake_texel(ts_vec3d pos, ts_vec3d face_normal, const ts_vec3d bump[3], const rnm_light *lights,
                    int num_lights, ts_vec3d out[4], char *err, size_t errlen);
 

@@ -424,7 +424,13 @@ bool prepare_scene(const Scene &s, const SceneSelection &sel, int w, int h, Api 
       r.dir = ts_v3d(l.light.dir[0], l.light.dir[1], l.light.dir[2]);
       r.color = ts_v3d(l.light.color[0], l.light.color[1], l.light.color[2]);
       for (int k = 0; k < 3; ++k) r.atten[k] = l.light.atten[k];
-      if (l.light.type == TS_LIGHT_SPOT) ps.notes.push_back("light " + l.name + ": a spot is baked as a point light");
+      if (l.light.type == TS_LIGHT_SPOT) {  // baked with vrad's cone (c_ref/rnm_bake.h)
+        r.spot = 1;
+        r.spot_dir = r.dir;
+        r.cos_inner = l.light.cos_inner;
+        r.cos_outer = l.light.cos_outer;
+        r.exponent = l.light.spot_exponent;
+      }
       ws.lights.push_back(r);
     }
     int cube_size = 16;

@@ -206,7 +206,8 @@ bool bake_world(const WorldScene &s, WorldBake *out, std::string *err) {
                            sizeof msg);
             rad = mul(v4[0], 0.6);
           }
-          for (const rnm_light &l : s.lights) {  // a light bulb of radius 0.08
+          for (const rnm_light &l : s.lights) {  // a light bulb of radius 0.08 (not for a sun)
+            if (l.directional) continue;
             const ts_vec3d lp = sub(l.pos, pos);
             const double along = dot(lp, d);
             if (along > 0 && along < t && dot(lp, lp) - along * along < 0.08 * 0.08) rad = mul(l.color, 4.0);

@@ -23,6 +23,7 @@
 #include "scene.h"
 #include "scene_effects.h"
 #include "scene_frame.h"
+#include "scene_prepare.h"
 #include "srgb_codes.h"
 #include "static_exposure.h"
 #include <cstring>
@@ -206,8 +207,54 @@ void test_srgb_codes() {
 
 }  // namespace
 
+// Spot lights reach the lightmap baker as spots (glue/scene_prepare.cpp -> c_ref/rnm_bake.c):
+// world_lighting's first point light turned into a narrow spot can only lose light (dot2 and
+// the cone ramp are <= 1), loses most of it, and keeps the texels on its axis.
+void test_spot_bake() {
+  Scene s;
+  std::string err;
+  SceneSelection sel;
+  PreparedScene a, b;
+  if (!load_scene("scenes/world_lighting.gltf", &s, &err) || !select_scene_variants(s, Tier::SM3, "", &sel, &err) ||
+      !prepare_scene(s, sel, 32, 18, Api::GL33, 1.f, &a, &err)) {
+    check(false, "spot bake: load and prepare world_lighting", err);
+    return;
+  }
+  // Only light 0 lights the page: compare it as a point and as a spot pointing straight down.
+  for (size_t i = 1; i < s.lights.size(); ++i) s.lights[i].light.color[0] = s.lights[i].light.color[1] = s.lights[i].light.color[2] = 0;
+  if (!prepare_scene(s, sel, 32, 18, Api::GL33, 1.f, &a, &err)) {
+    check(false, "spot bake: prepare with one point light", err);
+    return;
+  }
+  ts_light &l = s.lights[0].light;
+  l.type = TS_LIGHT_SPOT;
+  l.dir[0] = 0, l.dir[1] = -1, l.dir[2] = 0;
+  l.cos_inner = std::cos(0.15f);
+  l.cos_outer = std::cos(0.3f);
+  l.spot_exponent = 1;
+  if (!prepare_scene(s, sel, 32, 18, Api::GL33, 1.f, &b, &err)) {
+    check(false, "spot bake: prepare with the spot", err);
+    return;
+  }
+  double sum_a = 0, sum_b = 0;
+  long brighter = 0, lit_b = 0;
+  for (size_t i = 0; i < a.lightmap_page.size(); ++i) {
+    if (i % 4 == 3) continue;
+    sum_a += a.lightmap_page[i];
+    sum_b += b.lightmap_page[i];
+    if (b.lightmap_page[i] > a.lightmap_page[i]) ++brighter;
+    if (b.lightmap_page[i] > 0) ++lit_b;
+  }
+  printf("INFO spot bake: page total %.1f as a point light, %.1f as a 0.15/0.3 rad spot; %ld channels lit\n", sum_a,
+         sum_b, lit_b);
+  check(a.lightmap_page.size() == b.lightmap_page.size() && brighter == 0, "spot bake: no texel brighter than the point light's");
+  check(sum_b > 0 && sum_b < 0.5 * sum_a, "spot bake: the cone keeps some light and drops most of it",
+        std::to_string(sum_b) + " of " + std::to_string(sum_a));
+}
+
 int main() {
   ts_math_init();
+  test_spot_bake();
   test_srgb_codes();
   test_static_counts();
   test_selection();

@@ -118,6 +118,36 @@ void check_bake() {
   rnm_bake_texel(ts_v3d(0, 0, 0), N, bump, &pt, 1, out, err, sizeof err);
   check(std::fabs(out[0].x - 1) < 1e-12 && std::fabs(out[1].x - 1 / std::sqrt(3.0)) < 1e-12,
         "point light falloff and cosine", num(out[0].x) + " " + num(out[1].x));
+  // The same light as a spot pointing straight down (vrad's cone, rnm_bake.h): on the axis
+  // dot2 = 1, the same as the point light; outside the outer cone nothing; between the cones
+  // dot2 * ((dot2 - cos_outer) / (cos_inner - cos_outer))^exponent times the point light's value.
+  rnm_light sp = pt;
+  sp.spot = 1;
+  sp.spot_dir = ts_v3d(0, 0, -3);  // not unit: normalised
+  sp.cos_inner = std::cos(0.2);
+  sp.cos_outer = std::cos(0.6);
+  sp.exponent = 2;
+  ts_vec3d ref[4];
+  rnm_bake_texel(ts_v3d(0, 0, 0), N, bump, &sp, 1, out, err, sizeof err);
+  check(std::fabs(out[0].x - 1) < 1e-12 && std::fabs(out[1].x - 1 / std::sqrt(3.0)) < 1e-12,
+        "spot on its axis = the point light", num(out[0].x));
+  const ts_vec3d between = ts_v3d(2 * std::tan(0.4), 0, 0);  // 0.4 rad off the axis
+  rnm_bake_texel(between, N, bump, &sp, 1, out, err, sizeof err);
+  rnm_bake_texel(between, N, bump, &pt, 1, ref, err, sizeof err);
+  const double c = std::cos(0.4), want = c * std::pow((c - sp.cos_outer) / (sp.cos_inner - sp.cos_outer), 2.0);
+  // 1e-12 relative: the cosine of the angle is recomputed from a unit vector.
+  check(ref[0].x > 0 && std::fabs(out[0].x / ref[0].x - want) < 1e-12, "spot between its cones: dot2 * ramp^exponent",
+        num(out[0].x / ref[0].x) + " vs " + num(want));
+  rnm_bake_texel(ts_v3d(2 * std::tan(0.7), 0, 0), N, bump, &sp, 1, out, err, sizeof err);
+  check(out[0].x == 0 && out[1].x == 0 && out[2].x == 0 && out[3].x == 0, "spot: nothing outside its outer cone");
+  sp.spot_dir = ts_v3d(0, 0, 0);
+  check(rnm_bake_texel(ts_v3d(0, 0, 0), N, bump, &sp, 1, out, err, sizeof err) == -1 &&
+            std::string(err).find("light 0 (spot)") != std::string::npos,
+        "a spot with a zero axis is an error naming the light", err);
+  sp.spot_dir = ts_v3d(0, 0, -1);
+  sp.cos_inner = sp.cos_outer;
+  check(rnm_bake_texel(ts_v3d(0, 0, 0), N, bump, &sp, 1, out, err, sizeof err) == -1, "a spot with no cone ramp is an error",
+        err);
   pt.atten[0] = pt.atten[2] = 0;
   check(rnm_bake_texel(ts_v3d(0, 0, 0), N, bump, &pt, 1, out, err, sizeof err) == -1 &&
             std::string(err).find("light 0") != std::string::npos,
