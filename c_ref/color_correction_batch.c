@@ -6,9 +6,6 @@
 
 #include <stddef.h>
 
-#if defined(__GNUC__) && (defined(__x86_64__) || defined(__i386__))
-#include <immintrin.h>
-#endif
 #define TSV_IMPL "color_correction_simd_impl.h"
 #include "ts_simd_instances.h"
 

@@ -9,9 +9,6 @@
 #include "hdr_formats.h"
 #include "ts_sampler3d.h"
 
-#if defined(__GNUC__) && (defined(__x86_64__) || defined(__i386__))
-#include <immintrin.h>
-#endif
 #define TSV_IMPL "hdr_post_simd_impl.h"
 #include "ts_simd_instances.h"
 

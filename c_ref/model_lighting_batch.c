@@ -1,65 +1,14 @@
 /* tiershade -- c_ref/model_lighting_batch.c
  * Instantiates the SIMD model_lighting twin (model_lighting_simd_impl.h over ts_simd.h and
  * ts_simd_sampler.h) for AVX2+FMA (llvmpipe fuses its mads), AVX2 without FMA (it does not)
- * and SSE2 (4 lanes, unfused only), each under `#pragma GCC target` so that no build flag
- * changes, and picks one per call (see model_lighting_batch.h). -ffp-contract=off still
- * applies: the only fused operations are the explicit FMA intrinsics of the fused instance. */
+ * and SSE2 (4 lanes, unfused only) through ts_simd_instances.h, and picks one per call (see
+ * model_lighting_batch.h). */
 #include "model_lighting_batch.h"
 
 #include <stddef.h>
 
-#if defined(__GNUC__) && (defined(__x86_64__) || defined(__i386__))
-#define TS_BATCH_X86 1
-#include <immintrin.h>
-
-#pragma GCC push_options
-#pragma GCC target("avx2,fma")
-#define TSV_W 8
-#define TSV_SFX avx2fma
-#define TSV_FUSED 1
-#define TSV_AVX 1
-#include "ts_simd.h"
-#include "ts_simd_sampler.h"
-#include "model_lighting_simd_impl.h"
-#pragma GCC pop_options
-#undef TSV_W
-#undef TSV_SFX
-#undef TSV_FUSED
-#undef TSV_AVX
-#undef VF
-#undef VI
-#undef VU
-#undef V3v
-#undef V4v
-
-#pragma GCC push_options
-#pragma GCC target("avx2")
-#define TSV_W 8
-#define TSV_SFX avx2
-#define TSV_FUSED 0
-#define TSV_AVX 1
-#include "ts_simd.h"
-#include "ts_simd_sampler.h"
-#include "model_lighting_simd_impl.h"
-#pragma GCC pop_options
-#undef TSV_W
-#undef TSV_SFX
-#undef TSV_FUSED
-#undef TSV_AVX
-#undef VF
-#undef VI
-#undef VU
-#undef V3v
-#undef V4v
-
-#define TSV_W 4
-#define TSV_SFX sse2
-#define TSV_FUSED 0
-#define TSV_AVX 0
-#include "ts_simd.h"
-#include "ts_simd_sampler.h"
-#include "model_lighting_simd_impl.h"
-#endif
+#define TSV_IMPL "model_lighting_simd_impl.h"
+#include "ts_simd_instances.h"
 
 static void batch_scalar(const ml_variant *v, const ml_batch_input *in, const ml_textures *tex, ts_vec4f *out,
                          int count) {

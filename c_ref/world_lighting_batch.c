@@ -1,65 +1,12 @@
 /* tiershade -- c_ref/world_lighting_batch.c
  * Instantiates the SIMD world_lighting twin (world_lighting_simd_impl.h) for AVX2+FMA, AVX2 and
- * SSE2 under `#pragma GCC target`, as model_lighting_batch.c does, and dispatches per call. */
+ * SSE2 (ts_simd_instances.h) and dispatches per call (world_lighting_batch.h). */
 #include "world_lighting_batch.h"
 
 #include <stddef.h>
 
-#if defined(__GNUC__) && (defined(__x86_64__) || defined(__i386__))
-#define TS_BATCH_X86 1
-#include <immintrin.h>
-
-#pragma GCC push_options
-#pragma GCC target("avx2,fma")
-#define TSV_W 8
-#define TSV_SFX avx2fma
-#define TSV_FUSED 1
-#define TSV_AVX 1
-#include "ts_simd.h"
-#include "ts_simd_sampler.h"
-#include "ts_simd_sampler_nearest.h"
-#include "world_lighting_simd_impl.h"
-#pragma GCC pop_options
-#undef TSV_W
-#undef TSV_SFX
-#undef TSV_FUSED
-#undef TSV_AVX
-#undef VF
-#undef VI
-#undef VU
-#undef V3v
-#undef V4v
-
-#pragma GCC push_options
-#pragma GCC target("avx2")
-#define TSV_W 8
-#define TSV_SFX avx2
-#define TSV_FUSED 0
-#define TSV_AVX 1
-#include "ts_simd.h"
-#include "ts_simd_sampler.h"
-#include "ts_simd_sampler_nearest.h"
-#include "world_lighting_simd_impl.h"
-#pragma GCC pop_options
-#undef TSV_W
-#undef TSV_SFX
-#undef TSV_FUSED
-#undef TSV_AVX
-#undef VF
-#undef VI
-#undef VU
-#undef V3v
-#undef V4v
-
-#define TSV_W 4
-#define TSV_SFX sse2
-#define TSV_FUSED 0
-#define TSV_AVX 0
-#include "ts_simd.h"
-#include "ts_simd_sampler.h"
-#include "ts_simd_sampler_nearest.h"
-#include "world_lighting_simd_impl.h"
-#endif
+#define TSV_IMPL "world_lighting_simd_impl.h"
+#include "ts_simd_instances.h"
 
 static void batch_scalar(const wl_variant *v, const wl_batch_input *in, const wl_textures *t, ts_vec4f *out,
                          int count) {
