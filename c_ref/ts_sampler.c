@@ -7,6 +7,7 @@
  * everything re-verified bit for bit against the driver (docs/c_math_layer.md).
  */
 #include "ts_sampler.h"
+#include "ts_sampler_wrap.h"
 
 #include <math.h>
 #include <stddef.h>
@@ -17,8 +18,6 @@ static uint32_t fb(float f) { uint32_t u; memcpy(&u, &f, 4); return u; }
 static float bf(uint32_t u) { float f; memcpy(&f, &u, 4); return f; }
 /* DAZ: denormal -> zero of the same sign (what SSE compares see under MXCSR.DAZ) */
 static float daz(float x) { return (fb(x) & 0x7f800000u) ? x : bf(fb(x) & 0x80000000u); }
-
-static int is_pot(int n) { return n > 0 && (n & (n - 1)) == 0; }
 
 static ts_vec4f texel(const float *tx, int w, int x, int y)
 {
@@ -36,68 +35,11 @@ ts_vec4f ts_texelFetchf(const ts_tex2d *t, int x, int y)
 /* float32, llvmpipe-exact                                                       */
 /* ---------------------------------------------------------------------------- */
 
-static int clampi(int i, int lo, int hi) { return i < lo ? lo : (i > hi ? hi : i); }
-
-/* lp_build_fract_safe: min(u - floor(u), 0x1.fffffep-1); a NaN gives the constant. */
-static float fract_safe(float u)
-{
-    float f = u - ts_floorf(u);
-    return f < 0x1.fffffep-1f ? f : 0x1.fffffep-1f;
-}
-
-/* lp_build_sample_wrap_nearest (float coords, normalized). */
-static int wrap_nearest(float u, int len, int wrap)
-{
-    float lf = (float)len;
-    if (wrap == TS_WRAP_REPEAT) {
-        if (is_pot(len))                                /* ifloor(u*len) & (len-1) */
-            return ts_lp_itruncf(ts_floorf(u * lf)) & (len - 1);
-        return clampi(ts_lp_itruncf(fract_safe(u) * lf), 0, len - 1); /* itrunc */
-    }
-    return clampi(ts_lp_itruncf(u * lf), 0, len - 1);  /* CLAMP_TO_EDGE: itrunc, clamp */
-}
-
-/* lp_build_sample_wrap_linear (llvmpipe_bitexact.md "Texture sampling"). */
-static void wrap_linear(float u, int len, int wrap, int *i0, int *i1, float *w)
-{
-    float lf = (float)len, c, fl;
-    if (wrap == TS_WRAP_REPEAT) {
-        if (!is_pot(len)) u = u - ts_floorf(u);
-        c = u * lf - 0.5f;
-        fl = ts_floorf(c);
-        *w = c - fl;
-        *i0 = ts_lp_itruncf(fl);
-        *i1 = (int)((unsigned)*i0 + 1u);
-        if (is_pot(len)) {
-            *i0 &= len - 1;
-            *i1 &= len - 1;
-        } else {
-            if (*i0 < 0) *i0 = len - 1;
-            if (*i1 == len) *i1 = 0;
-        }
-    } else {
-        c = ts_lp_minf(u * lf, lf);
-        c = c - 0.5f;
-        c = ts_lp_maxf(c, 0.0f);
-        fl = ts_floorf(c);
-        *w = c - fl;
-        *i0 = ts_lp_itruncf(fl);
-        *i1 = *i0 + 1 < len - 1 ? *i0 + 1 : len - 1;
-    }
-}
-
-/* gallivm lerp(w, a, b) = mad(w, b - a, a). */
-static ts_vec4f lerp4(float w, ts_vec4f a, ts_vec4f b)
-{
-    return ts_v4f(ts_madf(w, b.x - a.x, a.x), ts_madf(w, b.y - a.y, a.y),
-                  ts_madf(w, b.z - a.z, a.z), ts_madf(w, b.w - a.w, a.w));
-}
-
 /* Fetch that never reads outside the image (llvmpipe only produces in-range
  * indices for finite coordinates; NaN/inf coordinates are clamped here). */
 static ts_vec4f fetch_safe(const float *tx, int w, int h, int x, int y)
 {
-    return texel(tx, w, clampi(x, 0, w - 1), clampi(y, 0, h - 1));
+    return texel(tx, w, ts_clampi(x, 0, w - 1), ts_clampi(y, 0, h - 1));
 }
 
 static ts_vec4f sample2d_f(const float *tx, int w, int h, int wrap_s, int wrap_t,
@@ -106,11 +48,11 @@ static ts_vec4f sample2d_f(const float *tx, int w, int h, int wrap_s, int wrap_t
     int x0, x1, y0, y1;
     float wx, wy;
     if (filter == TS_FILTER_NEAREST)
-        return fetch_safe(tx, w, h, wrap_nearest(u, w, wrap_s), wrap_nearest(v, h, wrap_t));
-    wrap_linear(u, w, wrap_s, &x0, &x1, &wx);
-    wrap_linear(v, h, wrap_t, &y0, &y1, &wy);
-    return lerp4(wy, lerp4(wx, fetch_safe(tx, w, h, x0, y0), fetch_safe(tx, w, h, x1, y0)),
-                 lerp4(wx, fetch_safe(tx, w, h, x0, y1), fetch_safe(tx, w, h, x1, y1)));
+        return fetch_safe(tx, w, h, ts_wrap_nearest(u, w, wrap_s), ts_wrap_nearest(v, h, wrap_t));
+    ts_wrap_linear(u, w, wrap_s, &x0, &x1, &wx);
+    ts_wrap_linear(v, h, wrap_t, &y0, &y1, &wy);
+    return ts_lerp4(wy, ts_lerp4(wx, fetch_safe(tx, w, h, x0, y0), fetch_safe(tx, w, h, x1, y0)),
+                 ts_lerp4(wx, fetch_safe(tx, w, h, x0, y1), fetch_safe(tx, w, h, x1, y1)));
 }
 
 ts_vec4f ts_texture2Df(const ts_tex2d *t, ts_vec2f uv)
@@ -160,58 +102,17 @@ static ts_vec4d texel_d(const float *tx, int w, int h, int x, int y)
     return ts_v4d(p.x, p.y, p.z, p.w);
 }
 
-static int itrunc_d(double x)
-{
-    if (!(x > -2147483648.0 && x < 2147483647.0)) return x > 0 ? 2147483647 : -2147483647;
-    return (int)x;
-}
-
-static int wrap_nearest_d(double u, int len, int wrap)
-{
-    if (wrap == TS_WRAP_REPEAT) u -= floor(u);
-    return clampi(itrunc_d(floor(u * len)), 0, len - 1);
-}
-
-static void wrap_linear_d(double u, int len, int wrap, int *i0, int *i1, double *w)
-{
-    double c, fl;
-    if (wrap == TS_WRAP_REPEAT) {
-        u -= floor(u);
-        c = u * len - 0.5;
-        fl = floor(c);
-        *w = c - fl;
-        *i0 = itrunc_d(fl);           /* in [-1, len-1] */
-        *i1 = *i0 + 1;
-        if (*i0 < 0) *i0 += len;
-        if (*i1 >= len) *i1 -= len;
-    } else {
-        c = u * len;
-        c = (c < len ? c : len) - 0.5; /* NaN -> len - 0.5 */
-        c = c > 0.0 ? c : 0.0;
-        fl = floor(c);
-        *w = c - fl;
-        *i0 = itrunc_d(fl);
-        *i1 = *i0 + 1 < len - 1 ? *i0 + 1 : len - 1;
-    }
-}
-
-static ts_vec4d lerp4d(double w, ts_vec4d a, ts_vec4d b)
-{
-    return ts_v4d(a.x + w * (b.x - a.x), a.y + w * (b.y - a.y),
-                  a.z + w * (b.z - a.z), a.w + w * (b.w - a.w));
-}
-
 static ts_vec4d sample2d_d(const float *tx, int w, int h, int wrap_s, int wrap_t,
                            int filter, double u, double v)
 {
     int x0, x1, y0, y1;
     double wx, wy;
     if (filter == TS_FILTER_NEAREST)
-        return texel_d(tx, w, h, wrap_nearest_d(u, w, wrap_s), wrap_nearest_d(v, h, wrap_t));
-    wrap_linear_d(u, w, wrap_s, &x0, &x1, &wx);
-    wrap_linear_d(v, h, wrap_t, &y0, &y1, &wy);
-    return lerp4d(wy, lerp4d(wx, texel_d(tx, w, h, x0, y0), texel_d(tx, w, h, x1, y0)),
-                  lerp4d(wx, texel_d(tx, w, h, x0, y1), texel_d(tx, w, h, x1, y1)));
+        return texel_d(tx, w, h, ts_wrap_nearest_d(u, w, wrap_s), ts_wrap_nearest_d(v, h, wrap_t));
+    ts_wrap_linear_d(u, w, wrap_s, &x0, &x1, &wx);
+    ts_wrap_linear_d(v, h, wrap_t, &y0, &y1, &wy);
+    return ts_lerp4d(wy, ts_lerp4d(wx, texel_d(tx, w, h, x0, y0), texel_d(tx, w, h, x1, y0)),
+                  ts_lerp4d(wx, texel_d(tx, w, h, x0, y1), texel_d(tx, w, h, x1, y1)));
 }
 
 ts_vec4d ts_texture2Dd(const ts_tex2d *t, ts_vec2d uv)
