@@ -17,7 +17,7 @@ CXXFLAGS := -std=c++17 $(OPT) -Wall -Wextra -Werror -ffp-contract=off -fno-fast-
             -I$(BUILD)/gen $(shell pkg-config --cflags $(PKGS) 2>/dev/null)
 SANFLAGS := -fsanitize=address,undefined
 LDFLAGS  := $(if $(filter 1,$(SAN)),$(SANFLAGS))
-LDLIBS   := -lOSMesa -lEGL $(shell pkg-config --libs $(PKGS) 2>/dev/null) -lpthread -lm
+LDLIBS   := -lEGL $(shell pkg-config --libs $(PKGS) 2>/dev/null) -lpthread -ldl -lm
 
 SHADER_FILES := $(sort $(wildcard shaders/*.glsl shaders/*.fs shaders/*.vs shaders/*.variants))
 C_SRC   := $(sort $(wildcard c_ref/*.c))

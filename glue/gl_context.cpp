@@ -1,10 +1,10 @@
 // tiershade glue: OSMesa and EGL-surfaceless context creation and the per-backend
 // GL entry-point table (facts: ../shared/docs/platform_notes.md sections 2 and 3).
 #include "gl_context.h"
+#include "osmesa_loader.h"
 
 #include <EGL/egl.h>
 #include <EGL/eglext.h>
-#include <GL/osmesa.h>
 
 #include <cstring>
 
@@ -77,7 +77,8 @@ bool GlContext::load(void *(*getproc)(const char *), std::string *err) {
 namespace {
 
 void *osmesa_getproc(const char *name) {
-  return reinterpret_cast<void *>(OSMesaGetProcAddress(name));
+  const OsmesaApi *os = osmesa_api(nullptr);
+  return os ? reinterpret_cast<void *>(os->GetProcAddress(name)) : nullptr;
 }
 void *egl_getproc(const char *name) {
   return reinterpret_cast<void *>(eglGetProcAddress(name));
@@ -86,14 +87,16 @@ void *egl_getproc(const char *name) {
 class OSMesaContextImpl : public GlContext {
  public:
   ~OSMesaContextImpl() override {
-    if (ctx_) OSMesaDestroyContext(ctx_);
+    if (ctx_) os_->DestroyContext(ctx_);
   }
   bool init(std::string *err) {
     backend_ = Backend::OSMesa;
     api_ = Api::GL33;
+    os_ = osmesa_api(err);
+    if (!os_) return false;
     const int attribs[] = {OSMESA_FORMAT, OSMESA_RGBA, OSMESA_PROFILE, OSMESA_CORE_PROFILE,
                            OSMESA_CONTEXT_MAJOR_VERSION, 3, OSMESA_CONTEXT_MINOR_VERSION, 3, 0};
-    ctx_ = OSMesaCreateContextAttribs(attribs, nullptr);
+    ctx_ = os_->CreateContextAttribs(attribs, nullptr);
     if (!ctx_) {
       *err = "OSMesaCreateContextAttribs failed (GL 3.3 core)";
       return false;
@@ -106,10 +109,11 @@ class OSMesaContextImpl : public GlContext {
   }
   bool make_current() override {
     // Rendering goes to FBOs; the window buffer is a 1x1 placeholder.
-    return OSMesaMakeCurrent(ctx_, buffer_, GL_UNSIGNED_BYTE, 1, 1) == GL_TRUE;
+    return os_->MakeCurrent(ctx_, buffer_, GL_UNSIGNED_BYTE, 1, 1) == GL_TRUE;
   }
 
  private:
+  const OsmesaApi *os_ = nullptr;
   OSMesaContext ctx_ = nullptr;
   unsigned char buffer_[4] = {0, 0, 0, 0};
 };

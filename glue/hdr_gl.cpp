@@ -3,12 +3,12 @@
 #include "hdr_gl.h"
 
 #include <EGL/egl.h>
-#include <GL/osmesa.h>
 
 #include <cstdio>
 
 #include "conform.h"
 #include "family.h"
+#include "osmesa_loader.h"
 
 const char *target_format_name(TargetFormat f) {
   switch (f) {
@@ -187,7 +187,10 @@ bool read_float(const GlFns &g, const GlTarget &t, std::vector<float> *out, std:
 
 bool load_sync_fns(Backend b, GlSyncFns *f, std::string *err) {
   auto get = [&](const char *name) -> void * {
-    if (b == Backend::OSMesa) return reinterpret_cast<void *>(OSMesaGetProcAddress(name));
+    if (b == Backend::OSMesa) {
+      const OsmesaApi *os = osmesa_api(nullptr);
+      return os ? reinterpret_cast<void *>(os->GetProcAddress(name)) : nullptr;
+    }
     return reinterpret_cast<void *>(eglGetProcAddress(name));
   };
   f->MapBufferRange = reinterpret_cast<PFNGLMAPBUFFERRANGEPROC>(get("glMapBufferRange"));

@@ -7,7 +7,7 @@
 // both C frames are bit-equal. Build (after `make all`):
 //   g++ -std=c++17 -O2 -ffp-contract=off -Iglue -Ic_ref -Ibuild/gen tools/bench_cpu.cpp \
 //       $(ls build/obj/c_ref/*.o build/obj/glue/*.o | grep -v main.o) build/obj/gen/shader_sources.o \
-//       -lOSMesa -lEGL $(pkg-config --libs OpenEXR libpng OpenColorIO tinygltf) -lpthread -lm -o build/bench_cpu
+//       -lEGL $(pkg-config --libs OpenEXR libpng OpenColorIO tinygltf) -lpthread -ldl -lm -o build/bench_cpu
 // Usage: build/bench_cpu [runs] [row-substring]
 // ============================================================================
 #include <algorithm>
