@@ -152,6 +152,12 @@ int cmd_render(int argc, char **argv) {
   std::string out = a.get("-o");
   for (const char *ext : {".png", ".exr"})
     if (out.size() > 4 && out.compare(out.size() - 4, 4, ext) == 0) out.resize(out.size() - 4);
+  {  // OUT names files: not empty, not a directory ("out/" would write out/.exr)
+    const size_t slash = out.rfind('/');
+    const std::string base = slash == std::string::npos ? out : out.substr(slash + 1);
+    if (base.empty() || base == "." || base == "..")
+      a.fail("-o '" + a.get("-o") + "': expected a file name (OUT writes OUT.exr and OUT.png)");
+  }
 
   const auto t0 = Clock::now();
   Scene scene;

@@ -43,6 +43,8 @@ bad "missing scene file" 1 "nope\.gltf" "$TMP/nope.gltf" -o "$TMP/o"
 printf '{"asset": {"version": "2.0"}, "scenes": [' > "$TMP/broken.gltf"
 bad "broken scene file" 1 "broken\.gltf" "$TMP/broken.gltf" -o "$TMP/o"
 bad "float path on ES 2" 1 "float HDR path needs fp16" scenes/hdr_atrium.gltf --api gles2 --size 32x18 -o "$TMP/o"
+bad "empty -o" 2 "expected a file name" scenes/model_lighting.gltf --backend cpu --size 32x18 -o ""
+bad "-o names a directory" 2 "expected a file name" scenes/model_lighting.gltf --backend cpu --size 32x18 -o "$TMP/"
 bad "output directory missing" 1 "no_such_dir" scenes/model_lighting.gltf --size 32x18 --backend cpu -o "$TMP/no_such_dir/o"
 # The EXR and the PNG are written in parallel: when one cannot be written (here o.png is a
 # directory, so its rename fails), the other must not be left behind.
