@@ -118,15 +118,24 @@ bool HdrPipelineGl::post_chain(const HdrSettings &s, std::string *err) {
   size4(ds_.w, ds_.h, quarter);
   const float shape[4] = {0.3f, 0.59f, 0.11f, 2.2f};  // unused by SHAPE 0
   const float one[4] = {1.f, 0.f, 0.f, 0.f};
-  run_.set_vec4(down_, "u_source_size", full);
-  run_.set_vec4(down_, "u_shape", shape);
-  if (!run_.draw(down_, ds_, {{"u_source", hdr_.tex, true}}, nullptr, err)) return false;
-  run_.set_vec4(blur_x_, "u_source_size", quarter);
-  run_.set_vec4(blur_x_, "u_params", one);
-  if (!run_.draw(blur_x_, bx_, {{"u_source", ds_.tex, true}}, nullptr, err)) return false;
-  run_.set_vec4(blur_y_, "u_source_size", quarter);
-  run_.set_vec4(blur_y_, "u_params", one);
-  if (!run_.draw(blur_y_, by_, {{"u_source", bx_.tex, true}}, nullptr, err)) return false;
+  if (s.bloom_amount != 0.f) {
+    run_.set_vec4(down_, "u_source_size", full);
+    run_.set_vec4(down_, "u_shape", shape);
+    if (!run_.draw(down_, ds_, {{"u_source", hdr_.tex, true}}, nullptr, err)) return false;
+    run_.set_vec4(blur_x_, "u_source_size", quarter);
+    run_.set_vec4(blur_x_, "u_params", one);
+    if (!run_.draw(blur_x_, bx_, {{"u_source", ds_.tex, true}}, nullptr, err)) return false;
+    run_.set_vec4(blur_y_, "u_source_size", quarter);
+    run_.set_vec4(blur_y_, "u_params", one);
+    if (!run_.draw(blur_y_, by_, {{"u_source", bx_.tex, true}}, nullptr, err)) return false;
+  } else {
+    // No bloom asked for: the three bloom passes are skipped and the combine reads a black
+    // bloom (amount 0 x pow(0, exp) x 0 = 0), as hdr_post_float_c does.
+    const GlFns &g = run_.gl();
+    g.BindFramebuffer(GL_FRAMEBUFFER, by_.fbo);
+    g.ClearColor(0.f, 0.f, 0.f, 0.f);
+    g.Clear(GL_COLOR_BUFFER_BIT);
+  }
   const float params[4] = {s.tone_map_scale, s.bloom_amount, s.bloom_exponent, 0.f};
   run_.set_vec4(tonemap_, "u_frame_size", full);
   run_.set_vec4(tonemap_, "u_params", params);

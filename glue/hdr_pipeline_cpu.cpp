@@ -119,17 +119,23 @@ void hdr_post_float_c(const std::vector<float> &hdr, int w, int h, const HdrSett
   out->hdr = hdr;
   const bd_variant dv = {0};
   const bb_variant bxv = {0}, byv = {1};
-  bloom_chain(
-      out->hdr, w, h,
-      [&](const ts_vec4f *pos, const ts_vec4f *rec, int count, const ts_tex2d *t, ts_vec4f *o) {
-        const bd_batch_input in = {{pos, &rec[BD_SLOT_SIZE], &rec[BD_SLOT_SHAPE]}, {1, 0, 0}};
-        bloom_downsample_f_batch(&dv, &in, t, o, count);
-      },
-      [&](int dir, const ts_vec4f *pos, const ts_vec4f *rec, int count, const ts_tex2d *t, ts_vec4f *o) {
-        const bb_batch_input in = {{pos, &rec[BB_SLOT_SIZE], &rec[BB_SLOT_PARAMS]}, {1, 0, 0}};
-        bloom_blur_f_batch(dir ? &byv : &bxv, &in, t, o, count);
-      },
-      true, &out->bloom, &out->bw, &out->bh, threads);
+  if (s.bloom_amount != 0.f) {
+    bloom_chain(
+        out->hdr, w, h,
+        [&](const ts_vec4f *pos, const ts_vec4f *rec, int count, const ts_tex2d *t, ts_vec4f *o) {
+          const bd_batch_input in = {{pos, &rec[BD_SLOT_SIZE], &rec[BD_SLOT_SHAPE]}, {1, 0, 0}};
+          bloom_downsample_f_batch(&dv, &in, t, o, count);
+        },
+        [&](int dir, const ts_vec4f *pos, const ts_vec4f *rec, int count, const ts_tex2d *t, ts_vec4f *o) {
+          const bb_batch_input in = {{pos, &rec[BB_SLOT_SIZE], &rec[BB_SLOT_PARAMS]}, {1, 0, 0}};
+          bloom_blur_f_batch(dir ? &byv : &bxv, &in, t, o, count);
+        },
+        true, &out->bloom, &out->bw, &out->bh, threads);
+  } else {  // no bloom asked for: the passes are skipped, the combine reads black (as on GL)
+    out->bw = hdr_bloom_size(w);
+    out->bh = hdr_bloom_size(h);
+    out->bloom.assign(static_cast<size_t>(out->bw) * out->bh * 4, 0.f);
+  }
   const ts_tex2d bloom = tex_of(out->bloom, out->bw, out->bh, true);
   const ht_variant tv = {2};
   out->display.resize(static_cast<size_t>(w) * h * 4);

@@ -292,6 +292,7 @@ bool SceneRenderer::Impl::post(SceneRenderResult *res, bool on_cpu, const std::v
     HdrSettings hs;
     hs.tone_map_scale = s.hdr.tone_map_scale;
     hs.bloom_amount = s.hdr.bloom_amount;
+    if (hs.bloom_amount == 0.f) res->notes.push_back("bloom 0: the bloom passes are skipped");
     if (s.hdr.auto_exposure) {
       const StaticLuminance lum(hdr.data(), cfg.w, cfg.h);
       hs.tone_map_scale = static_cast<float>(

@@ -80,6 +80,12 @@ check "model_lighting sm3 osmesa gl33" scenes/model_lighting.gltf --tier sm3 --b
 check "world_lighting ps2b egl gl33" scenes/world_lighting.gltf --tier ps2b --api gl33
 check "model_lighting ps20 egl gles2" scenes/model_lighting.gltf --tier ps20 --api gles2
 check "hdr_atrium sm3 egl gles2, integer path" scenes/hdr_atrium.gltf --tier sm3 --api gles2 --hdr integer
+# The float path without bloom (model_lighting's bloom is 0): the bloom passes are skipped on GL
+# and in C alike.
+check "model_lighting sm3, float path, bloom 0" scenes/model_lighting.gltf --tier sm3 --hdr float
+run scenes/model_lighting.gltf --tier ps20 --hdr float --size 32x18 -o "$TMP/nb"
+if [ "$RC" -eq 0 ] && grep -q 'bloom 0: the bloom passes are skipped' "$OUT"; then pass "float path, bloom 0: says the bloom passes are skipped"
+else fail "float path, bloom 0: says the bloom passes are skipped" "status $RC: $(grep -m1 note "$OUT")"; fi
 # The shader warm-up thread (glue/scene_frame.cpp) off, and on with an empty shader cache.
 TIERSHADE_NO_WARMUP=1 check "model_lighting ps2b, no warm-up" scenes/model_lighting.gltf --tier ps2b
 MESA_SHADER_CACHE_DIR="$TMP/cache" check "model_lighting sm3, warm-up, empty cache" scenes/model_lighting.gltf --tier sm3
