@@ -166,49 +166,45 @@ bool measure(const Scene &s, Tier tier, const std::string &hdr, int runs, Row *r
   cfg.h = kH;
   cfg.backend = Backend::EGL;
   cfg.api = Api::GLES3;
-  std::vector<double> frame, lit;
+  // The selection and the all-features baseline take turns frame by frame, so that a change of
+  // load on the machine moves both alike (their ratio is the point). The C fallback runs its
+  // frames in a block of its own: between GL frames its caches would start cold every time.
+  SceneSelection uber;
+  if (!select_scene_variants(s, tier, hdr, &uber, err, true)) return false;
+  std::vector<double> frame, lit, uframe, ulit, cframe, clit;
   {
-    SceneRenderer gl;
+    SceneRenderer gl, gl_uber;
     SceneRenderResult res;
     if (!gl.init(s, sel, cfg, err) || !gl.frame(&res, err)) return false;
     row->compile_sel = gl.compile_ms();
+    if (!gl_uber.init(s, uber, cfg, err) || !gl_uber.frame(&res, err)) return false;
     for (int i = 0; i < runs; ++i) {
       if (!gl.frame(&res, err)) return false;
       frame.push_back(res.frame_ms);
       lit.push_back(res.lit_ms);
+      if (!gl_uber.frame(&res, err)) return false;
+      uframe.push_back(res.frame_ms);
+      ulit.push_back(res.lit_ms);
+    }
+  }
+  {
+    SceneRenderConfig ccfg = cfg;
+    ccfg.backend = Backend::CPU;
+    SceneRenderer c;
+    SceneRenderResult res;
+    if (!c.init(s, sel, ccfg, err) || !c.frame(&res, err)) return false;
+    for (int i = 0; i < runs; ++i) {
+      if (!c.frame(&res, err)) return false;
+      cframe.push_back(res.frame_ms);
+      clit.push_back(res.lit_ms);
     }
   }
   row->gl_frame = median(frame);
   row->gl_lit = median(lit);
-  frame.clear();
-  lit.clear();
-  {
-    SceneSelection uber;
-    if (!select_scene_variants(s, tier, hdr, &uber, err, true)) return false;
-    SceneRenderer gl;
-    SceneRenderResult res;
-    if (!gl.init(s, uber, cfg, err) || !gl.frame(&res, err)) return false;
-    for (int i = 0; i < runs; ++i) {
-      if (!gl.frame(&res, err)) return false;
-      frame.push_back(res.frame_ms);
-      lit.push_back(res.lit_ms);
-    }
-    row->uber_frame = median(frame);
-    row->uber_lit = median(lit);
-    frame.clear();
-    lit.clear();
-  }
-  cfg.backend = Backend::CPU;
-  SceneRenderer c;
-  SceneRenderResult res;
-  if (!c.init(s, sel, cfg, err)) return false;
-  for (int i = 0; i < runs; ++i) {
-    if (!c.frame(&res, err)) return false;
-    frame.push_back(res.frame_ms);
-    lit.push_back(res.lit_ms);
-  }
-  row->c_frame = median(frame);
-  row->c_lit = median(lit);
+  row->uber_frame = median(uframe);
+  row->uber_lit = median(ulit);
+  row->c_frame = median(cframe);
+  row->c_lit = median(clit);
   double nowarm_mib = 0;
   return compile_all_ms(sel, &row->compile_all, err) &&
          child_first_frame_ms(s.path, tier, hdr, true, &row->first_ms, &row->peak_mib, err) &&
@@ -241,7 +237,7 @@ bool run(const BenchOptions &opt, std::string *md, std::string *err) {
     << "The shipped glTF scenes (docs/scenes.md) rendered by `tiershade render`'s code: EGL GLES 3.0 on llvmpipe\n"
     << "(forward draws of the selected production variants, then the HDR path and colour correction) and the\n"
     << "C fallback (its own rasteriser and the bit-exact batched twins, " << "both cores). Medians of " << runs
-    << " warm frames; **first frame**: the wall time of a fresh `tiershade render` process with an empty\n"
+    << " warm frames (the selection's and the all-features baseline's taken in turn, then the C fallback's); **first frame**: the wall time of a fresh `tiershade render` process with an empty\n"
     << "shader-cache directory, from its start to its exit (process start, scene loaded, draws prepared: lightmap\n"
     << "bake, probe cube maps; the selected variants compiled, linked and JIT-compiled by their first draw; EXR and\n"
     << "PNG written), median of 3 processes; with the shader warm-up thread (glue/scene_frame.cpp) and without it\n"

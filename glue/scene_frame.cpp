@@ -318,6 +318,12 @@ bool SceneRenderer::frame(SceneRenderResult *out, std::string *err) {
   Impl &m = *impl_;
   const SceneRenderConfig &cfg = m.cfg;
   PreparedScene &p = m.p;
+  // Several renderers may take turns on this thread (the bench interleaves them): this one's
+  // context first.
+  if (m.ctx && !m.ctx->make_current()) {
+    *err = "cannot make the scene's GL context current";
+    return false;
+  }
   const auto t_frame = Clock::now();
   SceneRenderResult res;
   res.w = cfg.w;
