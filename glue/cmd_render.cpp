@@ -202,7 +202,7 @@ int cmd_render(int argc, char **argv) {
   // ever partial); if one fails, the other is removed: a failed run leaves no frame behind.
   std::string png_err;
   bool png_ok = false;
-  std::thread png_writer([&] { png_ok = write_png(out + ".png", display_image(res), Encode::Linear, &png_err); });
+  std::thread png_writer([&] { png_ok = write_png_rgba8(out + ".png", res.w, res.h, res.display, &png_err); });
   const bool exr_ok = write_exr(out + ".exr", res.lit, &err);
   png_writer.join();
   if (!exr_ok || !png_ok) {
