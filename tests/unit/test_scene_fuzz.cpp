@@ -5,6 +5,7 @@
 // `make test`): the shipped glTF scenes, with their numbers, strings and lines changed by a
 // fixed-seed generator (a number becomes -1, 0, 1e9, 4294967296, 0.5, NaN-free extremes, a
 // string, null, an array...; a string becomes another; a line is dropped, doubled or swapped;
+// world_lighting also as a scene that reads its baked lightmap page from a file;
 // or words of the binary buffer become NaN, Inf, huge values or indices past the end),
 // go through load_scene; a scene that loads goes on through the variant selection, the draw
 // preparation (lightmap bake, probes) and a 16 x 9 frame of the C fallback.
@@ -26,6 +27,8 @@
 #include "scene.h"
 #include "scene_effects.h"
 #include "scene_frame.h"
+#include "scene_prepare.h"
+#include "image_io.h"
 
 namespace {
 
@@ -194,12 +197,25 @@ void run_one(const std::string &path, Outcome *o, std::string *first_bad) {
     *first_bad = path + ": display frame of " + std::to_string(res.display.size()) + " values";
 }
 
-void fuzz_scene(const std::string &dir, const char *name, int count, uint32_t seed) {
+// page_file: the scene names it in extras.tiershade.lightmaps.image (a page written by the
+// baker, so that the mutants also reach the page reader and its checks).
+void fuzz_scene(const std::string &dir, const char *name, int count, uint32_t seed, const char *page_file = nullptr) {
   const std::string here = "scenes/";
   std::string text = read_text(here + name);
   if (text.empty()) {
     check(false, std::string("read ") + name);
     return;
+  }
+  std::string label = name;
+  if (page_file) {
+    const std::string key = "\"lightmaps\": {";
+    const size_t p = text.find(key);
+    if (p == std::string::npos) {
+      check(false, std::string(name) + ": no lightmaps object to name a page in");
+      return;
+    }
+    text.insert(p + key.size(), std::string("\"image\": \"") + page_file + "\", ");
+    label += " (lightmap page from " + std::string(page_file) + ")";
   }
   // The probes name ../../shared/data/probes/ relative to scenes/: point them at it from here.
   char cwd[4096];
@@ -238,14 +254,14 @@ void fuzz_scene(const std::string &dir, const char *name, int count, uint32_t se
     if (!bin_path.empty()) unlink(bin_path.c_str());
   }
   printf("INFO %s: %d mutants: %d refused at load, %d by the selection, %d at preparation, %d rendered "
-         "(%d with a non-finite lit value)\n", name, count, o.load_fail, o.select_fail, o.prepare_fail, o.rendered,
+         "(%d with a non-finite lit value)\n", label.c_str(), count, o.load_fail, o.select_fail, o.prepare_fail, o.rendered,
          o.lit_nonfinite);
   if (!o.prepare_example.empty()) printf("INFO   e.g. %s\n", o.prepare_example.c_str());
-  check(bad.empty(), std::string(name) + ": " + std::to_string(count) +
+  check(bad.empty(), label + ": " + std::to_string(count) +
                          " mutants load or fail with a message naming the file, none crashes", bad);
-  check(o.lit_nonfinite == 0, std::string(name) + ": no NaN or Inf in the lit frame of a mutant that renders",
+  check(o.lit_nonfinite == 0, label + ": no NaN or Inf in the lit frame of a mutant that renders",
         std::to_string(o.lit_nonfinite) + " frames, first " + o.nonfinite_example);
-  check(o.rendered > 0 && o.load_fail > 0, std::string(name) + ": the mutants reach both outcomes (the test exercises both)",
+  check(o.rendered > 0 && o.load_fail > 0, label + ": the mutants reach both outcomes (the test exercises both)",
         std::to_string(o.rendered) + " rendered, " + std::to_string(o.load_fail) + " refused");
 }
 
@@ -273,6 +289,24 @@ int main(int argc, char **argv) {
   fuzz_scene(dir, "world_lighting.gltf", count, seed * 3 + 1);
   fuzz_scene(dir, "model_lighting.gltf", count, seed * 3 + 2);
   fuzz_scene(dir, "hdr_atrium.gltf", count, seed * 3 + 3);
+  // world_lighting reading its baked page (tiershade bake's output, written here).
+  {
+    Scene s;
+    SceneSelection sel;
+    PreparedScene ps;
+    std::string err;
+    ImageF page;
+    if (load_scene("scenes/world_lighting.gltf", &s, &err) && select_scene_variants(s, Tier::SM3, "", &sel, &err) &&
+        prepare_scene(s, sel, 16, 16, Api::GL33, 1.f, &ps, &err)) {
+      page.w = ps.lightmap_w;
+      page.h = ps.lightmap_h;
+      page.rgba = ps.lightmap_page;
+      if (write_exr(dir + "/page.exr", page, &err)) fuzz_scene(dir, "world_lighting.gltf", count / 2, seed * 3 + 4, "page.exr");
+      else check(false, "write the baked page", err);
+    } else {
+      check(false, "bake world_lighting's page", err);
+    }
+  }
   const std::string rm = "rm -rf '" + dir + "'";
   if (system(rm.c_str()) != 0) check(false, "remove " + dir);
   printf("%d passed, %d failed\n", g_passed, g_failed);
