@@ -48,7 +48,7 @@ bool HdrPipelineGl::init(const ShaderFamily &lit, const Variant &lit_linear, con
   return init_post(w_, h_, err);
 }
 
-bool HdrPipelineGl::init_post(int w, int h, std::string *err) {
+bool HdrPipelineGl::init_post(int w, int h, std::string *err, bool bloom) {
   w_ = w;
   h_ = h;
   const GlFns &g = run_.gl();
@@ -59,10 +59,13 @@ bool HdrPipelineGl::init_post(int w, int h, std::string *err) {
       !make_target(g, TargetFormat::RGBA16F, bw, bh, &bx_, err) ||
       !make_target(g, TargetFormat::RGBA16F, bw, bh, &by_, err))
     return false;
-  down_ = run_.program(api_, "bloom_downsample", "sm3:SHAPE=0", err);
-  if (down_) blur_x_ = run_.program(api_, "bloom_blur", "sm3:DIRECTION=0", err);
-  if (blur_x_) blur_y_ = run_.program(api_, "bloom_blur", "sm3:DIRECTION=1", err);
-  if (blur_y_) tonemap_ = run_.program(api_, "hdr_tonemap", "sm3:OUTPUT_MODE=2", err);
+  if (bloom) {
+    down_ = run_.program(api_, "bloom_downsample", "sm3:SHAPE=0", err);
+    if (down_) blur_x_ = run_.program(api_, "bloom_blur", "sm3:DIRECTION=0", err);
+    if (blur_x_) blur_y_ = run_.program(api_, "bloom_blur", "sm3:DIRECTION=1", err);
+    if (!blur_y_) return false;
+  }
+  tonemap_ = run_.program(api_, "hdr_tonemap", "sm3:OUTPUT_MODE=2", err);
   return tonemap_ != 0;
 }
 
@@ -119,6 +122,10 @@ bool HdrPipelineGl::post_chain(const HdrSettings &s, std::string *err) {
   const float shape[4] = {0.3f, 0.59f, 0.11f, 2.2f};  // unused by SHAPE 0
   const float one[4] = {1.f, 0.f, 0.f, 0.f};
   if (s.bloom_amount != 0.f) {
+    if (!down_) {
+      *err = "post_chain: bloom asked for, but the bloom programs were not built (init_post bloom false)";
+      return false;
+    }
     run_.set_vec4(down_, "u_source_size", full);
     run_.set_vec4(down_, "u_shape", shape);
     if (!run_.draw(down_, ds_, {{"u_source", hdr_.tex, true}}, nullptr, err)) return false;

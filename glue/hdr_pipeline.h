@@ -45,7 +45,9 @@ class HdrPipelineGl {
   // Post-processing only (scene frames, whose lit pass the caller draws): the float path's
   // targets and programs for w x h frames, then the chain from a linear frame whose values
   // are already fp16-representable (ts_quantize_half, as an RGBA16F render target stores them).
-  bool init_post(int w, int h, std::string *err);
+  // bloom false: a scene without bloom; the bloom programs are not built and post_* must be
+  // called with bloom_amount 0 (the combine reads a black quarter-size bloom).
+  bool init_post(int w, int h, std::string *err, bool bloom = true);
   bool post_float(const std::vector<float> &hdr_rgba, const HdrSettings &s, std::string *err);
   bool float_frame(const std::vector<ts_vec4f> &shared, const HdrSettings &s, std::string *err);
   const GlTarget &display() const { return display_; }  // RGBA8, the last frame of either path

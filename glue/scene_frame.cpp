@@ -137,7 +137,8 @@ void SceneRenderer::Impl::start_warmup() {
       HdrPipelineGl pipe(run, cfg.api);
       std::vector<float> black(16 * 16 * 4, 0.f);
       HdrSettings hs;
-      if (!pipe.init_post(16, 16, &e) || !pipe.post_float(black, hs, &e)) return;
+      hs.bloom_amount = s->hdr.bloom_amount;  // the passes the main thread will run, no others
+      if (!pipe.init_post(16, 16, &e, hs.bloom_amount != 0.f) || !pipe.post_float(black, hs, &e)) return;
       c->gl().Finish();
     }
     SceneGl g(r, cfg.api);
@@ -189,7 +190,7 @@ bool SceneRenderer::init(const Scene &s, const SceneSelection &sel, const SceneR
   m.runner.reset(new PassRunner(*m.renderer));
   if (m.float_path) {
     m.pipe.reset(new HdrPipelineGl(*m.runner, cfg.api));
-    if (!m.pipe->init_post(cfg.w, cfg.h, err)) return false;
+    if (!m.pipe->init_post(cfg.w, cfg.h, err, s.hdr.bloom_amount != 0.f)) return false;
   }
   return true;
 }
