@@ -30,24 +30,9 @@
 #include "lut_bake.h"
 #include "lut_io.h"
 #include "lut_texture.h"
+#include "unit_check.h"
 
 namespace {
-
-int g_failed = 0, g_passed = 0;
-
-void check(bool ok, const std::string &name, const std::string &detail = "") {
-  if (ok) {
-    ++g_passed;
-    printf("PASS %s\n", name.c_str());
-  } else {
-    ++g_failed;
-    std::string d = detail;
-    for (char &c : d)
-      if (c == '\n') c = '|';
-    printf("FAIL %s: %s\n", name.c_str(), d.c_str());
-  }
-  fflush(stdout);
-}
 
 std::string g_dir;
 

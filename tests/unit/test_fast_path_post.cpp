@@ -37,21 +37,9 @@
 #include "hdr_formats.h"
 #include "hdr_pipeline.h"
 #include "hdr_post_batch.h"
+#include "unit_check.h"
 
 namespace {
-
-int g_failed = 0, g_passed = 0;
-
-void check(bool ok, const std::string &name, const std::string &detail = "") {
-  if (ok) {
-    ++g_passed;
-    printf("PASS %s\n", name.c_str());
-  } else {
-    ++g_failed;
-    printf("FAIL %s: %s\n", name.c_str(), detail.c_str());
-  }
-  fflush(stdout);
-}
 
 bool same_bits(const ts_vec4f &a, const ts_vec4f &b) { return std::memcmp(&a, &b, sizeof a) == 0; }
 

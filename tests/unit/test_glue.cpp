@@ -29,25 +29,9 @@
 #include "gl_context.h"
 #include "gl_render.h"
 #include "variants.h"
+#include "unit_check.h"
 
 namespace {
-
-int g_failed = 0;
-int g_passed = 0;
-
-void check(bool ok, const std::string &name, const std::string &detail = "") {
-  if (ok) {
-    ++g_passed;
-    printf("PASS %s\n", name.c_str());
-  } else {
-    ++g_failed;
-    std::string d = detail;
-    for (char &c : d)
-      if (c == '\n') c = '|';  // keep one line per check
-    printf("FAIL %s: %s\n", name.c_str(), d.c_str());
-  }
-  fflush(stdout);
-}
 
 bool contains(const std::string &hay, const std::string &needle) { return hay.find(needle) != std::string::npos; }
 

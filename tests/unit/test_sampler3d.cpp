@@ -33,21 +33,9 @@
 #include "gl_render.h"
 #include "image_io.h"
 #include "ts_sampler3d.h"
+#include "unit_check.h"
 
 namespace {
-
-int g_failed = 0, g_passed = 0;
-
-void check(bool ok, const std::string &name, const std::string &detail = "") {
-  if (ok) {
-    ++g_passed;
-    printf("PASS %s\n", name.c_str());
-  } else {
-    ++g_failed;
-    printf("FAIL %s: %s\n", name.c_str(), detail.c_str());
-  }
-  fflush(stdout);
-}
 
 struct Rng {
   uint32_t s;

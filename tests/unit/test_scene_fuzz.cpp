@@ -29,19 +29,9 @@
 #include "scene_frame.h"
 #include "scene_prepare.h"
 #include "image_io.h"
+#include "unit_check.h"
 
 namespace {
-
-int g_failed = 0, g_passed = 0;
-void check(bool ok, const std::string &name, const std::string &detail = "") {
-  if (ok) {
-    ++g_passed;
-    printf("PASS %s\n", name.c_str());
-  } else {
-    ++g_failed;
-    printf("FAIL %s: %s\n", name.c_str(), detail.substr(0, 400).c_str());
-  }
-}
 
 std::string read_text(const std::string &path) {
   std::string s;

@@ -24,24 +24,9 @@
 
 #include "image_io.h"
 #include "scene.h"
+#include "unit_check.h"
 
 namespace {
-
-int g_failed = 0, g_passed = 0;
-
-void check(bool ok, const std::string &name, const std::string &detail = "") {
-  if (ok) {
-    ++g_passed;
-    printf("PASS %s\n", name.c_str());
-  } else {
-    ++g_failed;
-    std::string d = detail;
-    for (char &c : d)
-      if (c == '\n') c = '|';
-    printf("FAIL %s: %s\n", name.c_str(), d.c_str());
-  }
-  fflush(stdout);
-}
 
 bool near(double a, double b, double eps = 1e-4) { return std::fabs(a - b) <= eps; }
 bool contains(const std::string &h, const std::string &n) { return h.find(n) != std::string::npos; }

@@ -22,21 +22,9 @@
 #include <vector>
 
 #include "world_lighting_batch.h"
+#include "unit_check.h"
 
 namespace {
-
-int g_failed = 0, g_passed = 0;
-
-void check(bool ok, const std::string &name, const std::string &detail = "") {
-  if (ok) {
-    ++g_passed;
-    printf("PASS %s\n", name.c_str());
-  } else {
-    ++g_failed;
-    printf("FAIL %s: %s\n", name.c_str(), detail.c_str());
-  }
-  fflush(stdout);
-}
 
 struct Rng {
   uint64_t s;
