@@ -1,6 +1,6 @@
 # tiershade: make deps | all | demo | test | bench
 # Warnings are errors. The C reference is built with -ffp-contract=off (no fused
-# multiply-adds the GLSL does not have) and runs with FTZ/DAZ set (c_ref/ts_math.c).
+# multiply-adds the GLSL does not have) and runs with FTZ/DAZ set (c_ref/math/ts_math.c).
 
 BUILD    ?= build
 SAN      ?=
@@ -14,14 +14,14 @@ OPT      := -O1 -g -fsanitize=address,undefined -fno-omit-frame-pointer -fno-san
 endif
 CFLAGS   := -std=c99 $(OPT) -Wall -Wextra -Werror -ffp-contract=off -fno-fast-math -Ic_ref
 CXXFLAGS := -std=c++17 $(OPT) -Wall -Wextra -Werror -ffp-contract=off -fno-fast-math -Iglue -Ic_ref \
-            -I$(BUILD)/gen $(shell pkg-config --cflags $(PKGS) 2>/dev/null)
+            $(shell pkg-config --cflags $(PKGS) 2>/dev/null)
 SANFLAGS := -fsanitize=address,undefined
 LDFLAGS  := $(if $(filter 1,$(SAN)),$(SANFLAGS))
 LDLIBS   := -lEGL $(shell pkg-config --libs $(PKGS) 2>/dev/null) -lpthread -ldl -lm
 
 SHADER_FILES := $(sort $(wildcard shaders/*.glsl shaders/*.fs shaders/*.vs shaders/*.variants))
-C_SRC   := $(sort $(wildcard c_ref/*.c))
-CXX_SRC := $(sort $(wildcard glue/*.cpp))
+C_SRC   := $(sort $(shell find c_ref -name '*.c'))
+CXX_SRC := $(sort $(shell find glue -name '*.cpp'))
 C_OBJ   := $(C_SRC:%.c=$(BUILD)/obj/%.o)
 CXX_OBJ := $(CXX_SRC:%.cpp=$(BUILD)/obj/%.o) $(BUILD)/obj/gen/shader_sources.o
 LIB_OBJ := $(C_OBJ) $(filter-out $(BUILD)/obj/glue/main.o,$(CXX_OBJ))
@@ -60,7 +60,7 @@ $(BUILD)/obj/%.o: %.c
 	@mkdir -p $(dir $@)
 	$(CC) $(CFLAGS) -MMD -MP -c -o $@ $<
 
-$(BUILD)/obj/%.o: %.cpp $(BUILD)/gen/shader_sources.cpp
+$(BUILD)/obj/%.o: %.cpp
 	@mkdir -p $(dir $@)
 	$(CXX) $(CXXFLAGS) -MMD -MP -c -o $@ $<
 

@@ -3,8 +3,8 @@
 #include <cstring>
 #include <string>
 
-#include "cli.h"
-#include "ts_math.h"
+#include "cli/args.h"
+#include "math/ts_math.h"
 
 static const char kUsage[] =
     "tiershade: Source-engine shading (SIGGRAPH 2006) as tiered GLSL with a bit-exact C reference\n"

@@ -7,7 +7,7 @@
 //   weights 0.2185 0.0821 0.0461 0.0262 0.0162 0.0102   (sum with the centre 0.9999)
 // The Y pass multiplies by the bloom amount (u_params.x; 1 in the X pass).
 // Output: linear HDR in [0, 65504], NaN -> 0.
-// Variants: bloom_blur.variants (DIRECTION 0 = X, 1 = Y). C twin: c_ref/bloom_blur.c.
+// Variants: bloom_blur.variants (DIRECTION 0 = X, 1 = Y). C twin: c_ref/twins/bloom_blur.c.
 //------------------------------------------------------------------------------
 #include "common_math.glsl"
 #include "common_inputs.glsl"

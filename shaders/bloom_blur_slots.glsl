@@ -1,6 +1,6 @@
 //------------------------------------------------------------------------------
 // bloom_blur_slots.glsl: the input record of bloom_blur.
-// Must match enum bb_slot in c_ref/bloom_blur.h.
+// Must match enum bb_slot in c_ref/twins/bloom_blur.h.
 //------------------------------------------------------------------------------
 #ifndef TS_BLOOM_BLUR_SLOTS_GLSL
 #define TS_BLOOM_BLUR_SLOTS_GLSL

@@ -9,7 +9,7 @@
 //            shaping happens in the final combine, fact sheet section 7);
 //   SHAPE 1: each tap shaped as p^exp * dot(p, tint) before averaging.
 // Output: linear HDR in [0, 65504] (an fp16 target), NaN -> 0.
-// Variants: bloom_downsample.variants. C twin: c_ref/bloom_downsample.c.
+// Variants: bloom_downsample.variants. C twin: c_ref/twins/bloom_downsample.c.
 //------------------------------------------------------------------------------
 #include "common_math.glsl"
 #include "common_inputs.glsl"

@@ -1,6 +1,6 @@
 //------------------------------------------------------------------------------
 // bloom_downsample_slots.glsl: the input record of bloom_downsample.
-// Must match enum bd_slot in c_ref/bloom_downsample.h.
+// Must match enum bd_slot in c_ref/twins/bloom_downsample.h.
 //------------------------------------------------------------------------------
 #ifndef TS_BLOOM_DOWNSAMPLE_SLOTS_GLSL
 #define TS_BLOOM_DOWNSAMPLE_SLOTS_GLSL

@@ -8,8 +8,8 @@
 // 8-bit render target does).
 // Tiers: ps20 (ES2/WebGL1: 2D atlas only), ps2b (3D texture or atlas). Either tier:
 // hardware or shader trilinear filtering (common_color_correction.glsl).
-// Variants: color_correction.variants. C twin: c_ref/color_correction.c.
-// Inputs (slots): c_ref/color_correction.h and color_correction_slots.glsl.
+// Variants: color_correction.variants. C twin: c_ref/twins/color_correction.c.
+// Inputs (slots): c_ref/twins/color_correction.h and color_correction_slots.glsl.
 //------------------------------------------------------------------------------
 // ESSL 1.00 has 3D textures only through OES_texture_3D (docs/color_correction.md). The
 // assembler puts this line right after #version; `enable` is a warning where it is unknown.

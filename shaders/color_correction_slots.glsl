@@ -1,6 +1,6 @@
 //------------------------------------------------------------------------------
 // color_correction_slots.glsl: the input record of color_correction (one vec4 per slot).
-// Must match enum cc_slot in c_ref/color_correction.h.
+// Must match enum cc_slot in c_ref/twins/color_correction.h.
 //------------------------------------------------------------------------------
 #ifndef TS_COLOR_CORRECTION_SLOTS_GLSL
 #define TS_COLOR_CORRECTION_SLOTS_GLSL

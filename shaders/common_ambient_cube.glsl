@@ -3,7 +3,7 @@
 // Talk: "Model lighting: Irradiance Volume" (six colours, one per axis direction).
 // Fact sheet section 3: order +X -X +Y -Y +Z -Z; colour = n.x^2 C[x sign] +
 // n.y^2 C[y sign] + n.z^2 C[z sign]; the weights sum to 1 for a unit normal.
-// C twin: c_ref/common_ambient_cube.h
+// C twin: c_ref/common/common_ambient_cube.h
 //------------------------------------------------------------------------------
 #ifndef TS_COMMON_AMBIENT_CUBE_GLSL
 #define TS_COMMON_AMBIENT_CUBE_GLSL

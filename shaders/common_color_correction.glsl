@@ -13,7 +13,7 @@
 // only 8 fractional bits: OpenColorIO issue #1763). Shader-filtered LUTs are meant to be
 // bound with NEAREST filtering; at texel centres LINEAR returns the texel too, to within
 // rounding of the centre coordinate (docs/color_correction.md).
-// C twin: c_ref/common_color_correction.h
+// C twin: c_ref/common/common_color_correction.h
 //------------------------------------------------------------------------------
 #ifndef TS_COMMON_COLOR_CORRECTION_GLSL
 #define TS_COMMON_COLOR_CORRECTION_GLSL

@@ -9,7 +9,7 @@
 //       normal gives F = 1, never above it)
 // The lerps are written a + t (b - a): GLSL mix() is lowered by NIR in more than
 // one way, an explicit form is what the C twin can mirror.
-// C twin: c_ref/common_envmap.h
+// C twin: c_ref/common/common_envmap.h
 //------------------------------------------------------------------------------
 #ifndef TS_COMMON_ENVMAP_GLSL
 #define TS_COMMON_ENVMAP_GLSL

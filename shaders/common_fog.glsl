@@ -3,7 +3,7 @@
 //   f = saturate(min(maxDensity, depth * OORange - start / range)),
 //   c = lerp(c, fog colour, f^2)   ("closer to hardware fog").
 // ps_2_0 has none (vertex / fixed-function fog instead): world_lighting drops it there.
-// C twin: c_ref/common_fog.h
+// C twin: c_ref/common/common_fog.h
 //------------------------------------------------------------------------------
 #ifndef TS_COMMON_FOG_GLSL
 #define TS_COMMON_FOG_GLSL

@@ -9,7 +9,7 @@
 //    Generate8BitBloomTexture);
 //  - the texel under a fragment of a full-screen pass (texelFetch, or a NEAREST
 //    sample at the texel centre where GLSL ES 1.00 has no texelFetch).
-// C twin: c_ref/common_hdr.h
+// C twin: c_ref/common/common_hdr.h
 //------------------------------------------------------------------------------
 #ifndef TS_COMMON_HDR_GLSL
 #define TS_COMMON_HDR_GLSL

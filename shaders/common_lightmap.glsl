@@ -10,7 +10,7 @@
 //              uses (2 t)^2 (ts_lightmap_ldr_to_linear_fast)
 //   3 RGBE     ColorRGBExp32 in an RGBA8 texture, exponent biased by 128:
 //              radiance = (c/255) 2^e = t.rgb * 2^(255 t.a - 128) (TexLightToLinear)
-// C twin: c_ref/common_lightmap.h
+// C twin: c_ref/common/common_lightmap.h
 //------------------------------------------------------------------------------
 #ifndef TS_COMMON_LIGHTMAP_GLSL
 #define TS_COMMON_LIGHTMAP_GLSL

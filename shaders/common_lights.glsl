@@ -7,7 +7,7 @@
 // Distance attenuation 1/(c + l d + q d^2); spot s = saturate(pow(max(1e-4, (cos - spot.z) spot.w), spot.x));
 // a directional light shines along dir (L = -dir) with attenuation 1.
 // Half-Lambert (talk "Half Lambert"; fact sheet section 4): saturate(0.5 N.L + 0.5)^2.
-// C twin: c_ref/common_lights.h
+// C twin: c_ref/common/common_lights.h
 //------------------------------------------------------------------------------
 #ifndef TS_COMMON_LIGHTS_GLSL
 #define TS_COMMON_LIGHTS_GLSL

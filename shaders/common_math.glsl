@@ -1,6 +1,6 @@
 //------------------------------------------------------------------------------
 // common_math.glsl: constants and small helpers shared by every tiershade shader.
-// C twin: c_ref/common_math.h
+// C twin: c_ref/common/common_math.h
 //------------------------------------------------------------------------------
 #ifndef TS_COMMON_MATH_GLSL
 #define TS_COMMON_MATH_GLSL

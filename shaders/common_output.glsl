@@ -6,7 +6,7 @@
 // or the exact sRGB curve (fact sheet section 2: <= 0.0031308 -> 12.92 x, else
 // 1.055 x^(1/2.4) - 0.055). Every path clamps, so no NaN or Inf leaves a shader:
 // llvmpipe's clamp returns the lower bound for NaN (platform notes section 4).
-// C twin: c_ref/common_output.h
+// C twin: c_ref/common/common_output.h
 //------------------------------------------------------------------------------
 #ifndef TS_COMMON_OUTPUT_GLSL
 #define TS_COMMON_OUTPUT_GLSL

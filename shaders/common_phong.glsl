@@ -13,7 +13,7 @@
 //   mix(1.0, b, t)                  ->  (1 - t) + b * t
 // Both unfused. A written-out a + (b - a) * t is NOT safe: in some contexts it came
 // out fused (1 ULP apart, measured), so the twin could not mirror it.
-// C twin: c_ref/common_phong.h
+// C twin: c_ref/common/common_phong.h
 //------------------------------------------------------------------------------
 #ifndef TS_COMMON_PHONG_GLSL
 #define TS_COMMON_PHONG_GLSL

@@ -12,7 +12,7 @@
 // Self-shadowed bump maps (ssbump): the texel rgb are the weights themselves, no
 // decode, no saturate, no division; the normal for reflections is
 // normalize(sum t_k b_k) (fact sheet section 1, SSBUMP).
-// C twin: c_ref/common_rnm.h
+// C twin: c_ref/common/common_rnm.h
 //------------------------------------------------------------------------------
 #ifndef TS_COMMON_RNM_GLSL
 #define TS_COMMON_RNM_GLSL

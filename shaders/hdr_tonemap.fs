@@ -8,7 +8,7 @@
 // then Source's output encoding (common_output.glsl: linear, gamma 2.2 or exact sRGB).
 // The bloom texture is the quarter-size blurred bloom, upsampled by bilinear filtering.
 // The vignette of floatcombine is not reproduced (docs/hdr.md).
-// Variants: hdr_tonemap.variants. C twin: c_ref/hdr_tonemap.c.
+// Variants: hdr_tonemap.variants. C twin: c_ref/twins/hdr_tonemap.c.
 //------------------------------------------------------------------------------
 #include "common_math.glsl"
 #include "common_inputs.glsl"

@@ -1,6 +1,6 @@
 //------------------------------------------------------------------------------
 // hdr_tonemap_slots.glsl: the input record of hdr_tonemap.
-// Must match enum ht_slot in c_ref/hdr_tonemap.h.
+// Must match enum ht_slot in c_ref/twins/hdr_tonemap.h.
 //------------------------------------------------------------------------------
 #ifndef TS_HDR_TONEMAP_SLOTS_GLSL
 #define TS_HDR_TONEMAP_SLOTS_GLSL

@@ -5,11 +5,11 @@
 //   lum  = dot(fb * tscale, (0.2125, 0.7154, 0.0721)) = dot(fb, w) * tscale
 //   mark = step(min, lum) * step(lum, max)       (fact sheet section 8)
 // A marked pixel writes 1; every other pixel is discarded, so that an occlusion
-// query counts exactly the marked pixels (glue/luminance_histogram.cpp).
+// query counts exactly the marked pixels (glue/hdr/luminance_histogram.cpp).
 // INPUT_ENCODING 0: the float path's linear HDR frame, scaled by the tone-map scale;
 // 1: the integer path's sRGB-encoded RGBA8 frame, decoded to linear (tscale = 1);
 // 2: a luminance image (luminance_smooth.fs), lum = r * tscale (tscale = 1).
-// Variants: luminance_compare.variants. C twin: c_ref/luminance_compare.c.
+// Variants: luminance_compare.variants. C twin: c_ref/twins/luminance_compare.c.
 //------------------------------------------------------------------------------
 #include "common_math.glsl"
 #include "common_inputs.glsl"

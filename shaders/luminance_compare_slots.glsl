@@ -1,6 +1,6 @@
 //------------------------------------------------------------------------------
 // luminance_compare_slots.glsl: the input record of luminance_compare.
-// Must match enum lc_slot in c_ref/luminance_compare.h.
+// Must match enum lc_slot in c_ref/twins/luminance_compare.h.
 //------------------------------------------------------------------------------
 #ifndef TS_LUMINANCE_COMPARE_SLOTS_GLSL
 #define TS_LUMINANCE_COMPARE_SLOTS_GLSL

@@ -10,7 +10,7 @@
 // alpha = 1 gives Source's histogram of the current frame. Output: (S, S, S, 1) in
 // [0, 65504] for an fp16 target; luminance_compare reads it with INPUT_ENCODING 2.
 // INPUT_ENCODING as in luminance_compare: 0 linear HDR frame, 1 sRGB-encoded RGBA8 frame.
-// Variants: luminance_smooth.variants. C twin: c_ref/luminance_smooth.c.
+// Variants: luminance_smooth.variants. C twin: c_ref/twins/luminance_smooth.c.
 //------------------------------------------------------------------------------
 #include "common_math.glsl"
 #include "common_inputs.glsl"

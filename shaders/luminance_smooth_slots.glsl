@@ -1,6 +1,6 @@
 //------------------------------------------------------------------------------
 // luminance_smooth_slots.glsl: the input record of luminance_smooth.
-// Must match enum ls_slot in c_ref/luminance_smooth.h.
+// Must match enum ls_slot in c_ref/twins/luminance_smooth.h.
 //------------------------------------------------------------------------------
 #ifndef TS_LUMINANCE_SMOOTH_SLOTS_GLSL
 #define TS_LUMINANCE_SMOOTH_SLOTS_GLSL

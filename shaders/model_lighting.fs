@@ -12,8 +12,8 @@
 // ps2b (<= 4 lights, all per pixel), sm3 (a dynamic loop over a uniform light
 // count). Lights beyond a tier's limit are folded into the ambient cube on the
 // CPU (docs/light_folding.md).
-// Variants: model_lighting.variants. C twin: c_ref/model_lighting.c.
-// Inputs (slots): c_ref/model_lighting.h and model_lighting_slots.glsl.
+// Variants: model_lighting.variants. C twin: c_ref/twins/model_lighting.c.
+// Inputs (slots): c_ref/twins/model_lighting.h and model_lighting_slots.glsl.
 //------------------------------------------------------------------------------
 #include "common_math.glsl"
 #include "common_inputs.glsl"

@@ -1,6 +1,6 @@
 //------------------------------------------------------------------------------
 // model_lighting_slots.glsl: the input record of model_lighting (one vec4 per slot).
-// Must match enum ml_slot in c_ref/model_lighting.h. Slots below ML_PIXEL_SLOTS are
+// Must match enum ml_slot in c_ref/twins/model_lighting.h. Slots below ML_PIXEL_SLOTS are
 // per pixel (varyings); the others are uniforms.
 //------------------------------------------------------------------------------
 #ifndef TS_MODEL_LIGHTING_SLOTS_GLSL

@@ -8,8 +8,8 @@
 // Tiers: ps20 (64 + 32 slots: no pixel fog, LDR lightmaps decoded as (2t)^2, N.V
 // with one shared inversesqrt, ssbump normal not renormalised), ps2b and sm3 (everything; sm3 skips the contrast/saturation/
 // Fresnel work with a uniform branch when they are at their defaults, Source's
-// FASTPATH). Variants: world_lighting.variants. C twin: c_ref/world_lighting.c.
-// Inputs (slots): c_ref/world_lighting.h and world_lighting_slots.glsl.
+// FASTPATH). Variants: world_lighting.variants. C twin: c_ref/twins/world_lighting.c.
+// Inputs (slots): c_ref/twins/world_lighting.h and world_lighting_slots.glsl.
 //------------------------------------------------------------------------------
 #include "common_math.glsl"
 #include "common_inputs.glsl"

@@ -1,6 +1,6 @@
 //------------------------------------------------------------------------------
 // world_lighting_slots.glsl: the input record of world_lighting (one vec4 per slot).
-// Must match enum wl_slot in c_ref/world_lighting.h.
+// Must match enum wl_slot in c_ref/twins/world_lighting.h.
 //------------------------------------------------------------------------------
 #ifndef TS_WORLD_LIGHTING_SLOTS_GLSL
 #define TS_WORLD_LIGHTING_SLOTS_GLSL

@@ -5,7 +5,7 @@
 #   2. the command-line checks (tests/cli/test_cli.sh),
 #   3. instruction budgets: every ps20/ps2b variant within its tier's limits,
 #   4. per-pixel conformance: every variant x {OSMesa GL 3.3, EGL GLES 2.0, GLES 3.0, GL 3.3}
-#      x {random, hard} input grids, 0 ULP against the C reference (glue/conform.h),
+#      x {random, hard} input grids, 0 ULP against the C reference (glue/conform/conform.h),
 #   5. the demo frames (GL = C on every backend),
 #   6. the same unit, CLI and (smaller) conformance checks under AddressSanitizer + UBSan.
 # The last line is "N passed, N failed"; the exit status is 1 when anything failed.

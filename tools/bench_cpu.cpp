@@ -18,13 +18,13 @@
 #include <string>
 #include <vector>
 
-#include "frame.h"
-#include "gl_context.h"
-#include "scene_spheres.h"
-#include "scene_world.h"
-#include "ts_batch.h"
-#include "world_render.h"
-#include "variants.h"
+#include "demo/family_frame.h"
+#include "gl/context.h"
+#include "demo/sphere_grid_scene.h"
+#include "demo/room_scene.h"
+#include "math/ts_batch.h"
+#include "demo/room_render.h"
+#include "shaderlib/variants.h"
 
 namespace {
 double now_ms() {

@@ -13,7 +13,7 @@ set -u
 . "$(dirname "${BASH_SOURCE[0]}")/lib.sh"
 cli_setup nir_test 50 "$@"
 unset ST_DEBUG
-# The consistency band of glue/cmd_budget.cpp (kNirRatioLo, kNirRatioHi).
+# The consistency band of glue/cli/cmd_budget.cpp (kNirRatioLo, kNirRatioHi).
 BAND_LO=0.8
 BAND_HI=5.0
 # tiershade's capture files go here, so the test can check that they are removed.

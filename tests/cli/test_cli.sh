@@ -6,7 +6,7 @@
 # Prints "PASS name" / "FAIL name: detail" per check (and "SKIP name: why" for
 # subcommands that are still being written), exits 1 if any check failed.
 #
-# Bad input must give exit status 2 for usage errors (glue/cli.h: every bad
+# Bad input must give exit status 2 for usage errors (glue/cli/args.h: every bad
 # argument or input file gives "tiershade <cmd>: <what is wrong>" and status 2)
 # or 1 for runtime failures, a one-line message on stderr naming the problem
 # (and file:line for input files), nothing on stdout, and never a crash: a

@@ -4,7 +4,7 @@
 # Command-line checks of `tiershade lut` (inspect, bake, convert).
 #   usage: tests/cli/test_color_correction.sh path/to/tiershade
 # Prints "PASS name" / "FAIL name: detail" per check; exits 1 if any failed.
-# Conventions (glue/cli.h, tests/cli/test_cli.sh): a bad argument or input file gives exit
+# Conventions (glue/cli/args.h, tests/cli/test_cli.sh): a bad argument or input file gives exit
 # status 2 and one line "tiershade lut: <file>[:<line>]: <problem>" on stderr, nothing on
 # stdout and no output file (not even a temporary); a failed write gives status 1; a crash,
 # a timeout or a sanitizer report is always a FAIL.

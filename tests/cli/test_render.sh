@@ -86,7 +86,7 @@ check "model_lighting sm3, float path, bloom 0" scenes/model_lighting.gltf --tie
 run scenes/model_lighting.gltf --tier ps20 --hdr float --size 32x18 -o "$TMP/nb"
 if [ "$RC" -eq 0 ] && grep -q 'bloom 0: the bloom passes are skipped' "$OUT"; then pass "float path, bloom 0: says the bloom passes are skipped"
 else fail "float path, bloom 0: says the bloom passes are skipped" "status $RC: $(grep -m1 note "$OUT")"; fi
-# The shader warm-up thread (glue/scene_frame.cpp) off, and on with an empty shader cache.
+# The shader warm-up thread (glue/scene/frame.cpp) off, and on with an empty shader cache.
 TIERSHADE_NO_WARMUP=1 check "model_lighting ps2b, no warm-up" scenes/model_lighting.gltf --tier ps2b
 MESA_SHADER_CACHE_DIR="$TMP/cache" check "model_lighting sm3, warm-up, empty cache" scenes/model_lighting.gltf --tier sm3
 

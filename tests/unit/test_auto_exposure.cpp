@@ -1,8 +1,8 @@
 // ============================================================================
 // tiershade — tests/unit/test_auto_exposure.cpp
 //
-// Unit tests of the auto-exposure histogram and controller (c_ref/auto_exposure.*,
-// c_ref/exposure_control.*), in C only (the GPU counts are checked against these
+// Unit tests of the auto-exposure histogram and controller (c_ref/exposure/auto_exposure.*,
+// c_ref/exposure/exposure_control.*), in C only (the GPU counts are checked against these
 // exact counts by test_luminance_histogram):
 //   * the 17-bucket layout, the centred window, the running-histogram schedule;
 //   * the bright-fraction location, the sticky target, the minimum-average rule;
@@ -18,10 +18,10 @@
 #include <vector>
 #include <functional>
 
-#include "auto_exposure.h"
-#include "exposure_control.h"
-#include "luminance_histogram.h"
-#include "ts_math.h"
+#include "exposure/auto_exposure.h"
+#include "exposure/exposure_control.h"
+#include "hdr/luminance_histogram.h"
+#include "math/ts_math.h"
 
 namespace {
 
@@ -195,7 +195,7 @@ Scene make_scene(double brightness) {
 }
 
 // Runs the closed loop for `frames` frames at 30 frames per second; scene_of(f) gives the
-// frame's scene. The histogram is the GPU module's exact twin (glue/luminance_histogram_cpu.cpp):
+// frame's scene. The histogram is the GPU module's exact twin (glue/hdr/luminance_histogram_cpu.cpp):
 // one bucket per frame, read 3 frames late, on the float path (linear frame x the tone-map
 // scale in use), with the temporal prefilter weight alpha (1 = none). Returns the scale per frame.
 template <class SceneOf>

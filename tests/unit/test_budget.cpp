@@ -1,16 +1,16 @@
 // ============================================================================
 // tiershade -- tests/unit/test_budget.cpp
-// Unit test for glue/budget.{h,cpp}: counts small known shaders and checks the
+// Unit test for glue/budget/budget.{h,cpp}: counts small known shaders and checks the
 // DX9 slot model (weights, mad fusion, _sat, loops, flattening, errors) and
 // the Mesa NIR cross-check parser.
 //
 // Build (from the repo root):
-//   g++ -std=c++17 -O2 -Wall -Wextra -Werror tests/unit/test_budget.cpp glue/budget.cpp -o test_budget
+//   g++ -std=c++17 -O2 -Wall -Wextra -Werror tests/unit/test_budget.cpp glue/budget/budget.cpp -o test_budget
 // Run:  ./test_budget [fixtures-dir]     (default: <dir of this file>/fixtures)
 // Needs glslangValidator, spirv-opt and spirv-dis in PATH.
 // Prints "PASS name" / "FAIL name: details" per check; exits 1 on any failure.
 // ============================================================================
-#include "../../glue/budget.h"
+#include "budget/budget.h"
 
 #include <fstream>
 #include <iostream>

@@ -14,10 +14,10 @@
 #include <string>
 #include <vector>
 
-#include "bundle.h"
-#include "conform.h"
-#include "draw_dump.h"
-#include "program_info.h"
+#include "shaderlib/bundle.h"
+#include "conform/conform.h"
+#include "shaderlib/draw_dump.h"
+#include "gl/program_info.h"
 
 namespace {
 

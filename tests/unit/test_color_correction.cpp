@@ -2,14 +2,14 @@
 // tiershade — tests/unit/test_color_correction.cpp
 //
 // Unit tests of the colour-correction glue (docs/color_correction.md):
-//   * .cube reading (glue/lut_io.h): good files (comments, CRLF, TITLE, DOMAIN, Resolve's
+//   * .cube reading (glue/io/lut_files.h): good files (comments, CRLF, TITLE, DOMAIN, Resolve's
 //     1D shaper + 3D form) and bad files, each with its exact "file:line: problem" message;
 //   * writers: .cube round trip bit for bit, atomic writes (a failed write leaves no file,
 //     no temporary, and an existing file untouched);
 //   * Source .raw: round trip, wrong sizes;
-//   * the LUT textures: 3D order and the ES2 atlas layout (glue/lut_texture.h);
-//   * baking with OpenColorIO (glue/lut_bake.h) against OCIO's CPU processor;
-//   * CIEDE2000 (glue/color_difference.h) on the 34 pairs of Sharma, Wu and Dalal (2005),
+//   * the LUT textures: 3D order and the ES2 atlas layout (glue/color/lut_texture.h);
+//   * baking with OpenColorIO (glue/color/ocio_lut_bake.h) against OCIO's CPU processor;
+//   * CIEDE2000 (glue/color/ciede2000.h) on the 34 pairs of Sharma, Wu and Dalal (2005),
 //     Table 1, and sRGB -> CIELAB anchors.
 // Run from the repository root (tests/run_tests.sh does): it reads scenes/luts/.
 // Usage: build/tests/test_color_correction   Prints PASS/FAIL lines; exit 1 on failure.
@@ -25,11 +25,11 @@
 #include <string>
 #include <vector>
 
-#include "color_correction.h"
-#include "color_difference.h"
-#include "lut_bake.h"
-#include "lut_io.h"
-#include "lut_texture.h"
+#include "twins/color_correction.h"
+#include "color/ciede2000.h"
+#include "color/ocio_lut_bake.h"
+#include "io/lut_files.h"
+#include "color/lut_texture.h"
 #include "unit_check.h"
 
 namespace {

@@ -1,14 +1,14 @@
 // ============================================================================
 // tiershade -- tests/unit/test_fast_path.cpp
 //
-// The C fallback's fast path (c_ref/model_lighting_batch.c: the model_lighting twin on 8 or
+// The C fallback's fast path (c_ref/twins/model_lighting_batch.c: the model_lighting twin on 8 or
 // 4 pixels at once) against the scalar twin (model_lighting_f), bit for bit (no tolerance,
 // NaN not excepted): every model_lighting variant (276), on the family's Random and Hard
 // input grids (64x64, make_inputs) and on a deferred-style grid (6 per-pixel slots, the
 // other 36 shared, stride 0), through the family glue (eval_row_f against eval_f, rows
 // starting and ending off a multiple of 8) and through model_lighting_f_records in chunks
 // of 1..13 pixels (every tail length); and the same row check for every world_lighting variant
-// (c_ref/world_lighting_batch.c) on its random, hard and deferred grids. Each instruction set the host has (AVX2, SSE2) in
+// (c_ref/twins/world_lighting_batch.c) on its random, hard and deferred grids. Each instruction set the host has (AVX2, SSE2) in
 // each fused-mad mode it can run (fused only where the host has FMA: that is when llvmpipe
 // fuses; GALLIUM_OVERRIDE_CPU_CAPS=sse4.1 makes it unfused, which ts_math_set_fused(0)
 // stands for here).
@@ -22,9 +22,9 @@
 #include <string>
 #include <vector>
 
-#include "family.h"
-#include "family_model_lighting.h"
-#include "model_lighting_batch.h"
+#include "families/family.h"
+#include "families/model_lighting.h"
+#include "twins/model_lighting_batch.h"
 #include "unit_check.h"
 
 namespace {

@@ -3,11 +3,11 @@
 //
 // The post-processing fast path against the scalar twins, bit for bit (no tolerance, NaN not
 // excepted):
-//   * c_ref/hdr_post_batch.c: bloom_downsample (SHAPE 0/1), bloom_blur (DIRECTION 0/1),
+//   * c_ref/twins/hdr_post_batch.c: bloom_downsample (SHAPE 0/1), bloom_blur (DIRECTION 0/1),
 //     hdr_tonemap (OUTPUT_MODE 0/1/2) against bloom_downsample_f / bloom_blur_f / hdr_tonemap_f;
 //     ts_quantize_half_batch and ts_unorm8_from_float_batch against hdr_formats.c on every
 //     sign/exponent/top-11-mantissa-bit pattern (2 random low parts each) and the specials;
-//   * c_ref/color_correction_batch.c: all 20 color_correction variants (LUT_ATLAS 0/1,
+//   * c_ref/twins/color_correction_batch.c: all 20 color_correction variants (LUT_ATLAS 0/1,
 //     SHADER_TRILINEAR 0/1, NUM_LOOKUPS 0..4) against color_correction_f, on a 3D LUT and its
 //     atlas (CLAMP, REPEAT POT and NPOT, NEAREST);
 //   * the glue: hdr_post_float_c and cc_apply_rgba8_c on each instruction set against the
@@ -32,11 +32,11 @@
 #include <string>
 #include <vector>
 
-#include "cc_cpu.h"
-#include "color_correction_batch.h"
-#include "hdr_formats.h"
-#include "hdr_pipeline.h"
-#include "hdr_post_batch.h"
+#include "color/correct_rgba8_cpu.h"
+#include "twins/color_correction_batch.h"
+#include "math/hdr_formats.h"
+#include "hdr/paths.h"
+#include "twins/hdr_post_batch.h"
 #include "unit_check.h"
 
 namespace {

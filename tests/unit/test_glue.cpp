@@ -1,9 +1,9 @@
 // ============================================================================
 // tiershade — tests/unit/test_glue.cpp
 //
-// Unit tests for the glue: the GLSL assembler (glue/assembler.*), compile-log
-// mapping on real Mesa llvmpipe contexts (glue/gl_context.*, glue/gl_render.*),
-// both GL backends in one process, and the variant system (glue/variants.*).
+// Unit tests for the glue: the GLSL assembler (glue/shaderlib/assembler.*), compile-log
+// mapping on real Mesa llvmpipe contexts (glue/gl/context.*, glue/gl/float_target.*),
+// both GL backends in one process, and the variant system (glue/shaderlib/variants.*).
 //
 // Usage: build/tests/test_glue        (make build/tests/test_glue)
 //   Prints "PASS name" or "FAIL name: detail" per check; exits 1 if any failed.
@@ -25,10 +25,10 @@
 
 #include <unistd.h>
 
-#include "assembler.h"
-#include "gl_context.h"
-#include "gl_render.h"
-#include "variants.h"
+#include "shaderlib/assembler.h"
+#include "gl/context.h"
+#include "gl/float_target.h"
+#include "shaderlib/variants.h"
 #include "unit_check.h"
 
 namespace {

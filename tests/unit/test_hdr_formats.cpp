@@ -1,7 +1,7 @@
 // ============================================================================
 // tiershade — tests/unit/test_hdr_formats.cpp
 //
-// The storage conversions of c_ref/hdr_formats.c against llvmpipe, on every
+// The storage conversions of c_ref/math/hdr_formats.c against llvmpipe, on every
 // backend/API pair: a pass-through shader writes chosen floats into an RGBA8 and an
 // RGBA16F target, and an RGBA8 texture is fetched as float. The values are the hard
 // ones: every RGBA8 rounding boundary (k + 1/2) / 255 and its neighbours within 8 ULP,
@@ -17,9 +17,9 @@
 #include <string>
 #include <vector>
 
-#include "hdr_formats.h"
-#include "hdr_gl.h"
-#include "ts_math.h"
+#include "math/hdr_formats.h"
+#include "hdr/gl_passes.h"
+#include "math/ts_math.h"
 
 namespace {
 

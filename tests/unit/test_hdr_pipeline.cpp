@@ -1,8 +1,8 @@
 // ============================================================================
 // tiershade — tests/unit/test_hdr_pipeline.cpp
 //
-// The two HDR paths (glue/hdr_pipeline*.cpp) on every backend/API pair against their
-// C twins, on the HDR demo scene (glue/hdr_scene.h): the integer path's RGBA8 frame,
+// The two HDR paths (glue/hdr/paths*.cpp) on every backend/API pair against their
+// C twins, on the HDR demo scene (glue/demo/hdr_scene.h): the integer path's RGBA8 frame,
 // and the float path's RGBA16F linear frame, quarter-size RGBA16F bloom and RGBA8
 // result must equal the C frames code for code and bit for bit. This checks what the
 // per-pixel family conformance cannot: the real fp16 and RGBA8 targets (storage
@@ -15,8 +15,8 @@
 #include <string>
 #include <vector>
 
-#include "hdr_pipeline.h"
-#include "hdr_scene.h"
+#include "hdr/paths.h"
+#include "demo/hdr_scene.h"
 
 namespace {
 

@@ -1,7 +1,7 @@
 // ============================================================================
 // tiershade — tests/unit/test_image_io.cpp
 //
-// Unit tests for glue/image_io.{h,cpp}.
+// Unit tests for glue/io/image_io.{h,cpp}.
 //
 // Usage: test_image_io <path/to/grace.hdr>
 //   Prints "PASS name" or "FAIL name: details" per check and exits non-zero
@@ -10,7 +10,7 @@
 //
 // Build (from the repo root):
 //   g++ -std=c++17 -O2 -Wall -Wextra -Werror $(pkg-config --cflags OpenEXR libpng)
-//       tests/unit/test_image_io.cpp glue/image_io.cpp
+//       tests/unit/test_image_io.cpp glue/io/image_io.cpp
 //       $(pkg-config --libs OpenEXR libpng) -o test_image_io
 //
 // Covered: EXR float bit-exact round trip (denormals, -0, 65504, 1e30, Inf,
@@ -21,7 +21,7 @@
 // EXR/PNG/HDR input, .tmp. leftovers, ulp_distance, diff_image, hstack and
 // read_hdr (synthetic files plus the real probe given in argv[1]).
 // ============================================================================
-#include "../../glue/image_io.h"
+#include "io/image_io.h"
 
 #include <ImfChannelList.h>
 #include <ImfFrameBuffer.h>

@@ -1,7 +1,7 @@
 // ============================================================================
 // tiershade -- tests/unit/test_light_folding.cpp
 //
-// Unit tests for c_ref/light_folding.{h,c}: folding lights beyond a tier's limit
+// Unit tests for c_ref/offline/light_folding.{h,c}: folding lights beyond a tier's limit
 // into the ambient cube (docs/light_folding.md).  Shading is computed by the real
 // C twin model_lighting_f (ps2b/ps20, OUTPUT_MODE 0 linear, tone-map scale 1,
 // constant albedo 1) and integrated over the unit sphere of normals with a
@@ -18,8 +18,8 @@
 // against model_lighting_d.
 // Build: make build/tests/test_light_folding
 // ============================================================================
-#include "light_folding.h"
-#include "model_lighting.h"
+#include "offline/light_folding.h"
+#include "twins/model_lighting.h"
 
 #include <cmath>
 #include <cstdarg>

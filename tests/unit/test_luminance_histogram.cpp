@@ -1,8 +1,8 @@
 // ============================================================================
 // tiershade — tests/unit/test_luminance_histogram.cpp
 //
-// The GPU luminance histogram (glue/luminance_histogram_gl.cpp) against its exact C
-// twin (glue/luminance_histogram_cpu.cpp), on every backend/API pair: OSMesa GL 3.3
+// The GPU luminance histogram (glue/hdr/luminance_histogram_gl.cpp) against its exact C
+// twin (glue/hdr/luminance_histogram_cpu.cpp), on every backend/API pair: OSMesa GL 3.3
 // and EGL GL 3.3 (occlusion queries), EGL GLES 3.0 (fenced pixel-pack buffers), EGL
 // GLES 2.0 (synchronous readback). For the float path (an RGBA16F frame x tone-map
 // scale) and the integer path (an sRGB-encoded RGBA8 frame), with and without the
@@ -16,9 +16,9 @@
 #include <string>
 #include <vector>
 
-#include "family.h"
-#include "hdr_formats.h"
-#include "luminance_histogram.h"
+#include "families/family.h"
+#include "math/hdr_formats.h"
+#include "hdr/luminance_histogram.h"
 
 namespace {
 

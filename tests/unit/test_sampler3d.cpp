@@ -1,7 +1,7 @@
 // ============================================================================
 // tiershade — tests/unit/test_sampler3d.cpp
 //
-// The probe behind c_ref/ts_sampler3d.c, kept as a regression test: llvmpipe's
+// The probe behind c_ref/math/ts_sampler3d.c, kept as a regression test: llvmpipe's
 // 3D (volume) texture sampling of RGBA32F textures against the C twin, bit for
 // bit (0 ULP; NaN compared as a class, docs/c_math_layer.md "NaN payloads").
 // Coordinates come from an RGBA32F record read with texelFetch, so nothing is
@@ -28,11 +28,11 @@
 #include <string>
 #include <vector>
 
-#include "assembler.h"
-#include "gl_context.h"
-#include "gl_render.h"
-#include "image_io.h"
-#include "ts_sampler3d.h"
+#include "shaderlib/assembler.h"
+#include "gl/context.h"
+#include "gl/float_target.h"
+#include "io/image_io.h"
+#include "math/ts_sampler3d.h"
 #include "unit_check.h"
 
 namespace {

@@ -23,12 +23,12 @@
 #include <string>
 #include <vector>
 
-#include "family.h"
-#include "scene.h"
-#include "scene_effects.h"
-#include "scene_frame.h"
-#include "scene_prepare.h"
-#include "image_io.h"
+#include "families/family.h"
+#include "scene/scene.h"
+#include "scene/selection.h"
+#include "scene/frame.h"
+#include "scene/prepare.h"
+#include "io/image_io.h"
 #include "unit_check.h"
 
 namespace {

@@ -1,7 +1,7 @@
 // ============================================================================
 // tiershade — tests/unit/test_scene_gltf.cpp
 //
-// Unit tests for the glTF scene loader (glue/scene_gltf*.cpp, glue/scene.h).
+// Unit tests for the glTF scene loader (glue/scene/gltf_load*.cpp, glue/scene/scene.h).
 //
 // Usage: build/tests/test_scene_gltf   (from the repo root: it reads scenes/)
 //   Prints "PASS name" or "FAIL name: detail" per check; exits 1 if any failed.
@@ -22,8 +22,8 @@
 #include <string>
 #include <vector>
 
-#include "image_io.h"
-#include "scene.h"
+#include "io/image_io.h"
+#include "scene/scene.h"
 #include "unit_check.h"
 
 namespace {

@@ -18,14 +18,14 @@
 #include <string>
 #include <vector>
 
-#include "auto_exposure.h"
-#include "family.h"
-#include "scene.h"
-#include "scene_effects.h"
-#include "scene_frame.h"
-#include "scene_prepare.h"
-#include "srgb_codes.h"
-#include "static_exposure.h"
+#include "exposure/auto_exposure.h"
+#include "families/family.h"
+#include "scene/scene.h"
+#include "scene/selection.h"
+#include "scene/frame.h"
+#include "scene/prepare.h"
+#include "hdr/srgb_rgba8_codes.h"
+#include "hdr/still_frame_exposure.h"
 #include <cstring>
 
 namespace {
@@ -207,7 +207,7 @@ void test_srgb_codes() {
 
 }  // namespace
 
-// Spot lights reach the lightmap baker as spots (glue/scene_prepare.cpp -> c_ref/rnm_bake.c):
+// Spot lights reach the lightmap baker as spots (glue/scene/prepare.cpp -> c_ref/offline/rnm_bake.c):
 // world_lighting's first point light turned into a narrow spot can only lose light (dot2 and
 // the cone ramp are <= 1), loses most of it, and keeps the texels on its axis.
 void test_spot_bake() {

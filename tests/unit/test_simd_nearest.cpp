@@ -1,9 +1,9 @@
 // ============================================================================
 // tiershade -- tests/unit/test_simd_nearest.cpp
 //
-// The SIMD 2D NEAREST sampler (c_ref/ts_simd_sampler_nearest.h) through the world_lighting
+// The SIMD 2D NEAREST sampler (c_ref/math/ts_simd_sampler_nearest.h) through the world_lighting
 // fast path (world_lighting_f_batch) against the scalar twin (world_lighting_f, whose NEAREST
-// is c_ref/ts_sampler.c), bit for bit: every variant (tier, bump, encoding, envmap, mask), with
+// is c_ref/math/ts_sampler.c), bit for bit: every variant (tier, bump, encoding, envmap, mask), with
 // every 2D texture NEAREST, in four shapes (POT and NPOT, REPEAT and CLAMP_TO_EDGE), on
 // random coordinates and on hard ones (texel edges, 1 - ulp, -0, denormals, huge, +-inf, NaN),
 // for each instruction set the host has (ts_batch_force_isa) and each fused-mad mode.
@@ -21,7 +21,7 @@
 #include <string>
 #include <vector>
 
-#include "world_lighting_batch.h"
+#include "twins/world_lighting_batch.h"
 #include "unit_check.h"
 
 namespace {

@@ -1,18 +1,18 @@
 /* tiershade -- tests/unit/test_ts_math.c
- * Pure-C unit checks of c_ref/ts_math.[ch] and c_ref/ts_sampler.[ch] (no GL needed).
+ * Pure-C unit checks of c_ref/math/ts_math.[ch] and c_ref/math/ts_sampler.[ch] (no GL needed).
  * The expected values are llvmpipe facts measured on Mesa 22.3.6 (see
  * docs/c_math_layer.md), or exact identities. Prints "PASS name" or
  * "FAIL name: details" per check; exit status 1 if any check failed.
  * Build: gcc -std=c99 -O2 -Wall -Wextra -Werror -ffp-contract=off -fno-fast-math
- *        -Ic_ref tests/unit/test_ts_math.c c_ref/ts_math.c c_ref/ts_sampler.c -lm
+ *        -Ic_ref tests/unit/test_ts_math.c c_ref/math/ts_math.c c_ref/math/ts_sampler.c -lm
  */
 #include <math.h>
 #include <stdint.h>
 #include <stdio.h>
 #include <string.h>
 
-#include "ts_math.h"
-#include "ts_sampler.h"
+#include "math/ts_math.h"
+#include "math/ts_sampler.h"
 
 static int g_failed, g_passed;
 

@@ -2,14 +2,14 @@
 // tiershade -- tests/unit/test_world_lighting.cpp
 //
 // Unit tests of the world_lighting family's C side and of the GL facts it rests on:
-//  - the RNM basis (c_ref/rnm_bake.c) against the fact sheet's constants;
+//  - the RNM basis (c_ref/offline/rnm_bake.c) against the fact sheet's constants;
 //  - the baker: cosine weights, clamping, a light behind the face, the handedness
 //    of GetBumpNormals, bad input;
-//  - the shader twin (c_ref/world_lighting.c): RNM weights and the zero-sum case,
+//  - the shader twin (c_ref/twins/world_lighting.c): RNM weights and the zero-sum case,
 //    ssbump, the four lightmap decodes (largest and smallest RGBE exponents),
 //    Fresnel at N.V = 0 and 1, the mask sources;
-//  - the offline encoders (c_ref/lightmap_encoding.c): RGBE, fp16, "4.12", LDR;
-//  - the lightmap page layout (c_ref/lightmap_page.c) and probe choice (envmap_probes.c);
+//  - the offline encoders (c_ref/offline/lightmap_encoding.c): RGBE, fp16, "4.12", LDR;
+//  - the lightmap page layout (c_ref/offline/lightmap_page.c) and probe choice (envmap_probes.c);
 //  - GL: LINEAR cube maps are bit-exact on desktop GL (seamless off), and GLES cube
 //    maps are seamless on this Mesa (why conformance samples the envmap NEAREST).
 // Prints "PASS name" / "FAIL name: detail"; exits 1 if any check failed.
@@ -22,13 +22,13 @@
 #include <string>
 #include <vector>
 
-#include "conform.h"
-#include "envmap_probes.h"
-#include "family_world_lighting.h"
-#include "lightmap_encoding.h"
-#include "lightmap_page.h"
-#include "rnm_bake.h"
-#include "selection.h"
+#include "conform/conform.h"
+#include "offline/envmap_probes.h"
+#include "families/world_lighting.h"
+#include "offline/lightmap_encoding.h"
+#include "offline/lightmap_page.h"
+#include "offline/rnm_bake.h"
+#include "cli/select_args.h"
 
 namespace {
 

@@ -1,0 +1,40 @@
+/* c_ref/common/common_rnm.h: generic twin of shaders/common_rnm.glsl (radiosity normal
+ * mapping, fact sheet section 1; see ts_generic.h). No include guard on purpose. */
+
+#define WL_SQRT_2_OVER_3 K(0.816496580927726)
+#define WL_OO_SQRT_6 K(0.408248290463863)
+#define WL_OO_SQRT_2 K(0.707106781186548)
+#define WL_OO_SQRT_3 K(0.577350269189626)
+
+/* d_k = saturate(n . b_k)^2 + 1e-30. The b0 dot has two terms (its y lane is 0 and
+ * NIR drops it); the others are dot() with a constant vector (ts_dot3, last lane first). */
+static V3 FN(rnm_weights)(V3 n) {
+  V3 d = M(v3)(n.x * WL_SQRT_2_OVER_3 + n.z * WL_OO_SQRT_3,
+               M(dot3)(n, M(v3)(-WL_OO_SQRT_6, WL_OO_SQRT_2, WL_OO_SQRT_3)),
+               M(dot3)(n, M(v3)(-WL_OO_SQRT_6, -WL_OO_SQRT_2, WL_OO_SQRT_3)));
+  d = M(saturate3)(d);
+  return M(add3)(M(mul3)(d, d), M(v3)(K(1.0e-30), K(1.0e-30), K(1.0e-30)));
+}
+
+static V3 FN(rnm_blend)(V3 d, V3 l0, V3 l1, V3 l2) {
+  V3 s = M(add3)(M(add3)(M(scale3)(l0, d.x), M(scale3)(l1, d.y)), M(scale3)(l2, d.z));
+  /* dot(d, vec3(1.0)): NIR folds the multiplies by 1 and keeps the sum's order (last lane first). */
+  TS_REAL sum = d.x + (d.y + d.z);
+  return M(v3)(s.x / sum, s.y / sum, s.z / sum);
+}
+
+static V3 FN(ssbump_blend)(V3 t, V3 l0, V3 l1, V3 l2) {
+  return M(add3)(M(add3)(M(scale3)(l0, t.x), M(scale3)(l1, t.y)), M(scale3)(l2, t.z));
+}
+
+static V3 FN(ssbump_direction)(V3 t) {
+  return M(v3)(t.x * WL_SQRT_2_OVER_3 - (t.y + t.z) * WL_OO_SQRT_6, (t.y - t.z) * WL_OO_SQRT_2,
+               ((t.x + t.y) + t.z) * WL_OO_SQRT_3);
+}
+
+static V3 FN(ssbump_normal)(V3 t) { return FN(safe_normalize)(FN(ssbump_direction)(t)); }
+
+#undef WL_SQRT_2_OVER_3
+#undef WL_OO_SQRT_6
+#undef WL_OO_SQRT_2
+#undef WL_OO_SQRT_3

@@ -1,0 +1,7 @@
+/* c_ref/math/ts_generic_float.h: select the float32 (llvmpipe-exact) instantiation. */
+#undef TS_SUFFIX
+#undef TS_REAL
+#undef TS_LIT
+#define TS_SUFFIX f
+#define TS_REAL float
+#define TS_LIT f

@@ -1,0 +1,40 @@
+/* tiershade -- c_ref/math/ts_simd_sampler_nearest.h
+ * c_ref/math/ts_sampler.c's 2D NEAREST sampling (wrap_nearest, then fetch_safe) on TSV_W lanes, bit
+ * for bit: REPEAT (POT: ifloor(u * len) & (len - 1); NPOT: itrunc(fract_safe(u) * len),
+ * clamped) and CLAMP_TO_EDGE (itrunc(u * len), clamped). NaN and out-of-range coordinates take
+ * itrunc's INT32_MIN as the scalar layer does, then the clamp. The texel reads are one RGBA load
+ * per lane, transposed to SoA (ts_simd.h gather4).
+ * VFN(tex2d) picks this or ts_simd_sampler.h's LINEAR path by the texture's filter.
+ * Included after c_ref/math/ts_simd.h and c_ref/math/ts_simd_sampler.h, once per instruction set (no
+ * include guard). Checked against the scalar sampler by tests/unit/test_fast_path.cpp (the
+ * world_lighting twin's NEAREST lightmaps and textures). */
+
+/* lp_build_sample_wrap_nearest (ts_sampler.c wrap_nearest), then fetch_safe's clamp. */
+TSV_INL VI VFN(wrap_nearest)(VF u, int len, int wrap) {
+  const float lf = (float)len;
+  VI i;
+  if (wrap == TS_WRAP_REPEAT) {
+    if (len > 0 && (len & (len - 1)) == 0) return VFN(itrunc)(VFN(floor)(u * lf)) & (len - 1);
+    /* lp_build_fract_safe: min(u - floor(u), 0x1.fffffep-1), a NaN gives the constant */
+    const VF top = VFN(splat)(0x1.fffffep-1f);
+    VF f = u - VFN(floor)(u);
+    f = VFN(sel)(f < top, f, top);
+    i = VFN(itrunc)(f * lf);
+  } else {
+    i = VFN(itrunc)(u * lf);
+  }
+  i = VFN(seli)(i < 0, VFN(spliti)(0), i);
+  return VFN(seli)(i > len - 1, VFN(spliti)(len - 1), i);
+}
+
+static V4v VFN(texture2D_nearest)(const ts_tex2d *t, VF u, VF v) {
+  const VI x = VFN(wrap_nearest)(u, t->w, t->wrap_s), y = VFN(wrap_nearest)(v, t->h, t->wrap_t);
+  const float *p[TSV_W];
+  for (int j = 0; j < TSV_W; ++j) p[j] = t->texels + ((size_t)y[j] * (size_t)t->w + (size_t)x[j]) * 4u;
+  return VFN(gather4)(p);
+}
+
+/* texture2D with the texture's own filter. */
+TSV_INL V4v VFN(tex2d)(const ts_tex2d *t, VF u, VF v) {
+  return t->filter == TS_FILTER_NEAREST ? VFN(texture2D_nearest)(t, u, v) : VFN(texture2D)(t, u, v);
+}

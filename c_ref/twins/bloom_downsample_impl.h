@@ -1,0 +1,22 @@
+/* c_ref/twins/bloom_downsample_impl.h: generic body of the bloom_downsample twin; mirrors
+ * shaders/bloom_downsample.fs statement by statement. Instantiated by bloom_downsample.c. */
+
+static V3 FN(bd_tap)(const bd_variant *v, const ts_tex2d *src, TS_REAL tx, TS_REAL ty, V4 size, V4 shape) {
+  V4 s = FN(sample2d)(src, tx * size.z, ty * size.w);
+  V3 p = M(v3)(s.x, s.y, s.z);
+  if (v->shape) p = FN(bloom_shape)(p, shape);
+  return p;
+}
+
+static V4 FN(bloom_downsample_impl)(const bd_variant *v, const ts_vec4f rec[BD_SLOTS], const ts_tex2d *src) {
+  V4 pos = FN(vec4_in)(rec[BD_SLOT_POS]);
+  V4 size = FN(vec4_in)(rec[BD_SLOT_SIZE]);
+  V4 shape = FN(vec4_in)(rec[BD_SLOT_SHAPE]);
+  TS_REAL cx = pos.x * K(4.0), cy = pos.y * K(4.0);
+  V3 sum = FN(bd_tap)(v, src, cx - K(1.0), cy - K(1.0), size, shape);
+  sum = M(add3)(sum, FN(bd_tap)(v, src, cx + K(1.0), cy - K(1.0), size, shape));
+  sum = M(add3)(sum, FN(bd_tap)(v, src, cx - K(1.0), cy + K(1.0), size, shape));
+  sum = M(add3)(sum, FN(bd_tap)(v, src, cx + K(1.0), cy + K(1.0), size, shape));
+  V3 c = FN(output_linear)(M(scale3)(sum, K(0.25)));
+  return M(v4)(c.x, c.y, c.z, K(1.0));
+}

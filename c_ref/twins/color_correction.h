@@ -1,0 +1,48 @@
+/* c_ref/twins/color_correction.h: C twin of shaders/color_correction.fs (Source's colour
+ * correction: up to four LUTs blended with weights plus the default weight; fact
+ * sheet section 9). One call corrects one pixel from its input record (the same
+ * slots the shader reads in conformance mode, shaders/color_correction_slots.glsl). */
+#ifndef TS_COLOR_CORRECTION_H
+#define TS_COLOR_CORRECTION_H
+#include "math/ts_math.h"
+#include "math/ts_sampler.h"
+#include "math/ts_sampler3d.h"
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+enum cc_slot {
+  CC_MAX_LOOKUPS = 4,
+  CC_SLOT_COLOR = 0,   /* the colour to correct; alpha passes through */
+  CC_SLOT_WEIGHTS = 1, /* weights of LUTs 0..3 */
+  CC_SLOT_PARAMS = 2,  /* x: the default weight */
+  CC_SLOT_LUT = 3,     /* ((N-1)/N, 0.5/N, N-1, 1/N) for LUT edge N */
+  CC_SLOTS = 4,
+  CC_PIXEL_SLOTS = 1 /* the colour: per pixel in deferred frames */
+};
+
+typedef struct {
+  int atlas;            /* LUT_ATLAS: 1 = 2D atlas, 0 = 3D texture */
+  int shader_trilinear; /* SHADER_TRILINEAR: 1 = 8 taps filtered in the shader */
+  int num_lookups;      /* NUM_LOOKUPS 0..4 */
+} cc_variant;
+
+/* The LUTs as the shader sees them: u_lut0..3 (3D) and u_lut_atlas0..3 (2D atlas). */
+typedef struct {
+  ts_tex3d volume[CC_MAX_LOOKUPS];
+  ts_tex2d atlas[CC_MAX_LOOKUPS];
+} cc_luts;
+
+/* The addressing slot for LUT edge n, as the shader expects it (CC_SLOT_LUT). */
+ts_vec4f cc_lut_params(int n);
+
+/* float32, bit-exact with llvmpipe */
+ts_vec4f color_correction_f(const cc_variant *v, const ts_vec4f rec[CC_SLOTS], const cc_luts *luts);
+/* double, the same algorithm in double precision */
+ts_vec4d color_correction_d(const cc_variant *v, const ts_vec4f rec[CC_SLOTS], const cc_luts *luts);
+
+#ifdef __cplusplus
+}
+#endif
+#endif

@@ -1,0 +1,34 @@
+/* tiershade -- c_ref/twins/color_correction_batch.h
+ * The color_correction float32 twin for many pixels per call: the same bits as calling
+ * color_correction_f() once per pixel, computed 8 (AVX2) or 4 (SSE2) pixels at a time, for
+ * every variant (LUT_ATLAS 0/1, SHADER_TRILINEAR 0/1, NUM_LOOKUPS 0..4): 3D LUTs through
+ * ts_simd_sampler3d.h, the atlas through ts_simd_sampler.h. The instance is chosen per call
+ * as for model_lighting_batch.h (ts_batch.h); call ts_math_init() on every thread first.
+ *
+ *   cc_batch_input in = {{colours, &w, &p, &lut}, {1, 0, 0, 0}};  // slot k of pixel i:
+ *   color_correction_f_batch(&variant, &in, &luts, out, count);    //   slot[k][i * stride[k]]
+ *
+ * A slot shared by every pixel (a uniform) has stride 0; any count >= 0 works.
+ * Verified bit for bit against color_correction_f by tests/unit/test_fast_path_post.cpp. */
+#ifndef TS_COLOR_CORRECTION_BATCH_H
+#define TS_COLOR_CORRECTION_BATCH_H
+#include "twins/color_correction.h"
+#include "math/ts_batch.h"
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+typedef struct {
+  const ts_vec4f *slot[CC_SLOTS];
+  int stride[CC_SLOTS]; /* in ts_vec4f; 0 = one value for every pixel */
+} cc_batch_input;
+
+/* out[i] = color_correction_f(v, record of pixel i, luts), i = 0..count-1 */
+void color_correction_f_batch(const cc_variant *v, const cc_batch_input *in, const cc_luts *luts, ts_vec4f *out,
+                              int count);
+
+#ifdef __cplusplus
+}
+#endif
+#endif

@@ -1,0 +1,58 @@
+/* tiershade -- c_ref/twins/hdr_post_batch.h
+ * The float HDR path's post passes for many pixels per call: bloom_downsample_f, bloom_blur_f
+ * and hdr_tonemap_f (every variant: SHAPE 0/1, DIRECTION 0/1, OUTPUT_MODE 0/1/2), and the
+ * render-target conversions of c_ref/math/hdr_formats.h (fp16 store, RGBA8 store), with the same
+ * bits as one scalar call per pixel / value, computed 8 (AVX2) or 4 (SSE2) at a time.
+ * The instance is chosen per call as for model_lighting_batch.h (ts_batch.h: AVX2+FMA when
+ * llvmpipe fuses its mads, AVX2 or SSE2 when it does not, else the scalar twin); call
+ * ts_math_init() on every thread first (FTZ/DAZ, the fused mode).
+ *
+ *   bd_batch_input in = {{pos_row, &size, &shape}, {1, 0, 0}};   // slot k of pixel i:
+ *   bloom_downsample_f_batch(&variant, &in, &source, out, count); //   slot[k][i * stride[k]]
+ *
+ * A slot shared by every pixel (a uniform) has stride 0; any count >= 0 works.
+ * Verified bit for bit against the scalar twins by tests/unit/test_fast_path_post.cpp. */
+#ifndef TS_HDR_POST_BATCH_H
+#define TS_HDR_POST_BATCH_H
+#include <stddef.h>
+#include <stdint.h>
+
+#include "twins/bloom_blur.h"
+#include "twins/bloom_downsample.h"
+#include "twins/hdr_tonemap.h"
+#include "math/ts_batch.h"
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+typedef struct {
+  const ts_vec4f *slot[BD_SLOTS];
+  int stride[BD_SLOTS]; /* in ts_vec4f; 0 = one value for every pixel */
+} bd_batch_input;
+typedef struct {
+  const ts_vec4f *slot[BB_SLOTS];
+  int stride[BB_SLOTS];
+} bb_batch_input;
+typedef struct {
+  const ts_vec4f *slot[HT_SLOTS];
+  int stride[HT_SLOTS];
+} ht_batch_input;
+
+/* out[i] = <twin>_f(v, record of pixel i, texture), i = 0..count-1 */
+void bloom_downsample_f_batch(const bd_variant *v, const bd_batch_input *in, const ts_tex2d *source, ts_vec4f *out,
+                              int count);
+void bloom_blur_f_batch(const bb_variant *v, const bb_batch_input *in, const ts_tex2d *source, ts_vec4f *out,
+                        int count);
+void hdr_tonemap_f_batch(const ht_variant *v, const ht_batch_input *in, const ts_tex2d *bloom, ts_vec4f *out,
+                         int count);
+
+/* out[i] = ts_quantize_half(in[i]) / ts_unorm8_from_float(in[i]), i = 0..n-1 (in == out allowed
+ * for the first). Pure bit operations and an exact multiply-add: no dependence on the fused mode. */
+void ts_quantize_half_batch(const float *in, float *out, size_t n);
+void ts_unorm8_from_float_batch(const float *in, uint8_t *out, size_t n);
+
+#ifdef __cplusplus
+}
+#endif
+#endif

@@ -1,0 +1,161 @@
+/* tiershade -- c_ref/twins/hdr_post_simd_impl.h
+ * The float HDR path's twins on TSV_W pixels at once, in SoA: bloom_downsample_impl.h,
+ * bloom_blur_impl.h and hdr_tonemap_impl.h (float32) statement by statement, so every lane
+ * gives the scalar twin's bits; plus hdr_formats.c's fp16 and RGBA8 stores on lanes.
+ * Variant switches stay scalar `if`s; every record value is per lane.
+ * Included by c_ref/twins/hdr_post_batch.c through ts_simd_instances.h (once per instruction set). */
+
+/* The pixels of block `first` (a short block repeats its last pixel). */
+TSV_INL int VFN(hp_pix)(int first, int count, size_t *pix) {
+  const int n = count - first < TSV_W ? count - first : TSV_W;
+  for (int j = 0; j < TSV_W; ++j) pix[j] = (size_t)first + (size_t)(j < n ? j : n - 1);
+  return n;
+}
+
+TSV_INL void VFN(hp_store)(V3v c, VF a, ts_vec4f *out, int n) {
+  for (int j = 0; j < n; ++j) {
+    out[j].x = c.x[j];
+    out[j].y = c.y[j];
+    out[j].z = c.z[j];
+    out[j].w = a[j];
+  }
+}
+
+/* common_output.h */
+TSV_INL V3v VFN(hp_linear)(V3v c) {
+  const VF z = VFN(splat)(0.0f), top = VFN(splat)(65504.0f);
+  return VFN(v3)(VFN(clamp)(c.x, z, top), VFN(clamp)(c.y, z, top), VFN(clamp)(c.z, z, top));
+}
+TSV_INL VF VFN(hp_srgb1)(VF x) {
+  const VF hi = 1.055f * VFN(pow)(x, VFN(splat)(1.0f / 2.4f)) - 0.055f;
+  return VFN(sel)(x <= 0.0031308f, 12.92f * x, hi);
+}
+TSV_INL V3v VFN(hp_output)(V3v c, int mode) {
+  if (mode == 1) {
+    const VF e = VFN(splat)(1.0f / 2.2f);
+    const V3v s = VFN(saturate3)(c);
+    return VFN(saturate3)(VFN(v3)(VFN(pow)(s.x, e), VFN(pow)(s.y, e), VFN(pow)(s.z, e)));
+  }
+  if (mode == 2) {
+    const V3v s = VFN(saturate3)(c);
+    return VFN(saturate3)(VFN(v3)(VFN(hp_srgb1)(s.x), VFN(hp_srgb1)(s.y), VFN(hp_srgb1)(s.z)));
+  }
+  return VFN(hp_linear)(c);
+}
+
+TSV_INL V3v VFN(hp_fetch)(const ts_tex2d *t, VF u, VF v) { return VFN(xyz)(VFN(texture2D)(t, u, v)); }
+
+/* ---- bloom_downsample ---- */
+TSV_INL V3v VFN(bd_tap)(const bd_variant *v, const ts_tex2d *src, VF tx, VF ty, V4v size, V4v shape) {
+  V3v p = VFN(hp_fetch)(src, tx * size.z, ty * size.w);
+  if (v->shape) { /* common_hdr.h bloom_shape */
+    const VF d = VFN(dot3)(p, VFN(xyz)(shape));
+    p = VFN(scale3)(VFN(v3)(VFN(pow)(p.x, shape.w), VFN(pow)(p.y, shape.w), VFN(pow)(p.z, shape.w)), d);
+  }
+  return p;
+}
+
+static void VFN(bd_batch)(const bd_variant *v, const bd_batch_input *in, const ts_tex2d *src, ts_vec4f *out,
+                          int count) {
+  for (int first = 0; first < count; first += TSV_W) {
+    size_t pix[TSV_W];
+    const int n = VFN(hp_pix)(first, count, pix);
+    const V4v pos = VFN(rec_load)(in->slot[BD_SLOT_POS], in->stride[BD_SLOT_POS], pix);
+    const V4v size = VFN(rec_load)(in->slot[BD_SLOT_SIZE], in->stride[BD_SLOT_SIZE], pix);
+    const V4v shape = VFN(rec_load)(in->slot[BD_SLOT_SHAPE], in->stride[BD_SLOT_SHAPE], pix);
+    const VF cx = pos.x * 4.0f, cy = pos.y * 4.0f;
+    V3v sum = VFN(bd_tap)(v, src, cx - 1.0f, cy - 1.0f, size, shape);
+    sum = VFN(add3)(sum, VFN(bd_tap)(v, src, cx + 1.0f, cy - 1.0f, size, shape));
+    sum = VFN(add3)(sum, VFN(bd_tap)(v, src, cx - 1.0f, cy + 1.0f, size, shape));
+    sum = VFN(add3)(sum, VFN(bd_tap)(v, src, cx + 1.0f, cy + 1.0f, size, shape));
+    VFN(hp_store)(VFN(hp_linear)(VFN(scale3)(sum, VFN(splat)(0.25f))), VFN(splat)(1.0f), out + first, n);
+  }
+}
+
+/* ---- bloom_blur ---- */
+static void VFN(bb_batch)(const bb_variant *v, const bb_batch_input *in, const ts_tex2d *src, ts_vec4f *out,
+                          int count) {
+  static const float offsets[6] = {1.3366f, 3.4295f, 5.4264f, 7.4359f, 9.4436f, 11.4401f};
+  static const float weights[6] = {0.2185f, 0.0821f, 0.0461f, 0.0262f, 0.0162f, 0.0102f};
+  for (int first = 0; first < count; first += TSV_W) {
+    size_t pix[TSV_W];
+    const int n = VFN(hp_pix)(first, count, pix);
+    const V4v pos = VFN(rec_load)(in->slot[BB_SLOT_POS], in->stride[BB_SLOT_POS], pix);
+    const V4v size = VFN(rec_load)(in->slot[BB_SLOT_SIZE], in->stride[BB_SLOT_SIZE], pix);
+    const V4v params = VFN(rec_load)(in->slot[BB_SLOT_PARAMS], in->stride[BB_SLOT_PARAMS], pix);
+    const VF x = pos.x * size.z, y = pos.y * size.w;
+    V3v sum = VFN(scale3)(VFN(hp_fetch)(src, x, y), VFN(splat)(0.2013f));
+    for (int i = 0; i < 6; ++i) {
+      V3v pair;
+      if (v->direction == 0)
+        pair = VFN(add3)(VFN(hp_fetch)(src, (pos.x + offsets[i]) * size.z, y),
+                         VFN(hp_fetch)(src, (pos.x - offsets[i]) * size.z, y));
+      else
+        pair = VFN(add3)(VFN(hp_fetch)(src, x, (pos.y + offsets[i]) * size.w),
+                         VFN(hp_fetch)(src, x, (pos.y - offsets[i]) * size.w));
+      sum = VFN(add3)(sum, VFN(scale3)(pair, VFN(splat)(weights[i])));
+    }
+    VFN(hp_store)(VFN(hp_linear)(VFN(scale3)(sum, params.x)), VFN(splat)(1.0f), out + first, n);
+  }
+}
+
+/* ---- hdr_tonemap ---- */
+static void VFN(ht_batch)(const ht_variant *v, const ht_batch_input *in, const ts_tex2d *bloom_tex, ts_vec4f *out,
+                          int count) {
+  for (int first = 0; first < count; first += TSV_W) {
+    size_t pix[TSV_W];
+    const int n = VFN(hp_pix)(first, count, pix);
+    const V4v pos = VFN(rec_load)(in->slot[HT_SLOT_POS], in->stride[HT_SLOT_POS], pix);
+    const V4v size = VFN(rec_load)(in->slot[HT_SLOT_SIZE], in->stride[HT_SLOT_SIZE], pix);
+    const V3v fb = VFN(xyz)(VFN(rec_load)(in->slot[HT_SLOT_FRAME], in->stride[HT_SLOT_FRAME], pix));
+    const V4v params = VFN(rec_load)(in->slot[HT_SLOT_PARAMS], in->stride[HT_SLOT_PARAMS], pix);
+    V3v bloom = VFN(scale3)(VFN(hp_fetch)(bloom_tex, pos.x * size.z, pos.y * size.w), VFN(sqrt)(params.x));
+    const VF one = VFN(splat)(1.0f);
+    bloom = VFN(v3)(VFN(min)(bloom.x, one), VFN(min)(bloom.y, one), VFN(min)(bloom.z, one));
+    const VF lum = VFN(dot3)(bloom, VFN(v3)(VFN(splat)(0.2125f), VFN(splat)(0.7154f), VFN(splat)(0.0721f)));
+    const VF k = params.y * VFN(pow)(lum, params.z);
+    const V3v c = VFN(add3)(VFN(scale3)(fb, params.x), VFN(scale3)(bloom, k));
+    VFN(hp_store)(VFN(hp_output)(c, v->output_mode), one, out + first, n);
+  }
+}
+
+/* ---- hdr_formats.c on lanes ---- */
+/* ts_quantize_half: round toward zero to fp16 and back, as bit masks. A finite value in the
+ * half range keeps its float exponent and loses the mantissa bits below the half's step
+ * (13 bits for a normal half, 13 + k for a half denormal k binades down); below 2^-24: +-0;
+ * 2^16 and up: +-65504; Inf kept; NaN quieted with the 10-bit payload. */
+TSV_INL VU VFN(quantize_half_bits)(VU u) {
+  const VU sign = u & 0x80000000u, a = u & 0x7fffffffu;
+  const VI e = (VI)(a >> 23) - 127;
+  VI sh = VFN(seli)(e < -14, -1 - e, VFN(spliti)(13));
+  sh = VFN(seli)(sh > 31, VFN(spliti)(31), sh); /* only lanes replaced below */
+  VU b = sign | (a & ~(((VU)VFN(spliti)(1) << (VU)sh) - 1u));
+  b = (VU)VFN(seli)(e < -24, (VI)sign, (VI)b);
+  b = (VU)VFN(seli)(e >= 16, (VI)(sign | 0x477fe000u), (VI)b);
+  b = (VU)VFN(seli)((VI)a == 0x7f800000, (VI)u, (VI)b);
+  return (VU)VFN(seli)((VI)a > 0x7f800000, (VI)(sign | 0x7fc00000u | (a & 0x007fe000u)), (VI)b);
+}
+
+static void VFN(quantize_half_n)(const float *in, float *out, size_t n) {
+  size_t i = 0;
+  for (; i + TSV_W <= n; i += TSV_W) {
+    VU u;
+    __builtin_memcpy(&u, in + i, sizeof u);
+    u = VFN(quantize_half_bits)(u);
+    __builtin_memcpy(out + i, &u, sizeof u);
+  }
+  for (; i < n; ++i) out[i] = ts_quantize_half(in[i]);
+}
+
+/* ts_unorm8_from_float: saturate (NaN -> 0), then x * (255/256) + 2^15, low 8 bits. */
+static void VFN(unorm8_n)(const float *in, uint8_t *out, size_t n) {
+  size_t i = 0;
+  for (; i + TSV_W <= n; i += TSV_W) {
+    VF x;
+    __builtin_memcpy(&x, in + i, sizeof x);
+    const VF c = VFN(lp_min)(VFN(lp_max)(x, VFN(splat)(0.0f)), VFN(splat)(1.0f));
+    const VU b = VFN(asu)(c * 0.99609375f + 32768.0f);
+    for (int j = 0; j < TSV_W; ++j) out[i + (size_t)j] = (uint8_t)(b[j] & 0xffu);
+  }
+  for (; i < n; ++i) out[i] = ts_unorm8_from_float(in[i]);
+}

@@ -1,0 +1,18 @@
+/* c_ref/twins/hdr_tonemap_impl.h: generic body of the hdr_tonemap twin; mirrors
+ * shaders/hdr_tonemap.fs statement by statement. Instantiated by hdr_tonemap.c. */
+
+static V4 FN(hdr_tonemap_impl)(const ht_variant *v, const ts_vec4f rec[HT_SLOTS], const ts_tex2d *bloom_tex) {
+  V4 pos = FN(vec4_in)(rec[HT_SLOT_POS]);
+  V4 size = FN(vec4_in)(rec[HT_SLOT_SIZE]);
+  V3 fb = FN(xyz)(rec[HT_SLOT_FRAME]);
+  V4 params = FN(vec4_in)(rec[HT_SLOT_PARAMS]);
+  V4 s = FN(sample2d)(bloom_tex, pos.x * size.z, pos.y * size.w);
+  V3 bloom = M(scale3)(M(v3)(s.x, s.y, s.z), M(sqrt)(params.x));
+  bloom = M(v3)(M(min)(bloom.x, K(1.0)), M(min)(bloom.y, K(1.0)), M(min)(bloom.z, K(1.0)));
+  TS_REAL k = params.y * M(pow)(FN(luminance)(bloom), params.z);
+  V3 c = M(add3)(M(scale3)(fb, params.x), M(scale3)(bloom, k));
+  if (v->output_mode == 1) c = FN(output_gamma22)(c);
+  else if (v->output_mode == 2) c = FN(output_srgb)(c);
+  else c = FN(output_linear)(c);
+  return M(v4)(c.x, c.y, c.z, K(1.0));
+}

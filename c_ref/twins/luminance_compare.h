@@ -1,0 +1,27 @@
+/* c_ref/twins/luminance_compare.h: C twin of shaders/luminance_compare.fs, the bucket test
+ * of the auto-exposure histogram. One call tests one pixel from its input record
+ * (shaders/luminance_compare_slots.glsl): (1,1,1,1) when the pixel is marked, and
+ * (0,0,0,0), the cleared target, when the shader discards it. */
+#ifndef TS_LUMINANCE_COMPARE_H
+#define TS_LUMINANCE_COMPARE_H
+#include "math/ts_math.h"
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+enum lc_slot { LC_SLOT_COLOR = 0, LC_SLOT_RANGE = 1, LC_SLOTS = 2, LC_PIXEL_SLOTS = 1 };
+
+typedef struct {
+  int input_encoding; /* INPUT_ENCODING: 0 linear x tone-map scale, 1 sRGB-encoded, 2 luminance image (.r) */
+} lc_variant;
+
+ts_vec4f luminance_compare_f(const lc_variant *v, const ts_vec4f rec[LC_SLOTS]);
+ts_vec4d luminance_compare_d(const lc_variant *v, const ts_vec4f rec[LC_SLOTS]);
+/* The luminance the test compares (before the bucket bounds), float32 and llvmpipe-exact. */
+float luminance_compare_lum_f(const lc_variant *v, ts_vec4f color, float tone_map_scale);
+
+#ifdef __cplusplus
+}
+#endif
+#endif

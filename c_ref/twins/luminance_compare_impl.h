@@ -1,0 +1,17 @@
+/* c_ref/twins/luminance_compare_impl.h: generic body of the luminance_compare twin; mirrors
+ * shaders/luminance_compare.fs statement by statement. Instantiated by luminance_compare.c. */
+
+static TS_REAL FN(lc_lum)(const lc_variant *v, V3 c, TS_REAL tscale) {
+  if (v->input_encoding == 2) return c.x * tscale;
+  if (v->input_encoding == 1) c = FN(srgb_decode3)(c);
+  return FN(luminance)(c) * tscale;
+}
+
+static V4 FN(luminance_compare_impl)(const lc_variant *v, const ts_vec4f rec[LC_SLOTS]) {
+  V3 c = FN(xyz)(rec[LC_SLOT_COLOR]);
+  V4 range = FN(vec4_in)(rec[LC_SLOT_RANGE]);
+  TS_REAL lum = FN(lc_lum)(v, c, range.z);
+  TS_REAL mark = FN(in_bucket)(lum, range.x, range.y);
+  if (mark < K(0.5)) return M(v4)(K(0.0), K(0.0), K(0.0), K(0.0)); /* discard: the cleared target */
+  return M(v4)(mark, mark, mark, mark);
+}

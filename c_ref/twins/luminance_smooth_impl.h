@@ -1,0 +1,12 @@
+/* c_ref/twins/luminance_smooth_impl.h: generic body of the luminance_smooth twin; mirrors
+ * shaders/luminance_smooth.fs statement by statement. Instantiated by luminance_smooth.c. */
+
+static V4 FN(luminance_smooth_impl)(const ls_variant *v, const ts_vec4f rec[LS_SLOTS]) {
+  V3 c = FN(xyz)(rec[LS_SLOT_COLOR]);
+  TS_REAL prev = (TS_REAL)rec[LS_SLOT_HISTORY].x;
+  V4 params = FN(vec4_in)(rec[LS_SLOT_PARAMS]);
+  if (v->input_encoding == 1) c = FN(srgb_decode3)(c);
+  TS_REAL lum = FN(luminance)(c) * params.y;
+  TS_REAL s = M(clamp)(prev + params.x * (lum - prev), K(0.0), K(65504.0));
+  return M(v4)(s, s, s, K(1.0));
+}

@@ -1,0 +1,111 @@
+/* c_ref/twins/model_lighting_impl.h: generic body of the model_lighting twin; mirrors
+ * shaders/model_lighting.fs statement by statement. Instantiated by model_lighting.c. */
+
+static V3 FN(ml_ambient)(V3 n, const ts_vec4f rec[ML_SLOTS]) {
+  V3 cube[6];
+  for (int k = 0; k < 6; ++k) cube[k] = FN(xyz)(rec[ML_SLOT_AMBIENT + k]);
+  return FN(ambient_cube)(n, cube);
+}
+
+static V4 FN(model_lighting_impl)(const ml_variant *v, const ts_vec4f rec[ML_SLOTS], const ml_textures *tex) {
+  V3 P = FN(xyz)(rec[ML_SLOT_POSITION]);
+  V4 uvw = FN(vec4_in)(rec[ML_SLOT_UV]);
+  V4 params = FN(vec4_in)(rec[ML_SLOT_PARAMS]);
+  V4 base = v->albedo_texture ? FN(sample2d)(tex->albedo, uvw.x, uvw.y) : FN(vec4_in)(rec[ML_SLOT_ALBEDO]);
+
+  V3 N, V = M(v3)(K(0.0), K(0.0), K(0.0)), R = V, spec = V, rim = V;
+  V4 nmap = M(v4)(K(0.0), K(0.0), K(0.0), K(0.0)), phong = nmap, rim_params = nmap;
+  V4 expmap = M(v4)(K(1.0), K(1.0), K(1.0), K(1.0));
+  TS_REAL NdotV = K(0.0), k = K(0.0);
+  if (v->phong) {
+    nmap = FN(sample2d)(tex->normal_map, uvw.x, uvw.y);
+    V3 tn = M(sub3)(M(scale3)(FN(xyz4)(nmap), K(2.0)), M(v3)(K(1.0), K(1.0), K(1.0)));
+    V3 T = FN(xyz)(rec[ML_SLOT_TANGENT]), B = FN(xyz)(rec[ML_SLOT_BITANGENT]), Ng = FN(xyz)(rec[ML_SLOT_NORMAL]);
+    N = FN(safe_normalize)(M(add3)(M(add3)(M(scale3)(T, tn.x), M(scale3)(B, tn.y)), M(scale3)(Ng, tn.z)));
+    V = FN(safe_normalize)(M(sub3)(FN(xyz)(rec[ML_SLOT_EYE]), P));
+    NdotV = M(dot3)(N, V);
+    R = M(sub3)(M(scale3)(N, K(2.0) * NdotV), V);
+    phong = FN(vec4_in)(rec[ML_SLOT_PHONG]);
+    if (v->exponent_map) {
+      expmap = FN(sample2d)(tex->exponent_map, uvw.x, uvw.y);
+      k = K(1.0) + phong.y * expmap.x;
+    } else {
+      k = phong.x;
+    }
+    if (v->rim_light) rim_params = FN(vec4_in)(rec[ML_SLOT_RIM]);
+  } else {
+    N = FN(safe_normalize)(FN(xyz)(rec[ML_SLOT_NORMAL]));
+  }
+
+  V3 diffuse = FN(ml_ambient)(N, rec);
+
+  int loop = v->num_lights;
+  if (v->tier == TS_TIER_ID_SM3) loop = (int)M(clamp)(params.y, K(0.0), (TS_REAL)ML_MAX_LIGHTS);
+  for (int i = 0; i < loop && i < ML_MAX_LIGHTS; ++i) {
+    V4 l[5];
+    for (int j = 0; j < 5; ++j) l[j] = FN(vec4_in)(rec[ML_SLOT_LIGHT0 + 5 * i + j]);
+    V3 L;
+    TS_REAL att;
+    if (v->tier == TS_TIER_ID_PS20) {
+      L = FN(light_direction)(l, P);
+      att = i == 0 ? (TS_REAL)rec[ML_SLOT_VERTEX_ATTEN].x : (TS_REAL)rec[ML_SLOT_VERTEX_ATTEN].y;
+    } else {
+      att = FN(light_attenuation)(l, P, &L);
+    }
+    TS_REAL NdotL = M(dot3)(N, L);
+    if (v->light_warp) {
+      V4 w = FN(sample2d)(tex->light_warp, M(saturate)(K(0.5) * NdotL + K(0.5)), K(0.5));
+      diffuse = M(add3)(diffuse, M(scale3)(M(mul3)(FN(xyz4)(l[0]), M(scale3)(FN(xyz4)(w), K(2.0))), att));
+    } else {
+      TS_REAL term = v->half_lambert ? FN(half_lambert)(NdotL) : FN(lambert)(NdotL);
+      diffuse = M(add3)(diffuse, M(scale3)(FN(xyz4)(l[0]), att * term));
+    }
+    if (v->phong) {
+      TS_REAL RdotL = M(saturate)(M(dot3)(R, L));
+      V3 lit = M(scale3)(FN(xyz4)(l[0]), M(saturate)(NdotL) * att);
+      spec = M(add3)(spec, M(scale3)(lit, M(pow)(RdotL, k)));
+      if (v->rim_light) rim = M(add3)(rim, M(scale3)(lit, M(pow)(RdotL, rim_params.x)));
+    }
+  }
+
+  V3 color;
+  /* With no local lights in the variant (NUM_LIGHTS = 0 below sm3) the shader's spec
+   * and rim sums are the constant 0, and NIR folds 0 * x to 0 even when x is NaN or
+   * Inf (platform notes section 4): mirror the folding, not IEEE. */
+  const int spec_const_zero = v->tier != TS_TIER_ID_SM3 && v->num_lights == 0;
+  if (v->phong) {
+    V4 fr = FN(vec4_in)(rec[ML_SLOT_FRESNEL]);
+    TS_REAL F = FN(fresnel_ranges)(NdotV, FN(xyz4)(fr));
+    TS_REAL mask = phong.w > K(0.5) ? base.w : nmap.w;
+    mask = fr.w > K(0.5) ? K(1.0) - mask : mask;
+    TS_REAL spec_mask = mask * F;
+    if (!spec_const_zero) spec = M(scale3)(spec, spec_mask * phong.z);
+    V4 tint = FN(vec4_in)(rec[ML_SLOT_PHONG_TINT]);
+    V3 spec_tint = FN(xyz4)(tint);
+    if (v->exponent_map && tint.w > K(0.5))
+      spec_tint = FN(lerp3_from_one)(FN(xyz4)(base), expmap.y);
+    if (v->rim_light) {
+      TS_REAL fresnel4 = FN(fresnel4)(NdotV);
+      TS_REAL rim_mask = FN(lerp_from_one)(expmap.w, rim_params.z);
+      if (!spec_const_zero) {
+        rim = M(scale3)(rim, rim_mask * fresnel4);
+        spec = M(max3)(spec, rim);
+      }
+      spec = M(add3)(spec, M(scale3)(FN(ml_ambient)(V, rec), rim_params.y * M(saturate)(rim_mask * fresnel4 * N.y)));
+    }
+    color = spec_const_zero && !v->rim_light ? spec : M(mul3)(spec, spec_tint);
+    if (v->envmap) {
+      V4 env = FN(vec4_in)(rec[ML_SLOT_ENVMAP]);
+      TS_REAL env_mask = env.z > K(0.5) ? mask : (fr.w > K(0.5) ? K(1.0) - base.w : base.w);
+      TS_REAL env_scale = env.x * FN(lerp_from_one)(F, env.y) * env_mask;
+      V4 e = FN(samplecube)(tex->envmap, R);
+      color = M(add3)(color, M(mul3)(M(scale3)(FN(xyz4)(e), env_scale), FN(xyz)(rec[ML_SLOT_ENVMAP_TINT])));
+    }
+    V4 si = FN(vec4_in)(rec[ML_SLOT_SELF_ILLUM]);
+    color = M(add3)(color, M(mul3)(FN(xyz4)(base), FN(lerp3)(diffuse, FN(xyz4)(si), base.w * si.w)));
+  } else {
+    color = M(mul3)(FN(xyz4)(base), diffuse);
+  }
+  V3 c = FN(final_output)(color, params.x, v->output_mode);
+  return M(v4)(c.x, c.y, c.z, K(1.0));
+}

@@ -1,0 +1,31 @@
+/* tiershade -- c_ref/twins/world_lighting_batch.h
+ * The world_lighting float32 twin for many pixels per call: the same bits as calling
+ * world_lighting_f() once per pixel, 8 (AVX2) or 4 (SSE2) pixels at a time (ts_batch.h).
+ * Use it like model_lighting_batch.h: ts_math_init() on the thread, then
+ *   wl_batch_input in;  // slot k of pixel i: in.slot[k][i * in.stride[k]]; stride 0 = shared
+ *   world_lighting_f_batch(&variant, &in, &textures, out, count);
+ * or world_lighting_f_records() for whole records (recs[i * WL_SLOTS + k]).
+ * Verified bit for bit against world_lighting_f by tests/unit/test_fast_path.cpp. */
+#ifndef TS_WORLD_LIGHTING_BATCH_H
+#define TS_WORLD_LIGHTING_BATCH_H
+#include "math/ts_batch.h"
+#include "twins/world_lighting.h"
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+typedef struct {
+  const ts_vec4f *slot[WL_SLOTS]; /* slot k of pixel i: slot[k][i * stride[k]] */
+  int stride[WL_SLOTS];           /* in ts_vec4f; 0 = one value for every pixel */
+} wl_batch_input;
+
+void world_lighting_f_batch(const wl_variant *v, const wl_batch_input *in, const wl_textures *t, ts_vec4f *out,
+                            int count);
+void world_lighting_f_records(const wl_variant *v, const ts_vec4f *recs, const wl_textures *t, ts_vec4f *out,
+                              int count);
+
+#ifdef __cplusplus
+}
+#endif
+#endif

@@ -1,0 +1,175 @@
+/* tiershade -- c_ref/twins/world_lighting_simd_impl.h
+ * The world_lighting twin (c_ref/twins/world_lighting_impl.h and the common_rnm/lightmap/envmap/fog
+ * headers, float32) on TSV_W pixels at once, in SoA, statement by statement, so that every lane
+ * gives the scalar twin's bits. Combos stay scalar `if`s; the per-pixel "full envmap" test on
+ * the record's contrast/saturation/R0 becomes a select. Included by world_lighting_batch.c after
+ * ts_simd.h, ts_simd_sampler.h and ts_simd_sampler_nearest.h (VFN(tex2d): NEAREST or LINEAR). */
+
+TSV_INL V4v VFN(wl_rec)(const wl_batch_input *in, int k, const size_t *pix) {
+  return VFN(rec_load)(in->slot[k], in->stride[k], pix);
+}
+
+#define WLV_SQRT_2_OVER_3 0.816496580927726f
+#define WLV_OO_SQRT_6 0.408248290463863f
+#define WLV_OO_SQRT_2 0.707106781186548f
+#define WLV_OO_SQRT_3 0.577350269189626f
+
+/* common_lightmap.h */
+static V3v VFN(wl_lightmap)(const wl_variant *v, const ts_tex2d *lm, VF u, VF w, VF ox, VF oy, float k) {
+  const VF kv = VFN(splat)(k);
+  const V4v t = VFN(tex2d)(lm, u + kv * ox, w + kv * oy);
+  const V3v rgb = VFN(v3)(t.x, t.y, t.z);
+  if (v->tier == WL_TIER_PS20 && v->encoding == WL_LM_LDR) {
+    const V3v s = VFN(scale3)(rgb, VFN(splat)(2.0f));
+    const V3v q = VFN(mul3)(s, s);
+    const VF four = VFN(splat)(4.0f);
+    return VFN(v3)(VFN(min)(q.x, four), VFN(min)(q.y, four), VFN(min)(q.z, four));
+  }
+  if (v->encoding == WL_LM_412) return VFN(scale3)(rgb, VFN(splat)(16.0f));
+  if (v->encoding == WL_LM_LDR) {
+    const V3v s = VFN(scale3)(rgb, VFN(splat)(2.0f));
+    const VF g = VFN(splat)(2.2f);
+    return VFN(v3)(VFN(pow)(s.x, g), VFN(pow)(s.y, g), VFN(pow)(s.z, g));
+  }
+  if (v->encoding == WL_LM_RGBE) return VFN(scale3)(rgb, VFN(exp2)(t.w * 255.0f - 128.0f));
+  return rgb;
+}
+
+/* common_rnm.h */
+TSV_INL V3v VFN(rnm_weights)(V3v n) {
+  V3v d = VFN(v3)(n.x * WLV_SQRT_2_OVER_3 + n.z * WLV_OO_SQRT_3,
+                  VFN(dot3)(n, VFN(v3)(VFN(splat)(-WLV_OO_SQRT_6), VFN(splat)(WLV_OO_SQRT_2), VFN(splat)(WLV_OO_SQRT_3))),
+                  VFN(dot3)(n, VFN(v3)(VFN(splat)(-WLV_OO_SQRT_6), VFN(splat)(-WLV_OO_SQRT_2), VFN(splat)(WLV_OO_SQRT_3))));
+  d = VFN(saturate3)(d);
+  const VF e = VFN(splat)(1.0e-30f);
+  return VFN(add3)(VFN(mul3)(d, d), VFN(v3)(e, e, e));
+}
+TSV_INL V3v VFN(rnm_blend)(V3v d, V3v l0, V3v l1, V3v l2) {
+  const V3v s = VFN(add3)(VFN(add3)(VFN(scale3)(l0, d.x), VFN(scale3)(l1, d.y)), VFN(scale3)(l2, d.z));
+  const VF sum = d.x + (d.y + d.z);
+  return VFN(v3)(s.x / sum, s.y / sum, s.z / sum);
+}
+TSV_INL V3v VFN(ssbump_blend)(V3v t, V3v l0, V3v l1, V3v l2) {
+  return VFN(add3)(VFN(add3)(VFN(scale3)(l0, t.x), VFN(scale3)(l1, t.y)), VFN(scale3)(l2, t.z));
+}
+TSV_INL V3v VFN(ssbump_direction)(V3v t) {
+  return VFN(v3)(t.x * WLV_SQRT_2_OVER_3 - (t.y + t.z) * WLV_OO_SQRT_6, (t.y - t.z) * WLV_OO_SQRT_2,
+                 ((t.x + t.y) + t.z) * WLV_OO_SQRT_3);
+}
+
+/* common_envmap.h */
+TSV_INL V3v VFN(reflect_unnormalized)(V3v N, V3v E) {
+  return VFN(sub3)(VFN(scale3)(N, 2.0f * VFN(dot3)(N, E)), VFN(scale3)(E, VFN(dot3)(N, N)));
+}
+TSV_INL V3v VFN(envmap_contrast)(V3v s, VF contrast) {
+  return VFN(add3)(s, VFN(scale3)(VFN(sub3)(VFN(mul3)(s, s), s), contrast));
+}
+TSV_INL V3v VFN(envmap_saturation)(V3v s, VF saturation) {
+  const VF luma = VFN(dot3)(s, VFN(v3)(VFN(splat)(0.299f), VFN(splat)(0.587f), VFN(splat)(0.114f)));
+  const V3v d = VFN(scale3)(VFN(sub3)(s, VFN(v3)(luma, luma, luma)), saturation);
+  return VFN(v3)(luma + d.x, luma + d.y, luma + d.z);
+}
+TSV_INL VF VFN(cosine_between)(V3v N, V3v E) {
+  return VFN(dot3)(N, E) * VFN(inversesqrt)(VFN(max)(VFN(dot3)(N, N) * VFN(dot3)(E, E), VFN(splat)(1.0e-30f)));
+}
+TSV_INL VF VFN(wl_fresnel)(VF NdotV, VF one_minus_r0, VF r0) {
+  const VF x = 1.0f - VFN(saturate)(NdotV);
+  const VF x2 = x * x;
+  return (x2 * x2) * (x * one_minus_r0) + r0;
+}
+
+static void VFN(wl_block)(const wl_variant *v, const wl_batch_input *in, const wl_textures *tx, const size_t *pix,
+                          V3v *out) {
+  const VF zero = VFN(splat)(0.0f), one = VFN(splat)(1.0f);
+  const V4v uv = VFN(wl_rec)(in, WL_SLOT_UV, pix);
+  const V4v lm_offset = VFN(wl_rec)(in, WL_SLOT_LM_OFFSET, pix);
+  const V4v tint_scale = VFN(wl_rec)(in, WL_SLOT_TINT_SCALE, pix);
+  const V4v base = VFN(tex2d)(tx->base, uv.x, uv.y);
+
+  V3v diffuse, n = VFN(v3)(zero, zero, one);
+  V4v bump = {zero, zero, zero, zero};
+  if (v->bumpmap == WL_BUMP_NONE) {
+    diffuse = VFN(wl_lightmap)(v, tx->lightmap, uv.z, uv.w, lm_offset.x, lm_offset.y, 0.0f);
+  } else {
+    bump = VFN(tex2d)(tx->normalmap, uv.x, uv.y);
+    const V3v l0 = VFN(wl_lightmap)(v, tx->lightmap, uv.z, uv.w, lm_offset.x, lm_offset.y, 1.0f);
+    const V3v l1 = VFN(wl_lightmap)(v, tx->lightmap, uv.z, uv.w, lm_offset.x, lm_offset.y, 2.0f);
+    const V3v l2 = VFN(wl_lightmap)(v, tx->lightmap, uv.z, uv.w, lm_offset.x, lm_offset.y, 3.0f);
+    const V3v t = VFN(xyz)(bump);
+    if (v->bumpmap == WL_BUMP_RNM) {
+      n = VFN(sub3)(VFN(scale3)(t, VFN(splat)(2.0f)), VFN(v3)(one, one, one));
+      diffuse = VFN(rnm_blend)(VFN(rnm_weights)(n), l0, l1, l2);
+    } else {
+      n = v->tier == WL_TIER_PS20 ? VFN(ssbump_direction)(t) : VFN(safe_normalize)(VFN(ssbump_direction)(t));
+      diffuse = VFN(ssbump_blend)(t, l0, l1, l2);
+    }
+  }
+  const V3v base_rgb = VFN(xyz)(base);
+  V3v color;
+  if (v->envmap) {
+    color = VFN(mul3)(base_rgb, VFN(mul3)(diffuse, VFN(xyz)(tint_scale)));
+    const V4v env_tint = VFN(wl_rec)(in, WL_SLOT_ENV_TINT, pix);
+    const V4v env_params = VFN(wl_rec)(in, WL_SLOT_ENV_PARAMS, pix);
+    V3v N = VFN(xyz)(VFN(wl_rec)(in, WL_SLOT_NORMAL, pix));
+    if (v->bumpmap != WL_BUMP_NONE) {
+      const V3v T = VFN(xyz)(VFN(wl_rec)(in, WL_SLOT_TANGENT, pix)), B = VFN(xyz)(VFN(wl_rec)(in, WL_SLOT_BINORMAL, pix));
+      N = VFN(add3)(VFN(add3)(VFN(scale3)(T, n.x), VFN(scale3)(B, n.y)), VFN(scale3)(N, n.z));
+    }
+    const V3v E = VFN(xyz)(VFN(wl_rec)(in, WL_SLOT_EYE, pix));
+    const V4v env4 = VFN(textureCube)(tx->envmap, VFN(reflect_unnormalized)(N, E));
+    const V3v env = VFN(scale3)(VFN(xyz)(env4), env_tint.w);
+    const V3v tint = VFN(xyz)(env_tint);
+    V3v spec;
+    if (v->envmapmask == WL_MASK_TEXTURE) {
+      const V4v m = VFN(tex2d)(tx->envmap_mask, uv.x, uv.y);
+      spec = VFN(mul3)(env, VFN(mul3)(VFN(xyz)(m), tint));
+    } else if (v->envmapmask == WL_MASK_NORMAL_ALPHA) {
+      spec = VFN(mul3)(env, VFN(scale3)(tint, bump.w));
+    } else if (v->envmapmask == WL_MASK_INV_BASE_ALPHA) {
+      spec = VFN(mul3)(env, VFN(scale3)(tint, 1.0f - base.w));
+    } else {
+      spec = VFN(mul3)(env, tint);
+    }
+    /* full = tier != sm3 || contrast != 0 || saturation != 1 || R0 != 1 (per lane, unordered) */
+    const VI full = v->tier != WL_TIER_SM3 ? VFN(spliti)(-1)
+                                           : (env_params.x != 0.0f) | (env_params.y != 1.0f) | (env_params.w != 1.0f);
+    V3v s2 = VFN(envmap_saturation)(VFN(envmap_contrast)(spec, env_params.x), env_params.y);
+    const VF NdotV = v->tier == WL_TIER_PS20 ? VFN(cosine_between)(N, E)
+                                              : VFN(dot3)(VFN(safe_normalize)(N), VFN(safe_normalize)(E));
+    s2 = VFN(scale3)(s2, VFN(wl_fresnel)(NdotV, env_params.z, env_params.w));
+    spec = VFN(sel3)(full, s2, spec);
+    color = VFN(scale3)(VFN(add3)(color, spec), tint_scale.w);
+  } else {
+    color = VFN(mul3)(VFN(mul3)(base_rgb, diffuse), VFN(scale3)(VFN(xyz)(tint_scale), tint_scale.w));
+  }
+  if (v->tier != WL_TIER_PS20) {
+    const V4v fc = VFN(wl_rec)(in, WL_SLOT_FOG_COLOR, pix), fp = VFN(wl_rec)(in, WL_SLOT_FOG_PARAMS, pix);
+    const VF f = VFN(saturate)(VFN(min)(fc.w, lm_offset.z * fp.x - fp.y));
+    color = VFN(add3)(color, VFN(scale3)(VFN(sub3)(VFN(xyz)(fc), color), f * f));
+  }
+  const VF top = VFN(splat)(65504.0f);
+  *out = VFN(v3)(VFN(clamp)(color.x, zero, top), VFN(clamp)(color.y, zero, top), VFN(clamp)(color.z, zero, top));
+}
+
+#undef WLV_SQRT_2_OVER_3
+#undef WLV_OO_SQRT_6
+#undef WLV_OO_SQRT_2
+#undef WLV_OO_SQRT_3
+
+static void VFN(wl_batch)(const wl_variant *v, const wl_batch_input *in, const wl_textures *tx, ts_vec4f *out,
+                          int count) {
+  for (int first = 0; first < count; first += TSV_W) {
+    const int n = count - first < TSV_W ? count - first : TSV_W;
+    size_t pix[TSV_W];
+    for (int j = 0; j < TSV_W; ++j) pix[j] = (size_t)first + (size_t)(j < n ? j : n - 1);
+    V3v c;
+    VFN(wl_block)(v, in, tx, pix, &c);
+    for (int j = 0; j < n; ++j) {
+      ts_vec4f *o = &out[first + j];
+      o->x = c.x[j];
+      o->y = c.y[j];
+      o->z = c.z[j];
+      o->w = 1.0f;
+    }
+  }
+}

@@ -1,0 +1,69 @@
+// tiershade glue: command-line parsing (see cli.h).
+#include "cli/args.h"
+
+#include <algorithm>
+#include <cstdio>
+#include <cstdlib>
+
+Args::Args(const std::string &cmd, int argc, char **argv, const std::vector<std::string> &flags,
+           const std::vector<std::string> &opts)
+    : cmd_(cmd) {
+  for (int i = 0; i < argc; ++i) {
+    std::string a = argv[i];
+    if (a.size() > 1 && a[0] == '-' && !(a.size() > 1 && (isdigit(static_cast<unsigned char>(a[1])) || a[1] == '.'))) {
+      std::string value;
+      bool has_value = false;
+      const size_t eq = a.find('=');
+      if (eq != std::string::npos) {
+        value = a.substr(eq + 1);
+        a = a.substr(0, eq);
+        has_value = true;
+      }
+      if (std::find(flags.begin(), flags.end(), a) != flags.end()) {
+        if (has_value) fail("option " + a + " takes no value");
+        flags_[a] = 1;
+      } else if (std::find(opts.begin(), opts.end(), a) != opts.end()) {
+        if (!has_value) {
+          if (i + 1 >= argc) fail("option " + a + " needs a value");
+          value = argv[++i];
+        }
+        opts_.insert({a, value});
+      } else {
+        fail("unknown option '" + a + "' (see tiershade " + cmd + " --help)");
+      }
+    } else {
+      pos_.push_back(a);
+    }
+  }
+}
+
+std::string Args::get(const std::string &name, const std::string &def) const {
+  auto it = opts_.find(name);
+  if (it == opts_.end()) return def;
+  if (opts_.count(name) > 1) fail("option " + name + " given more than once");
+  return it->second;
+}
+
+std::vector<std::string> Args::all(const std::string &name) const {
+  std::vector<std::string> v;
+  auto range = opts_.equal_range(name);
+  for (auto it = range.first; it != range.second; ++it) v.push_back(it->second);
+  return v;
+}
+
+int Args::get_int(const std::string &name, int def, int lo, int hi) const {
+  if (!has(name)) return def;
+  const std::string s = get(name);
+  char *end = nullptr;
+  errno = 0;
+  const long v = std::strtol(s.c_str(), &end, 10);
+  if (s.empty() || *end || errno || v < lo || v > hi)
+    fail("option " + name + " wants an integer in [" + std::to_string(lo) + ", " + std::to_string(hi) + "], got '" +
+         s + "'");
+  return static_cast<int>(v);
+}
+
+void Args::fail(const std::string &msg) const {
+  fprintf(stderr, "tiershade %s: %s\n", cmd_.c_str(), msg.c_str());
+  std::exit(2);
+}

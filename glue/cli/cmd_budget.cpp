@@ -1,0 +1,152 @@
+// tiershade: `budget` subcommand: instruction slots per variant in the DX9-like
+// model of glue/budget/budget.cpp (docs/budget_model.md), checked against the tier limits:
+// ps20 = ps_2_0 (64 arithmetic + 32 texture slots), ps2b = ps_2_b (512 slots), sm3 unlimited.
+// With --nir, each variant's production program is also linked on OSMesa GL 3.3 under
+// ST_DEBUG=nir and Mesa's scalar NIR is counted (glue/budget/nir_capture.h) as a cross-check of
+// the model: nir_alu / alu must lie in [kNirRatioLo, kNirRatioHi].
+#include <cstdio>
+#include <memory>
+
+#include "shaderlib/assembler.h"
+#include "budget/budget.h"
+#include "families/family.h"
+#include "budget/nir_capture.h"
+#include "cli/select_args.h"
+
+struct TierLimits { int alu, tex, total; };  // -1: no limit
+static TierLimits limits_for(Tier t) {
+  switch (t) {
+    case Tier::PS20: return {64, 32, 96};
+    case Tier::PS2B: return {-1, -1, 512};
+    case Tier::SM3: return {-1, -1, -1};
+  }
+  return {-1, -1, -1};
+}
+static std::string lim(int v) { return v < 0 ? "null" : std::to_string(v); }
+
+// Consistency band of the NIR cross-check: Mesa's scalar NIR ALU count over the model's
+// DX9 ALU slots.  Measured on all 84 model_lighting variants (Mesa 22.3.6 llvmpipe):
+// see docs/budget_model.md, "Cross-check against Mesa's NIR", for the table and the reasons.
+static constexpr double kNirRatioLo = 0.8;
+static constexpr double kNirRatioHi = 5.0;
+
+int cmd_budget(int argc, char **argv) {
+  Args a("budget", argc, argv, {"--help", "--json", "--verbose", "--nir"}, {"--shader", "--tier", "--variant"});
+  if (a.flag("--help")) {
+    printf("usage: tiershade budget [--json] [--verbose] [--nir] [--shader S] [--tier T]... [--variant V]\n"
+           "Counts DX9-style instruction slots of each variant's production fragment shader\n"
+           "(GLSL 3.30 -> SPIR-V -> spirv-opt -O -> weight table) and checks the tier limits:\n"
+           "ps20 <= 64 arithmetic and <= 32 texture slots, ps2b <= 512 slots. Exit status 1 when\n"
+           "a variant is over budget or fails to compile.\n"
+           "--nir also links each production program on OSMesa GL 3.3 with ST_DEBUG=nir, counts\n"
+           "the scalar ALU and texture ops of Mesa's fragment NIR (nir_alu, nir_tex; JSON also\n"
+           "nir_ratio = nir_alu / alu), and fails a variant (exit status 1) whose nir_alu / alu\n"
+           "is outside [%.1f, %.1f] (variants with alu 0 are not checked). Weight table:\n\n%s",
+           kNirRatioLo, kNirRatioHi, budget_weight_table_markdown().c_str());
+    return 0;
+  }
+  if (!a.positional().empty()) a.fail("unexpected argument '" + a.positional()[0] + "'");
+  const bool nir = a.flag("--nir");
+  // Mesa reads ST_DEBUG once, when the first screen is created: before any context.
+  if (nir) nir_capture_setup_env();
+  Selection sel;
+  select_variants(a, &sel);
+  const bool json = a.flag("--json");
+  std::unique_ptr<GlContext> ctx;
+  std::unique_ptr<GlRenderer> renderer;
+  if (nir) {
+    std::string err;
+    ctx = GlContext::create(Backend::OSMesa, Api::GL33, &err);
+    if (!ctx) {
+      fprintf(stderr, "tiershade budget: --nir needs an OSMesa GL 3.3 context: %s\n", err.c_str());
+      return 1;
+    }
+    renderer = std::make_unique<GlRenderer>(*ctx);
+  }
+  int over = 0, inconsistent = 0;
+  if (json) printf("[\n");
+  for (size_t i = 0; i < sel.variants.size(); ++i) {
+    const Variant &v = sel.variants[i];
+    Assembled fs;
+    std::string err;
+    BudgetCounts c;
+    bool ok = assemble(v.shader->fragment, Target::GLSL330, Stage::Fragment, variant_defines(v, InputMode::Production), &fs, &err) &&
+              budget_count_fragment(fs.text, &c, &err);
+    if (!ok) err = map_compile_log(err, fs);
+    const TierLimits L = limits_for(v.tier);
+    const bool fits = ok && (L.alu < 0 || c.alu <= L.alu) && (L.tex < 0 || c.tex <= L.tex) &&
+                      (L.total < 0 || c.total() <= L.total);
+    if (!fits) ++over;
+    // NIR cross-check.
+    NirCounts nc;
+    std::string nir_err;
+    bool nir_ok = true, nir_counted = false, has_ratio = false;
+    double ratio = 0;
+    if (nir) {
+      nir_counted = nir_count_production(*renderer, Api::GL33, v, &nc, &nir_err);
+      if (!nir_counted) {
+        nir_ok = false;
+        nir_err = "NIR count failed: " + nir_err;
+      } else if (ok && c.alu > 0) {
+        has_ratio = true;
+        ratio = static_cast<double>(nc.alu) / c.alu;
+        if (ratio < kNirRatioLo || ratio > kNirRatioHi) {
+          nir_ok = false;
+          char b[160];
+          snprintf(b, sizeof b, "inconsistent: nir_alu / alu = %d / %d = %.2f is outside [%.1f, %.1f]", nc.alu,
+                   c.alu, ratio, kNirRatioLo, kNirRatioHi);
+          nir_err = b;
+        }
+      }
+      if (!nir_ok && fits) ++inconsistent;
+    }
+    if (json) {
+      std::string extra;
+      if (nir) {
+        char b[128];
+        if (nir_counted) snprintf(b, sizeof b, ",\"nir_alu\":%d,\"nir_tex\":%d", nc.alu, nc.tex);
+        else snprintf(b, sizeof b, ",\"nir_alu\":null,\"nir_tex\":null");
+        extra = b;
+        if (has_ratio) snprintf(b, sizeof b, ",\"nir_ratio\":%.3f", ratio);
+        else snprintf(b, sizeof b, ",\"nir_ratio\":null");
+        extra += b;
+      }
+      printf("  {\"shader\":\"%s\",\"variant\":\"%s\",\"tier\":\"%s\",\"alu\":%d,\"tex\":%d,\"total\":%d,"
+             "\"limit_alu\":%s,\"limit_tex\":%s,\"limit_total\":%s,\"fits\":%s%s}%s\n",
+             v.shader->name.c_str(), v.name().c_str(), tier_name(v.tier), c.alu, c.tex, c.total(), lim(L.alu).c_str(),
+             lim(L.tex).c_str(), lim(L.total).c_str(), fits ? "true" : "false", extra.c_str(),
+             i + 1 < sel.variants.size() ? "," : "");
+    } else {
+      std::string extra;
+      if (nir) {
+        char b[96];
+        if (nir_counted) snprintf(b, sizeof b, "  nir_alu %4d nir_tex %2d", nc.alu, nc.tex);
+        else snprintf(b, sizeof b, "  nir_alu    ? nir_tex  ?");
+        extra = b;
+        if (has_ratio) snprintf(b, sizeof b, " ratio %4.2f", ratio);
+        else snprintf(b, sizeof b, " ratio    -");
+        extra += b;
+      }
+      printf("%s %-15s %-60s alu %3d tex %2d total %3d  (limits alu %s tex %s total %s)%s\n",
+             !fits ? "OVER" : nir_ok ? "ok  " : "FAIL", v.shader->name.c_str(), v.name().c_str(), c.alu, c.tex,
+             c.total(), lim(L.alu).c_str(), lim(L.tex).c_str(), lim(L.total).c_str(), extra.c_str());
+      if (!ok) printf("  error: %s\n", err.c_str());
+      if (!nir_ok) printf("  nir: %s\n", nir_err.c_str());
+      if (a.flag("--verbose")) {
+        for (const auto &kv : c.by_op) printf("      %-24s %d\n", kv.first.c_str(), kv.second);
+        if (nir_counted)
+          printf("      nir: fragment NIR printed by Mesa at %s (%zu bytes of dump, all stages)\n",
+                 nc.printed_at.c_str(), nc.dump_bytes);
+      }
+    }
+    if (!ok && json) fprintf(stderr, "tiershade budget: %s: %s\n", v.name().c_str(), err.c_str());
+    if (!nir_ok && json) fprintf(stderr, "tiershade budget: %s: nir: %s\n", v.name().c_str(), nir_err.c_str());
+  }
+  if (json) printf("]\n");
+  else if (!nir) printf("budget: %zu variants, %d over budget or failed\n", sel.variants.size(), over);
+  else
+    printf("budget: %zu variants, %d over budget or failed, %d NIR-inconsistent or NIR count failed "
+           "(band nir_alu/alu in [%.1f, %.1f])\n",
+           sel.variants.size(), over, inconsistent, kNirRatioLo, kNirRatioHi);
+  return over || inconsistent ? 1 : 0;
+}

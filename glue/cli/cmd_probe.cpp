@@ -1,0 +1,189 @@
+// tiershade: `probe` subcommand: one pixel of one variant, evaluated in GL and in
+// C (float32 bit-exact twin and the double reference), printed side by side.
+#include <sys/stat.h>
+
+#include <cmath>
+#include <cstdio>
+#include <cstring>
+#include <fstream>
+#include <sstream>
+
+#include "conform/conform.h"
+#include "families/family.h"
+#include "cli/select_args.h"
+
+namespace {
+
+bool parse_floats(const std::string &s, float v[4], int *n) {
+  std::string t = s;
+  for (char &c : t)
+    if (c == ',') c = ' ';
+  std::istringstream in(t);
+  std::string tok;
+  *n = 0;
+  while (in >> tok) {
+    if (*n >= 4) return false;
+    char *end = nullptr;
+    const float f = std::strtof(tok.c_str(), &end);  // accepts nan, inf, 1e-39, hex floats
+    if (end == tok.c_str() || *end) return false;
+    v[(*n)++] = f;
+  }
+  return *n > 0;
+}
+
+int slot_index(const ShaderFamily &f, const std::string &name) {
+  for (int k = 0; k < f.slots; ++k)
+    if (f.slot_names[k] == name) return k;
+  return -1;
+}
+
+void set_slot_value(const Args &a, const ShaderFamily &f, FamilyInputs *in, const std::string &where,
+                    const std::string &assignment) {
+  const size_t eq = assignment.find('=');
+  if (eq == std::string::npos) a.fail(where + ": '" + assignment + "' is not SLOT=x,y,z,w");
+  const std::string name = assignment.substr(0, eq);
+  const int k = slot_index(f, name);
+  if (k < 0) {
+    std::string names;
+    for (const auto &s : f.slot_names) names += " " + s;
+    a.fail(where + ": unknown slot '" + name + "'; " + f.name + " has:" + names);
+  }
+  float v[4] = {0, 0, 0, 0};
+  int n = 0;
+  ts_vec4f cur = in->slot(0, 0, k);
+  if (!parse_floats(assignment.substr(eq + 1), v, &n))
+    a.fail(where + ": slot '" + name + "' wants 1 to 4 numbers, got '" + assignment.substr(eq + 1) + "'");
+  float *c = &cur.x;
+  for (int i = 0; i < n; ++i) c[i] = v[i];
+  in->set_slot(0, 0, k, cur);
+}
+
+std::string fmt(float f) {
+  char b[64];
+  uint32_t bits;
+  memcpy(&bits, &f, 4);
+  snprintf(b, sizeof b, "%-16.9g 0x%08x", f, bits);
+  return b;
+}
+
+}  // namespace
+
+int cmd_probe(int argc, char **argv) {
+  Args a("probe", argc, argv, {"--help"},
+         {"--shader", "--variant", "--backend", "--api", "--set", "--input", "--grid", "--size", "--seed"});
+  if (a.flag("--help")) {
+    puts("usage: tiershade probe --shader S --variant V [--backend osmesa|egl] [--api gl33|gles2|gles3]\n"
+         "                       [--grid random|hard:X,Y [--size N --seed K]] [--input FILE] [--set SLOT=x,y,z,w]...\n"
+         "Evaluates one pixel of a variant in GL and in C and prints both, with the ULP distance\n"
+         "and the double-precision reference. The pixel's input record starts from a conformance\n"
+         "grid pixel (--grid, same --size/--seed as `conform`), or from the first random record;\n"
+         "then FILE (lines 'SLOT x y z w', # comments) and --set override single slots.\n"
+         "Values accept nan, inf and hex floats. Slot names: see the worst-pixel report of conform.");
+    return 0;
+  }
+  if (!a.positional().empty()) a.fail("unexpected argument '" + a.positional()[0] + "'");
+  if (!a.has("--shader") || !a.has("--variant")) a.fail("--shader and --variant are required");
+  Selection sel;
+  select_variants(a, &sel);
+  const Variant v = sel.variants.at(0);
+  const ShaderFamily *f = find_family(v.shader->name);
+  if (!f) a.fail("shader '" + v.shader->name + "' has no C twin registered");
+  const int size = a.get_int("--size", 64, 1, 1024);
+  const int seed = a.get_int("--seed", 1, 0, 1 << 30);
+
+  // The grid the pixel comes from, generated exactly as `conform` does.
+  InputSet set = InputSet::Random;
+  int gx = 0, gy = 0;
+  if (a.has("--grid")) {
+    const std::string g = a.get("--grid");
+    const size_t colon = g.find(':');
+    const std::string sname = g.substr(0, colon);
+    if (sname == "hard") set = InputSet::Hard;
+    else if (sname != "random") a.fail("--grid wants random|hard[:X,Y], got '" + g + "'");
+    if (colon != std::string::npos && sscanf(g.c_str() + colon + 1, "%d,%d", &gx, &gy) != 2)
+      a.fail("--grid wants SET:X,Y, got '" + g + "'");
+    if (gx < 0 || gy < 0 || gx >= size || gy >= size) a.fail("--grid pixel lies outside the " + std::to_string(size) + "^2 grid");
+  }
+  FamilyInputs grid;
+  f->make_inputs(set, size, size, static_cast<uint32_t>(seed) * 7919u + static_cast<uint32_t>(set), &grid);
+  FamilyInputs in;
+  in.resize(1, 1, f->slots);
+  in.textures = grid.textures;
+  for (int k = 0; k < f->slots; ++k) in.set_slot(0, 0, k, grid.slot(gx, gy, k));
+  if (!grid.case_names.empty()) in.case_names = {grid.case_names[static_cast<size_t>(gy) * size + gx]};
+
+  if (a.has("--input")) {
+    const std::string path = a.get("--input");
+    struct stat st;
+    if (stat(path.c_str(), &st) != 0 || !S_ISREG(st.st_mode)) a.fail("cannot read input file '" + path + "' (not a readable regular file)");
+    std::ifstream file(path);
+    if (!file) a.fail("cannot read input file '" + path + "'");
+    std::string line;
+    int lineno = 0;
+    while (std::getline(file, line)) {
+      ++lineno;
+      const size_t hash = line.find('#');
+      if (hash != std::string::npos) line.resize(hash);
+      std::istringstream ls(line);
+      std::string name, rest, tok;
+      if (!(ls >> name)) continue;
+      while (ls >> tok) rest += (rest.empty() ? "" : " ") + tok;
+      set_slot_value(a, *f, &in, path + ":" + std::to_string(lineno), name + "=" + rest);
+    }
+    if (file.bad()) a.fail("cannot read input file '" + path + "' (read error after line " + std::to_string(lineno) + ")");
+  }
+  for (const auto &s : a.all("--set")) set_slot_value(a, *f, &in, "--set", s);
+
+  Backend b = Backend::OSMesa;
+  Api api = Api::GL33;
+  if (a.has("--backend") && (!parse_backend(a.get("--backend"), &b) || b == Backend::CPU))
+    a.fail("unknown backend '" + a.get("--backend") + "' (osmesa, egl)");
+  if (a.has("--api") && !parse_api(a.get("--api"), &api)) a.fail("unknown api '" + a.get("--api") + "'");
+  if (!a.has("--api") && b == Backend::EGL) api = Api::GLES3;
+  std::string err;
+  if (!config_supported(b, api, &err)) a.fail(err);
+  if (adapt_textures_for_api(api, &in))
+    printf("note: cube maps sampled with NEAREST on GLES (seamless filtering; see glue/conform/conform.h)\n");
+  auto ctx = GlContext::create(b, api, &err);
+  if (!ctx) {
+    fprintf(stderr, "tiershade probe: %s\n", err.c_str());
+    return 1;
+  }
+  GlRenderer r(*ctx);
+  const GLuint prog = build_conform_program(r, api, v, &err);
+  if (!prog) {
+    fprintf(stderr, "tiershade probe: %s\n", err.c_str());
+    return 1;
+  }
+  const GlFns &g = r.gl();
+  g.UseProgram(prog);
+  const GLint size_loc = g.GetUniformLocation(prog, "ts_record_size");
+  if (size_loc >= 0) g.Uniform2f(size_loc, 1.f, static_cast<float>(f->slots));
+  const GLint gh_loc = g.GetUniformLocation(prog, "ts_grid_height");
+  if (gh_loc >= 0) g.Uniform1f(gh_loc, 1.f);
+  std::vector<std::pair<std::string, GLuint>> texs = {{"ts_record", r.upload_texture(in.record_texture())}};
+  for (const auto &t : in.textures) texs.push_back({t.sampler, r.upload_texture(t)});
+  ImageF img;
+  const bool ok = r.draw(prog, texs, 1, 1, &img, &err);
+  for (auto &t : texs) r.delete_texture(t.second);
+  r.delete_program(prog);
+  if (!ok) {
+    fprintf(stderr, "tiershade probe: %s\n", err.c_str());
+    return 1;
+  }
+  const ts_vec4f c = f->eval_f(v, in, 0, 0);
+  const ts_vec4d d = f->eval_d(v, in, 0, 0);
+  printf("%s %s on %s/%s\n%s", f->name, v.name().c_str(), backend_name(b), api_name(api),
+         describe_pixel(*f, in, 0, 0).c_str());
+  const float cv[4] = {c.x, c.y, c.z, c.w};
+  const double dv[4] = {d.x, d.y, d.z, d.w};
+  printf("  %-3s %-27s %-27s %-8s %s\n", "ch", "GL (llvmpipe)", "C float32", "ULP", "C double");
+  int worst = 0;
+  for (int ch = 0; ch < 4; ++ch) {
+    const unsigned u = ulp_distance(img.rgba[ch], cv[ch]);
+    if (u) worst = 1;
+    printf("  %-3d %s %s %-8u %.17g\n", ch, fmt(img.rgba[ch]).c_str(), fmt(cv[ch]).c_str(), u, dv[ch]);
+  }
+  printf("%s\n", worst ? "GL and C differ" : "GL and C agree bit for bit");
+  return worst;
+}

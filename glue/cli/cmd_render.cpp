@@ -1,0 +1,267 @@
+// tiershade: `render` subcommand: a glTF scene through the variants it needs, on llvmpipe
+// (OSMesa or EGL) or the C fallback, written as EXR (the lit pass, RGBA32F) and PNG (the
+// final display frame). Prints the variants built and why, and what the selection saved.
+#include <unistd.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+#include <thread>
+
+#include "cli/args.h"
+#include "conform/conform.h"
+#include "shaderlib/draw_dump.h"
+#include "gl/float_target.h"
+#include "io/image_io.h"
+#include "scene/scene.h"
+#include "scene/selection.h"
+#include "scene/frame.h"
+#include "scene/prepare.h"
+
+namespace {
+
+// Peak resident memory of this process (VmHWM of /proc/self/status), MiB; -1 if unknown.
+double peak_mib() {
+  FILE *f = fopen("/proc/self/status", "r");
+  if (!f) return -1;
+  char line[256];
+  double kib = -1;
+  while (fgets(line, sizeof line, f))
+    if (sscanf(line, "VmHWM: %lf kB", &kib) == 1) break;
+  fclose(f);
+  return kib < 0 ? -1 : kib / 1024.0;
+}
+
+using Clock = std::chrono::steady_clock;
+
+bool parse_size(const std::string &s, int *w, int *h) {
+  int a = 0, b = 0;
+  char x = 0, extra = 0;
+  if (sscanf(s.c_str(), "%d%c%d%c", &a, &x, &b, &extra) != 3 || (x != 'x' && x != 'X')) return false;
+  if (a < 1 || b < 1 || a > 8192 || b > 8192) return false;
+  *w = a;
+  *h = b;
+  return true;
+}
+
+// Compiles and links every combo of the families the scene uses (the baseline the selection
+// is measured against), in a context like the render's; returns the time in ms.
+bool compile_all_programs(const SceneSelection &sel, Backend b, Api api, double *ms, std::string *err) {
+  auto ctx = GlContext::create(b, api, err);
+  if (!ctx) return false;
+  GlRenderer r(*ctx);
+  const auto t0 = Clock::now();
+  for (const Variant *v : sel.all_variants) {
+    const GLuint p = build_production_program(r, api, *v, err);
+    if (!p) return false;
+    r.delete_program(p);
+  }
+  ctx->gl().Finish();
+  *ms = std::chrono::duration<double, std::milli>(Clock::now() - t0).count();
+  return true;
+}
+
+// The first frame (init included) and the median of 3 further frames, in ms.
+bool warm_frame_ms(const Scene &s, const SceneSelection &sel, const SceneRenderConfig &cfg, double *first,
+                   double *frame, double *lit, std::string *err) {
+  const auto t0 = Clock::now();
+  SceneRenderer r;
+  SceneRenderResult res;
+  if (!r.init(s, sel, cfg, err) || !r.frame(&res, err)) return false;
+  if (first) *first = std::chrono::duration<double, std::milli>(Clock::now() - t0).count();
+  std::vector<double> t, l;
+  for (int i = 0; i < 5; ++i) {
+    if (!r.frame(&res, err)) return false;
+    t.push_back(res.frame_ms);
+    l.push_back(res.lit_ms);
+  }
+  std::sort(t.begin(), t.end());
+  std::sort(l.begin(), l.end());
+  *frame = t[2];
+  *lit = l[2];
+  return true;
+}
+
+}  // namespace
+
+int cmd_render(int argc, char **argv) {
+  Args a("render", argc, argv, {"--help", "--check", "--quiet", "--progress", "--compile-all", "--report-memory"},
+         {"--tier", "--backend", "--api", "--hdr", "--size", "-o", "--threads", "--exposure-frames", "--dump-draws"});
+  if (a.flag("--help")) {
+    puts("usage: tiershade render SCENE.gltf [--tier ps20|ps2b|sm3] [--backend egl|osmesa|cpu]\n"
+         "                        [--api gles3|gles2|gl33] [--hdr integer|float] [--size WxH] -o OUT\n"
+         "                        [--check] [--compile-all] [--threads N] [--progress] [--quiet]\n"
+         "                        [--dump-draws DIR]\n"
+         "Renders a glTF 2.0 scene (docs/scenes.md) with only the shader variants it needs and writes\n"
+         "OUT.exr (the lit pass, RGBA32F as the shaders wrote it) and OUT.png (the final frame).\n"
+         "Defaults: sm3, EGL surfaceless GLES 3.0 (OSMesa: GL 3.3), the scene's HDR path, 1280x720.\n"
+         "--backend cpu renders with the C fallback alone (its own rasteriser, the bit-exact twins).\n"
+         "--check: on GL, also shades GL's own G-buffer with the C twin and fails unless equal bit for bit.\n"
+         "--compile-all: also compiles every combo of the families used, to measure what the selection saved.\n"
+         "--dump-draws DIR: GL: writes the draws (geometry, uniform values, textures) and the lit frame, for\n"
+         "a bare engine to replay with a shader bundle (docs/bundles.md; tests/bundle/bare_gl_render).");
+    return 0;
+  }
+  if (a.positional().size() != 1) a.fail("expected one scene file (tiershade render SCENE.gltf -o OUT)");
+  if (!a.has("-o")) a.fail("-o OUT is required");
+  Tier tier = Tier::SM3;
+  if (a.has("--tier") && !parse_tier(a.get("--tier"), &tier)) a.fail("unknown tier '" + a.get("--tier") + "'");
+  SceneRenderConfig cfg;
+  if (a.has("--backend")) {
+    const std::string b = a.get("--backend");
+    if (b == "cpu") cfg.backend = Backend::CPU;
+    else if (!parse_backend(b, &cfg.backend) || cfg.backend == Backend::CPU)
+      a.fail("unknown backend '" + b + "' (egl, osmesa, cpu)");
+  }
+  cfg.api = cfg.backend == Backend::OSMesa ? Api::GL33 : Api::GLES3;
+  if (a.has("--api") && !parse_api(a.get("--api"), &cfg.api)) a.fail("unknown API '" + a.get("--api") + "'");
+  std::string why;
+  if (cfg.backend != Backend::CPU && !config_supported(cfg.backend, cfg.api, &why)) a.fail(why);
+  const std::string hdr = a.get("--hdr");
+  if (!hdr.empty() && hdr != "integer" && hdr != "float") a.fail("unknown HDR path '" + hdr + "' (integer, float)");
+  if (a.has("--size") && !parse_size(a.get("--size"), &cfg.w, &cfg.h))
+    a.fail("bad --size '" + a.get("--size") + "' (WxH, 1..8192 each)");
+  cfg.threads = a.get_int("--threads", 0, 0, 256);
+  cfg.exposure_frames = a.get_int("--exposure-frames", cfg.exposure_frames, 1, 10000);
+  cfg.check = a.flag("--check");
+  if (cfg.check && cfg.backend == Backend::CPU) a.fail("--check compares GL with C: it needs a GL backend");
+  if (a.has("--dump-draws") && cfg.backend == Backend::CPU) a.fail("--dump-draws captures GL draws: it needs a GL backend");
+  DumpFrame dump;
+  std::string dump_err;
+  if (a.has("--dump-draws")) {
+    cfg.on_draw = [&](const GlFns &gl, const PreparedScene &ps, const PreparedDraw &d, GLuint prog) {
+      DumpDraw dd;
+      dd.shader = d.variant->shader->name;
+      dd.variant = d.variant->name();
+      dd.position = d.position;
+      dd.normal = d.normal;
+      dd.uv = d.uv;
+      dd.tangent = d.tangent;
+      dd.lightmap = d.lightmap;
+      dd.indices = d.indices;
+      for (int t : d.tex) dd.textures.push_back(ps.textures.at(t));
+      if (!dump_capture_uniforms(gl, prog, &dd.uniforms, &dump_err) && dump_err.empty()) dump_err = "uniform capture failed";
+      dump.draws.push_back(std::move(dd));
+    };
+    cfg.on_lit = [&](const ImageF &lit) { dump.rgba = lit.rgba; };
+  }
+  const bool quiet = a.flag("--quiet");
+  const bool show_progress = a.flag("--progress") || isatty(2);
+  if (show_progress)
+    cfg.progress = [](const char *stage, double f) { fprintf(stderr, "\r%s: %3.0f%%%s", stage, f * 100, f >= 1 ? "\n" : ""); };
+  std::string out = a.get("-o");
+  for (const char *ext : {".png", ".exr"})
+    if (out.size() > 4 && out.compare(out.size() - 4, 4, ext) == 0) out.resize(out.size() - 4);
+  {  // OUT names files: not empty, not a directory ("out/" would write out/.exr)
+    const size_t slash = out.rfind('/');
+    const std::string base = slash == std::string::npos ? out : out.substr(slash + 1);
+    if (base.empty() || base == "." || base == "..")
+      a.fail("-o '" + a.get("-o") + "': expected a file name (OUT writes OUT.exr and OUT.png)");
+  }
+
+  const auto t0 = Clock::now();
+  Scene scene;
+  std::string err;
+  if (!load_scene(a.positional()[0], &scene, &err)) {
+    fprintf(stderr, "tiershade render: %s\n", err.c_str());
+    return 1;
+  }
+  SceneSelection sel;
+  if (!select_scene_variants(scene, tier, hdr, &sel, &err)) {
+    fprintf(stderr, "tiershade render: %s: %s\n", scene.path.c_str(), err.c_str());
+    return 1;
+  }
+  if (!quiet) {
+    printf("scene %s: %zu primitives, %zu materials, %zu lights, %zu probes; tier %s, %s HDR path, %s\n",
+           scene.path.c_str(), scene.primitives.size(), scene.materials.size(), scene.lights.size(),
+           scene.probes.size(), tier_name(tier), sel.hdr_path.c_str(),
+           cfg.backend == Backend::CPU ? "C fallback"
+                                       : (std::string(backend_name(cfg.backend)) + " " + api_name(cfg.api)).c_str());
+    printf("variants built (%zu):\n", sel.variants.size());
+    for (size_t i = 0; i < sel.variants.size(); ++i) {
+      printf("  %s %s\n", sel.variants[i].shader->name.c_str(), sel.variants[i].name().c_str());
+      for (const std::string &w : sel.variant_why[i]) printf("      %s\n", w.c_str());
+    }
+  }
+  SceneRenderResult res;
+  if (!render_scene(scene, sel, cfg, &res, &err)) {
+    fprintf(stderr, "tiershade render: %s: %s\n", scene.path.c_str(), err.c_str());
+    return 1;
+  }
+  const double total_ms = std::chrono::duration<double, std::milli>(Clock::now() - t0).count();
+  if (a.has("--dump-draws")) {
+    dump.w = res.w;
+    dump.h = res.h;
+    dump.depth_format = "DEPTH_COMPONENT24";  // as glue/scene/gl_renderer.cpp allocates it
+    if (!dump_err.empty() || !write_draw_dump(a.get("--dump-draws"), dump, &dump_err)) {
+      fprintf(stderr, "tiershade render: --dump-draws: %s\n", dump_err.c_str());
+      return 1;
+    }
+  }
+  // The two files on two threads (each is written to a temporary file and renamed, so neither is
+  // ever partial); if one fails, the other is removed: a failed run leaves no frame behind.
+  std::string png_err;
+  bool png_ok = false;
+  std::thread png_writer([&] { png_ok = write_png_rgba8(out + ".png", res.w, res.h, res.display, &png_err); });
+  const bool exr_ok = write_exr(out + ".exr", res.lit, &err);
+  png_writer.join();
+  if (!exr_ok || !png_ok) {
+    if (exr_ok) unlink((out + ".exr").c_str());
+    if (png_ok) unlink((out + ".png").c_str());
+    fprintf(stderr, "tiershade render: %s\n", (exr_ok ? png_err : err).c_str());
+    return 1;
+  }
+  if (!quiet) {
+    for (const std::string &n : res.notes) printf("note: %s\n", n.c_str());
+    printf("selection: %zu of %d combos of the families used (%.1f%%)\n", sel.variants.size(), sel.all_combos,
+           100.0 * sel.variants.size() / std::max(1, sel.all_combos));
+    if (cfg.backend != Backend::CPU) {
+      printf("compile: %.1f ms for the %zu selected variants", res.compile_ms, sel.variants.size());
+      if (a.flag("--compile-all")) {
+        double all_ms = 0;
+        if (!compile_all_programs(sel, cfg.backend, cfg.api, &all_ms, &err)) {
+          fprintf(stderr, "\ntiershade render: compiling every combo: %s\n", err.c_str());
+          return 1;
+        }
+        printf("; every combo: %.1f ms (%d programs), %.1fx the selection\n", all_ms, sel.all_combos,
+               all_ms / std::max(1e-3, res.compile_ms));
+        // The frame an engine without selection would draw: every feature compiled in.
+        SceneSelection uber;
+        SceneRenderConfig c2 = cfg;
+        c2.check = false;
+        c2.on_draw = nullptr;
+        c2.on_lit = nullptr;
+        c2.progress = nullptr;
+        double sel_frame = 0, sel_lit = 0, uber_first = 0, uber_frame = 0, uber_lit = 0;
+        if (!select_scene_variants(scene, tier, hdr, &uber, &err, true) ||
+            !warm_frame_ms(scene, sel, c2, nullptr, &sel_frame, &sel_lit, &err) ||
+            !warm_frame_ms(scene, uber, c2, &uber_first, &uber_frame, &uber_lit, &err)) {
+          fprintf(stderr, "tiershade render: all-features frame: %s\n", err.c_str());
+          return 1;
+        }
+        printf("all features compiled in (%zu variants): first frame %.1f ms, frame %.1f ms, lit pass %.1f ms\n"
+               "the selection (%zu variants):         first frame %.1f ms, frame %.1f ms, lit pass %.1f ms"
+               " (medians of 5; lit pass %.2fx faster)\n",
+               uber.variants.size(), uber_first, uber_frame, uber_lit, sel.variants.size(), res.frame_ms, sel_frame,
+               sel_lit, uber_lit / std::max(1e-3, sel_lit));
+      } else {
+        printf(" (--compile-all measures every combo and the all-features frame)\n");
+      }
+    }
+    printf("frame %dx%d: prepare %.1f ms, lit pass %.1f ms, post %.1f ms, frame %.1f ms, total with loading %.1f ms\n",
+           cfg.w, cfg.h, res.prepare_ms, res.lit_ms, res.post_ms, res.frame_ms, total_ms);
+    if (res.auto_exposure) printf("auto exposure: tone-map scale %.4f\n", res.tone_map_scale);
+    printf("wrote %s.exr (lit pass) and %s.png\n", out.c_str(), out.c_str());
+  }
+  if (!quiet || a.flag("--report-memory")) {
+    printf("peak memory: %.1f MiB\n", peak_mib());
+  }
+  if (cfg.check) {
+    printf("check: GL frame vs the C twin on GL's G-buffer: %ld of %ld covered pixels differ (max %u ULP)\n",
+           res.check_mismatched, res.check_pixels, res.check_max_ulp);
+    printf("check: HDR path and colour correction on GL vs their C twins on GL's lit frame: %ld of %ld channels differ\n",
+           res.check_post_mismatched, res.check_post_channels);
+    if (res.check_mismatched != 0 || res.check_post_mismatched != 0) return 1;
+  }
+  return 0;
+}

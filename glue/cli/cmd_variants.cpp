@@ -1,0 +1,86 @@
+// tiershade: `variants` and `assemble` subcommands.
+#include <cstdio>
+
+#include "shaderlib/assembler.h"
+#include "families/family.h"
+#include "cli/select_args.h"
+
+int cmd_variants_bundle(const Args &a);  // glue/cli/cmd_variants_bundle.cpp
+
+int cmd_variants(int argc, char **argv) {
+  Args a("variants", argc, argv, {"--list", "--json", "--help", "--count"},
+         {"--shader", "--tier", "--variant", "--target", "-o", "--hdr"});
+  if (a.flag("--help")) {
+    puts("usage: tiershade variants [--list] [--json] [--count] [--shader S] [--tier ps20|ps2b|sm3]...\n"
+         "       tiershade variants SCENE --tier T [--target essl100|essl300|glsl330] [--hdr integer|float] -o DIR\n"
+         "       tiershade variants --shader S [--variant V]... [--tier T]... [--target T] -o DIR\n"
+         "Lists every variant: tier x static combos x dynamic combos, minus the skip rules\n"
+         "declared in shaders/<shader>.variants. A variant is named TIER:NAME=V,... and can\n"
+         "also be given by its index in the full list of its shader.\n"
+         "With -o DIR it writes a shader bundle for engines (docs/bundles.md): the self-contained\n"
+         "production GLSL of the variants a scene needs (or of the variants given), and\n"
+         "DIR/manifest.json with their defines, attributes, uniforms, sampler units and slots.\n"
+         "--target defaults to essl300. An existing DIR is replaced only if it is a bundle.");
+    return 0;
+  }
+  if (!a.positional().empty() && !a.has("-o"))
+    a.fail("unexpected argument '" + a.positional()[0] + "' (a scene bundle: tiershade variants SCENE --tier T -o DIR)");
+  if (a.has("-o") || a.has("--target") || !a.positional().empty()) return cmd_variants_bundle(a);
+  Selection sel;
+  select_variants(a, &sel);
+  if (a.flag("--count")) {
+    printf("%zu\n", sel.variants.size());
+    return 0;
+  }
+  if (a.flag("--json")) {
+    printf("[\n");
+    for (size_t i = 0; i < sel.variants.size(); ++i) {
+      const Variant &v = sel.variants[i];
+      printf("  {\"shader\":\"%s\",\"variant\":\"%s\",\"tier\":\"%s\",\"defines\":{", v.shader->name.c_str(),
+             v.name().c_str(), tier_name(v.tier));
+      for (size_t k = 0; k < v.values.size(); ++k)
+        printf("%s\"%s\":%d", k ? "," : "", v.values[k].first.c_str(), v.values[k].second);
+      printf("}}%s\n", i + 1 < sel.variants.size() ? "," : "");
+    }
+    printf("]\n");
+    return 0;
+  }
+  std::string last;
+  for (const auto &v : sel.variants) {
+    if (v.shader->name != last) {
+      printf("%s  (%s, %s)\n", v.shader->name.c_str(), v.shader->fragment.c_str(), v.shader->file.c_str());
+      last = v.shader->name;
+    }
+    printf("  %s\n", v.name().c_str());
+  }
+  printf("%zu variants\n", sel.variants.size());
+  return 0;
+}
+
+int cmd_assemble(int argc, char **argv) {
+  Args a("assemble", argc, argv, {"--help", "--conform", "--vertex"}, {"--shader", "--variant", "--target"});
+  if (a.flag("--help")) {
+    puts("usage: tiershade assemble --shader S --variant V [--target essl100|essl300|glsl330] [--vertex] [--conform]\n"
+         "Prints the self-contained GLSL of one variant: includes resolved, #version,\n"
+         "precision and the variant's #defines prepended, #line directives kept.");
+    return 0;
+  }
+  if (!a.has("--shader") || !a.has("--variant")) a.fail("--shader and --variant are required");
+  Target t = Target::GLSL330;
+  if (a.has("--target") && !parse_target(a.get("--target"), &t))
+    a.fail("unknown target '" + a.get("--target") + "' (essl100, essl300, glsl330)");
+  Selection sel;
+  select_variants(a, &sel);
+  const Variant &v = sel.variants.at(0);
+  Assembled out;
+  std::string err;
+  const bool vertex = a.flag("--vertex");
+  const std::string entry = vertex ? (a.flag("--conform") ? "conform_fullscreen.vs" : v.shader->vertex) : v.shader->fragment;
+  if (!assemble(entry, t, vertex ? Stage::Vertex : Stage::Fragment, variant_defines(v, a.flag("--conform") ? InputMode::Conform : InputMode::Production), &out,
+                &err)) {
+    fprintf(stderr, "tiershade assemble: %s\n", err.c_str());
+    return 1;
+  }
+  fputs(out.text.c_str(), stdout);
+  return 0;
+}

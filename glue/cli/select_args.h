@@ -1,0 +1,18 @@
+// tiershade glue: --shader/--tier/--variant and --backend/--api selections shared by subcommands.
+#pragma once
+#include <memory>
+#include <vector>
+
+#include "cli/args.h"
+#include "gl/context.h"
+#include "shaderlib/variants.h"
+
+struct Selection {
+  std::vector<ShaderDecl> decls;  // owns the declarations the variants point to
+  std::vector<Variant> variants;
+};
+
+// Fills sel from --shader S (default all), --tier T (repeatable, default all), --variant V.
+void select_variants(const Args &a, Selection *sel);
+// --backend osmesa|egl|all (default all), --api gl33|gles2|gles3|all (default all supported).
+std::vector<BackendApi> select_configs(const Args &a);

@@ -1,0 +1,102 @@
+// tiershade glue: the bloom_blur family (one direction of the separable bloom
+// Gaussian): input records (random and hard cases), the half-quantised source
+// texture, and the bridge to its C twin (c_ref/twins/bloom_blur.c).
+#include "twins/bloom_blur.h"
+#include "families/family.h"
+#include "families/hdr_inputs.h"
+
+namespace {
+
+// The quarter-size bloom texture of the grids (NPOT; the target has its size).
+const int kSourceW = 27, kSourceH = 19;
+
+bb_variant to_bb(const Variant &v) {
+  bb_variant m;
+  m.direction = v.value("DIRECTION");
+  return m;
+}
+
+void gather(const FamilyInputs &in, int x, int y, ts_vec4f rec[BB_SLOTS]) {
+  for (int k = 0; k < BB_SLOTS; ++k) rec[k] = in.slot(x, y, k);
+}
+
+ts_vec4f eval_f(const Variant &v, const FamilyInputs &in, int x, int y) {
+  ts_vec4f rec[BB_SLOTS];
+  gather(in, x, y, rec);
+  const bb_variant m = to_bb(v);
+  const ts_tex2d t = tex2d_of(in.textures.at(0));
+  return bloom_blur_f(&m, rec, &t);
+}
+
+ts_vec4d eval_d(const Variant &v, const FamilyInputs &in, int x, int y) {
+  ts_vec4f rec[BB_SLOTS];
+  gather(in, x, y, rec);
+  const bb_variant m = to_bb(v);
+  const ts_tex2d t = tex2d_of(in.textures.at(0));
+  return bloom_blur_d(&m, rec, &t);
+}
+
+void output_range(const Variant &, float *lo, float *hi) {
+  *lo = 0.f;
+  *hi = 65504.f;
+}
+
+void random_pixel(Rng &r, ts_vec4f rec[BB_SLOTS]) {
+  rec[BB_SLOT_POS] = random_fragment_position(r, kSourceW, kSourceH);
+  rec[BB_SLOT_SIZE] = size_slot(kSourceW, kSourceH);
+  rec[BB_SLOT_PARAMS] = ts_v4f(r.next() % 2 ? 1.f : r.uniform(0.f, 2.f), 0.f, 0.f, 0.f);
+}
+
+const char *const kHardCases[] = {
+    "NaN position",       "Inf position",       "position -1e30",     "position 1e30",
+    "position 0 (corner)", "zero inverse size", "NaN inverse size",   "huge inverse size 1e30",
+    "NaN scale",          "zero scale",         "negative scale",     "scale 1e30 (overflow)",
+    "scale 65504",        "last pixel centre",
+};
+const int kNumHardCases = sizeof kHardCases / sizeof kHardCases[0];
+
+void hard_pixel(Rng &r, int c, ts_vec4f rec[BB_SLOTS]) {
+  random_pixel(r, rec);
+  ts_vec4f &p = rec[BB_SLOT_POS];
+  ts_vec4f &s = rec[BB_SLOT_SIZE];
+  ts_vec4f &k = rec[BB_SLOT_PARAMS];
+  switch (c) {
+    case 0: p.y = kHdrNaN; break;
+    case 1: p.x = -kHdrInf; break;
+    case 2: p = ts_v4f(-1e30f, -1e30f, 0, 0); break;
+    case 3: p = ts_v4f(2.5f, 1e30f, 0, 0); break;
+    case 4: p = ts_v4f(0, 0, 0, 0); break;
+    case 5: s.z = 0.f; s.w = 0.f; break;
+    case 6: s.w = kHdrNaN; s.z = kHdrNaN; break;
+    case 7: s.z = 1e30f; s.w = 1e30f; break;
+    case 8: k.x = kHdrNaN; break;
+    case 9: k.x = 0.f; break;
+    case 10: k.x = -1.f; break;
+    case 11: k.x = 1e30f; break;
+    case 12: k.x = 65504.f; break;
+    case 13: p = ts_v4f(kSourceW - 0.5f, kSourceH - 0.5f, 0, 0); break;
+    default: break;
+  }
+}
+
+void make_inputs(InputSet set, int w, int h, uint32_t seed, FamilyInputs *out) {
+  Rng r(seed);
+  fill_record_grid<BB_SLOTS>(set, w, h, kHardCases, kNumHardCases, out, [&](ts_vec4f *rec) { random_pixel(r, rec); },
+                   [&](int c, ts_vec4f *rec) { hard_pixel(r, c, rec); });
+  out->textures = {hdr_test_texture(r, "u_source", kSourceW, kSourceH, true)};
+}
+
+void bind_uniforms(const GlFns &gl, GLuint program, const std::vector<ts_vec4f> &shared) {
+  const GLint size = gl.GetUniformLocation(program, "u_source_size");
+  if (size >= 0) gl.Uniform4fv(size, 1, &shared.at(BB_SLOT_SIZE).x);
+  const GLint params = gl.GetUniformLocation(program, "u_params");
+  if (params >= 0) gl.Uniform4fv(params, 1, &shared.at(BB_SLOT_PARAMS).x);
+}
+
+}  // namespace
+
+const ShaderFamily kBloomBlurFamily = {
+    "bloom_blur", BB_SLOTS, {"position", "source_size", "params"}, make_inputs, eval_f, eval_d, output_range,
+    BB_PIXEL_SLOTS, bind_uniforms,
+};
+const FamilyRegistrar kRegisterBloomBlur(&kBloomBlurFamily);

@@ -1,0 +1,204 @@
+// tiershade glue: the color_correction family: input records (random and hard cases),
+// the LUT textures, and the bridge to its C twin (c_ref/twins/color_correction.c).
+#include <cmath>
+#include <limits>
+
+#include "families/color_correction_inputs.h"
+#include "twins/color_correction.h"
+#include "families/family.h"
+
+namespace {
+
+const float kNaN = std::numeric_limits<float>::quiet_NaN();
+const float kInf = std::numeric_limits<float>::infinity();
+
+const char *const kVolumeSamplers[CC_MAX_LOOKUPS] = {"u_lut0", "u_lut1", "u_lut2", "u_lut3"};
+const char *const kAtlasSamplers[CC_MAX_LOOKUPS] = {"u_lut_atlas0", "u_lut_atlas1", "u_lut_atlas2", "u_lut_atlas3"};
+
+cc_variant to_cc(const Variant &v) {
+  cc_variant c;
+  c.atlas = v.value("LUT_ATLAS");
+  c.shader_trilinear = v.value("SHADER_TRILINEAR");
+  c.num_lookups = v.value("NUM_LOOKUPS");
+  return c;
+}
+
+void gather(const FamilyInputs &in, int x, int y, ts_vec4f rec[CC_SLOTS]) {
+  for (int k = 0; k < CC_SLOTS; ++k) rec[k] = in.slot(x, y, k);
+}
+
+ts_vec4f eval_f(const Variant &v, const FamilyInputs &in, int x, int y) {
+  ts_vec4f rec[CC_SLOTS];
+  gather(in, x, y, rec);
+  const cc_variant c = to_cc(v);
+  cc_luts luts;
+  cc_luts_of(in, &luts);
+  return color_correction_f(&c, rec, &luts);
+}
+
+ts_vec4d eval_d(const Variant &v, const FamilyInputs &in, int x, int y) {
+  ts_vec4f rec[CC_SLOTS];
+  gather(in, x, y, rec);
+  const cc_variant c = to_cc(v);
+  cc_luts luts;
+  cc_luts_of(in, &luts);
+  return color_correction_d(&c, rec, &luts);
+}
+
+void output_range(const Variant &, float *lo, float *hi) {
+  *lo = 0.f;  // the output is saturated (an 8-bit display target)
+  *hi = 1.f;
+}
+
+// A LUT with random nodes in [-0.25, 1.25] (random, so that every tap and weight shows in
+// the bits); the hard set also gets extreme and non-finite nodes.
+Lut3D random_lut(Rng &r, int n, bool hard) {
+  Lut3D l;
+  l.n = n;
+  l.rgb.resize(static_cast<size_t>(n) * n * n * 3);
+  const float extremes[] = {0.f, 1.f, -0.f, 65504.f, -65504.f, 1e-39f, kNaN, kInf, -kInf, 3e38f};
+  for (float &x : l.rgb) {
+    x = r.uniform(-0.25f, 1.25f);
+    if (hard && r.next() % 16 == 0) x = extremes[r.next() % (sizeof extremes / sizeof extremes[0])];
+  }
+  l.title = "random";
+  return l;
+}
+
+void random_pixel(Rng &r, int n, ts_vec4f rec[CC_SLOTS]) {
+  rec[CC_SLOT_COLOR] = ts_v4f(r.uniform(-0.1f, 1.1f), r.uniform(-0.1f, 1.1f), r.uniform(-0.1f, 1.1f), r.uniform(0, 1));
+  rec[CC_SLOT_WEIGHTS] = ts_v4f(r.uniform(-0.25f, 1.25f), r.uniform(-0.25f, 1.25f), r.uniform(-0.25f, 1.25f),
+                                r.uniform(-0.25f, 1.25f));
+  rec[CC_SLOT_PARAMS] = ts_v4f(r.uniform(-0.25f, 1.25f), 0, 0, 0);
+  rec[CC_SLOT_LUT] = cc_lut_params(n);
+}
+
+const char *const kHardCases[] = {
+    "black (0, 0, 0)",          "white (1, 1, 1): the top cell",  "colour on lattice nodes k/(N-1)",
+    "just above a node",        "just below a node",              "1 - ulp",
+    "NaN colour",               "+Inf colour",                    "-Inf colour",
+    "colour -1e30",             "colour 65504",                   "denormal colour",
+    "-0 colour",                "NaN weights",                    "Inf weights",
+    "-Inf and huge weights",    "NaN default weight",             "Inf default weight on black",
+    "all weights 0",            "NaN and Inf alpha",              "mixed specials per channel",
+};
+const int kNumHardCases = sizeof kHardCases / sizeof kHardCases[0];
+
+float lattice(Rng &r, int n) { return static_cast<float>(r.next() % static_cast<uint32_t>(n)) / static_cast<float>(n - 1); }
+
+void hard_pixel(Rng &r, int n, int c, ts_vec4f rec[CC_SLOTS]) {
+  random_pixel(r, n, rec);
+  ts_vec4f &col = rec[CC_SLOT_COLOR];
+  ts_vec4f &w = rec[CC_SLOT_WEIGHTS];
+  switch (c) {
+    case 0: col = ts_v4f(0, 0, 0, 1); break;
+    case 1: col = ts_v4f(1, 1, 1, 1); break;
+    case 2: col = ts_v4f(lattice(r, n), lattice(r, n), lattice(r, n), 1); break;
+    case 3: col = ts_v4f(std::nextafter(lattice(r, n), 2.f), std::nextafter(lattice(r, n), 2.f),
+                         std::nextafter(lattice(r, n), 2.f), 1); break;
+    case 4: col = ts_v4f(std::nextafter(lattice(r, n), -1.f), std::nextafter(lattice(r, n), -1.f),
+                         std::nextafter(lattice(r, n), -1.f), 1); break;
+    case 5: col = ts_v4f(0.99999994f, 0.99999994f, 0.99999994f, 1); break;
+    case 6: col = ts_v4f(kNaN, 0.5f, kNaN, 1); break;
+    case 7: col = ts_v4f(kInf, kInf, 0.25f, 1); break;
+    case 8: col = ts_v4f(-kInf, 0.75f, -kInf, 1); break;
+    case 9: col = ts_v4f(-1e30f, 0.5f, -1e30f, 1); break;
+    case 10: col = ts_v4f(65504.f, 0.5f, 65504.f, 1); break;
+    case 11: col = ts_v4f(1e-39f, -1e-39f, 1e-40f, 1); break;
+    case 12: col = ts_v4f(-0.f, -0.f, -0.f, -0.f); break;
+    case 13: w = ts_v4f(kNaN, kNaN, 0.5f, kNaN); break;
+    case 14: w = ts_v4f(kInf, 0.5f, kInf, kInf); break;
+    case 15: w = ts_v4f(-kInf, 1e30f, -1e30f, 3e38f); break;
+    case 16: rec[CC_SLOT_PARAMS].x = kNaN; break;
+    case 17: col = ts_v4f(0, 0, 0, 1); rec[CC_SLOT_PARAMS].x = kInf; break;
+    case 18: w = ts_v4f(0, 0, 0, 0); rec[CC_SLOT_PARAMS].x = 0.f; break;
+    case 19: col.w = (r.next() & 1) ? kNaN : kInf; break;
+    case 20: col = ts_v4f(kNaN, kInf, -0.f, kNaN); w = ts_v4f(kInf, kNaN, 0.f, -kInf); break;
+    default: break;
+  }
+}
+
+void make_inputs(InputSet set, int w, int h, uint32_t seed, FamilyInputs *out) {
+  // Random set: Source's 32^3; hard set: an odd 17^3 (a common .cube edge), so that both
+  // power-of-two and other edges are addressed.
+  const int n = set == InputSet::Random ? 32 : 17;
+  out->resize(w, h, CC_SLOTS);
+  out->case_names.clear();
+  Rng r(seed);
+  for (int y = 0; y < h; ++y) {
+    for (int x = 0; x < w; ++x) {
+      ts_vec4f rec[CC_SLOTS];
+      if (set == InputSet::Random) {
+        random_pixel(r, n, rec);
+      } else {
+        const int c = (y * w + x) % kNumHardCases;
+        hard_pixel(r, n, c, rec);
+        out->case_names.push_back(kHardCases[c]);
+      }
+      for (int k = 0; k < CC_SLOTS; ++k) out->set_slot(x, y, k, rec[k]);
+    }
+  }
+  std::vector<Lut3D> luts;
+  for (int i = 0; i < CC_MAX_LOOKUPS; ++i) luts.push_back(random_lut(r, n, set == InputSet::Hard));
+  cc_set_luts(out, {&luts[0], &luts[1], &luts[2], &luts[3]}, true);
+  // LUTs 1 and 3 are NEAREST, so that both filters meet both filtering variants
+  // (shader filtering samples texel centres: docs/color_correction.md).
+  for (int i : {1, 3}) {
+    out->textures[i].linear = false;
+    out->textures[CC_MAX_LOOKUPS + i].linear = false;
+  }
+}
+
+std::vector<std::string> slot_names() { return {"color", "weights", "params", "lut"}; }
+
+void bind_uniforms(const GlFns &gl, GLuint program, const std::vector<ts_vec4f> &shared) {
+  auto set = [&](const char *name, int slot) {
+    const GLint loc = gl.GetUniformLocation(program, name);
+    if (loc >= 0) gl.Uniform4fv(loc, 1, &shared.at(slot).x);
+  };
+  set("u_cc_weights", CC_SLOT_WEIGHTS);
+  set("u_cc_params", CC_SLOT_PARAMS);
+  set("u_cc_lut", CC_SLOT_LUT);
+}
+
+}  // namespace
+
+void cc_set_luts(FamilyInputs *in, const std::vector<const Lut3D *> &luts, bool linear) {
+  static const Lut3D kUnused = identity_lut(2);
+  in->textures.clear();
+  for (int i = 0; i < CC_MAX_LOOKUPS; ++i) {
+    const Lut3D &l = i < static_cast<int>(luts.size()) && luts[i] ? *luts[i] : kUnused;
+    in->textures.push_back(lut_volume_texture(l, kVolumeSamplers[i], linear));
+  }
+  for (int i = 0; i < CC_MAX_LOOKUPS; ++i) {
+    const Lut3D &l = i < static_cast<int>(luts.size()) && luts[i] ? *luts[i] : kUnused;
+    in->textures.push_back(lut_atlas_texture(l, kAtlasSamplers[i], linear));
+  }
+}
+
+void cc_frame_inputs(const ImageF &frame, const float weights[4], float default_weight, int lut_n,
+                     FamilyInputs *in) {
+  in->resize(frame.w, frame.h, CC_PIXEL_SLOTS);
+  in->case_names.clear();
+  for (int y = 0; y < frame.h; ++y)
+    for (int x = 0; x < frame.w; ++x) {
+      const float *p = &frame.rgba[(static_cast<size_t>(y) * frame.w + x) * 4];
+      in->set_slot(x, y, CC_SLOT_COLOR, ts_v4f(p[0], p[1], p[2], p[3]));
+    }
+  in->shared.assign(CC_SLOTS, ts_v4f(0, 0, 0, 0));
+  in->shared[CC_SLOT_WEIGHTS] = ts_v4f(weights[0], weights[1], weights[2], weights[3]);
+  in->shared[CC_SLOT_PARAMS] = ts_v4f(default_weight, 0, 0, 0);
+  in->shared[CC_SLOT_LUT] = cc_lut_params(lut_n);
+}
+
+void cc_luts_of(const FamilyInputs &in, cc_luts *out) {
+  for (int i = 0; i < CC_MAX_LOOKUPS; ++i) {
+    out->volume[i] = tex3d_of(in.textures.at(i));
+    out->atlas[i] = tex2d_of(in.textures.at(CC_MAX_LOOKUPS + i));
+  }
+}
+
+const ShaderFamily kColorCorrectionFamily = {
+    "color_correction", CC_SLOTS, slot_names(), make_inputs, eval_f, eval_d, output_range, CC_PIXEL_SLOTS, bind_uniforms,
+};
+const FamilyRegistrar kRegister(&kColorCorrectionFamily);

@@ -1,0 +1,135 @@
+// tiershade glue: a shader family = one entry shader, its C twin, its input record
+// layout and its test-input generators. Conformance, probe, demo and bench work
+// on families through this interface.
+#pragma once
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "gl/float_target.h"
+#include "math/ts_math.h"
+#include "math/ts_sampler.h"
+#include "shaderlib/variants.h"
+
+enum class InputSet { Random, Hard };
+// Where a shader's inputs come from (shaders/common_inputs.glsl).
+enum class InputMode { Production, Conform, Deferred };
+const char *input_set_name(InputSet s);
+
+// Per-pixel input records: pixel (x, y) slot k lives at texel (x, y + k*h) of a
+// w x (h*slots) RGBA32F texture (shaders/common_inputs.glsl).
+struct FamilyInputs {
+  int w = 0, h = 0, slots = 0;
+  std::vector<float> records;
+  std::vector<TextureDesc> textures;  // extra textures the shader samples (e.g. u_albedo)
+  std::vector<std::string> case_names;  // hard set: a label per pixel (empty for random)
+  // Deferred frames: only the first `slots` slots are per pixel (the G-buffer); the
+  // others are shared by every pixel and passed to GL as the production uniforms.
+  std::vector<ts_vec4f> shared;  // empty, or the family's full record with the shared slots set
+  ts_vec4f slot(int x, int y, int k) const;
+  void set_slot(int x, int y, int k, ts_vec4f v);
+  void resize(int w_, int h_, int slots_);
+  TextureDesc record_texture() const;
+};
+
+struct ShaderFamily {
+  const char *name;
+  int slots;
+  std::vector<std::string> slot_names;
+  void (*make_inputs)(InputSet set, int w, int h, uint32_t seed, FamilyInputs *out);
+  ts_vec4f (*eval_f)(const Variant &v, const FamilyInputs &in, int x, int y);
+  ts_vec4d (*eval_d)(const Variant &v, const FamilyInputs &in, int x, int y);
+  // Allowed output range of the variant (every channel), for the hard-case checks.
+  void (*output_range)(const Variant &v, float *lo, float *hi);
+  int pixel_slots;  // slots that stay per pixel in deferred frames
+  // Sets the production uniforms from the shared slots (deferred frames).
+  void (*bind_uniforms)(const GlFns &gl, GLuint program, const std::vector<ts_vec4f> &shared);
+  // Optional fast path: out[i] = eval_f(v, in, x0 + i, y) for i < count, bit for bit, computed
+  // several pixels at a time (SIMD). cpu_render_frame uses it when set; nullptr = per pixel.
+  void (*eval_row_f)(const Variant &v, const FamilyInputs &in, int x0, int y, int count, ts_vec4f *out) = nullptr;
+};
+
+const ShaderFamily *find_family(const std::string &name);
+std::vector<const ShaderFamily *> all_families();  // sorted by name
+
+// Each family registers itself from its own file (glue/family_<name>.cpp):
+//   static const FamilyRegistrar kRegister(&kMyFamily);
+struct FamilyRegistrar {
+  explicit FamilyRegistrar(const ShaderFamily *f);
+};
+
+// Extra sections of `tiershade demo` and `tiershade bench`, registered the same way by the
+// files that own them (glue/demo_<name>.cpp, glue/bench_<name>.cpp), run in name order
+// after the model-lighting section.
+struct DemoOptions {
+  std::string dir;  // output directory (exists)
+  int w = 640, h = 320;
+  std::vector<BackendApi> configs;  // GL backends to render on (the C fallback always runs)
+};
+struct DemoSection {
+  const char *name;
+  // Writes its files into opt.dir and prints its summary; returns false (with *err) on failure,
+  // including a GL frame that differs from the C frame.
+  bool (*run)(const DemoOptions &opt, std::string *err);
+};
+struct BenchOptions {
+  int size = 1024, runs = 7;
+};
+struct BenchSection {
+  const char *name;
+  // Measures and returns its markdown section ("## ..." and its tables) for docs/accuracy_cost.md.
+  bool (*run)(const BenchOptions &opt, std::string *markdown, std::string *err);
+};
+struct DemoRegistrar {
+  explicit DemoRegistrar(const DemoSection *s);
+};
+struct BenchRegistrar {
+  explicit BenchRegistrar(const BenchSection *s);
+};
+std::vector<const DemoSection *> demo_sections();
+std::vector<const BenchSection *> bench_sections();
+
+// #defines for a variant: each combo value, the tier (TS_TIER_PS20/PS2B/SM3) and
+// the input mode (TS_CONFORM, TS_DEFERRED, or nothing for production).
+std::vector<Define> variant_defines(const Variant &v, InputMode mode);
+
+// Fills a w x h grid of input records: random records, or for the hard set hard case
+// (y*w + x) % num_hard applied to a random record, labelled in case_names.
+// random_pixel(rec) and hard_pixel(case, rec) draw from the caller's generator.
+template <int Slots, class RandomPixel, class HardPixel>
+void fill_record_grid(InputSet set, int w, int h, const char *const *hard_names, int num_hard, FamilyInputs *out,
+                      RandomPixel random_pixel, HardPixel hard_pixel) {
+  out->resize(w, h, Slots);
+  out->case_names.clear();
+  for (int y = 0; y < h; ++y) {
+    for (int x = 0; x < w; ++x) {
+      ts_vec4f rec[Slots];
+      if (set == InputSet::Random) {
+        random_pixel(rec);
+      } else {
+        const int c = (y * w + x) % num_hard;
+        hard_pixel(c, rec);
+        out->case_names.push_back(hard_names[c]);
+      }
+      for (int k = 0; k < Slots; ++k) out->set_slot(x, y, k, rec[k]);
+    }
+  }
+}
+
+// The C sampler's view of a texture the shader samples (same filtering and wrapping).
+ts_tex2d tex2d_of(const TextureDesc &t);
+ts_texcube texcube_of(const TextureDesc &t);
+
+// Small deterministic PRNG (xorshift32) for reproducible test inputs.
+struct Rng {
+  uint32_t s;
+  explicit Rng(uint32_t seed) : s(seed ? seed : 0x9e3779b9u) {}
+  uint32_t next() {
+    s ^= s << 13;
+    s ^= s >> 17;
+    s ^= s << 5;
+    return s;
+  }
+  float uniform(float lo, float hi) { return lo + (hi - lo) * static_cast<float>(next() >> 8) * (1.0f / 16777216.0f); }
+  ts_vec3f unit_vector();
+};

@@ -1,0 +1,108 @@
+// tiershade glue: the hdr_tonemap family (the float path's tone map and bloom
+// combine): input records (random and hard cases), the half-quantised bloom
+// texture, and the bridge to its C twin (c_ref/twins/hdr_tonemap.c).
+#include "families/family.h"
+#include "families/hdr_inputs.h"
+#include "math/hdr_formats.h"
+#include "twins/hdr_tonemap.h"
+
+namespace {
+
+// The quarter-size bloom texture of the grids; the frame is four times its size.
+const int kBloomW = 13, kBloomH = 11;
+
+ht_variant to_ht(const Variant &v) {
+  ht_variant m;
+  m.output_mode = v.value("OUTPUT_MODE");
+  return m;
+}
+
+void gather(const FamilyInputs &in, int x, int y, ts_vec4f rec[HT_SLOTS]) {
+  for (int k = 0; k < HT_SLOTS; ++k) rec[k] = in.slot(x, y, k);
+}
+
+ts_vec4f eval_f(const Variant &v, const FamilyInputs &in, int x, int y) {
+  ts_vec4f rec[HT_SLOTS];
+  gather(in, x, y, rec);
+  const ht_variant m = to_ht(v);
+  const ts_tex2d t = tex2d_of(in.textures.at(0));
+  return hdr_tonemap_f(&m, rec, &t);
+}
+
+ts_vec4d eval_d(const Variant &v, const FamilyInputs &in, int x, int y) {
+  ts_vec4f rec[HT_SLOTS];
+  gather(in, x, y, rec);
+  const ht_variant m = to_ht(v);
+  const ts_tex2d t = tex2d_of(in.textures.at(0));
+  return hdr_tonemap_d(&m, rec, &t);
+}
+
+void output_range(const Variant &v, float *lo, float *hi) {
+  *lo = 0.f;
+  *hi = v.value("OUTPUT_MODE") == 0 ? 65504.f : 1.f;
+}
+
+float half_uniform(Rng &r, float lo, float hi) { return ts_quantize_half(r.uniform(lo, hi)); }
+
+void random_pixel(Rng &r, ts_vec4f rec[HT_SLOTS]) {
+  rec[HT_SLOT_POS] = random_fragment_position(r, kBloomW * 4, kBloomH * 4);
+  const float top = r.next() % 2 ? 1.f : 64.f;
+  rec[HT_SLOT_FRAME] = ts_v4f(half_uniform(r, 0, top), half_uniform(r, 0, top), half_uniform(r, 0, top), 1.f);
+  rec[HT_SLOT_SIZE] = size_slot(kBloomW * 4, kBloomH * 4);
+  rec[HT_SLOT_PARAMS] = ts_v4f(r.uniform(0.05f, 4.f), r.uniform(0.f, 2.f), r.uniform(0.5f, 3.f), 0.f);
+}
+
+const char *const kHardCases[] = {
+    "frame 65504, scale 4 (overflow)", "NaN frame texel",        "zero tone-map scale",   "negative tone-map scale",
+    "NaN tone-map scale",              "tone-map scale 1e6",     "bloom exponent 0",      "NaN bloom exponent",
+    "Inf bloom amount",                "NaN position",           "position 1e30",         "zero inverse size",
+    "black frame, no bloom",           "bloom amount 0",
+};
+const int kNumHardCases = sizeof kHardCases / sizeof kHardCases[0];
+
+void hard_pixel(Rng &r, int c, ts_vec4f rec[HT_SLOTS]) {
+  random_pixel(r, rec);
+  ts_vec4f &p = rec[HT_SLOT_POS];
+  ts_vec4f &fb = rec[HT_SLOT_FRAME];
+  ts_vec4f &s = rec[HT_SLOT_SIZE];
+  ts_vec4f &k = rec[HT_SLOT_PARAMS];
+  switch (c) {
+    case 0: fb = ts_v4f(65504.f, 65504.f, 65504.f, 1.f); k.x = 4.f; break;
+    case 1: fb.z = kHdrNaN; break;
+    case 2: k.x = 0.f; break;
+    case 3: k.x = -2.f; break;
+    case 4: k.x = kHdrNaN; break;
+    case 5: k.x = 1e6f; break;
+    case 6: k.z = 0.f; break;
+    case 7: k.z = kHdrNaN; break;
+    case 8: k.y = kHdrInf; break;
+    case 9: p.x = kHdrNaN; break;
+    case 10: p = ts_v4f(1e30f, -1e30f, 0, 0); break;
+    case 11: s.z = 0.f; s.w = 0.f; break;
+    case 12: fb = ts_v4f(0, 0, 0, 1); k.y = 0.f; break;
+    case 13: k.y = 0.f; break;
+    default: break;
+  }
+}
+
+void make_inputs(InputSet set, int w, int h, uint32_t seed, FamilyInputs *out) {
+  Rng r(seed);
+  fill_record_grid<HT_SLOTS>(set, w, h, kHardCases, kNumHardCases, out, [&](ts_vec4f *rec) { random_pixel(r, rec); },
+                   [&](int c, ts_vec4f *rec) { hard_pixel(r, c, rec); });
+  out->textures = {hdr_test_texture(r, "u_bloom", kBloomW, kBloomH, true)};
+}
+
+void bind_uniforms(const GlFns &gl, GLuint program, const std::vector<ts_vec4f> &shared) {
+  const GLint size = gl.GetUniformLocation(program, "u_frame_size");
+  if (size >= 0) gl.Uniform4fv(size, 1, &shared.at(HT_SLOT_SIZE).x);
+  const GLint params = gl.GetUniformLocation(program, "u_params");
+  if (params >= 0) gl.Uniform4fv(params, 1, &shared.at(HT_SLOT_PARAMS).x);
+}
+
+}  // namespace
+
+const ShaderFamily kHdrTonemapFamily = {
+    "hdr_tonemap", HT_SLOTS, {"position", "frame", "frame_size", "params"}, make_inputs, eval_f, eval_d, output_range,
+    HT_PIXEL_SLOTS, bind_uniforms,
+};
+const FamilyRegistrar kRegisterHdrTonemap(&kHdrTonemapFamily);

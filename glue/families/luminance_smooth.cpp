@@ -1,0 +1,98 @@
+// tiershade glue: the luminance_smooth family (the temporal prefilter of the
+// auto-exposure luminance): input records (random and hard cases) and the bridge
+// to its C twin (c_ref/twins/luminance_smooth.c).
+#include "families/family.h"
+#include "families/hdr_inputs.h"
+#include "math/hdr_formats.h"
+#include "twins/luminance_smooth.h"
+
+namespace {
+
+ls_variant to_ls(const Variant &v) {
+  ls_variant m;
+  m.input_encoding = v.value("INPUT_ENCODING");
+  return m;
+}
+
+void gather(const FamilyInputs &in, int x, int y, ts_vec4f rec[LS_SLOTS]) {
+  for (int k = 0; k < LS_SLOTS; ++k) rec[k] = in.slot(x, y, k);
+}
+
+ts_vec4f eval_f(const Variant &v, const FamilyInputs &in, int x, int y) {
+  ts_vec4f rec[LS_SLOTS];
+  gather(in, x, y, rec);
+  const ls_variant m = to_ls(v);
+  return luminance_smooth_f(&m, rec);
+}
+
+ts_vec4d eval_d(const Variant &v, const FamilyInputs &in, int x, int y) {
+  ts_vec4f rec[LS_SLOTS];
+  gather(in, x, y, rec);
+  const ls_variant m = to_ls(v);
+  return luminance_smooth_d(&m, rec);
+}
+
+void output_range(const Variant &, float *lo, float *hi) {
+  *lo = 0.f;
+  *hi = 65504.f;
+}
+
+void random_pixel(Rng &r, ts_vec4f rec[LS_SLOTS]) {
+  const float top = r.next() % 2 ? 1.f : 64.f;
+  rec[LS_SLOT_COLOR] = ts_v4f(r.uniform(0, top), r.uniform(0, top), r.uniform(0, top), 1.f);
+  const float h = ts_quantize_half(r.uniform(0.f, 8.f));  // the history is an fp16 texture
+  rec[LS_SLOT_HISTORY] = ts_v4f(h, h, h, 1.f);
+  const uint32_t k = r.next() % 4;
+  rec[LS_SLOT_PARAMS] = ts_v4f(k == 0 ? 1.f : k == 1 ? 0.0625f : r.uniform(0.f, 1.f), r.uniform(0.05f, 4.f), 0.f, 0.f);
+}
+
+const char *const kHardCases[] = {
+    "colour 65504, tone-map scale 4 (Inf lum)", "NaN colour",        "Inf colour",        "NaN history",
+    "history 65504, alpha 0",                   "alpha 1 (no smoothing)", "NaN alpha",   "negative alpha",
+    "NaN tone-map scale",                       "negative colour",   "alpha 1e30",        "denormal colour",
+    "sRGB decode edge 0.04045",
+};
+const int kNumHardCases = sizeof kHardCases / sizeof kHardCases[0];
+
+void hard_pixel(Rng &r, int c, ts_vec4f rec[LS_SLOTS]) {
+  random_pixel(r, rec);
+  ts_vec4f &col = rec[LS_SLOT_COLOR];
+  ts_vec4f &h = rec[LS_SLOT_HISTORY];
+  ts_vec4f &p = rec[LS_SLOT_PARAMS];
+  switch (c) {
+    case 0: col = ts_v4f(65504.f, 65504.f, 65504.f, 1.f); p.y = 4.f; break;
+    case 1: col.x = kHdrNaN; break;
+    case 2: col.y = kHdrInf; break;
+    case 3: h.x = kHdrNaN; break;
+    case 4: h.x = 65504.f; p.x = 0.f; break;
+    case 5: p.x = 1.f; break;
+    case 6: p.x = kHdrNaN; break;
+    case 7: p.x = -0.5f; break;
+    case 8: p.y = kHdrNaN; break;
+    case 9: col = ts_v4f(-1.f, -0.5f, -2.f, 1.f); break;
+    case 10: p.x = 1e30f; break;
+    case 11: col = ts_v4f(1e-39f, 1e-39f, 1e-39f, 1.f); p.x = 1.f; break;
+    case 12: col = ts_v4f(0.04045f, 0.04045f, 0.04045f, 1.f); p.x = 1.f; p.y = 1.f; break;
+    default: break;
+  }
+}
+
+void make_inputs(InputSet set, int w, int h, uint32_t seed, FamilyInputs *out) {
+  Rng r(seed);
+  out->textures.clear();
+  fill_record_grid<LS_SLOTS>(set, w, h, kHardCases, kNumHardCases, out, [&](ts_vec4f *rec) { random_pixel(r, rec); },
+                   [&](int c, ts_vec4f *rec) { hard_pixel(r, c, rec); });
+}
+
+void bind_uniforms(const GlFns &gl, GLuint program, const std::vector<ts_vec4f> &shared) {
+  const GLint loc = gl.GetUniformLocation(program, "u_params");
+  if (loc >= 0) gl.Uniform4fv(loc, 1, &shared.at(LS_SLOT_PARAMS).x);
+}
+
+}  // namespace
+
+const ShaderFamily kLuminanceSmoothFamily = {
+    "luminance_smooth", LS_SLOTS, {"color", "history", "params"}, make_inputs, eval_f, eval_d, output_range,
+    LS_PIXEL_SLOTS, bind_uniforms,
+};
+const FamilyRegistrar kRegisterLuminanceSmooth(&kLuminanceSmoothFamily);

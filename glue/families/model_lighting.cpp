@@ -1,0 +1,363 @@
+// tiershade glue: the model_lighting family: input records (random and hard
+// cases), and the bridge to its C twin (c_ref/twins/model_lighting.c).
+#include <cmath>
+#include <limits>
+#include <memory>
+
+#include "families/model_lighting.h"
+#include "families/family.h"
+#include "twins/model_lighting.h"
+#include "twins/model_lighting_batch.h"
+
+namespace {
+
+const float kNaN = std::numeric_limits<float>::quiet_NaN();
+const float kInf = std::numeric_limits<float>::infinity();
+
+
+// The C views of the family's textures, in make_inputs' order.
+enum { TEX_ALBEDO, TEX_NORMAL, TEX_EXPONENT, TEX_WARP, TEX_ENVMAP, TEX_COUNT };
+struct Views {
+  ts_tex2d t2[4];
+  ts_texcube cube;
+  ml_textures tex;
+  explicit Views(const FamilyInputs &in) {
+    for (int i = 0; i < 4; ++i) t2[i] = tex2d_of(in.textures.at(i));
+    cube = texcube_of(in.textures.at(TEX_ENVMAP));
+    tex = {&t2[TEX_ALBEDO], &t2[TEX_NORMAL], &t2[TEX_EXPONENT], &t2[TEX_WARP], &cube};
+  }
+};
+
+void gather(const FamilyInputs &in, int x, int y, ts_vec4f rec[ML_SLOTS]) {
+  for (int k = 0; k < ML_SLOTS; ++k) rec[k] = in.slot(x, y, k);
+}
+
+// ml_variant_of looks combos up by name: cache it per thread for the frame's variant.
+const ml_variant &cached_ml(const Variant &v) {
+  thread_local Tier last_tier = Tier::SM3;
+  thread_local std::vector<std::pair<std::string, int>> last_values;
+  thread_local bool valid = false;
+  thread_local ml_variant m;
+  if (!valid || last_tier != v.tier || last_values != v.values) {
+    m = ml_variant_of(v);
+    last_tier = v.tier;
+    last_values = v.values;
+    valid = true;
+  }
+  return m;
+}
+
+// The texture views, rebuilt only when the frame's textures change (per thread).
+const ml_textures &cached_views(const FamilyInputs &in) {
+  thread_local const float *key[TEX_COUNT] = {};
+  thread_local std::unique_ptr<Views> views;
+  bool same = views != nullptr && in.textures.size() == TEX_COUNT;
+  for (int i = 0; same && i < TEX_COUNT; ++i) same = key[i] == in.textures[i].rgba.data();
+  if (!same) {
+    views.reset(new Views(in));
+    for (int i = 0; i < TEX_COUNT; ++i) key[i] = in.textures.at(i).rgba.data();
+  }
+  return views->tex;
+}
+
+ts_vec4f eval_f(const Variant &v, const FamilyInputs &in, int x, int y) {
+  ts_vec4f rec[ML_SLOTS];
+  gather(in, x, y, rec);
+  return model_lighting_f(&cached_ml(v), rec, &cached_views(in));
+}
+
+// The batch twin straight on the record texture: slot k of pixels (x0.., y) is a run of
+// texels (stride 1); slots past in.slots are the frame's shared ones (stride 0).
+void eval_row_f(const Variant &v, const FamilyInputs &in, int x0, int y, int count, ts_vec4f *out) {
+  static_assert(sizeof(ts_vec4f) == 4 * sizeof(float), "ts_vec4f is 4 packed floats");
+  ml_batch_input b;
+  for (int k = 0; k < ML_SLOTS; ++k) {
+    if (k < in.slots) {
+      b.slot[k] = reinterpret_cast<const ts_vec4f *>(&in.records[(static_cast<size_t>(y + k * in.h) * in.w + x0) * 4]);
+      b.stride[k] = 1;
+    } else {
+      b.slot[k] = &in.shared.at(k);
+      b.stride[k] = 0;
+    }
+  }
+  model_lighting_f_batch(&cached_ml(v), &b, &cached_views(in), out, count);
+}
+
+ts_vec4d eval_d(const Variant &v, const FamilyInputs &in, int x, int y) {
+  ts_vec4f rec[ML_SLOTS];
+  gather(in, x, y, rec);
+  return model_lighting_d(&cached_ml(v), rec, &cached_views(in));
+}
+
+void output_range(const Variant &v, float *lo, float *hi) {
+  *lo = 0.f;
+  *hi = v.value("OUTPUT_MODE") == 0 ? 65504.f : 1.f;
+}
+
+ts_vec4f v4(ts_vec3f v, float w) { return ts_v4f(v.x, v.y, v.z, w); }
+
+// A well-conditioned random light of a random type (point, spot, directional).
+void random_light(Rng &r, ts_vec4f l[5]) {
+  const int type = static_cast<int>(r.next() % 3);  // 0 point, 1 spot, 2 directional
+  const ts_vec3f dir = r.unit_vector();
+  l[0] = ts_v4f(r.uniform(0, 4), r.uniform(0, 4), r.uniform(0, 4), type == 2 ? 1.f : 0.f);
+  l[1] = v4(dir, type == 1 ? 1.f : 0.f);
+  l[2] = ts_v4f(r.uniform(-4, 4), r.uniform(-4, 4), r.uniform(-4, 4), 1.f);
+  const float cos_outer = r.uniform(0.3f, 0.95f);
+  const float cos_inner = std::fmin(1.f, cos_outer + r.uniform(0.02f, 0.3f));
+  l[3] = ts_v4f(r.uniform(0.5f, 8.f), 0.f, cos_outer, 1.0f / (cos_inner - cos_outer));
+  l[4] = type == 2 ? ts_v4f(1, 0, 0, 0) : ts_v4f(r.uniform(0.05f, 1.f), r.uniform(0, 0.5f), r.uniform(0, 0.5f), 0);
+}
+
+void random_pixel(Rng &r, ts_vec4f rec[ML_SLOTS]) {
+  rec[ML_SLOT_NORMAL] = v4(ts_scale3f(r.unit_vector(), r.uniform(0.2f, 3.f)), 0.f);
+  rec[ML_SLOT_POSITION] = ts_v4f(r.uniform(-2, 2), r.uniform(-2, 2), r.uniform(-2, 2), 1.f);
+  rec[ML_SLOT_UV] = ts_v4f(r.uniform(-1, 2), r.uniform(-1, 2), 0, 0);
+  rec[ML_SLOT_VERTEX_ATTEN] = ts_v4f(r.uniform(0, 2), r.uniform(0, 2), r.uniform(0, 2), r.uniform(0, 2));
+  // A tangent frame around the interpolated normal (not exactly orthonormal, as interpolated).
+  const ts_vec3f n = ts_normalize3f(ts_v3f(rec[ML_SLOT_NORMAL].x, rec[ML_SLOT_NORMAL].y, rec[ML_SLOT_NORMAL].z));
+  const ts_vec3f a = std::fabs(n.x) < 0.9f ? ts_v3f(1, 0, 0) : ts_v3f(0, 1, 0);
+  const ts_vec3f t = ts_normalize3f(ts_sub3f(a, ts_scale3f(n, ts_dot3f(a, n))));
+  const ts_vec3f b = ts_v3f(n.y * t.z - n.z * t.y, n.z * t.x - n.x * t.z, n.x * t.y - n.y * t.x);
+  rec[ML_SLOT_TANGENT] = v4(ts_scale3f(t, r.uniform(0.8f, 1.2f)), 0.f);
+  rec[ML_SLOT_BITANGENT] = v4(ts_scale3f(b, r.uniform(0.8f, 1.2f)), 0.f);
+  rec[ML_SLOT_EYE] = ts_v4f(r.uniform(-6, 6), r.uniform(-6, 6), r.uniform(-6, 6), 1.f);
+  rec[ML_SLOT_PHONG] = ts_v4f(r.uniform(1, 150), r.uniform(0, 200), r.uniform(0, 4), (r.next() & 1) ? 1.f : 0.f);
+  const float fmin = r.uniform(0, 1), fmid = r.uniform(0, 1), fmax = r.uniform(0, 1);
+  rec[ML_SLOT_FRESNEL] = ts_v4f((fmid - fmin) * 2.f, fmid, (fmax - fmid) * 2.f, (r.next() % 4 == 0) ? 1.f : 0.f);
+  rec[ML_SLOT_PHONG_TINT] = ts_v4f(r.uniform(0, 2), r.uniform(0, 2), r.uniform(0, 2), (r.next() & 1) ? 1.f : 0.f);
+  rec[ML_SLOT_RIM] = ts_v4f(r.uniform(1, 16), r.uniform(0, 4), r.uniform(0, 1), 0.f);
+  rec[ML_SLOT_ENVMAP] = ts_v4f(r.uniform(0, 2), r.uniform(0, 1), (r.next() & 1) ? 1.f : 0.f, 0.f);
+  rec[ML_SLOT_ENVMAP_TINT] = ts_v4f(r.uniform(0, 2), r.uniform(0, 2), r.uniform(0, 2), 0.f);
+  rec[ML_SLOT_SELF_ILLUM] = ts_v4f(r.uniform(0, 2), r.uniform(0, 2), r.uniform(0, 2), (r.next() & 1) ? r.uniform(0, 1) : 0.f);
+  for (int k = 0; k < 6; ++k)
+    rec[ML_SLOT_AMBIENT + k] = ts_v4f(r.uniform(0, 1), r.uniform(0, 1), r.uniform(0, 1), 0);
+  rec[ML_SLOT_PARAMS] = ts_v4f(r.uniform(0.25f, 4.f), static_cast<float>(r.next() % 5), 0, 0);
+  rec[ML_SLOT_ALBEDO] = ts_v4f(r.uniform(0, 1), r.uniform(0, 1), r.uniform(0, 1), 1);
+  for (int i = 0; i < ML_MAX_LIGHTS; ++i) random_light(r, &rec[ML_SLOT_LIGHT0 + 5 * i]);
+}
+
+// The hard cases: each pixel of the hard set applies one of these to a random base record.
+const char *const kHardCases[] = {
+    "zero-length normal",        "denormal normal",          "huge normal 1e20",
+    "light at the shaded point", "N.L = 1 exactly",          "N.L = -1 exactly",
+    "N.L = 0 exactly",           "light colour 65504",       "tone-map scale 1e6",
+    "NaN in the normal",         "Inf in a light colour",    "NaN in the position",
+    "light at 1e30",             "spot exponent 0 and 1e4",  "spot cos at the outer cone",
+    "zero l and q, huge d",      "NaN in the ambient cube",  "Inf in the ambient cube",
+    "negative tone-map scale",   "NaN tone-map scale",       "NaN light count",
+    "NaN spot direction",        "huge albedo uv 1e7",       "unnormalised tiny normal 1e-19",
+    "NaN and Inf vertex attenuation", "all attenuation coefficients 0 (1/0)",
+    "Phong: zero-length normal after normal-map decode", "Phong: exponent 150, R.L = 1 to the last bit",
+    "Phong: exponent 150, R.L just below 1", "Phong: N.V = 0", "Phong: N.V slightly negative",
+    "Phong: light behind, pow(0, k)", "Phong: eye at the shaded point", "Phong: NaN exponent and boost",
+    "Phong: Inf envmap scale and rim boost", "Phong: huge exponent 1e6",
+};
+const int kNumHardCases = sizeof kHardCases / sizeof kHardCases[0];
+
+void hard_pixel(Rng &r, int c, ts_vec4f rec[ML_SLOTS]) {
+  random_pixel(r, rec);
+  ts_vec4f *l0 = &rec[ML_SLOT_LIGHT0];
+  const ts_vec3f n = ts_normalize3f(ts_v3f(rec[0].x, rec[0].y, rec[0].z));
+  auto make_directional = [&](ts_vec4f *l, ts_vec3f travel) {
+    l[0].w = 1.f;
+    l[1] = v4(travel, 0.f);
+    l[4] = ts_v4f(1, 0, 0, 0);
+  };
+  switch (c) {
+    case 0: rec[ML_SLOT_NORMAL] = ts_v4f(0, 0, 0, 0); break;
+    case 1: rec[ML_SLOT_NORMAL] = ts_v4f(1e-39f, -2e-39f, 3e-40f, 0); break;
+    case 2: rec[ML_SLOT_NORMAL] = ts_v4f(1e20f, -3e19f, 2e20f, 0); break;
+    case 3: l0[2] = rec[ML_SLOT_POSITION]; l0[0].w = 0.f; break;
+    case 4:  // an axis normal and a directional light travelling against it: N.L = 1
+      rec[ML_SLOT_NORMAL] = ts_v4f(0, 0, 1, 0);
+      make_directional(l0, ts_v3f(0, 0, -1));
+      break;
+    case 5:
+      rec[ML_SLOT_NORMAL] = ts_v4f(0, 1, 0, 0);
+      make_directional(l0, ts_v3f(0, 1, 0));
+      break;
+    case 6:
+      rec[ML_SLOT_NORMAL] = ts_v4f(1, 0, 0, 0);
+      make_directional(l0, ts_v3f(0, 0, 1));
+      break;
+    case 7:
+      for (int i = 0; i < ML_MAX_LIGHTS; ++i) {
+        rec[ML_SLOT_LIGHT0 + 5 * i].x = 65504.f;
+        rec[ML_SLOT_LIGHT0 + 5 * i].y = 65504.f;
+        rec[ML_SLOT_LIGHT0 + 5 * i].z = 65504.f;
+      }
+      rec[ML_SLOT_PARAMS].x = 4.f;
+      break;
+    case 8: rec[ML_SLOT_PARAMS].x = 1e6f; break;
+    case 9: rec[ML_SLOT_NORMAL].y = kNaN; break;
+    case 10: l0[0].x = kInf; break;
+    case 11: rec[ML_SLOT_POSITION].z = kNaN; break;
+    case 12: l0[2] = ts_v4f(1e30f, -1e30f, 1e30f, 1); l0[0].w = 0.f; break;
+    case 13:
+      l0[1].w = 1.f;
+      l0[3].x = 0.f;
+      rec[ML_SLOT_LIGHT0 + 5 + 1].w = 1.f;
+      rec[ML_SLOT_LIGHT0 + 5 + 3].x = 1e4f;
+      break;
+    case 14: {  // a spot light whose axis makes cos = cos_outer exactly is hard to build; use the axis itself
+      l0[0].w = 0.f;
+      l0[1].w = 1.f;
+      l0[3].z = 1.f;  // cos_outer = 1: the cone test sits at its edge for an on-axis point
+      l0[3].w = 1e30f;
+      break;
+    }
+    case 15: l0[4] = ts_v4f(1.f, 0.f, 0.f, 0.f); l0[2] = ts_v4f(3e18f, 0, 0, 1); l0[0].w = 0.f; break;
+    case 16: rec[ML_SLOT_AMBIENT + 2].y = kNaN; rec[ML_SLOT_AMBIENT + 3].y = kNaN; break;
+    case 17: rec[ML_SLOT_AMBIENT + 0].x = kInf; rec[ML_SLOT_AMBIENT + 1].x = kInf; break;
+    case 18: rec[ML_SLOT_PARAMS].x = -2.f; break;
+    case 19: rec[ML_SLOT_PARAMS].x = kNaN; break;
+    case 20: rec[ML_SLOT_PARAMS].y = kNaN; break;
+    case 21: l0[1] = ts_v4f(kNaN, 0, 1, 1); break;
+    case 22: rec[ML_SLOT_UV] = ts_v4f(1e7f, -3e7f, 0, 0); break;
+    case 23: rec[ML_SLOT_NORMAL] = v4(ts_scale3f(n, 1e-19f), 0.f); break;
+    case 24: rec[ML_SLOT_VERTEX_ATTEN] = ts_v4f(kNaN, kInf, kNaN, kInf); break;
+    case 25: l0[4] = ts_v4f(0, 0, 0, 0); l0[0].w = 0.f; break;
+    case 26:  // the normal map's grey block decodes to (0,0,0) (make_inputs)
+      rec[ML_SLOT_UV] = ts_v4f(1.f / 16, 1.f / 16, 0, 0);
+      break;
+    case 27:
+    case 28: {  // flat normal from the map's (0.5, 0.5, 1) block, where the exponent map's r = 1
+      rec[ML_SLOT_UV] = ts_v4f(3.f / 16, 1.f / 16, 0, 0);
+      rec[ML_SLOT_NORMAL] = ts_v4f(0, 0, 1, 0);
+      rec[ML_SLOT_TANGENT] = ts_v4f(1, 0, 0, 0);
+      rec[ML_SLOT_BITANGENT] = ts_v4f(0, 1, 0, 0);
+      rec[ML_SLOT_POSITION] = ts_v4f(0, 0, 0, 1);
+      rec[ML_SLOT_EYE] = ts_v4f(0, 3, 4, 1);  // V = (0, 0.6, 0.8), R = (0, -0.6, 0.8)
+      rec[ML_SLOT_PHONG] = ts_v4f(150.f, 149.f, 1.f, 0.f);
+      ts_vec3f L = ts_v3f(0, -0.6f, 0.8f);
+      if (c == 28) L = ts_normalize3f(ts_v3f(0.0005f, -0.6f, 0.8f));
+      make_directional(l0, ts_scale3f(L, -1.f));
+      break;
+    }
+    case 29:
+    case 30:
+      rec[ML_SLOT_NORMAL] = ts_v4f(0, 0, 1, 0);
+      rec[ML_SLOT_TANGENT] = ts_v4f(1, 0, 0, 0);
+      rec[ML_SLOT_BITANGENT] = ts_v4f(0, 1, 0, 0);
+      rec[ML_SLOT_UV] = ts_v4f(3.f / 16, 1.f / 16, 0, 0);
+      rec[ML_SLOT_POSITION] = ts_v4f(1, 2, 3, 1);
+      rec[ML_SLOT_EYE] = ts_v4f(5, 2, c == 29 ? 3.f : 2.99f, 1);
+      break;
+    case 31: make_directional(l0, ts_scale3f(n, 1.f)); break;  // travels along N: behind the surface
+    case 32: rec[ML_SLOT_EYE] = rec[ML_SLOT_POSITION]; break;
+    case 33: rec[ML_SLOT_PHONG].x = kNaN; rec[ML_SLOT_PHONG].z = kNaN; break;
+    case 34: rec[ML_SLOT_ENVMAP].x = kInf; rec[ML_SLOT_RIM].y = kInf; break;
+    case 35: rec[ML_SLOT_PHONG].x = 1e6f; rec[ML_SLOT_PHONG].y = 1e6f; break;
+    default: break;
+  }
+}
+
+void make_inputs(InputSet set, int w, int h, uint32_t seed, FamilyInputs *out) {
+  Rng r(seed);
+  fill_record_grid<ML_SLOTS>(set, w, h, kHardCases, kNumHardCases, out, [&](ts_vec4f *rec) { random_pixel(r, rec); },
+                   [&](int c, ts_vec4f *rec) { hard_pixel(r, c, rec); });
+  // Textures: RGBA32F, bilinear (RGBA8 would take llvmpipe's 8-bit fixed-point
+  // filtering path: platform notes section 4). Order: enum TEX_*.
+  auto tex2d = [&](const char *name, int w, int h, bool repeat) {
+    TextureDesc t;
+    t.sampler = name;
+    t.w = w;
+    t.h = h;
+    t.linear = true;
+    t.repeat = repeat;
+    t.rgba.resize(static_cast<size_t>(w) * h * 4);
+    return t;
+  };
+  auto texel = [](TextureDesc &t, int x, int y) { return &t.rgba[(static_cast<size_t>(y) * t.w + x) * 4]; };
+  TextureDesc albedo = tex2d("u_albedo", 16, 16, true);
+  for (float &v : albedo.rgba) v = r.uniform(0.05f, 1.f);
+  TextureDesc nmap = tex2d("u_normal_map", 16, 16, true);
+  for (int y = 0; y < 16; ++y)
+    for (int x = 0; x < 16; ++x) {
+      const ts_vec3f d = r.unit_vector();
+      float *p = texel(nmap, x, y);
+      p[0] = 0.5f + 0.5f * d.x;
+      p[1] = 0.5f + 0.5f * d.y;
+      p[2] = 0.5f + 0.5f * std::fabs(d.z);
+      p[3] = r.uniform(0, 1);
+    }
+  TextureDesc expmap = tex2d("u_exponent_map", 16, 16, true);
+  for (float &v : expmap.rgba) v = r.uniform(0, 1);
+  // Hard-case blocks (hard_pixel): texels (0..1, 0..1) of the normal map are grey, so
+  // they decode to a zero vector; texels (2..3, 0..1) are a flat (0.5, 0.5, 1) normal
+  // with exponent-map r = 1 (exponent 150).
+  for (int y = 0; y < 2; ++y)
+    for (int x = 0; x < 4; ++x) {
+      float *p = texel(nmap, x, y);
+      p[0] = p[1] = 0.5f;
+      p[2] = x < 2 ? 0.5f : 1.f;
+      if (x >= 2) texel(expmap, x, y)[0] = 1.f;
+    }
+  TextureDesc warp = tex2d("u_light_warp", 32, 1, false);
+  for (float &v : warp.rgba) v = r.uniform(0, 1);
+  TextureDesc env;
+  env.sampler = "u_envmap";
+  env.kind = TexKind::Cube;
+  env.w = env.h = 8;
+  env.linear = true;
+  env.rgba.resize(6 * 8 * 8 * 4);
+  for (float &v : env.rgba) v = r.uniform(0, 4);
+  out->textures = {albedo, nmap, expmap, warp, env};
+}
+
+std::vector<std::string> slot_names() {
+  std::vector<std::string> n = {"normal", "position", "uv", "vertex_atten", "tangent", "bitangent"};
+  const char *faces[6] = {"+x", "-x", "+y", "-y", "+z", "-z"};
+  for (const char *f : faces) n.push_back(std::string("ambient") + f);
+  n.push_back("params");
+  n.push_back("albedo");
+  const char *parts[5] = {"color", "dir", "pos", "spot", "atten"};
+  for (int i = 0; i < ML_MAX_LIGHTS; ++i)
+    for (const char *p : parts) n.push_back("light" + std::to_string(i) + "." + p);
+  for (const char *p : {"eye", "phong", "fresnel_ranges", "phong_tint", "rim", "envmap", "envmap_tint", "self_illum"})
+    n.push_back(p);
+  return n;
+}
+
+void bind_uniforms(const GlFns &gl, GLuint program, const std::vector<ts_vec4f> &shared) {
+  auto set = [&](const char *name, int first, int count) {
+    const GLint loc = gl.GetUniformLocation(program, name);
+    if (loc >= 0) gl.Uniform4fv(loc, count, &shared.at(first).x);
+  };
+  set("u_ambient_cube", ML_SLOT_AMBIENT, 6);
+  set("u_params", ML_SLOT_PARAMS, 1);
+  set("u_albedo_color", ML_SLOT_ALBEDO, 1);
+  set("u_lights", ML_SLOT_LIGHT0, 5 * ML_MAX_LIGHTS);
+  set("u_eye", ML_SLOT_EYE, 1);
+  set("u_phong", ML_SLOT_PHONG, 1);
+  set("u_fresnel_ranges", ML_SLOT_FRESNEL, 1);
+  set("u_phong_tint", ML_SLOT_PHONG_TINT, 1);
+  set("u_rim", ML_SLOT_RIM, 1);
+  set("u_envmap_params", ML_SLOT_ENVMAP, 1);
+  set("u_envmap_tint", ML_SLOT_ENVMAP_TINT, 1);
+  set("u_self_illum", ML_SLOT_SELF_ILLUM, 1);
+}
+
+}  // namespace
+
+ml_variant ml_variant_of(const Variant &v) {
+  ml_variant m = {};
+  m.tier = v.tier == Tier::PS20 ? TS_TIER_ID_PS20 : v.tier == Tier::PS2B ? TS_TIER_ID_PS2B : TS_TIER_ID_SM3;
+  m.albedo_texture = v.value("ALBEDO_TEXTURE");
+  m.half_lambert = v.value("HALF_LAMBERT");
+  m.output_mode = v.value("OUTPUT_MODE");
+  m.num_lights = v.value("NUM_LIGHTS");
+  m.phong = v.value("PHONG");
+  m.exponent_map = v.value("PHONG_EXPONENT_MAP");
+  m.rim_light = v.value("RIM_LIGHT");
+  m.envmap = v.value("ENVMAP");
+  m.light_warp = v.value("LIGHT_WARP");
+  return m;
+}
+
+const ShaderFamily kModelLightingFamily = {
+    "model_lighting", ML_SLOTS, slot_names(), make_inputs, eval_f, eval_d, output_range, ML_PIXEL_SLOTS, bind_uniforms,
+    eval_row_f,
+};
+const FamilyRegistrar kRegister(&kModelLightingFamily);

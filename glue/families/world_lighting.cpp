@@ -1,0 +1,388 @@
+// tiershade glue: the world_lighting family (lightmaps, radiosity normal mapping,
+// cube-map specular): its input records (random and hard cases), its test textures,
+// and the bridge to its C twin (c_ref/twins/world_lighting.c). The texture builders are
+// shared with the demo and the benchmark through family_world_lighting.h.
+#include "families/world_lighting.h"
+
+#include "twins/world_lighting_batch.h"
+
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <limits>
+
+namespace {
+
+const float kNaN = std::numeric_limits<float>::quiet_NaN();
+const float kInf = std::numeric_limits<float>::infinity();
+
+// The texture bound to `sampler`. Inputs without it are a programming error of the caller
+// (every builder of world_lighting inputs sets all five): stop with a message, never sample garbage.
+const TextureDesc &find_tex(const FamilyInputs &in, const char *sampler) {
+  for (const TextureDesc &t : in.textures)
+    if (t.sampler == sampler) return t;
+  fprintf(stderr, "world_lighting: the inputs have no texture for sampler '%s'\n", sampler);
+  abort();
+}
+
+struct TexViews {
+  ts_tex2d base{}, normalmap{}, lightmap{}, mask{};
+  ts_texcube envmap{};
+  wl_textures t{};
+  explicit TexViews(const FamilyInputs &in) {
+    base = tex2d_of(find_tex(in, "u_base"));
+    normalmap = tex2d_of(find_tex(in, "u_normalmap"));
+    lightmap = tex2d_of(find_tex(in, "u_lightmap"));
+    mask = tex2d_of(find_tex(in, "u_envmap_mask"));
+    envmap = texcube_of(find_tex(in, "u_envmap"));
+    t.base = &base;
+    t.normalmap = &normalmap;
+    t.lightmap = &lightmap;
+    t.envmap_mask = &mask;
+    t.envmap = &envmap;
+  }
+};
+
+void gather(const FamilyInputs &in, int x, int y, ts_vec4f rec[WL_SLOTS]) {
+  for (int k = 0; k < WL_SLOTS; ++k) rec[k] = in.slot(x, y, k);
+}
+
+ts_vec4f eval_f(const Variant &v, const FamilyInputs &in, int x, int y) {
+  ts_vec4f rec[WL_SLOTS];
+  gather(in, x, y, rec);
+  const wl_variant w = wl_variant_of(v);
+  const TexViews tv(in);
+  return world_lighting_f(&w, rec, &tv.t);
+}
+
+// The batch twin on the record texture's row (stride 1); shared slots have stride 0.
+void eval_row_f(const Variant &v, const FamilyInputs &in, int x0, int y, int count, ts_vec4f *out) {
+  static_assert(sizeof(ts_vec4f) == 4 * sizeof(float), "ts_vec4f is 4 packed floats");
+  wl_batch_input b;
+  for (int k = 0; k < WL_SLOTS; ++k) {
+    if (k < in.slots) {
+      b.slot[k] = reinterpret_cast<const ts_vec4f *>(&in.records[(static_cast<size_t>(y + k * in.h) * in.w + x0) * 4]);
+      b.stride[k] = 1;
+    } else {
+      b.slot[k] = &in.shared.at(k);
+      b.stride[k] = 0;
+    }
+  }
+  const wl_variant w = wl_variant_of(v);
+  const TexViews tv(in);
+  world_lighting_f_batch(&w, &b, &tv.t, out, count);
+}
+
+ts_vec4d eval_d(const Variant &v, const FamilyInputs &in, int x, int y) {
+  ts_vec4f rec[WL_SLOTS];
+  gather(in, x, y, rec);
+  const wl_variant w = wl_variant_of(v);
+  const TexViews tv(in);
+  return world_lighting_d(&w, rec, &tv.t);
+}
+
+void output_range(const Variant &, float *lo, float *hi) {
+  *lo = 0.f;
+  *hi = 65504.f;
+}
+
+ts_vec4f v4(ts_vec3f v, float w) { return ts_v4f(v.x, v.y, v.z, w); }
+
+// --- test textures: a regular zone that random records sample, and 2x2 blocks of
+// special texels that hard records aim at (a 2x2 block sampled at its centre gives
+// the block's value with LINEAR filtering too).
+constexpr int kTexSize = 16;                  // base, normal map, mask: 16x16, regular rows 0..7
+constexpr int kPageW = 64, kPageH = 32;        // lightmap page: regular rows 0..15
+constexpr int kCubeSize = 8;
+
+void put_block(TextureDesc *t, int bx, int by, const float v[4]) {
+  for (int y = by; y < by + 2; ++y)
+    for (int x = bx; x < bx + 2; ++x)
+      for (int c = 0; c < 4; ++c) t->rgba[(static_cast<size_t>(y) * t->w + x) * 4 + c] = v[c];
+}
+
+// Special lightmap blocks (x = 2 i, y = 16).
+const float kLmSpecial[][4] = {
+    {65504.f, 65504.f, 65504.f, 1.f},  // 0 largest half float
+    {kInf, 1.f, 0.5f, 0.5f},           // 1 overflowed sample
+    {1e30f, 2e30f, 3e30f, 0.5f},       // 2 huge float
+    {1.f, 1.f, 1.f, 1.f},              // 3 RGBE: largest exponent (a = 255/255 -> e = 127); 4.12: 16
+    {1.f, 1.f, 1.f, 0.f},              // 4 RGBE: smallest exponent (a = 0 -> e = -128)
+    {0.f, 0.f, 0.f, 0.f},              // 5 black
+    {kNaN, 0.5f, kNaN, 0.5f},          // 6 NaN
+    {1e-40f, 2e-39f, 1e-45f, 0.5f},    // 7 denormals
+    {0.5f / 255.f, 1.f / 255.f, 254.f / 255.f, 129.f / 255.f},  // 8 RGBE-like small mantissas
+};
+const int kNumLmSpecial = sizeof kLmSpecial / sizeof kLmSpecial[0];
+
+// Special normal-map blocks (x = 2 i, y = 8).
+const float kNmSpecial[][4] = {
+    {0.5f, 0.5f, 0.5f, 0.5f},  // 0 zero-length normal (2 t - 1 = 0): every RNM weight 0
+    {0.5f, 0.5f, 0.f, 1.f},    // 1 n = (0, 0, -1): every RNM weight 0
+    {kNaN, 0.5f, 1.f, kNaN},   // 2 NaN texel (and NaN mask)
+    {1e30f, -1e30f, 1e30f, 1e30f},  // 3 huge texel
+    {0.5f, 0.5f, 1.f, 1.f},    // 4 n = (0, 0, 1), ssbump weights (0.5, 0.5, 1)
+    {0.f, 0.f, 0.f, 0.f},      // 5 ssbump: all weights 0 (and RNM n = (-1, -1, -1))
+    {0.5f * 0.816496580927726f + 0.5f, 0.5f, 0.5f * 0.577350269189626f + 0.5f, 0.f},  // 6 n = b0
+};
+const int kNumNmSpecial = sizeof kNmSpecial / sizeof kNmSpecial[0];
+
+// Centre of 2x2 block (bx, by) in uv.
+ts_vec2f block_uv(int bx, int by, int w, int h) { return ts_v2f((bx + 1.f) / w, (by + 1.f) / h); }
+
+}  // namespace
+
+wl_variant wl_variant_of(const Variant &v) {
+  wl_variant w;
+  w.tier = v.tier == Tier::PS20 ? WL_TIER_PS20 : v.tier == Tier::PS2B ? WL_TIER_PS2B : WL_TIER_SM3;
+  w.bumpmap = v.value("BUMPMAP");
+  w.encoding = v.value("LIGHTMAP_ENCODING");
+  w.envmap = v.value("ENVMAP");
+  w.envmapmask = v.value("ENVMAPMASK");
+  return w;
+}
+
+TextureDesc wl_texture(const char *sampler, int w, int h, bool linear, bool repeat) {
+  TextureDesc t;
+  t.sampler = sampler;
+  t.w = w;
+  t.h = h;
+  t.linear = linear;
+  t.repeat = repeat;
+  t.rgba.assign(static_cast<size_t>(w) * h * 4, 0.f);
+  return t;
+}
+
+void wl_test_textures(Rng &r, std::vector<TextureDesc> *out) {
+  TextureDesc base = wl_texture("u_base", kTexSize, kTexSize, true, true);
+  for (size_t i = 0; i < base.rgba.size(); ++i) base.rgba[i] = i % 4 == 3 ? r.uniform(0, 1) : r.uniform(0.05f, 1.f);
+  TextureDesc nm = wl_texture("u_normalmap", kTexSize, kTexSize, true, true);
+  for (int y = 0; y < kTexSize / 2; ++y)
+    for (int x = 0; x < kTexSize; ++x) {
+      // Mostly outward normals (z > -0.2), stored 0.5 n + 0.5 like an 8-bit normal map.
+      ts_vec3f n = r.unit_vector();
+      if (n.z < -0.2f) n.z = -n.z;
+      float *p = &nm.rgba[(static_cast<size_t>(y) * kTexSize + x) * 4];
+      p[0] = 0.5f * n.x + 0.5f;
+      p[1] = 0.5f * n.y + 0.5f;
+      p[2] = 0.5f * n.z + 0.5f;
+      p[3] = r.uniform(0, 1);
+    }
+  for (int i = 0; i < kNumNmSpecial; ++i) put_block(&nm, 2 * i, kTexSize / 2, kNmSpecial[i]);
+  TextureDesc lm = wl_texture("u_lightmap", kPageW, kPageH, true, false);
+  for (int y = 0; y < kPageH / 2; ++y)
+    for (int x = 0; x < kPageW; ++x) {
+      float *p = &lm.rgba[(static_cast<size_t>(y) * kPageW + x) * 4];
+      for (int c = 0; c < 3; ++c) p[c] = r.uniform(0, 1);
+      // Alpha: an RGBE exponent e in [-8, 2], stored (e + 128) / 255 (the other encodings ignore it).
+      p[3] = static_cast<float>(128 - 8 + static_cast<int>(r.next() % 11)) / 255.f;
+    }
+  for (int i = 0; i < kNumLmSpecial; ++i) put_block(&lm, 2 * i, kPageH / 2, kLmSpecial[i]);
+  TextureDesc mask = wl_texture("u_envmap_mask", kTexSize, kTexSize, true, true);
+  for (float &v : mask.rgba) v = r.uniform(0, 1);
+  // The cube: NEAREST, because GLES cube maps are always seamless and seamless LINEAR
+  // filtering is not reproducible per pixel (docs/world_lighting.md, "Cube maps on GLES").
+  TextureDesc cube = wl_texture("u_envmap", kCubeSize, kCubeSize * 6, false, false);
+  cube.kind = TexKind::Cube;
+  cube.h = kCubeSize;
+  for (size_t i = 0; i < cube.rgba.size(); ++i) cube.rgba[i] = i % 4 == 3 ? 1.f : r.uniform(0.f, 4.f);
+  // Overflowing HDR texels in the quadrant s, t < 0.5 of the -Y face (directions with x < 0, z > 0).
+  const float specials[4] = {65504.f, kInf, 1e30f, kNaN};
+  for (int y = 0; y < kCubeSize / 2; ++y)
+    for (int x = 0; x < kCubeSize / 2; ++x) {
+      float *p = &cube.rgba[((3 * static_cast<size_t>(kCubeSize) + y) * kCubeSize + x) * 4];
+      for (int c = 0; c < 3; ++c) p[c] = specials[(x + y + c) % 4];
+    }
+  *out = {base, nm, lm, mask, cube};
+}
+
+void wl_defaults(ts_vec4f rec[WL_SLOTS]) {
+  for (int k = 0; k < WL_SLOTS; ++k) rec[k] = ts_v4f(0, 0, 0, 0);
+  rec[WL_SLOT_NORMAL] = ts_v4f(0, 0, 1, 0);
+  rec[WL_SLOT_TANGENT] = ts_v4f(1, 0, 0, 0);
+  rec[WL_SLOT_BINORMAL] = ts_v4f(0, 1, 0, 0);
+  rec[WL_SLOT_EYE] = ts_v4f(0, 0, 1, 0);
+  rec[WL_SLOT_TINT_SCALE] = ts_v4f(1, 1, 1, 1);
+  rec[WL_SLOT_ENV_TINT] = ts_v4f(1, 1, 1, 1);
+  rec[WL_SLOT_ENV_PARAMS] = ts_v4f(0, 1, 0, 1);  // contrast 0, saturation 1, R0 = 1: Source's defaults
+  rec[WL_SLOT_FOG_COLOR] = ts_v4f(0, 0, 0, 0);
+  rec[WL_SLOT_FOG_PARAMS] = ts_v4f(0, 0, 0, 0);
+}
+
+namespace {
+
+void random_pixel(Rng &r, ts_vec4f rec[WL_SLOTS]) {
+  // Base/normal/mask uv: any u (wraps), v inside the regular rows of a period.
+  const float period = static_cast<float>(static_cast<int>(r.next() % 3) - 1);
+  rec[WL_SLOT_UV] = ts_v4f(r.uniform(-1, 2), period + r.uniform(0.07f, 0.43f), r.uniform(0.f, 0.6f),
+                           r.uniform(0.03f, 0.45f));
+  rec[WL_SLOT_LM_OFFSET] = ts_v4f(r.uniform(0.f, 0.12f), r.uniform(-0.01f, 0.01f), r.uniform(0.f, 400.f), 0.f);
+  // A random, roughly orthonormal frame, scaled like interpolated vectors are.
+  const ts_vec3f n = r.unit_vector();
+  ts_vec3f t = r.unit_vector();
+  t = ts_normalize3f(ts_sub3f(t, ts_scale3f(n, ts_dot3f(n, t))));
+  const ts_vec3f b = ts_v3f(n.y * t.z - n.z * t.y, n.z * t.x - n.x * t.z, n.x * t.y - n.y * t.x);
+  rec[WL_SLOT_NORMAL] = v4(ts_scale3f(n, r.uniform(0.8f, 1.2f)), 0);
+  rec[WL_SLOT_TANGENT] = v4(ts_scale3f(t, r.uniform(0.8f, 1.2f)), 0);
+  rec[WL_SLOT_BINORMAL] = v4(ts_scale3f(b, r.uniform(0.8f, 1.2f)), 0);
+  rec[WL_SLOT_EYE] = v4(ts_scale3f(r.unit_vector(), r.uniform(0.1f, 50.f)), 0);
+  rec[WL_SLOT_TINT_SCALE] = ts_v4f(r.uniform(0.5f, 2.f), r.uniform(0.5f, 2.f), r.uniform(0.5f, 2.f), r.uniform(0.25f, 4.f));
+  rec[WL_SLOT_ENV_TINT] = ts_v4f(r.uniform(0, 1), r.uniform(0, 1), r.uniform(0, 1), r.uniform(0.5f, 16.f));
+  // Half of the pixels at Source's defaults (sm3's fast path), half anywhere in range.
+  if (r.next() % 2) rec[WL_SLOT_ENV_PARAMS] = ts_v4f(0, 1, 0, 1);
+  else {
+    const float r0 = r.uniform(0, 1);
+    rec[WL_SLOT_ENV_PARAMS] = ts_v4f(r.uniform(0, 1), r.uniform(0, 1.5f), 1.f - r0, r0);
+  }
+  rec[WL_SLOT_FOG_COLOR] = ts_v4f(r.uniform(0, 1), r.uniform(0, 1), r.uniform(0, 1), r.uniform(0.3f, 1.f));
+  const float start = r.uniform(0, 200), range = r.uniform(50, 400);
+  rec[WL_SLOT_FOG_PARAMS] = ts_v4f(1.f / range, start / range, 0, 0);
+}
+
+const char *const kHardCases[] = {
+    "zero-length normal texel",     "normal texel pointing down (zero RNM weights)", "NaN normal texel",
+    "huge normal texel 1e30",       "ssbump texel 0 (zero weights)", "normal texel = b0",
+    "grazing N.V = 0",              "N.V slightly negative",       "N.V = 1",
+    "zero eye vector",              "zero tangent frame",          "NaN eye vector",
+    "lightmap 65504",               "lightmap Inf",                "lightmap 1e30",
+    "RGBE largest exponent",        "RGBE smallest exponent",      "lightmap NaN",
+    "lightmap denormals",           "lightmap black, small mantissas", "cube texel 65504/Inf/NaN",
+    "envmap scale and tint 65504",  "envmap scale Inf",            "contrast 1, saturation 0, R0 0",
+    "negative saturation, contrast -1, R0 NaN", "fast-path defaults exactly", "tone-map scale 1e6",
+    "tone-map scale NaN",           "fog range 0 (1/0), depth 0",  "fog NaN density, huge depth",
+    "huge uvs 1e7",                 "NaN lightmap uv",             "lightmap tint Inf",
+};
+const int kNumHardCases = sizeof kHardCases / sizeof kHardCases[0];
+
+void aim_normal_block(ts_vec4f rec[WL_SLOTS], int i) {
+  const ts_vec2f uv = block_uv(2 * i, kTexSize / 2, kTexSize, kTexSize);
+  rec[WL_SLOT_UV].x = uv.x;
+  rec[WL_SLOT_UV].y = uv.y;
+}
+// The three bumped samples land on lightmap blocks i+1, i+2, i+3 (the flat one on block i).
+void aim_lightmap_block(ts_vec4f rec[WL_SLOTS], int i) {
+  const ts_vec2f uv = block_uv(2 * i, kPageH / 2, kPageW, kPageH);
+  rec[WL_SLOT_UV].z = uv.x;
+  rec[WL_SLOT_UV].w = uv.y;
+  rec[WL_SLOT_LM_OFFSET].x = 2.f / kPageW;
+  rec[WL_SLOT_LM_OFFSET].y = 0.f;
+}
+// World frame = tangent axes, a flat normal texel, eye along N: R = N = dir.
+void aim_reflection(ts_vec4f rec[WL_SLOTS], ts_vec3f dir) {
+  aim_normal_block(rec, 4);
+  rec[WL_SLOT_NORMAL] = v4(dir, 0);
+  rec[WL_SLOT_TANGENT] = ts_v4f(0, 0, 0, 0);
+  rec[WL_SLOT_BINORMAL] = ts_v4f(0, 0, 0, 0);
+  rec[WL_SLOT_EYE] = v4(dir, 0);
+}
+
+void hard_pixel(Rng &r, int c, ts_vec4f rec[WL_SLOTS]) {
+  random_pixel(r, rec);
+  switch (c) {
+    case 0: aim_normal_block(rec, 0); break;
+    case 1: aim_normal_block(rec, 1); break;
+    case 2: aim_normal_block(rec, 2); break;
+    case 3: aim_normal_block(rec, 3); break;
+    case 4: aim_normal_block(rec, 5); break;
+    case 5: aim_normal_block(rec, 6); break;
+    case 6:  // flat normal texel, N = +Z, eye along +X: N.V = 0 exactly
+      aim_normal_block(rec, 4);
+      rec[WL_SLOT_NORMAL] = ts_v4f(0, 0, 1, 0);
+      rec[WL_SLOT_TANGENT] = ts_v4f(1, 0, 0, 0);
+      rec[WL_SLOT_BINORMAL] = ts_v4f(0, 1, 0, 0);
+      rec[WL_SLOT_EYE] = ts_v4f(3, 0, 0, 0);
+      break;
+    case 7:
+      aim_normal_block(rec, 4);
+      rec[WL_SLOT_NORMAL] = ts_v4f(0, 0, 1, 0);
+      rec[WL_SLOT_TANGENT] = ts_v4f(1, 0, 0, 0);
+      rec[WL_SLOT_BINORMAL] = ts_v4f(0, 1, 0, 0);
+      rec[WL_SLOT_EYE] = ts_v4f(1, 0, -1e-3f, 0);
+      break;
+    case 8: aim_reflection(rec, ts_v3f(0, 0, 1)); break;
+    case 9: rec[WL_SLOT_EYE] = ts_v4f(0, 0, 0, 0); break;
+    case 10:
+      rec[WL_SLOT_NORMAL] = rec[WL_SLOT_TANGENT] = rec[WL_SLOT_BINORMAL] = ts_v4f(0, 0, 0, 0);
+      break;
+    case 11: rec[WL_SLOT_EYE] = ts_v4f(kNaN, 1, 0, 0); break;
+    case 12: aim_lightmap_block(rec, 0); break;
+    case 13: aim_lightmap_block(rec, 1); break;
+    case 14: aim_lightmap_block(rec, 2); break;
+    case 15:
+      aim_lightmap_block(rec, 3);
+      rec[WL_SLOT_LM_OFFSET].x = 0.f;  // every sample on the largest-exponent block
+      break;
+    case 16:
+      aim_lightmap_block(rec, 4);
+      rec[WL_SLOT_LM_OFFSET].x = 0.f;
+      break;
+    case 17: aim_lightmap_block(rec, 5); break;  // black, NaN, denormals, small mantissas
+    case 18: aim_lightmap_block(rec, 6); break;
+    case 19: aim_lightmap_block(rec, 7); rec[WL_SLOT_LM_OFFSET].x = -2.f / kPageW; break;
+    case 20: aim_reflection(rec, ts_normalize3f(ts_v3f(-0.5f - 0.1f * (r.next() % 4), -1, 0.5f))); break;
+    case 21: rec[WL_SLOT_ENV_TINT] = ts_v4f(65504.f, 65504.f, 65504.f, 65504.f); break;
+    case 22: rec[WL_SLOT_ENV_TINT].w = kInf; break;
+    case 23: rec[WL_SLOT_ENV_PARAMS] = ts_v4f(1, 0, 1, 0); break;
+    case 24: rec[WL_SLOT_ENV_PARAMS] = ts_v4f(-1, -1, 0.5f, kNaN); break;
+    case 25: rec[WL_SLOT_ENV_PARAMS] = ts_v4f(0, 1, 0, 1); break;
+    case 26: rec[WL_SLOT_TINT_SCALE].w = 1e6f; break;
+    case 27: rec[WL_SLOT_TINT_SCALE].w = kNaN; break;
+    case 28:
+      rec[WL_SLOT_FOG_PARAMS] = ts_v4f(kInf, kInf, 0, 0);
+      rec[WL_SLOT_LM_OFFSET].z = 0.f;
+      break;
+    case 29:
+      rec[WL_SLOT_FOG_COLOR].w = kNaN;
+      rec[WL_SLOT_LM_OFFSET].z = 1e38f;
+      break;
+    case 30: rec[WL_SLOT_UV] = ts_v4f(1e7f, -3e7f, 1e7f, -1e7f); break;
+    case 31: rec[WL_SLOT_UV].z = kNaN; break;
+    case 32: rec[WL_SLOT_TINT_SCALE].x = kInf; break;
+    default: break;
+  }
+}
+
+void make_inputs(InputSet set, int w, int h, uint32_t seed, FamilyInputs *out) {
+  out->resize(w, h, WL_SLOTS);
+  out->case_names.clear();
+  Rng r(seed);
+  for (int y = 0; y < h; ++y) {
+    for (int x = 0; x < w; ++x) {
+      ts_vec4f rec[WL_SLOTS];
+      if (set == InputSet::Random) {
+        random_pixel(r, rec);
+      } else {
+        const int c = (y * w + x) % kNumHardCases;
+        hard_pixel(r, c, rec);
+        out->case_names.push_back(kHardCases[c]);
+      }
+      for (int k = 0; k < WL_SLOTS; ++k) out->set_slot(x, y, k, rec[k]);
+    }
+  }
+  wl_test_textures(r, &out->textures);
+}
+
+std::vector<std::string> slot_names() {
+  return {"uv",      "lm_offset",  "normal",     "tangent",   "binormal",  "eye",
+          "tint_scale", "env_tint", "env_params", "fog_color", "fog_params"};
+}
+
+}  // namespace
+
+void wl_bind_uniforms(const GlFns &gl, GLuint program, const std::vector<ts_vec4f> &shared) {
+  auto set = [&](const char *name, int slot) {
+    const GLint loc = gl.GetUniformLocation(program, name);
+    if (loc >= 0) gl.Uniform4fv(loc, 1, &shared.at(slot).x);
+  };
+  set("u_tint_scale", WL_SLOT_TINT_SCALE);
+  set("u_envmap_tint", WL_SLOT_ENV_TINT);
+  set("u_envmap_params", WL_SLOT_ENV_PARAMS);
+  set("u_fog_color", WL_SLOT_FOG_COLOR);
+  set("u_fog_params", WL_SLOT_FOG_PARAMS);
+}
+
+const ShaderFamily kWorldLightingFamily = {
+    "world_lighting", WL_SLOTS, slot_names(), make_inputs, eval_f, eval_d, output_range, WL_PIXEL_SLOTS,
+    wl_bind_uniforms, eval_row_f,
+};
+static const FamilyRegistrar kRegister(&kWorldLightingFamily);

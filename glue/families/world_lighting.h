@@ -1,0 +1,18 @@
+// tiershade glue: the world_lighting family's helpers shared by its conformance
+// inputs (family_world_lighting.cpp), its demo and its benchmark.
+#pragma once
+#include <vector>
+
+#include "families/family.h"
+#include "twins/world_lighting.h"
+
+extern const ShaderFamily kWorldLightingFamily;
+
+wl_variant wl_variant_of(const Variant &v);
+// An RGBA32F texture of w x h zeros with the given sampler name and filtering.
+TextureDesc wl_texture(const char *sampler, int w, int h, bool linear, bool repeat);
+// The conformance textures: u_base, u_normalmap, u_lightmap, u_envmap_mask, u_envmap.
+void wl_test_textures(Rng &r, std::vector<TextureDesc> *out);
+// Source's defaults in every slot (flat +Z frame, unit tints and scales, no fog).
+void wl_defaults(ts_vec4f rec[WL_SLOTS]);
+void wl_bind_uniforms(const GlFns &gl, GLuint program, const std::vector<ts_vec4f> &shared);

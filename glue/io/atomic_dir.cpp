@@ -1,0 +1,92 @@
+// tiershade glue: atomic output directories (see dir_write.h).
+#include "io/atomic_dir.h"
+
+#include <unistd.h>
+
+#include <cerrno>
+#include <cstdio>
+#include <cstring>
+#include <filesystem>
+
+namespace fs = std::filesystem;
+
+bool DirWriter::begin(const std::string &dir, const std::string &marker, const std::string &what,
+                      std::string *err) {
+  std::error_code ec;
+  dir_ = dir;
+  while (dir_.size() > 1 && dir_.back() == '/') dir_.pop_back();
+  if (dir_.empty()) {
+    *err = "empty output directory name";
+    return false;
+  }
+  const fs::file_status st = fs::symlink_status(dir_, ec);
+  if (fs::exists(st)) {
+    if (!fs::is_directory(st)) {
+      *err = dir_ + ": exists and is not a directory; refusing to replace it with a " + what;
+      return false;
+    }
+    if (!fs::is_regular_file(fs::path(dir_) / marker, ec)) {
+      *err = dir_ + ": exists and is not a previous " + what + " (no " + marker + "); refusing to replace it";
+      return false;
+    }
+  }
+  tmp_ = dir_ + ".tmp." + std::to_string(static_cast<long>(getpid()));
+  fs::remove_all(tmp_, ec);
+  if (!fs::create_directory(tmp_, ec)) {
+    *err = dir_ + ": cannot create the temporary " + tmp_ + ": " + (ec ? ec.message() : std::string("already exists"));
+    tmp_.clear();
+    return false;
+  }
+  return true;
+}
+
+bool DirWriter::mkdir(const std::string &rel, std::string *err) {
+  std::error_code ec;
+  fs::create_directories(path(rel), ec);
+  if (ec) {
+    *err = "cannot create " + dir_ + "/" + rel + ": " + ec.message();
+    return false;
+  }
+  return true;
+}
+
+bool DirWriter::write(const std::string &rel, const void *data, size_t bytes, std::string *err) {
+  const std::string p = path(rel);
+  FILE *f = fopen(p.c_str(), "wb");
+  if (!f) {
+    *err = "cannot write " + dir_ + "/" + rel + ": " + strerror(errno);
+    return false;
+  }
+  const bool ok = (bytes == 0 || fwrite(data, 1, bytes, f) == bytes) && fflush(f) == 0;
+  const int e = errno;
+  if (fclose(f) != 0 || !ok) {
+    *err = "cannot write " + dir_ + "/" + rel + ": " + strerror(e ? e : EIO);
+    return false;
+  }
+  return true;
+}
+
+bool DirWriter::commit(std::string *err) {
+  std::error_code ec;
+  const std::string old = dir_ + ".old." + std::to_string(static_cast<long>(getpid()));
+  const bool had = fs::exists(fs::symlink_status(dir_, ec));
+  if (had && std::rename(dir_.c_str(), old.c_str()) != 0) {
+    *err = "cannot move the previous " + dir_ + " aside: " + strerror(errno);
+    return false;
+  }
+  if (std::rename(tmp_.c_str(), dir_.c_str()) != 0) {
+    *err = "cannot rename " + tmp_ + " to " + dir_ + ": " + strerror(errno);
+    if (had) std::rename(old.c_str(), dir_.c_str());
+    return false;
+  }
+  committed_ = true;
+  if (had) fs::remove_all(old, ec);
+  return true;
+}
+
+DirWriter::~DirWriter() {
+  if (!committed_ && !tmp_.empty()) {
+    std::error_code ec;
+    fs::remove_all(tmp_, ec);
+  }
+}

@@ -1,0 +1,34 @@
+// tiershade glue: scene frames in C. The C fallback rasterises the draws itself (vertex
+// stage, near-plane clipping, 8-bit sub-pixel edge functions with the top-left rule,
+// perspective-correct interpolation, depth test LESS) into a small visibility buffer (draw,
+// triangle, barycentrics), then shades each visible pixel once with the bit-exact C twin
+// of its draw's variant, on every core. The same shading runs on GL's own G-buffer records
+// (glue/scene/gl_renderer.h), which is how the C twin is checked against a GL scene frame bit for bit.
+#pragma once
+#include <cstdint>
+#include <functional>
+#include <vector>
+
+#include "io/image_io.h"
+#include "scene/prepare.h"
+
+// A buffer passed again at the same size is reused (reset by the rasteriser's bands, not
+// reallocated).
+struct SceneVisibility {
+  int w = 0, h = 0;
+  std::vector<int32_t> draw, tri;  // -1: background
+  std::vector<float> b1, b2;       // perspective-correct barycentrics of vertices 1 and 2
+  std::vector<float> depth;
+};
+
+// Rasterises every draw (threads: 0 = all cores).
+void scene_rasterize_cpu(const PreparedScene &p, SceneVisibility *vis, int threads = 0);
+
+// Shades a visibility buffer: the C fallback's frame (RGBA32F, background 0).
+// progress (optional) is called with the fraction of rows done.
+void scene_shade_cpu(const PreparedScene &p, const SceneVisibility &vis, ImageF *out, int threads = 0,
+                     const std::function<void(double)> &progress = nullptr);
+
+// Shades GL's G-buffer (per pixel draw index and 6 slots, glue/scene/gl_renderer.h) with the C twin.
+void scene_shade_records(const PreparedScene &p, const std::vector<int> &draw, const std::vector<float> &slots,
+                         ImageF *out, int threads = 0);

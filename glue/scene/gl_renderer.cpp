@@ -1,0 +1,276 @@
+// tiershade glue: scene frames on GL (glue/scene/gl_renderer.h).
+#include "scene/gl_renderer.h"
+
+#include <chrono>
+#include <cstring>
+
+#include "shaderlib/assembler.h"
+#include "conform/conform.h"
+#include "families/family.h"
+
+namespace {
+using Clock = std::chrono::steady_clock;
+double ms_since(Clock::time_point t0) { return std::chrono::duration<double, std::milli>(Clock::now() - t0).count(); }
+const char *kAttr[5] = {"a_position", "a_normal", "a_uv", "a_tangent", "a_lightmap"};
+const int kAttrSize[5] = {3, 3, 2, 4, 4};
+}  // namespace
+
+SceneGl::SceneGl(GlRenderer &r, Api api) : r_(r), api_(api) {}
+
+SceneGl::~SceneGl() {
+  const GlFns &g = gl();
+  for (GLuint p : programs_) r_.delete_program(p);
+  for (auto &v : gb_programs_)
+    for (GLuint p : v) r_.delete_program(p);
+  for (GLuint t : textures_) r_.delete_texture(t);
+  for (Buffers &b : buffers_) {
+    g.DeleteBuffers(5, b.vbo);
+    g.DeleteBuffers(1, &b.ibo);
+  }
+  if (vao_) g.DeleteVertexArrays(1, &vao_);
+  if (fbo_) g.DeleteFramebuffers(1, &fbo_);
+  if (color_) g.DeleteTextures(1, &color_);
+  if (depth_) g.DeleteRenderbuffers(1, &depth_);
+}
+
+bool SceneGl::init(const PreparedScene &p, std::string *err, double *compile_ms, int target_w, int target_h) {
+  p_ = &p;
+  tw_ = target_w > 0 ? target_w : p.w;
+  th_ = target_h > 0 ? target_h : p.h;
+  const GlFns &g = gl();
+  const auto t0 = Clock::now();
+  for (const PreparedDraw &d : p.draws) {
+    const std::string name = d.variant->shader->name + "|" + d.variant->name();
+    size_t k = 0;
+    while (k < variant_names_.size() && variant_names_[k] != name) ++k;
+    if (k == variant_names_.size()) {
+      const GLuint prog = build_production_program(r_, api_, *d.variant, err);
+      if (!prog) {
+        *err = d.variant->shader->name + " " + d.variant->name() + ": " + *err;
+        return false;
+      }
+      variant_names_.push_back(name);
+      programs_.push_back(prog);
+    }
+    prog_of_draw_.push_back(static_cast<int>(k));
+  }
+  g.Finish();
+  if (compile_ms) *compile_ms = ms_since(t0);
+  g.GenVertexArrays(1, &vao_);
+  g.BindVertexArray(vao_);
+  for (const TextureDesc &t : p.textures) textures_.push_back(r_.upload_texture(t));
+  for (const PreparedDraw &d : p.draws) {
+    Buffers b;
+    const std::vector<float> *arrays[5] = {&d.position, &d.normal, &d.uv, &d.tangent, &d.lightmap};
+    g.GenBuffers(5, b.vbo);
+    for (int a = 0; a < 5; ++a) {
+      g.BindBuffer(GL_ARRAY_BUFFER, b.vbo[a]);
+      g.BufferData(GL_ARRAY_BUFFER, static_cast<GLsizeiptr>(arrays[a]->size() * sizeof(float)),
+                   arrays[a]->empty() ? nullptr : arrays[a]->data(), GL_STATIC_DRAW);
+    }
+    g.GenBuffers(1, &b.ibo);
+    g.BindBuffer(GL_ELEMENT_ARRAY_BUFFER, b.ibo);
+    g.BufferData(GL_ELEMENT_ARRAY_BUFFER, static_cast<GLsizeiptr>(d.indices.size() * sizeof(uint32_t)),
+                 d.indices.data(), GL_STATIC_DRAW);
+    b.count = static_cast<GLsizei>(d.indices.size());
+    buffers_.push_back(b);
+  }
+  // Target: RGBA32F colour and a depth renderbuffer.
+  g.GenFramebuffers(1, &fbo_);
+  g.GenTextures(1, &color_);
+  g.BindTexture(GL_TEXTURE_2D, color_);
+  g.TexImage2D(GL_TEXTURE_2D, 0, GL_RGBA32F, tw_, th_, 0, GL_RGBA, GL_FLOAT, nullptr);
+  g.TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+  g.TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+  g.GenRenderbuffers(1, &depth_);
+  g.BindRenderbuffer(GL_RENDERBUFFER, depth_);
+  g.RenderbufferStorage(GL_RENDERBUFFER, GL_DEPTH_COMPONENT24, tw_, th_);
+  g.BindFramebuffer(GL_FRAMEBUFFER, fbo_);
+  g.FramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, color_, 0);
+  g.FramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER, depth_);
+  const GLenum status = g.CheckFramebufferStatus(GL_FRAMEBUFFER);
+  if (status != GL_FRAMEBUFFER_COMPLETE) {
+    char b[64];
+    snprintf(b, sizeof b, "scene framebuffer incomplete (status 0x%x)", status);
+    *err = b;
+    return false;
+  }
+  const GLenum e = g.GetError();
+  if (e != GL_NO_ERROR) {
+    char b[64];
+    snprintf(b, sizeof b, "GL error 0x%x while uploading the scene", e);
+    *err = b;
+    return false;
+  }
+  return true;
+}
+
+bool SceneGl::bind_draw(size_t i, GLuint program, bool production, std::string *err) {
+  const GlFns &g = gl();
+  const PreparedDraw &d = p_->draws[i];
+  g.UseProgram(program);
+  auto mat = [&](const char *name, const float *m) {
+    const GLint loc = g.GetUniformLocation(program, name);
+    if (loc >= 0) g.UniformMatrix4fv(loc, 1, GL_FALSE, m);
+  };
+  mat("u_model", p_->model);
+  mat("u_view_proj", p_->view_proj);
+  const GLint eye = g.GetUniformLocation(program, "u_eye_position");
+  if (eye >= 0) g.Uniform4f(eye, p_->eye[0], p_->eye[1], p_->eye[2], 1.f);
+  const ShaderFamily *f = find_family(d.variant->shader->name);
+  if (!f) {
+    *err = "no family " + d.variant->shader->name;
+    return false;
+  }
+  f->bind_uniforms(g, program, d.shared);
+  if (production) {
+    for (size_t t = 0; t < d.tex.size(); ++t) {
+      const TextureDesc &td = p_->textures.at(d.tex[t]);
+      g.ActiveTexture(GL_TEXTURE0 + static_cast<GLenum>(t));
+      g.BindTexture(td.kind == TexKind::Cube ? GL_TEXTURE_CUBE_MAP : GL_TEXTURE_2D, textures_.at(d.tex[t]));
+      const GLint loc = g.GetUniformLocation(program, td.sampler.c_str());
+      if (loc >= 0) g.Uniform1i(loc, static_cast<GLint>(t));
+    }
+  }
+  const Buffers &b = buffers_[i];
+  for (int a = 0; a < 5; ++a) {
+    const GLint loc = g.GetAttribLocation(program, kAttr[a]);
+    if (loc < 0) continue;
+    g.BindBuffer(GL_ARRAY_BUFFER, b.vbo[a]);
+    g.EnableVertexAttribArray(static_cast<GLuint>(loc));
+    g.VertexAttribPointer(static_cast<GLuint>(loc), kAttrSize[a], GL_FLOAT, GL_FALSE, 0, nullptr);
+  }
+  g.BindBuffer(GL_ELEMENT_ARRAY_BUFFER, b.ibo);
+  return true;
+}
+
+// The state of every scene pass: the target, no blending or culling, depth test LESS (as an
+// engine draws opaque geometry; the draw dump documents the same state, docs/bundles.md).
+void SceneGl::begin_pass() {
+  const GlFns &g = gl();
+  g.BindFramebuffer(GL_FRAMEBUFFER, fbo_);
+  g.BindVertexArray(vao_);
+  g.Viewport(0, 0, tw_, th_);
+  g.Disable(GL_BLEND);
+  g.Disable(GL_CULL_FACE);
+  g.Enable(GL_DEPTH_TEST);
+  g.DepthFunc(GL_LESS);
+  g.DepthMask(GL_TRUE);
+}
+
+bool SceneGl::draw_all(const std::vector<GLuint> &progs, bool production, int gb_slot, std::string *err,
+                       const std::function<void(int, GLuint)> &before_draw) {
+  const GlFns &g = gl();
+  begin_pass();
+  g.ClearColor(0.f, 0.f, 0.f, 0.f);
+  g.Clear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+  for (size_t i = 0; i < p_->draws.size(); ++i) {
+    const GLuint prog = progs.at(prog_of_draw_[i]);
+    if (!bind_draw(i, prog, production, err)) return false;
+    if (gb_slot == -1) {
+      const GLint loc = g.GetUniformLocation(prog, "u_draw_index");
+      if (loc >= 0) g.Uniform1f(loc, static_cast<float>(i));
+    }
+    if (progress_) progress_->store(static_cast<int>(i));
+    if (before_draw) before_draw(static_cast<int>(i), prog);
+    const auto td = Clock::now();
+    g.DrawElements(GL_TRIANGLES, buffers_[i].count, GL_UNSIGNED_INT, nullptr);
+    if (getenv("TS_DRAW_MS")) {
+      g.Finish();
+      fprintf(stderr, "draw %zu %s: %.1f ms\n", i, p_->draws[i].variant->name().c_str(), ms_since(td));
+    }
+  }
+  g.Disable(GL_DEPTH_TEST);
+  const GLenum e = g.GetError();
+  if (e != GL_NO_ERROR) {
+    char b[64];
+    snprintf(b, sizeof b, "GL error 0x%x while drawing the scene", e);
+    *err = b;
+    return false;
+  }
+  return true;
+}
+
+void SceneGl::warm(const std::atomic<int> *main_next) {
+  const GlFns &g = gl();
+  begin_pass();
+  g.Clear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+  std::vector<bool> done(programs_.size(), false);
+  std::string err;
+  for (int i = static_cast<int>(p_->draws.size()) - 1; i >= 0; --i) {
+    if (main_next->load() >= i) break;
+    const int k = prog_of_draw_[static_cast<size_t>(i)];
+    if (done[static_cast<size_t>(k)]) continue;
+    done[static_cast<size_t>(k)] = true;
+    if (!bind_draw(static_cast<size_t>(i), programs_[static_cast<size_t>(k)], true, &err)) break;
+    g.DrawElements(GL_TRIANGLES, buffers_[static_cast<size_t>(i)].count, GL_UNSIGNED_INT, nullptr);
+    g.Finish();
+  }
+}
+
+bool SceneGl::read(std::vector<float> *rgba) {
+  const GlFns &g = gl();
+  rgba->assign(static_cast<size_t>(p_->w) * p_->h * 4, 0.f);
+  g.BindFramebuffer(GL_FRAMEBUFFER, fbo_);
+  g.PixelStorei(GL_PACK_ALIGNMENT, 4);
+  g.ReadPixels(0, 0, p_->w, p_->h, GL_RGBA, GL_FLOAT, rgba->data());
+  return g.GetError() == GL_NO_ERROR;
+}
+
+bool SceneGl::frame(ImageF *out, std::string *err, double *draw_ms,
+                    const std::function<void(int, GLuint)> &before_draw) {
+  const auto t0 = Clock::now();
+  if (!draw_all(programs_, true, 0, err, before_draw)) return false;
+  gl().Finish();
+  if (draw_ms) *draw_ms = ms_since(t0);
+  out->w = p_->w;
+  out->h = p_->h;
+  if (!read(&out->rgba)) {
+    *err = "reading the scene frame back failed";
+    return false;
+  }
+  return true;
+}
+
+bool SceneGl::gbuffer(std::vector<int> *draw, std::vector<float> *slots, std::string *err) {
+  const size_t n = static_cast<size_t>(p_->w) * p_->h;
+  if (gb_programs_.empty()) {
+    const Target t = target_for_api(api_);
+    gb_programs_.assign(7, {});
+    for (int slot = -1; slot < 6; ++slot) {
+      for (size_t k = 0; k < variant_names_.size(); ++k) {
+        size_t di = 0;
+        while (prog_of_draw_[di] != static_cast<int>(k)) ++di;
+        const Variant &v = *p_->draws[di].variant;
+        auto defs = variant_defines(v, InputMode::Production);
+        defs.push_back({"GBUFFER_FAMILY", p_->draws[di].world ? "1" : "0"});
+        defs.push_back({"GBUFFER_SLOT", std::to_string(slot)});
+        Assembled vs, fs;
+        if (!assemble(v.shader->vertex, t, Stage::Vertex, defs, &vs, err) ||
+            !assemble("scene_gbuffer.fs", t, Stage::Fragment, defs, &fs, err))
+          return false;
+        const GLuint prog = r_.build_program(vs, fs, err);
+        if (!prog) return false;
+        gb_programs_[slot + 1].push_back(prog);
+      }
+    }
+  }
+  std::vector<float> img;
+  draw->assign(n, -1);
+  slots->assign(n * 24, 0.f);
+  for (int slot = -1; slot < 6; ++slot) {
+    if (!draw_all(gb_programs_[slot + 1], false, slot, err, nullptr)) return false;
+    if (!read(&img)) {
+      *err = "reading the G-buffer back failed";
+      return false;
+    }
+    for (size_t i = 0; i < n; ++i) {
+      if (slot < 0) {
+        (*draw)[i] = img[i * 4 + 3] > 0.5f ? static_cast<int>(img[i * 4]) : -1;
+      } else {
+        std::memcpy(&(*slots)[i * 24 + slot * 4], &img[i * 4], 4 * sizeof(float));
+      }
+    }
+  }
+  return true;
+}

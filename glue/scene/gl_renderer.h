@@ -1,0 +1,68 @@
+// tiershade glue: a scene frame on GL, drawn as an engine draws it: each draw's production
+// program (the family's vertex and fragment shaders, glue/conform/conform.h), its uniforms and
+// textures, real geometry with a depth buffer, into an RGBA32F target. Also the G-buffer
+// passes (shaders/scene_gbuffer.fs): the same vertex shader and depth, writing the records the
+// production fragment shader received, so that the C twin can shade exactly what GL shaded.
+#pragma once
+#include <atomic>
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "gl/float_target.h"
+#include "io/image_io.h"
+#include "scene/prepare.h"
+
+class SceneGl {
+ public:
+  SceneGl(GlRenderer &r, Api api);
+  ~SceneGl();
+  SceneGl(const SceneGl &) = delete;
+  SceneGl &operator=(const SceneGl &) = delete;
+  // Compiles the variants (one program per unique variant), uploads geometry and textures.
+  // *compile_ms receives the time of compiling and linking the programs.
+  // target_w/h > 0: a smaller colour/depth target than the frame's (shader warm-up contexts).
+  bool init(const PreparedScene &p, std::string *err, double *compile_ms = nullptr, int target_w = 0,
+            int target_h = 0);
+  // Shader warm-up (another context on another thread, Mesa's shader cache on): draws the
+  // draws from the last one down, each once into the small target, so that llvmpipe JIT-
+  // compiles their shader variants and stores them in the cache; stops at the first draw the
+  // main thread has already reached (*main_next: the index of the draw it is about to issue).
+  void warm(const std::atomic<int> *main_next);
+  // The main thread's progress, read by a warm-up thread (nullptr: none).
+  void set_progress(std::atomic<int> *next) { progress_ = next; }
+  // Draws the frame into the RGBA32F target (clear colour 0,0,0,0; depth 1) and reads it back.
+  // before_draw (optional) is called after a draw's program, uniforms and textures are bound.
+  bool frame(ImageF *out, std::string *err, double *draw_ms = nullptr,
+             const std::function<void(int draw, GLuint program)> &before_draw = nullptr);
+  // Updates the shared slots (uniforms) of the draws from p (e.g. a new tone-map scale).
+  void update(const PreparedScene &p) { p_ = &p; }
+  // G-buffer: per pixel the draw index (-1 background) and the 6 pixel slots (24 floats).
+  bool gbuffer(std::vector<int> *draw, std::vector<float> *slots, std::string *err);
+  const GlFns &gl() const { return r_.gl(); }
+  GLuint program_of(int draw) const { return programs_.at(prog_of_draw_.at(draw)); }
+
+ private:
+  void begin_pass();
+  bool bind_draw(size_t i, GLuint program, bool production, std::string *err);
+  bool draw_all(const std::vector<GLuint> &progs, bool production, int gb_slot, std::string *err,
+                const std::function<void(int, GLuint)> &before_draw);
+  bool read(std::vector<float> *rgba);
+  GlRenderer &r_;
+  Api api_;
+  const PreparedScene *p_ = nullptr;
+  int tw_ = 0, th_ = 0;  // target size
+  std::atomic<int> *progress_ = nullptr;
+  std::vector<std::string> variant_names_;
+  std::vector<GLuint> programs_;           // per unique variant
+  std::vector<int> prog_of_draw_;
+  std::vector<GLuint> textures_;  // per PreparedScene::textures entry
+  struct Buffers {
+    GLuint vbo[5] = {0, 0, 0, 0, 0};  // position, normal, uv, tangent, lightmap
+    GLuint ibo = 0;
+    GLsizei count = 0;
+  };
+  std::vector<Buffers> buffers_;
+  GLuint vao_ = 0, fbo_ = 0, color_ = 0, depth_ = 0;
+  std::vector<std::vector<GLuint>> gb_programs_;  // [slot + 1][unique variant]
+};

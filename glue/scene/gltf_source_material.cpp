@@ -1,0 +1,194 @@
+// tiershade glue: glTF materials to SceneMaterial: the pbr base colour and normal map, and
+// the Source shader and $-keys of `extras.source` (docs/scenes.md lists them), each checked
+// for its type, range and shader, and the combos the variant files forbid.
+#include "scene/gltf_util.h"
+
+namespace scene_gltf {
+namespace {
+
+enum : int { MODEL = 1, WORLD = 2, BOTH = 3 };
+
+// One $-key: its JSON kind and where it goes in the material.
+struct Slot {
+  const char *key;
+  char kind;  // 'b' bool, 'n' number, 'v' 3 numbers, 't' texture {"index": i}, 'i' integer
+  int shaders;
+  double lo, hi;
+  void *field;
+};
+
+bool texture_ref(const tinygltf::Model &m, int index, const std::string &place, SceneTextureRef *out, Err &e) {
+  if (index < 0 || static_cast<size_t>(index) >= m.textures.size())
+    return e.fail(place, "texture " + std::to_string(index) + " does not exist (" + std::to_string(m.textures.size()) +
+                             " textures)");
+  const tinygltf::Texture &t = m.textures[index];
+  const std::string tp = "textures[" + std::to_string(index) + "]";
+  if (t.source < 0 || static_cast<size_t>(t.source) >= m.images.size())
+    return e.fail(tp, "source image " + std::to_string(t.source) + " does not exist");
+  SceneTextureRef r;
+  r.image = t.source;
+  if (t.sampler >= 0) {
+    if (static_cast<size_t>(t.sampler) >= m.samplers.size())
+      return e.fail(tp, "sampler " + std::to_string(t.sampler) + " does not exist");
+    const tinygltf::Sampler &sm = m.samplers[t.sampler];
+    r.linear = sm.magFilter != TINYGLTF_TEXTURE_FILTER_NEAREST;
+    r.repeat = sm.wrapS == TINYGLTF_TEXTURE_WRAP_REPEAT && sm.wrapT == TINYGLTF_TEXTURE_WRAP_REPEAT;
+  }
+  *out = r;
+  return true;
+}
+
+const char *shader_name(int s) { return s == MODEL ? "VertexLitGeneric" : "LightmappedGeneric"; }
+
+bool read_source(const tinygltf::Model &m, const tinygltf::Value &src, const std::string &place, SceneMaterial *mat,
+                 Err &e) {
+  if (!src.IsObject()) return e.fail(place, "expected an object, got " + value_kind(src));
+  int shader = MODEL;
+  if (src.Has("shader")) {
+    std::string name;
+    if (!read_string(src.Get("shader"), place + ".shader", &name, e)) return false;
+    if (name == "VertexLitGeneric") shader = MODEL;
+    else if (name == "LightmappedGeneric") shader = WORLD;
+    else return e.fail(place + ".shader", quoted(name) + " is not \"VertexLitGeneric\" or \"LightmappedGeneric\"");
+  }
+  mat->shader = shader == MODEL ? SceneShader::Model : SceneShader::World;
+  bool mask_alpha_normal = false, mask_alpha_base = false;
+  const Slot slots[] = {
+      {"$halflambert", 'b', MODEL, 0, 0, &mat->half_lambert},
+      {"$phong", 'b', MODEL, 0, 0, &mat->phong},
+      {"$phongexponent", 'n', MODEL, 0.01, 10000, &mat->phong_exponent},
+      {"$phongexponenttexture", 't', MODEL, 0, 0, &mat->phong_exponent_texture},
+      {"$phongexponentfactor", 'n', MODEL, 0, 10000, &mat->phong_exponent_factor},
+      {"$phongboost", 'n', MODEL, 0, 1000, &mat->phong_boost},
+      {"$phongfresnelranges", 'v', MODEL, 0, 100, mat->phong_fresnel_ranges},
+      {"$phongtint", 'v', MODEL, 0, 1000, mat->phong_tint},
+      {"$phongalbedotint", 'b', MODEL, 0, 0, &mat->phong_albedo_tint},
+      {"$basemapalphaphongmask", 'b', MODEL, 0, 0, &mat->base_alpha_phong_mask},
+      {"$invertphongmask", 'b', MODEL, 0, 0, &mat->invert_phong_mask},
+      {"$rimlight", 'b', MODEL, 0, 0, &mat->rim_light},
+      {"$rimlightexponent", 'n', MODEL, 0.01, 10000, &mat->rim_exponent},
+      {"$rimlightboost", 'n', MODEL, 0, 1000, &mat->rim_boost},
+      {"$rimmask", 'n', MODEL, 0, 1, &mat->rim_mask},
+      {"$lightwarptexture", 't', MODEL, 0, 0, &mat->light_warp_texture},
+      {"$envmapfresnel", 'n', MODEL, 0, 1, &mat->envmap_fresnel},
+      {"$selfillum", 'b', MODEL, 0, 0, &mat->self_illum},
+      {"$selfillumtint", 'v', MODEL, 0, 100000, mat->self_illum_tint},
+      {"$envmap", 'b', BOTH, 0, 0, &mat->envmap},
+      {"$envmapscale", 'n', BOTH, 0, 1000, &mat->envmap_scale},
+      {"$envmaptint", 'v', BOTH, 0, 1000, mat->envmap_tint},
+      {"probe", 'i', BOTH, 0, 1023, &mat->probe},
+      {"$ssbump", 'b', WORLD, 0, 0, &mat->ssbump},
+      {"$envmapmask", 't', WORLD, 0, 0, &mat->envmap_mask_texture},
+      {"$normalmapalphaenvmapmask", 'b', WORLD, 0, 0, &mask_alpha_normal},
+      {"$basealphaenvmapmask", 'b', WORLD, 0, 0, &mask_alpha_base},
+      {"$envmapcontrast", 'n', WORLD, 0, 1, &mat->envmap_contrast},
+      {"$envmapsaturation", 'n', WORLD, 0, 1, &mat->envmap_saturation},
+      {"$fresnelreflection", 'n', WORLD, 0, 1, &mat->fresnel_reflection},
+  };
+  bool explicit_half_lambert = false;
+  for (const std::string &k : src.Keys()) {
+    if (k == "shader") continue;
+    const Slot *s = nullptr;
+    for (const Slot &c : slots)
+      if (k == c.key) s = &c;
+    if (!s) return e.fail(place, "unknown key " + quoted(k));
+    if (!(s->shaders & shader))
+      return e.fail(place, quoted(k) + " is a " + shader_name(s->shaders) + " key, not " + shader_name(shader));
+    const std::string kp = place + "." + k;
+    const tinygltf::Value &v = src.Get(k);
+    double d[3];
+    switch (s->kind) {
+      case 'b':
+        if (!read_bool(v, kp, static_cast<bool *>(s->field), e)) return false;
+        break;
+      case 'n':
+        if (!read_number(v, kp, s->lo, s->hi, d, e)) return false;
+        *static_cast<float *>(s->field) = static_cast<float>(d[0]);
+        break;
+      case 'v':
+        if (!read_vec(v, kp, 3, s->lo, s->hi, d, e)) return false;
+        for (int i = 0; i < 3; ++i) static_cast<float *>(s->field)[i] = static_cast<float>(d[i]);
+        break;
+      case 'i':
+        if (!read_int(v, kp, static_cast<int>(s->lo), static_cast<int>(s->hi), static_cast<int *>(s->field), e))
+          return false;
+        break;
+      case 't': {
+        int idx = -1;
+        if (!check_keys(v, kp, {"index"}, e)) return false;
+        if (!v.Has("index")) return e.fail(kp, "missing \"index\"");
+        if (!read_int(v.Get("index"), kp + ".index", -1000000, 1000000, &idx, e)) return false;
+        if (!texture_ref(m, idx, kp + ".index", static_cast<SceneTextureRef *>(s->field), e)) return false;
+        break;
+      }
+    }
+    if (k == "$halflambert") explicit_half_lambert = true;
+  }
+  // The combos the variant files allow (shaders/*.variants skip rules).
+  if (shader == MODEL) {
+    const struct {
+      const char *key;
+      bool on;
+    } needs_phong[] = {{"$phongexponenttexture", mat->phong_exponent_texture.image >= 0},
+                       {"$rimlight", mat->rim_light},
+                       {"$envmap", mat->envmap},
+                       {"$lightwarptexture", mat->light_warp_texture.image >= 0}};
+    for (const auto &n : needs_phong)
+      if (n.on && !mat->phong) return e.fail(place, quoted(n.key) + " needs \"$phong\": 1 (ps2b/sm3 Phong feature)");
+    if (mat->phong) {
+      if (explicit_half_lambert && !mat->half_lambert)
+        return e.fail(place + ".$halflambert", "0 conflicts with \"$phong\" (Phong forces half-Lambert)");
+      mat->half_lambert = true;
+    }
+  } else {
+    if (mat->ssbump && mat->normal_texture.image < 0)
+      return e.fail(place, "\"$ssbump\" needs a normalTexture (the ssbump map)");
+    const int masks = (mat->envmap_mask_texture.image >= 0) + mask_alpha_normal + mask_alpha_base;
+    if (masks > 1)
+      return e.fail(place, "\"$envmapmask\", \"$normalmapalphaenvmapmask\" and \"$basealphaenvmapmask\" exclude each other");
+    if (masks && !mat->envmap) return e.fail(place, "an envmap mask needs \"$envmap\": 1");
+    if (mask_alpha_normal && mat->normal_texture.image < 0)
+      return e.fail(place, "\"$normalmapalphaenvmapmask\" needs a normalTexture");
+    mat->envmap_mask = mat->envmap_mask_texture.image >= 0 ? SceneEnvMask::Texture
+                       : mask_alpha_normal                 ? SceneEnvMask::NormalAlpha
+                       : mask_alpha_base                   ? SceneEnvMask::InvBaseAlpha
+                                                           : SceneEnvMask::None;
+  }
+  if (mat->probe >= 0 && !mat->envmap) return e.fail(place + ".probe", "names the envmap's probe: needs \"$envmap\": 1");
+  return true;
+}
+
+}  // namespace
+
+bool convert_materials(const tinygltf::Model &m, Scene *s, Err &e) {
+  for (size_t i = 0; i < m.materials.size(); ++i) {
+    const tinygltf::Material &g = m.materials[i];
+    SceneMaterial mat;
+    mat.name = g.name;
+    mat.where = named("materials[" + std::to_string(i) + "]", g.name);
+    const auto &pbr = g.pbrMetallicRoughness;
+    if (pbr.baseColorFactor.size() != 4) return e.fail(mat.where + ".pbrMetallicRoughness.baseColorFactor", "expected 4 numbers");
+    for (int k = 0; k < 4; ++k) {
+      const double c = pbr.baseColorFactor[k];
+      if (!(c >= 0 && c <= 1)) return e.fail(mat.where + ".pbrMetallicRoughness.baseColorFactor", "values must be in [0, 1]");
+      mat.base_color[k] = static_cast<float>(c);
+    }
+    if (pbr.baseColorTexture.index >= 0) {
+      const std::string tp = mat.where + ".pbrMetallicRoughness.baseColorTexture";
+      if (pbr.baseColorTexture.texCoord != 0) return e.fail(tp + ".texCoord", "only TEXCOORD_0 is supported");
+      if (!texture_ref(m, pbr.baseColorTexture.index, tp + ".index", &mat.base_texture, e)) return false;
+    }
+    if (g.normalTexture.index >= 0) {
+      const std::string tp = mat.where + ".normalTexture";
+      if (g.normalTexture.texCoord != 0) return e.fail(tp + ".texCoord", "only TEXCOORD_0 is supported");
+      if (!texture_ref(m, g.normalTexture.index, tp + ".index", &mat.normal_texture, e)) return false;
+    }
+    if (g.extras.IsObject() && g.extras.Has("source") &&
+        !read_source(m, g.extras.Get("source"), mat.where + ".extras.source", &mat, e))
+      return false;
+    s->materials.push_back(mat);
+  }
+  return true;
+}
+
+}  // namespace scene_gltf

@@ -1,0 +1,557 @@
+// tiershade glue: prepares a scene's draws (glue/scene/prepare.h): camera, per-draw shared
+// slots and textures, the world bake (c_ref/offline/rnm_bake.c via glue/demo/room_scene.h) and the probe
+// cube maps, all limited to what the selected variants use.
+#include "scene/prepare.h"
+
+#include <algorithm>
+#include <array>
+#include <chrono>
+#include <cmath>
+#include <map>
+
+#include "twins/model_lighting.h"
+#include "scene/textures.h"
+#include "demo/room_scene.h"
+#include "twins/world_lighting.h"
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+struct D3 {
+  double x, y, z;
+};
+D3 d3(const double *p) { return {p[0], p[1], p[2]}; }
+D3 d3f(const float *p) { return {p[0], p[1], p[2]}; }
+D3 operator-(D3 a, D3 b) { return {a.x - b.x, a.y - b.y, a.z - b.z}; }
+D3 operator+(D3 a, D3 b) { return {a.x + b.x, a.y + b.y, a.z + b.z}; }
+D3 operator*(D3 a, double s) { return {a.x * s, a.y * s, a.z * s}; }
+double dot(D3 a, D3 b) { return a.x * b.x + a.y * b.y + a.z * b.z; }
+D3 cross(D3 a, D3 b) { return {a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x}; }
+D3 unit(D3 a) {
+  const double l = std::sqrt(dot(a, a));
+  return l > 0 ? a * (1.0 / l) : a;
+}
+ts_vec3d tv(D3 a) { return ts_v3d(a.x, a.y, a.z); }
+
+// Column-major 4x4 products in double (the float matrix is what GL and C use).
+void mat_mul(const double a[16], const double b[16], double out[16]) {
+  for (int c = 0; c < 4; ++c)
+    for (int r = 0; r < 4; ++r) {
+      double s = 0;
+      for (int k = 0; k < 4; ++k) s += a[k * 4 + r] * b[c * 4 + k];
+      out[c * 4 + r] = s;
+    }
+}
+
+// View (right-handed, camera looks down -Z) and projection (OpenGL clip space, glTF's
+// perspective: infinite when zfar is 0).
+void camera_matrix(const SceneCamera &c, double aspect, double out[16]) {
+  const D3 f = unit(d3(c.forward)), s = unit(cross(f, d3(c.up))), u = cross(s, f), e = d3(c.eye);
+  const double view[16] = {s.x, u.x, -f.x, 0, s.y, u.y, -f.y, 0, s.z, u.z, -f.z, 0,
+                           -dot(s, e), -dot(u, e), dot(f, e), 1};
+  const double t = 1.0 / std::tan(c.yfov / 2), n = c.znear, fa = c.zfar;
+  double proj[16] = {t / aspect, 0, 0, 0, 0, t, 0, 0, 0, 0, -1, -1, 0, 0, -2 * n, 0};
+  if (fa > 0) {
+    proj[10] = (fa + n) / (n - fa);
+    proj[14] = 2 * fa * n / (n - fa);
+  }
+  mat_mul(proj, view, out);
+}
+
+float srgb_to_linear(float c) {
+  const double v = c;
+  return static_cast<float>(v <= 0.04045 ? v / 12.92 : std::pow((v + 0.055) / 1.055, 2.4));
+}
+
+TextureDesc black_cube() {
+  TextureDesc t;
+  t.sampler = "u_envmap";
+  t.kind = TexKind::Cube;
+  t.w = t.h = 1;
+  t.rgba.assign(24, 0.f);
+  for (int f = 0; f < 6; ++f) t.rgba[f * 4 + 3] = 1.f;
+  return t;
+}
+
+TextureDesc solid(const char *sampler, float r, float g, float b, float a) {
+  TextureDesc t;
+  t.sampler = sampler;
+  t.w = t.h = 1;
+  t.rgba = {r, g, b, a};
+  return t;
+}
+
+// An image as a texture: colour images are sRGB-decoded and multiplied by a factor.
+TextureDesc image_texture(const Scene &s, const SceneTextureRef &ref, const char *sampler, bool srgb,
+                          const float factor[4]) {
+  const SceneImage &im = s.images.at(ref.image);
+  TextureDesc t;
+  t.sampler = sampler;
+  t.w = im.w;
+  t.h = im.h;
+  t.linear = ref.linear;
+  t.repeat = ref.repeat;
+  t.rgba = im.rgba;
+  for (size_t i = 0; i < t.rgba.size(); i += 4)
+    for (int c = 0; c < 4; ++c) {
+      float v = t.rgba[i + c];
+      if (srgb && c < 3) v = srgb_to_linear(v);
+      if (factor) v *= factor[c];
+      t.rgba[i + c] = v;
+    }
+  return t;
+}
+
+ts_vec4f v4(float x, float y, float z, float w) { return ts_v4f(x, y, z, w); }
+
+// Every texture once: draws that sample the same image the same way share one entry.
+struct TexturePool {
+  std::vector<TextureDesc> *out;
+  std::map<std::string, int> index;
+  template <class Make>
+  int get(const std::string &key, Make make) {
+    auto it = index.find(key);
+    if (it != index.end()) return it->second;
+    out->push_back(make());
+    const int i = static_cast<int>(out->size()) - 1;
+    index[key] = i;
+    return i;
+  }
+};
+std::string key_of(const char *sampler, const SceneTextureRef &r, bool srgb, const float *factor) {
+  std::string k = std::string(sampler) + "|" + std::to_string(r.image) + "|" + (r.linear ? "L" : "N") +
+                  (r.repeat ? "R" : "C") + (srgb ? "s" : "l");
+  if (factor)
+    for (int c = 0; c < 4; ++c) k += "|" + std::to_string(factor[c]);
+  return k;
+}
+std::string key_solid(const char *sampler, float r, float g, float b, float a) {
+  return std::string(sampler) + "|solid|" + std::to_string(r) + "," + std::to_string(g) + "," + std::to_string(b) +
+         "," + std::to_string(a);
+}
+
+// Probe cube maps and irradiance (ambient) cubes, made on first use.
+struct Probes {
+  const Scene &s;
+  int size_override;
+  std::map<int, TextureDesc> cubes;
+  std::map<int, std::array<std::array<float, 3>, 6>> ambient;
+  std::vector<TextureDesc> world_cubes;  // from the bake, index = probe
+  bool have_world = false;
+  bool cube(int p, TextureDesc *out, float amb[6][3], std::string *err) {
+    if (!cubes.count(p)) {
+      const SceneProbe &pr = s.probes.at(p);
+      TextureDesc c;
+      float a[6][3] = {};
+      if (pr.image >= 0) {
+        if (!cube_from_probe(s.images.at(pr.image).path, "u_envmap", pr.size, &c, a, err)) {
+          *err = s.path + ": probes[" + std::to_string(p) + "]: " + *err;
+          return false;
+        }
+      } else if (have_world && p < static_cast<int>(world_cubes.size())) {
+        c = world_cubes[p];
+        // The world cube's irradiance: the mean of each face (a coarse ambient for models).
+        for (int f = 0; f < 6; ++f) {
+          double m[3] = {0, 0, 0};
+          const int n = c.w * c.w;
+          for (int i = 0; i < n; ++i)
+            for (int k = 0; k < 3; ++k) m[k] += c.rgba[(static_cast<size_t>(f) * n + i) * 4 + k];
+          for (int k = 0; k < 3; ++k) a[f][k] = static_cast<float>(m[k] / n);
+        }
+      } else {
+        *err = s.path + ": probes[" + std::to_string(p) + "] (\"" + pr.name +
+               "\") has no image and the scene has no world geometry to render it from";
+        return false;
+      }
+      for (float &v : c.rgba) v *= pr.scale;
+      std::array<std::array<float, 3>, 6> aa;
+      for (int f = 0; f < 6; ++f)
+        for (int k = 0; k < 3; ++k) aa[f][k] = a[f][k] * pr.scale;
+      cubes[p] = c;
+      ambient[p] = aa;
+    }
+    if (out) *out = cubes[p];
+    if (amb)
+      for (int f = 0; f < 6; ++f)
+        for (int k = 0; k < 3; ++k) amb[f][k] = ambient[p][f][k];
+    return true;
+  }
+};
+
+int nearest_probe(const Scene &s, const double c[3], int explicit_index) {
+  if (explicit_index >= 0) return explicit_index;
+  int best = -1;
+  double bd = 0;
+  for (size_t i = 0; i < s.probes.size(); ++i) {
+    const D3 d = d3(s.probes[i].position) - d3(c);
+    if (best < 0 || dot(d, d) < bd) {
+      best = static_cast<int>(i);
+      bd = dot(d, d);
+    }
+  }
+  return best;
+}
+
+void primitive_center(const ScenePrimitive &p, double c[3]) {
+  double lo[3] = {1e300, 1e300, 1e300}, hi[3] = {-1e300, -1e300, -1e300};
+  for (size_t i = 0; i + 2 < p.position.size(); i += 3)
+    for (int k = 0; k < 3; ++k) {
+      lo[k] = std::fmin(lo[k], p.position[i + k]);
+      hi[k] = std::fmax(hi[k], p.position[i + k]);
+    }
+  for (int k = 0; k < 3; ++k) c[k] = 0.5 * (lo[k] + hi[k]);
+}
+
+void copy_geometry(const ScenePrimitive &p, PreparedDraw *d) {
+  const size_t n = p.position.size() / 3;
+  d->position = p.position;
+  d->normal = p.normal;
+  d->uv = p.uv;
+  d->uv.resize(n * 2, 0.f);
+  d->normal.resize(n * 3, 0.f);
+  d->tangent = p.tangent;
+  if (d->tangent.size() != n * 4) {
+    d->tangent.assign(n * 4, 0.f);
+    for (size_t i = 0; i < n; ++i) d->tangent[i * 4 + 3] = 1.f;
+  }
+  d->indices = p.indices;
+}
+
+bool model_draw(const Scene &s, const PreparedScene &ps, const SceneDrawChoice &c, Tier tier, Probes *probes, Api api,
+                TexturePool *pool, PreparedDraw *d, std::string *err) {
+  const ScenePrimitive &p = s.primitives[c.primitive];
+  const SceneMaterial &m = s.materials[p.material];
+  const Variant &v = *c.variant;
+  const SceneInstance *inst = p.instance >= 0 ? &s.instances.at(p.instance) : nullptr;
+  double center[3];
+  if (inst) {
+    for (int k = 0; k < 3; ++k) center[k] = inst->center[k];
+  } else {
+    primitive_center(p, center);
+  }
+  d->shared.assign(ML_SLOTS, v4(0, 0, 0, 0));
+  // Ambient cube: the nearest sample of the irradiance volume (Source: the model's leaf).
+  float cube[6][3] = {};
+  int best = -1;
+  double bd = 0;
+  for (size_t i = 0; i < s.ambient.size(); ++i) {
+    const D3 dd = d3(s.ambient[i].position) - d3(center);
+    if (best < 0 || dot(dd, dd) < bd) {
+      best = static_cast<int>(i);
+      bd = dot(dd, dd);
+    }
+  }
+  if (best >= 0) {
+    const SceneAmbientSample &a = s.ambient[best];
+    if (a.from_probe >= 0) {
+      if (!probes->cube(a.from_probe, nullptr, cube, err)) return false;
+    } else {
+      for (int f = 0; f < 6; ++f)
+        for (int k = 0; k < 3; ++k) cube[f][k] = a.cube[f][k];
+    }
+  }
+  // Lights: the tier's limit per pixel, the rest folded into the cube (docs/light_folding.md).
+  std::vector<ts_light> lights;
+  for (const SceneLight &l : s.lights) lights.push_back(l.light);
+  const int max_local = tier == Tier::PS20 ? 2 : 4;
+  std::vector<int> kept(lights.size() + 1);
+  const float cf[3] = {static_cast<float>(center[0]), static_cast<float>(center[1]), static_cast<float>(center[2])};
+  const int half = v.value("HALF_LAMBERT");
+  const int nk = lights.empty() ? 0 : ts_fold_lights(lights.data(), static_cast<int>(lights.size()), max_local, cf, half,
+                                                      cube, kept.data());
+  for (int f = 0; f < 6; ++f) d->shared[ML_SLOT_AMBIENT + f] = v4(cube[f][0], cube[f][1], cube[f][2], 0);
+  d->shared[ML_SLOT_PARAMS] = v4(ps.tone_map_scale, static_cast<float>(nk), 0, 0);
+  d->shared[ML_SLOT_ALBEDO] = v4(m.base_color[0], m.base_color[1], m.base_color[2], m.base_color[3]);
+  for (int i = 0; i < nk; ++i) {
+    float packed[5][4];
+    char msg[200];
+    if (!ts_light_pack(&lights[kept[i]], packed, msg, sizeof msg)) {
+      *err = s.path + ": " + s.lights[kept[i]].name + ": " + msg;
+      return false;
+    }
+    for (int k = 0; k < 5; ++k)
+      d->shared[ML_SLOT_LIGHT0 + 5 * i + k] = v4(packed[k][0], packed[k][1], packed[k][2], packed[k][3]);
+  }
+  d->shared[ML_SLOT_EYE] = v4(ps.eye[0], ps.eye[1], ps.eye[2], 1);
+  // A $selfillum material without $phong runs the Phong path with the specular term off.
+  const float boost = m.phong ? m.phong_boost : 0.f;
+  d->shared[ML_SLOT_PHONG] = v4(m.phong_exponent, m.phong_exponent_factor, boost, m.base_alpha_phong_mask ? 1.f : 0.f);
+  const float *fr = m.phong_fresnel_ranges;
+  d->shared[ML_SLOT_FRESNEL] = v4((fr[1] - fr[0]) * 2, fr[1], (fr[2] - fr[1]) * 2, m.invert_phong_mask ? 1.f : 0.f);
+  d->shared[ML_SLOT_PHONG_TINT] = v4(m.phong_tint[0], m.phong_tint[1], m.phong_tint[2], m.phong_albedo_tint ? 1.f : 0.f);
+  // Features the material does not use contribute nothing (they are compiled in only in the
+  // all-features baseline): rim boost 0, envmap scale 0.
+  d->shared[ML_SLOT_RIM] = v4(m.rim_exponent, m.rim_light ? m.rim_boost : 0.f, m.rim_mask, 0);
+  d->shared[ML_SLOT_ENVMAP] = v4(m.envmap ? m.envmap_scale : 0.f, m.envmap_fresnel, 0, 0);
+  d->shared[ML_SLOT_ENVMAP_TINT] = v4(m.envmap_tint[0], m.envmap_tint[1], m.envmap_tint[2], 0);
+  d->shared[ML_SLOT_SELF_ILLUM] = v4(m.self_illum_tint[0], m.self_illum_tint[1], m.self_illum_tint[2], m.self_illum ? 1.f : 0.f);
+  // Textures: only what the variant samples is real; the others are 1x1 placeholders.
+  d->tex.clear();
+  if (v.value("ALBEDO_TEXTURE")) {
+    if (m.base_texture.image >= 0)
+      d->tex.push_back(pool->get(key_of("u_albedo", m.base_texture, true, m.base_color), [&] { return image_texture(s, m.base_texture, "u_albedo", true, m.base_color); }));
+    else
+      d->tex.push_back(pool->get(key_solid("u_albedo", m.base_color[0], m.base_color[1], m.base_color[2], m.base_color[3]), [&] { return solid("u_albedo", m.base_color[0], m.base_color[1], m.base_color[2], m.base_color[3]); }));
+  } else {
+    d->tex.push_back(pool->get(key_solid("u_albedo", 1, 1, 1, 1), [&] { return solid("u_albedo", 1, 1, 1, 1); }));
+  }
+  const bool phong = v.value("PHONG") != 0;
+  if (phong && m.normal_texture.image >= 0)
+    d->tex.push_back(pool->get(key_of("u_normal_map", m.normal_texture, false, nullptr), [&] { return image_texture(s, m.normal_texture, "u_normal_map", false, nullptr); }));
+  else
+    d->tex.push_back(pool->get(key_solid("u_normal_map", 0.5f, 0.5f, 1.f, 1.f), [&] { return solid("u_normal_map", 0.5f, 0.5f, 1.f, 1.f); }));
+  if (v.value("PHONG_EXPONENT_MAP") && m.phong_exponent_texture.image >= 0)
+    d->tex.push_back(pool->get(key_of("u_exponent_map", m.phong_exponent_texture, false, nullptr), [&] { return image_texture(s, m.phong_exponent_texture, "u_exponent_map", false, nullptr); }));
+  else
+    d->tex.push_back(pool->get(key_solid("u_exponent_map", 1, 1, 1, 1), [&] { return solid("u_exponent_map", 1, 1, 1, 1); }));
+  if (v.value("LIGHT_WARP") && m.light_warp_texture.image >= 0)
+    d->tex.push_back(pool->get(key_of("u_light_warp", m.light_warp_texture, false, nullptr), [&] { return image_texture(s, m.light_warp_texture, "u_light_warp", false, nullptr); }));
+  else
+    d->tex.push_back(pool->get("u_light_warp|identity", [&] {
+      // An identity ramp (value = u), for a LIGHT_WARP variant whose material has no ramp.
+      TextureDesc t = solid("u_light_warp", 1, 1, 1, 1);
+      t.w = 256;
+      t.linear = true;
+      t.rgba.resize(256 * 4);
+      for (int i = 0; i < 256; ++i)
+        for (int c = 0; c < 4; ++c) t.rgba[i * 4 + c] = c < 3 ? (i + 0.5f) / 256.f : 1.f;
+      return t;
+    }));
+  int pi = -1;
+  if (v.value("ENVMAP") && !s.probes.empty()) {
+    pi = nearest_probe(s, center, m.probe);
+    if (!probes->cube(pi, nullptr, nullptr, err)) return false;
+  }
+  d->tex.push_back(pool->get("u_envmap|" + std::to_string(pi), [&] {
+    TextureDesc env = black_cube();
+    if (pi >= 0) {
+      probes->cube(pi, &env, nullptr, nullptr);
+      if (api != Api::GL33) env.linear = false;  // GLES cube maps are always seamless
+    }
+    return env;
+  }));
+  d->display_encoded = v.value("OUTPUT_MODE") != 0;
+  copy_geometry(p, d);
+  return true;
+}
+
+}  // namespace
+
+void set_scene_tone_map_scale(PreparedScene *p, float scale) {
+  p->tone_map_scale = scale;
+  for (PreparedDraw &d : p->draws) {
+    if (d.world)
+      d.shared[WL_SLOT_TINT_SCALE].w = scale;
+    else
+      d.shared[ML_SLOT_PARAMS].x = scale;
+  }
+}
+
+bool prepare_scene(const Scene &s, const SceneSelection &sel, int w, int h, Api api, float tone_map_scale,
+                   PreparedScene *out, std::string *err) {
+  PreparedScene ps;
+  ps.w = w;
+  ps.h = h;
+  ps.tone_map_scale = sel.hdr_path == "float" ? 1.f : tone_map_scale;
+  if (s.cameras.empty() || s.camera < 0 || s.camera >= static_cast<int>(s.cameras.size())) {
+    *err = s.path + ": no camera to render from";
+    return false;
+  }
+  const SceneCamera &cam = s.cameras[s.camera];
+  double vp[16];
+  // The output's aspect: a glTF aspectRatio that differs would stretch the picture.
+  camera_matrix(cam, static_cast<double>(w) / h, vp);
+  for (int i = 0; i < 16; ++i) {
+    ps.view_proj[i] = static_cast<float>(vp[i]);
+    ps.model[i] = (i % 5 == 0) ? 1.f : 0.f;
+  }
+  for (int k = 0; k < 3; ++k) ps.eye[k] = static_cast<float>(cam.eye[k]);
+  const Tier tier = sel.variants.empty() ? Tier::SM3 : sel.variants[0].tier;
+  Probes probes{s, 0, {}, {}, {}, false};
+  TexturePool pool{&ps.textures, {}};
+
+  // World: faces from the World primitives, baked only if some draw is a world draw.
+  WorldScene ws;
+  std::vector<int> face_of_draw(sel.draws.size(), -1);
+  std::vector<std::array<double, 4>> face_frame;  // min a, min b (projection offsets)
+  std::vector<int> world_probe_index(s.probes.size(), -1);
+  for (size_t di = 0; di < sel.draws.size(); ++di) {
+    const SceneDrawChoice &c = sel.draws[di];
+    if (c.family != "world_lighting") continue;
+    const ScenePrimitive &p = s.primitives[c.primitive];
+    const SceneMaterial &m = s.materials[p.material];
+    if (p.indices.size() < 3) continue;
+    const D3 p0 = d3f(&p.position[p.indices[0] * 3]), p1 = d3f(&p.position[p.indices[1] * 3]),
+             p2 = d3f(&p.position[p.indices[2] * 3]);
+    D3 n = unit(cross(p1 - p0, p2 - p0));
+    const D3 sn = d3f(&p.normal[p.indices[0] * 3]);
+    if (dot(n, sn) < 0) n = n * -1.0;  // the face's front is the side its vertex normals face
+    D3 t = p.tangent.size() >= 4 ? d3f(&p.tangent[p.indices[0] * 4]) : D3{1, 0, 0};
+    t = t - n * dot(n, t);
+    if (dot(t, t) < 1e-12) t = std::fabs(n.x) < 0.9 ? D3{1, 0, 0} - n * n.x : D3{0, 1, 0} - n * n.y;
+    t = unit(t);
+    const double hand = p.tangent.size() >= 4 && p.tangent[p.indices[0] * 4 + 3] < 0 ? -1.0 : 1.0;
+    const D3 b = cross(n, t) * hand;
+    double amin = 1e300, amax = -1e300, bmin = 1e300, bmax = -1e300;
+    for (size_t i = 0; i + 2 < p.position.size(); i += 3) {
+      const D3 q = d3f(&p.position[i]);
+      amin = std::fmin(amin, dot(q, t));
+      amax = std::fmax(amax, dot(q, t));
+      bmin = std::fmin(bmin, dot(q, b));
+      bmax = std::fmax(bmax, dot(q, b));
+    }
+    WorldFace f{};
+    f.name = m.name.c_str();
+    f.origin = tv(t * amin + b * bmin + n * dot(p0, n));
+    f.u = tv(t);
+    f.v = tv(b);
+    f.su = std::fmax(amax - amin, 1e-3);
+    f.sv = std::fmax(bmax - bmin, 1e-3);
+    f.probe = m.probe;
+    f.normal = tv(n);
+    face_of_draw[di] = static_cast<int>(ws.faces.size());
+    ws.faces.push_back(f);
+    face_frame.push_back({amin, bmin, 0, 0});
+  }
+  WorldBake bake;
+  if (!ws.faces.empty()) {
+    const auto t0 = Clock::now();
+    for (const SceneLight &l : s.lights) {
+      rnm_light r{};
+      r.directional = l.light.type == TS_LIGHT_DIRECTIONAL;
+      r.pos = ts_v3d(l.light.pos[0], l.light.pos[1], l.light.pos[2]);
+      r.dir = ts_v3d(l.light.dir[0], l.light.dir[1], l.light.dir[2]);
+      r.color = ts_v3d(l.light.color[0], l.light.color[1], l.light.color[2]);
+      for (int k = 0; k < 3; ++k) r.atten[k] = l.light.atten[k];
+      if (l.light.type == TS_LIGHT_SPOT) {  // baked with vrad's cone (c_ref/offline/rnm_bake.h)
+        r.spot = 1;
+        r.spot_dir = r.dir;
+        r.cos_inner = l.light.cos_inner;
+        r.cos_outer = l.light.cos_outer;
+        r.exponent = l.light.spot_exponent;
+      }
+      ws.lights.push_back(r);
+    }
+    int cube_size = 16;
+    for (size_t i = 0; i < s.probes.size(); ++i) {
+      if (s.probes[i].image >= 0) continue;
+      world_probe_index[i] = static_cast<int>(ws.probes.size());
+      ws.probes.push_back(ts_v3d(s.probes[i].position[0], s.probes[i].position[1], s.probes[i].position[2]));
+      cube_size = std::max(cube_size, s.probes[i].size);
+    }
+    if (ws.probes.empty()) ws.probes.push_back(ts_v3d(0, 0, 0));  // bake_world picks a probe per face
+    for (WorldFace &f : ws.faces)
+      if (f.probe >= 0) f.probe = world_probe_index.at(f.probe) >= 0 ? world_probe_index[f.probe] : -1;
+    ws.luxels_per_unit = s.lightmaps.luxels_per_unit;
+    ws.page_w = s.lightmaps.page_w;
+    ws.page_h = s.lightmaps.page_h;
+    ws.cube_size = cube_size;
+    const bool from_file = !s.lightmaps.image_rgba.empty();
+    ws.bake_luxels = !from_file;
+    if (!bake_world(ws, &bake, err)) {
+      *err = s.path + ": lightmap bake: " + *err;
+      return false;
+    }
+    // A page from the scene's lightmaps.image: the placement above is its layout (the same
+    // faces, density and page size as the bake that wrote it; docs/scenes.md).
+    if (from_file) bake.page = s.lightmaps.image_rgba;
+    ps.lightmap_page = bake.page;
+    ps.lightmap_w = ws.page_w;
+    ps.lightmap_h = ws.page_h;
+    probes.have_world = true;
+    probes.world_cubes.assign(s.probes.size(), TextureDesc());
+    for (size_t i = 0; i < s.probes.size(); ++i)
+      if (world_probe_index[i] >= 0) probes.world_cubes[i] = bake.cubes.at(world_probe_index[i]);
+    ps.lightmap_texels = ws.page_w * ws.page_h;
+    ps.bake_ms = std::chrono::duration<double, std::milli>(Clock::now() - t0).count();
+  }
+  TextureDesc page;
+  int encoding = -1;
+  for (size_t di = 0; di < sel.draws.size(); ++di) {
+    const SceneDrawChoice &c = sel.draws[di];
+    PreparedDraw d;
+    d.choice = &c;
+    d.variant = c.variant;
+    if (c.family == "model_lighting") {
+      if (!model_draw(s, ps, c, tier, &probes, api, &pool, &d, err)) return false;
+      ps.draws.push_back(std::move(d));
+      continue;
+    }
+    d.world = true;
+    const ScenePrimitive &p = s.primitives[c.primitive];
+    const SceneMaterial &m = s.materials[p.material];
+    const Variant &v = *c.variant;
+    const int enc = v.value("LIGHTMAP_ENCODING");
+    if (enc != encoding) {
+      page = encode_page(ws, bake, enc);
+      encoding = enc;
+    }
+    const int fi = face_of_draw[di];
+    if (fi < 0) continue;
+    const WorldFace &f = ws.faces[fi];
+    copy_geometry(p, &d);
+    // Per-vertex lightmap coordinates: the face's (a, b) in [0, 1] placed on the page.
+    const size_t n = p.position.size() / 3;
+    d.lightmap.resize(n * 4);
+    const D3 t = {f.u.x, f.u.y, f.u.z}, b = {f.v.x, f.v.y, f.v.z};
+    for (size_t i = 0; i < n; ++i) {
+      const D3 q = d3f(&p.position[i * 3]);
+      const double a = (dot(q, t) - face_frame[fi][0]) / f.su, bb = (dot(q, b) - face_frame[fi][1]) / f.sv;
+      float lm[2];
+      lm_page_uv(&bake.place[fi], ws.page_w, ws.page_h, a, bb, lm);
+      d.lightmap[i * 4 + 0] = lm[0];
+      d.lightmap[i * 4 + 1] = lm[1];
+      d.lightmap[i * 4 + 2] = bake.place[fi].offset[0];
+      d.lightmap[i * 4 + 3] = bake.place[fi].offset[1];
+      // The face's tangent frame as the baker used it (the shader's binormal = N x T * w).
+      d.tangent[i * 4 + 0] = static_cast<float>(t.x);
+      d.tangent[i * 4 + 1] = static_cast<float>(t.y);
+      d.tangent[i * 4 + 2] = static_cast<float>(t.z);
+      const D3 nn = d3f(&d.normal[i * 3]);
+      d.tangent[i * 4 + 3] = dot(cross(nn, t), b) < 0 ? -1.f : 1.f;
+    }
+    d.shared.assign(WL_SLOTS, v4(0, 0, 0, 0));
+    // c12 = tint x lightmap scale: sqrt3 for bumped lightmaps (docs/world_lighting.md), 1 flat.
+    const float lm_scale = v.value("BUMPMAP") ? 1.7320508f : 1.f;
+    d.shared[WL_SLOT_TINT_SCALE] = v4(lm_scale, lm_scale, lm_scale, ps.tone_map_scale);
+    const float mk = c.mask_constant ? c.mask_value : 1.f;
+    d.shared[WL_SLOT_ENV_TINT] = v4(m.envmap_tint[0] * mk, m.envmap_tint[1] * mk, m.envmap_tint[2] * mk,
+                                    m.envmap ? m.envmap_scale : 0.f);
+    d.shared[WL_SLOT_ENV_PARAMS] = v4(m.envmap_contrast, m.envmap_saturation, 1.f - m.fresnel_reflection, m.fresnel_reflection);
+    d.shared[WL_SLOT_FOG_COLOR] = v4(0, 0, 0, 0);  // no fog
+    d.shared[WL_SLOT_FOG_PARAMS] = v4(0, 0, 0, 0);
+    if (m.base_texture.image >= 0)
+      d.tex.push_back(pool.get(key_of("u_base", m.base_texture, true, m.base_color), [&] { return image_texture(s, m.base_texture, "u_base", true, m.base_color); }));
+    else
+      d.tex.push_back(pool.get(key_solid("u_base", m.base_color[0], m.base_color[1], m.base_color[2], m.base_color[3]), [&] { return solid("u_base", m.base_color[0], m.base_color[1], m.base_color[2], m.base_color[3]); }));
+    if (v.value("BUMPMAP") && m.normal_texture.image >= 0)
+      d.tex.push_back(pool.get(key_of("u_normalmap", m.normal_texture, false, nullptr), [&] { return image_texture(s, m.normal_texture, "u_normalmap", false, nullptr); }));
+    else
+      d.tex.push_back(pool.get(key_solid("u_normalmap", 0.5f, 0.5f, 1.f, 1.f), [&] { return solid("u_normalmap", 0.5f, 0.5f, 1.f, 1.f); }));
+    d.tex.push_back(pool.get("u_lightmap|" + std::to_string(enc), [&] { return page; }));
+    if (v.value("ENVMAPMASK") == 1 && m.envmap_mask_texture.image >= 0)
+      d.tex.push_back(pool.get(key_of("u_envmap_mask", m.envmap_mask_texture, false, nullptr), [&] { return image_texture(s, m.envmap_mask_texture, "u_envmap_mask", false, nullptr); }));
+    else
+      d.tex.push_back(pool.get(key_solid("u_envmap_mask", 1, 1, 1, 1), [&] { return solid("u_envmap_mask", 1, 1, 1, 1); }));
+    int pi = -1;
+    if (v.value("ENVMAP") && !s.probes.empty()) {
+      const D3 mid = D3{f.origin.x, f.origin.y, f.origin.z} + t * (f.su / 2) + b * (f.sv / 2);
+      const double cc[3] = {mid.x, mid.y, mid.z};
+      pi = nearest_probe(s, cc, m.probe);
+      if (!probes.cube(pi, nullptr, nullptr, err)) return false;
+    }
+    d.tex.push_back(pool.get("u_envmap|" + std::to_string(pi), [&] {
+      TextureDesc env = black_cube();
+      if (pi >= 0) {
+        probes.cube(pi, &env, nullptr, nullptr);
+        if (api != Api::GL33) env.linear = false;
+      }
+      return env;
+    }));
+    ps.draws.push_back(std::move(d));
+  }
+  ps.probes_made = static_cast<int>(probes.cubes.size());
+  *out = std::move(ps);
+  return true;
+}

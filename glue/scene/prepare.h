@@ -1,0 +1,56 @@
+// tiershade glue: everything a frame of a scene needs, derived once from the scene and its
+// variant selection (glue/scene/selection.h): the camera matrices; per draw its vertex arrays,
+// the shared slots (= the production uniforms) and the textures its variant samples; the
+// world's baked lightmap page and probe cube maps. Only what the selection uses is made:
+// no probe cube map without an ENVMAP draw, no lightmap bake without a world draw.
+#pragma once
+#include <string>
+#include <vector>
+
+#include "gl/context.h"
+#include "gl/float_target.h"
+#include "scene/scene.h"
+#include "scene/selection.h"
+#include "math/ts_math.h"
+
+struct PreparedDraw {
+  const SceneDrawChoice *choice = nullptr;
+  const Variant *variant = nullptr;
+  bool world = false;                   // world_lighting, else model_lighting
+  std::vector<float> position, normal, uv, tangent;  // 3, 3, 2, 4 per vertex (tangent: 0,0,0,1 when absent)
+  std::vector<float> lightmap;          // world: 4 per vertex (lightmap uv, offset to the next lightmap)
+  std::vector<uint32_t> indices;
+  std::vector<ts_vec4f> shared;         // the family's full record with the shared slots set
+  std::vector<int> tex;                 // indices into PreparedScene::textures, in sampler order:
+                                        // model: u_albedo u_normal_map u_exponent_map u_light_warp u_envmap;
+                                        // world: u_base u_normalmap u_lightmap u_envmap_mask u_envmap
+  bool display_encoded = false;         // output already sRGB-encoded (model OUTPUT_MODE 2)
+};
+
+struct PreparedScene {
+  int w = 0, h = 0;
+  float view_proj[16];  // column-major, float as uploaded
+  float model[16];      // identity: primitives are in world space
+  float eye[3];
+  std::vector<PreparedDraw> draws;
+  std::vector<TextureDesc> textures;  // every texture once, shared by the draws that sample it
+  const TextureDesc &texture(const PreparedDraw &d, int k) const { return textures.at(d.tex.at(k)); }
+  float tone_map_scale = 1.f;  // of the shaders' output (integer path); the float path tone-maps later
+  // What was made, for the report.
+  int probes_made = 0, lightmap_texels = 0;
+  // The world's lightmap page in float32 before its run-time encoding (baked, or the scene's
+  // lightmaps.image): lightmap_w x lightmap_h RGBA, row 0 at the bottom; empty without world draws.
+  std::vector<float> lightmap_page;
+  int lightmap_w = 0, lightmap_h = 0;
+  double bake_ms = 0;
+  std::vector<std::string> notes;
+};
+
+// api: cube maps are NEAREST on GLES (Mesa forces seamless filtering there; docs/conformance.md),
+// so that the C twin samples what GL samples. tone_map_scale: the scale the integer path's
+// shaders apply (ignored by the float path, whose shaders write scale 1).
+bool prepare_scene(const Scene &s, const SceneSelection &sel, int w, int h, Api api, float tone_map_scale,
+                   PreparedScene *out, std::string *err);
+
+// Sets the tone-map scale of every draw's shared slots (auto exposure changes it per frame).
+void set_scene_tone_map_scale(PreparedScene *p, float scale);

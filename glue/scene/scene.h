@@ -1,0 +1,171 @@
+// tiershade glue: a scene as tiershade renders it, loaded from glTF 2.0 (glue/scene/gltf_load.cpp;
+// the format, the Source material keys and the tiershade extras are in docs/scenes.md).
+// Everything is in world space after node transforms; the renderer (glue/scene_render.*)
+// derives the variants and CPU work from what this structure uses, nothing more.
+#pragma once
+#include <string>
+#include <vector>
+
+#include "offline/light_folding.h"
+
+// An image as stored: 8-bit files as code/255 (no transfer function applied: the user of the
+// image decodes sRGB where the glTF says colour), .hdr/.exr as their linear float values.
+struct SceneImage {
+  std::string path;  // resolved file path, or "<gltf>#images[i]" for embedded data
+  int w = 0, h = 0;
+  std::vector<float> rgba;  // w*h*4, row 0 = the file's BOTTOM row (GL order), alpha 1 if absent
+};
+
+// A texture reference: an image and how it is sampled (glTF sampler; default linear + repeat).
+struct SceneTextureRef {
+  int image = -1;  // -1: none
+  bool linear = true;
+  bool repeat = true;
+};
+
+// Which Source shader a material stands for ("shader" in the material's extras).
+enum class SceneShader {
+  Model,  // VertexLitGeneric: model lighting (ambient cube, local lights, Phong ...)
+  World   // LightmappedGeneric: lightmaps (RNM / ssbump / flat), world specular
+};
+
+// World envmap mask sources (world_lighting ENVMAPMASK values).
+enum class SceneEnvMask { None = 0, Texture = 1, NormalAlpha = 2, InvBaseAlpha = 3 };
+
+struct SceneMaterial {
+  std::string name;
+  std::string where;  // "materials[i]" (with name) for messages
+  SceneShader shader = SceneShader::Model;
+  float base_color[4] = {1, 1, 1, 1};  // pbrMetallicRoughness.baseColorFactor (linear)
+  SceneTextureRef base_texture;        // baseColorTexture (sRGB-encoded colour, alpha linear)
+  SceneTextureRef normal_texture;      // normalTexture (tangent space; world: $bumpmap, ssbump if `ssbump`)
+  // --- Model ($-keys of VertexLitGeneric, docs/scenes.md) ---
+  bool half_lambert = true;            // $halflambert (Phong materials force it, as Source's skin shader)
+  bool phong = false;                  // $phong
+  float phong_exponent = 20.f;         // $phongexponent (used without an exponent texture)
+  SceneTextureRef phong_exponent_texture;  // $phongexponenttexture (r exponent, g albedo-tint mask, a rim mask)
+  float phong_exponent_factor = 149.f;     // $phongexponentfactor: k = 1 + factor * r
+  float phong_boost = 1.f;             // $phongboost
+  float phong_fresnel_ranges[3] = {0.15f, 0.5f, 1.f};  // $phongfresnelranges
+  float phong_tint[3] = {1, 1, 1};     // $phongtint
+  bool phong_albedo_tint = false;      // $phongalbedotint
+  bool base_alpha_phong_mask = false;  // $basemapalphaphongmask (else the normal map's alpha)
+  bool invert_phong_mask = false;      // $invertphongmask
+  bool rim_light = false;              // $rimlight
+  float rim_exponent = 4.f;            // $rimlightexponent
+  float rim_boost = 1.f;               // $rimlightboost
+  float rim_mask = 0.f;                // $rimmask (0..1: how much the exponent map's alpha masks rim)
+  SceneTextureRef light_warp_texture;  // $lightwarptexture (1D ramp, read along u)
+  bool envmap = false;                 // $envmap (the nearest probe's cube map, or `probe`)
+  float envmap_scale = 1.f;            // model: envmap scale; world: ENV_MAP_SCALE
+  float envmap_tint[3] = {1, 1, 1};    // $envmaptint
+  float envmap_fresnel = 0.f;          // $envmapfresnel (model)
+  float self_illum_tint[3] = {1, 1, 1};  // $selfillumtint
+  bool self_illum = false;             // $selfillum (mask = base alpha)
+  // --- World ($-keys of LightmappedGeneric) ---
+  bool ssbump = false;                 // $ssbump: normal_texture holds self-shadowed bump weights
+  SceneEnvMask envmap_mask = SceneEnvMask::None;  // $envmapmask / $normalmapalphaenvmapmask / $basealphaenvmapmask
+  SceneTextureRef envmap_mask_texture; // $envmapmask
+  float envmap_contrast = 0.f;         // $envmapcontrast
+  float envmap_saturation = 1.f;       // $envmapsaturation
+  float fresnel_reflection = 1.f;      // $fresnelreflection (R0 = this; 1 = no Fresnel)
+  int probe = -1;                      // "probe": explicit probe index, -1 = the nearest
+};
+
+// One glTF primitive in world space (node transform applied), triangles only.
+struct ScenePrimitive {
+  int material = -1;            // index into Scene::materials (glTF default material -> a plain Model material)
+  int instance = -1;            // the node instance it came from (index into Scene::instances)
+  std::vector<float> position;  // 3 per vertex (world)
+  std::vector<float> normal;    // 3 per vertex (world; the mesh's, or flat face normals if absent)
+  std::vector<float> uv;        // 2 per vertex (TEXCOORD_0; zeros if absent)
+  std::vector<float> tangent;   // 4 per vertex (world xyz, w handedness) or empty if absent
+  std::vector<uint32_t> indices;  // 3 per triangle
+  std::string where;            // "meshes[i].primitives[j]" (node name) for messages
+};
+
+// A node instance: the primitives of one mesh under one node.
+struct SceneInstance {
+  std::string name;  // node name or "nodes[i]"
+  double world[16];  // column-major object -> world
+  double center[3];  // world-space centre of its bounding box (ambient-cube and probe choice)
+};
+
+struct SceneLight {
+  std::string name;  // KHR_lights_punctual light name or "lights[i]"
+  ts_light light;    // world space; colour = glTF colour x intensity
+};
+
+struct SceneCamera {
+  std::string name;
+  double eye[3], forward[3], up[3];  // world space, unit forward/up
+  double yfov = 0.8;                 // radians
+  double znear = 0.05, zfar = 1000;  // zfar 0 = infinite (glTF)
+  double aspect = 0;                 // 0: the output's
+};
+
+// A cube-map probe ("probes" in the scene's extras): an equirectangular HDR image, or
+// rendered from the world geometry when `image` is -1 (world scenes).
+struct SceneProbe {
+  std::string name;
+  double position[3];
+  int image = -1;     // index into images (.hdr/.exr equirect), -1 = from the world
+  float scale = 1.f;  // radiance multiplier
+  int size = 64;      // cube face edge
+};
+
+// An ambient-cube sample of the irradiance volume ("ambient" in the scene's extras):
+// a model instance takes the nearest sample (Source: the leaf's ambient cube).
+struct SceneAmbientSample {
+  double position[3];
+  float cube[6][3];  // +X -X +Y -Y +Z -Z linear radiance
+  int from_probe = -1;  // >= 0: the cube is the probe's irradiance (filled by the renderer)
+};
+
+struct SceneLut {
+  std::string path;  // .cube / .raw / OCIO file, resolved relative to the scene
+  float weight = 1.f;
+};
+
+// HDR settings ("hdr" in the scene's extras).
+struct SceneHdr {
+  std::string path = "integer";  // "integer" | "float" (default of --hdr)
+  float tone_map_scale = 1.f;    // fixed scale (auto exposure off)
+  bool auto_exposure = false;
+  float exposure_min = 0.5f, exposure_max = 2.f;  // scale clamp
+  float bloom_amount = 0.f;      // float path only
+  std::vector<SceneLut> luts;    // colour correction after tone mapping (0..4)
+};
+
+// Lightmap settings ("lightmaps" in the scene's extras), used by World materials.
+struct SceneLightmaps {
+  double luxels_per_unit = 6;
+  std::string encoding = "rgbe";  // "float" | "412" | "ldr" | "rgbe" (world_lighting LIGHTMAP_ENCODING)
+  int page_w = 512, page_h = 256;
+  // "image": a baked page read from a file (EXR or Radiance HDR, relative to the scene file) in
+  // tiershade's page layout (written by `tiershade bake`), instead of baking the luxels at load.
+  // Empty path: baked from the scene's lights. Texels: page_w x page_h RGBA float, row 0 at the
+  // bottom (GL texture rows), alpha 1; finite and >= 0 (checked at load).
+  std::string image;
+  std::vector<float> image_rgba;
+};
+
+struct Scene {
+  std::string path;  // the .gltf/.glb file
+  std::vector<SceneImage> images;
+  std::vector<SceneMaterial> materials;
+  std::vector<SceneInstance> instances;
+  std::vector<ScenePrimitive> primitives;
+  std::vector<SceneLight> lights;
+  std::vector<SceneCamera> cameras;  // cameras[camera] renders
+  int camera = 0;
+  std::vector<SceneProbe> probes;
+  std::vector<SceneAmbientSample> ambient;
+  SceneHdr hdr;
+  SceneLightmaps lightmaps;
+};
+
+// Loads a glTF 2.0 scene (.gltf with external or data-URI buffers and images, or .glb).
+// On failure returns false with *err = "<file>: <place>: <reason>" (e.g.
+// "scenes/x.gltf: materials[2].extras.source: unknown key \"$phongexp\""), and *out untouched.
+bool load_scene(const std::string &path, Scene *out, std::string *err);

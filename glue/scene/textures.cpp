@@ -1,0 +1,169 @@
+// tiershade glue: procedural demo textures and probe-derived cube maps (see scene_textures.h).
+#include "scene/textures.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "io/image_io.h"
+
+namespace {
+const double kPi = 3.14159265358979323846;
+
+TextureDesc tex2d(const char *sampler, int w, int h, bool repeat) {
+  TextureDesc t;
+  t.sampler = sampler;
+  t.w = w;
+  t.h = h;
+  t.linear = true;
+  t.repeat = repeat;
+  t.rgba.assign(static_cast<size_t>(w) * h * 4, 0.f);
+  return t;
+}
+
+// Direction of texel (s, t) in [-1, 1] on cube face f (GL conventions: +X -X +Y -Y +Z -Z).
+void face_dir(int f, double s, double t, double d[3]) {
+  switch (f) {
+    case 0: d[0] = 1; d[1] = -t; d[2] = -s; break;
+    case 1: d[0] = -1; d[1] = -t; d[2] = s; break;
+    case 2: d[0] = s; d[1] = 1; d[2] = t; break;
+    case 3: d[0] = s; d[1] = -1; d[2] = -t; break;
+    case 4: d[0] = s; d[1] = -t; d[2] = 1; break;
+    default: d[0] = -s; d[1] = -t; d[2] = -1; break;
+  }
+  const double n = std::sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);
+  for (int i = 0; i < 3; ++i) d[i] /= n;
+}
+}  // namespace
+
+TextureDesc make_bump_normal_map(const char *sampler, int n) {
+  // A grid of round dimples (height h = -cos^2 bumps), normals from the height gradient;
+  // alpha: a spec mask with glossy stripes.
+  TextureDesc t = tex2d(sampler, n, n, true);
+  const int cells = 8;
+  for (int y = 0; y < n; ++y) {
+    for (int x = 0; x < n; ++x) {
+      const double u = (x + 0.5) / n * cells, v = (y + 0.5) / n * cells;
+      const double fu = u - std::floor(u) - 0.5, fv = v - std::floor(v) - 0.5;
+      const double r = std::sqrt(fu * fu + fv * fv);
+      double gx = 0, gy = 0;
+      if (r < 0.4 && r > 1e-9) {
+        const double dh = -0.9 * std::sin(r / 0.4 * kPi) ;  // slope of the dimple
+        gx = dh * fu / r;
+        gy = dh * fv / r;
+      }
+      double nx = -gx, ny = -gy, nz = 1;
+      const double l = std::sqrt(nx * nx + ny * ny + nz * nz);
+      float *p = &t.rgba[(static_cast<size_t>(y) * n + x) * 4];
+      p[0] = static_cast<float>(0.5 + 0.5 * nx / l);
+      p[1] = static_cast<float>(0.5 + 0.5 * ny / l);
+      p[2] = static_cast<float>(0.5 + 0.5 * nz / l);
+      p[3] = ((x * 4 / n) & 1) ? 1.f : 0.35f;
+    }
+  }
+  return t;
+}
+
+TextureDesc make_exponent_map(const char *sampler, int n) {
+  TextureDesc t = tex2d(sampler, n, n, true);
+  for (int y = 0; y < n; ++y) {
+    for (int x = 0; x < n; ++x) {
+      float *p = &t.rgba[(static_cast<size_t>(y) * n + x) * 4];
+      p[0] = static_cast<float>(0.05 + 0.6 * (0.5 + 0.5 * std::cos(2 * kPi * y / n * 2)));  // exponent 8..97
+      p[1] = static_cast<float>(x) / n;                                                     // albedo-tint mask
+      p[2] = 0.f;
+      p[3] = 1.f;                                                                            // rim mask
+    }
+  }
+  return t;
+}
+
+TextureDesc make_warp_ramp(const char *sampler) {
+  TextureDesc t = tex2d(sampler, 64, 1, false);
+  for (int x = 0; x < 64; ++x) {
+    const double s = (x + 0.5) / 64;  // half-Lambert term, 0 (back) .. 1 (lit)
+    float *p = &t.rgba[x * 4];
+    p[0] = static_cast<float>(0.5 * std::pow(s, 1.6) + 0.02);
+    p[1] = static_cast<float>(0.5 * std::pow(s, 2.0) + 0.01);
+    p[2] = static_cast<float>(0.45 * std::pow(s, 2.4) + 0.04 * (1 - s));
+    p[3] = 1.f;
+  }
+  return t;
+}
+
+TextureDesc make_sky_cube(const char *sampler, int size) {
+  TextureDesc t;
+  t.sampler = sampler;
+  t.kind = TexKind::Cube;
+  t.w = t.h = size;
+  t.linear = true;
+  t.rgba.resize(static_cast<size_t>(6) * size * size * 4);
+  for (int f = 0; f < 6; ++f)
+    for (int y = 0; y < size; ++y)
+      for (int x = 0; x < size; ++x) {
+        double d[3];
+        face_dir(f, (x + 0.5) / size * 2 - 1, (y + 0.5) / size * 2 - 1, d);
+        const double up = std::max(0.0, d[1]), down = std::max(0.0, -d[1]);
+        float *p = &t.rgba[((static_cast<size_t>(f) * size + y) * size + x) * 4];
+        p[0] = static_cast<float>(0.3 + 0.6 * up + 0.2 * down);
+        p[1] = static_cast<float>(0.35 + 0.8 * up + 0.15 * down);
+        p[2] = static_cast<float>(0.45 + 1.4 * up + 0.1 * down);
+        p[3] = 1.f;
+      }
+  return t;
+}
+
+bool cube_from_probe(const std::string &path, const char *sampler, int size, TextureDesc *cube, float ambient[6][3],
+                     std::string *err) {
+  ImageF probe;
+  if (!read_hdr(path, &probe, err)) return false;
+  // Lat-long lookup: u = atan2(x, -z) / 2pi + 0.5, v = acos(y) / pi (row 0 = bottom in ImageF).
+  auto sample = [&](const double d[3], double rgb[3]) {
+    const double u = std::atan2(d[0], -d[2]) / (2 * kPi) + 0.5;
+    const double v = std::acos(std::max(-1.0, std::min(1.0, d[1]))) / kPi;
+    const double fx = u * probe.w - 0.5, fy = (1 - v) * probe.h - 0.5;
+    const int x0 = static_cast<int>(std::floor(fx)), y0 = static_cast<int>(std::floor(fy));
+    const double wx = fx - x0, wy = fy - y0;
+    for (int c = 0; c < 3; ++c) rgb[c] = 0;
+    for (int j = 0; j < 2; ++j)
+      for (int i = 0; i < 2; ++i) {
+        const int xx = ((x0 + i) % probe.w + probe.w) % probe.w;
+        const int yy = std::min(probe.h - 1, std::max(0, y0 + j));
+        const double w = (i ? wx : 1 - wx) * (j ? wy : 1 - wy);
+        for (int c = 0; c < 3; ++c) rgb[c] += w * probe.rgba[(static_cast<size_t>(yy) * probe.w + xx) * 4 + c];
+      }
+  };
+  cube->sampler = sampler;
+  cube->kind = TexKind::Cube;
+  cube->w = cube->h = size;
+  cube->linear = true;
+  cube->rgba.assign(static_cast<size_t>(6) * size * size * 4, 1.f);
+  for (int f = 0; f < 6; ++f)
+    for (int y = 0; y < size; ++y)
+      for (int x = 0; x < size; ++x) {
+        double d[3], rgb[3];
+        face_dir(f, (x + 0.5) / size * 2 - 1, (y + 0.5) / size * 2 - 1, d);
+        sample(d, rgb);
+        float *p = &cube->rgba[((static_cast<size_t>(f) * size + y) * size + x) * 4];
+        for (int c = 0; c < 3; ++c) p[c] = static_cast<float>(rgb[c]);
+      }
+  // Ambient cube from the probe's texels (solid-angle weighted).
+  const double axes[6][3] = {{1, 0, 0}, {-1, 0, 0}, {0, 1, 0}, {0, -1, 0}, {0, 0, 1}, {0, 0, -1}};
+  double sum[6][3] = {}, wsum[6] = {};
+  for (int y = 0; y < probe.h; ++y) {
+    const double theta = (1 - (y + 0.5) / probe.h) * kPi;
+    const double dw = std::sin(theta);
+    for (int x = 0; x < probe.w; ++x) {
+      const double phi = ((x + 0.5) / probe.w - 0.5) * 2 * kPi;
+      const double d[3] = {std::sin(theta) * std::sin(phi), std::cos(theta), -std::sin(theta) * std::cos(phi)};
+      for (int a = 0; a < 6; ++a) {
+        const double c = d[0] * axes[a][0] + d[1] * axes[a][1] + d[2] * axes[a][2];
+        if (c <= 0) continue;
+        wsum[a] += c * dw;
+        for (int k = 0; k < 3; ++k) sum[a][k] += c * dw * probe.rgba[(static_cast<size_t>(y) * probe.w + x) * 4 + k];
+      }
+    }
+  }
+  for (int a = 0; a < 6; ++a)
+    for (int k = 0; k < 3; ++k) ambient[a][k] = static_cast<float>(sum[a][k] / wsum[a]);
+  return true;
+}
