@@ -22,19 +22,10 @@
 #include "exposure/exposure_control.h"
 #include "hdr/luminance_histogram.h"
 #include "math/ts_math.h"
+#include "unit_check.h"
 
 namespace {
 
-int g_failed = 0;
-
-void check(bool ok, const std::string &name, const std::string &detail = "") {
-  if (ok) {
-    printf("PASS %s\n", name.c_str());
-  } else {
-    ++g_failed;
-    printf("FAIL %s: %s\n", name.c_str(), detail.c_str());
-  }
-}
 
 std::string fmt(const char *f, double a, double b = 0, double c = 0) {
   char buf[256];

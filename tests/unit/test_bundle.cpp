@@ -18,17 +18,9 @@
 #include "conform/conform.h"
 #include "shaderlib/draw_dump.h"
 #include "gl/program_info.h"
+#include "unit_check.h"
 
 namespace {
-
-int g_failed = 0;
-void check(bool ok, const std::string &name, const std::string &why = "") {
-  if (ok) printf("PASS %s\n", name.c_str());
-  else {
-    printf("FAIL %s: %s\n", name.c_str(), why.c_str());
-    ++g_failed;
-  }
-}
 
 void sphere(float cx, float cz, DumpDraw *d) {
   const int nu = 16, nv = 10;

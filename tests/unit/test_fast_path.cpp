@@ -119,7 +119,8 @@ int main() {
   check(fam && fam->eval_row_f && decl, "model_lighting has a fast path");
   if (!fam || !fam->eval_row_f || !decl) return 1;
   const std::vector<Variant> variants = enumerate_variants(*decl, all_tiers(), &err);
-  check(variants.size() == 276, "276 model_lighting variants", std::to_string(variants.size()));
+  // How many there are is test_glue's (derived from shaders/model_lighting.variants); here every one runs.
+  check(!variants.empty(), "model_lighting variants enumerated", std::to_string(variants.size()));
 
   const int n = 64;
   std::vector<Grid> grids(3);

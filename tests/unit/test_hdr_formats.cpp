@@ -20,20 +20,10 @@
 #include "math/hdr_formats.h"
 #include "hdr/gl_passes.h"
 #include "math/ts_math.h"
+#include "unit_check.h"
 
 namespace {
 
-int g_failed = 0;
-
-void check(bool ok, const std::string &name, const std::string &detail = "") {
-  if (ok) {
-    printf("PASS %s\n", name.c_str());
-  } else {
-    ++g_failed;
-    printf("FAIL %s: %s\n", name.c_str(), detail.c_str());
-  }
-  fflush(stdout);
-}
 
 float from_bits(uint32_t b) {
   float f;

@@ -17,20 +17,10 @@
 
 #include "hdr/paths.h"
 #include "demo/hdr_scene.h"
+#include "unit_check.h"
 
 namespace {
 
-int g_failed = 0;
-
-void check(bool ok, const std::string &name, const std::string &detail = "") {
-  if (ok) {
-    printf("PASS %s\n", name.c_str());
-  } else {
-    ++g_failed;
-    printf("FAIL %s: %s\n", name.c_str(), detail.c_str());
-  }
-  fflush(stdout);
-}
 
 template <class T>
 std::string first_difference(const std::vector<T> &a, const std::vector<T> &b, int w) {

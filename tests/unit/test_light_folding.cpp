@@ -20,6 +20,7 @@
 // ============================================================================
 #include "offline/light_folding.h"
 #include "twins/model_lighting.h"
+#include "unit_check.h"
 
 #include <cmath>
 #include <cstdarg>
@@ -31,7 +32,6 @@
 
 namespace {
 
-int g_failures = 0;
 const double kPi = 3.14159265358979323846;
 const int kSpherePoints = 40000;  // Fibonacci sphere size (>= 20000)
 const float kCenter[3] = {0.5f, -1.25f, 2.0f};
@@ -44,16 +44,6 @@ std::string fmt(const char *f, ...)
     std::vsnprintf(buf, sizeof buf, f, ap);
     va_end(ap);
     return buf;
-}
-
-void report(bool ok, const std::string &name, const std::string &detail = "")
-{
-    if (ok) {
-        std::printf("PASS %s\n", name.c_str());
-    } else {
-        std::printf("FAIL %s: %s\n", name.c_str(), detail.c_str());
-        ++g_failures;
-    }
 }
 
 void info(const std::string &s) { std::printf("INFO %s\n", s.c_str()); }
@@ -120,7 +110,7 @@ struct Record {
         float pk[5][4];
         char err[256];
         if (!ts_light_pack(&l, pk, err, sizeof err)) {
-            report(false, "pack_for_record", err);
+            check(false, "pack_for_record", err);
             return false;
         }
         set_light(i, pk);
@@ -259,7 +249,7 @@ void check_constants()
         Integral I = integrate(variant(TS_TIER_ID_PS2B, 0, 0), Record(cube));
         double e = rel_diff(I.rgb[1], face_want);
         worst = std::fmax(worst, e);
-        report(e < 1e-4, fmt("constant_cube_face_%d_is_2pi/3", f), fmt("got %.8f want %.8f", I.rgb[1], face_want));
+        check(e < 1e-4, fmt("constant_cube_face_%d_is_2pi/3", f), fmt("got %.8f want %.8f", I.rgb[1], face_want));
     }
     info(fmt("cube face integral: max rel error vs 2pi/3 = %.2e (%d points)", worst, kSpherePoints));
 
@@ -275,9 +265,9 @@ void check_constants()
             worst_l = std::fmax(worst_l, rel_diff(I.rgb[1], want));
             worst_k = std::fmax(worst_k, rel_diff(I.rgb[1] / face_want, k_want));
         }
-        report(worst_l < 1e-4, fmt("constant_%s", hl ? "half_lambert_integral_is_4pi/3" : "lambert_integral_is_pi"),
+        check(worst_l < 1e-4, fmt("constant_%s", hl ? "half_lambert_integral_is_4pi/3" : "lambert_integral_is_pi"),
                fmt("max rel error %.3e", worst_l));
-        report(worst_k < 1e-4, fmt("constant_k_%s", hl ? "half_lambert_is_2" : "lambert_is_3/2"),
+        check(worst_k < 1e-4, fmt("constant_k_%s", hl ? "half_lambert_is_2" : "lambert_is_3/2"),
                fmt("max rel error %.3e", worst_k));
         info(fmt("%s light integral: max rel error vs %s = %.2e; measured k = light / (2pi/3) within %.2e of %.1f",
                  hl ? "half-Lambert" : "Lambert", hl ? "4pi/3" : "pi", worst_l, worst_k, k_want));
@@ -288,7 +278,7 @@ void check_constants()
         int n = ts_fold_lights(&l, 1, 0, kCenter, hl, cube, nullptr);
         bool ok = n == 0 && std::fabs(cube[0][1] - k_want) < 1e-6;
         for (int f = 1; f < 6; ++f) ok = ok && cube[f][1] == 0.0f;
-        report(ok, fmt("fold_applies_k_%s", hl ? "half_lambert" : "lambert"),
+        check(ok, fmt("fold_applies_k_%s", hl ? "half_lambert" : "lambert"),
                fmt("+X face %.9g, want %.1f; returned %d", cube[0][1], k_want, n));
     }
 }
@@ -316,7 +306,7 @@ void check_conservation()
 
                 float cube[6][3] = {};
                 int nk = ts_fold_lights(&l, 1, 0, kCenter, hl, cube, nullptr);
-                if (nk != 0) report(false, "fold_single_returns_0", fmt("returned %d", nk));
+                if (nk != 0) check(false, "fold_single_returns_0", fmt("returned %d", nk));
                 Record folded(cube);
                 Integral B = integrate(variant(TS_TIER_ID_PS2B, hl, 0), folded);
 
@@ -324,7 +314,7 @@ void check_conservation()
                     double e = rel_diff(A.rgb[c], B.rgb[c]);
                     worst = std::fmax(worst, e);
                     if (e >= 1e-3)
-                        report(false, fmt("conserve_%s_%s_dir%d_ch%d", hl ? "half_lambert" : "lambert", type_str(t), di, c),
+                        check(false, fmt("conserve_%s_%s_dir%d_ch%d", hl ? "half_lambert" : "lambert", type_str(t), di, c),
                                fmt("local %.8g folded %.8g rel %.3e", A.rgb[c], B.rgb[c], e));
                 }
 
@@ -398,15 +388,15 @@ void check_conservation()
                 }
             }
             std::string tag = fmt("%s_%s", hl ? "half_lambert" : "lambert", type_str(t));
-            report(worst < 1e-3, "conserve_integral_per_channel_" + tag, fmt("max rel %.3e", worst));
-            report(faces_ok, "faces_facing_light_gain_" + tag, faces_msg);
-            report(nonneg_ok, "nothing_negative_" + tag, "a face or a shaded value is negative");
-            report(hue_ok, "hue_per_face_" + tag, hue_msg);
-            report(peak_ok, "pointwise_at_N_eq_L_is_k_I_sumL4_" + tag, peak_msg);
-            report(octant_ok, "first_moment_same_octant_" + tag, octant_msg);
-            report(worst_moment_model < 0.5, "first_moment_along_Lj_absLj_" + tag,
+            check(worst < 1e-3, "conserve_integral_per_channel_" + tag, fmt("max rel %.3e", worst));
+            check(faces_ok, "faces_facing_light_gain_" + tag, faces_msg);
+            check(nonneg_ok, "nothing_negative_" + tag, "a face or a shaded value is negative");
+            check(hue_ok, "hue_per_face_" + tag, hue_msg);
+            check(peak_ok, "pointwise_at_N_eq_L_is_k_I_sumL4_" + tag, peak_msg);
+            check(octant_ok, "first_moment_same_octant_" + tag, octant_msg);
+            check(worst_moment_model < 0.5, "first_moment_along_Lj_absLj_" + tag,
                    fmt("angle to (L_j|L_j|) %.3f deg", worst_moment_model));
-            report(worst_mag < 1e-3, "first_moment_magnitudes_as_derived_" + tag, fmt("max rel %.3e", worst_mag));
+            check(worst_mag < 1e-3, "first_moment_magnitudes_as_derived_" + tag, fmt("max rel %.3e", worst_mag));
             info(fmt("%-25s sphere integral max rel err %.2e over %zu directions x 3 channels; "
                      "folded/local at N=L in [%.3f, %.3f]; max |local-folded| = %.2f x local peak; "
                      "first-moment angle up to %.2f deg",
@@ -431,7 +421,7 @@ void check_additive()
     double worst = 0.0;
     for (int f = 0; f < 6; ++f)
         for (int c = 0; c < 3; ++c) worst = std::fmax(worst, std::fabs((double)cube[f][c] - ((double)base[f][c] + delta[f][c])));
-    report(worst < 1e-6, "fold_adds_to_existing_cube", fmt("max deviation %g", worst));
+    check(worst < 1e-6, "fold_adds_to_existing_cube", fmt("max deviation %g", worst));
 }
 
 // Six lights: keep the tier's limit, fold the rest; the integral of the total
@@ -474,8 +464,8 @@ void check_end_to_end()
             double worst = 0.0;
             for (int c = 0; c < 3; ++c) worst = std::fmax(worst, rel_diff(a1.rgb[c] + a2.rgb[c], b.rgb[c]));
             std::string tag = fmt("%s_%s", cs.name, hl ? "half_lambert" : "lambert");
-            report(nk == cs.max_local, "end_to_end_kept_count_" + tag, fmt("kept %d", nk));
-            report(worst < 1e-3, "end_to_end_conserve_" + tag, fmt("max rel %.3e", worst));
+            check(nk == cs.max_local, "end_to_end_kept_count_" + tag, fmt("kept %d", nk));
+            check(worst < 1e-3, "end_to_end_conserve_" + tag, fmt("max rel %.3e", worst));
             info(fmt("end-to-end 6 lights, %s: sphere integral max rel err %.2e", tag.c_str(), worst));
         }
     }
@@ -532,7 +522,7 @@ void check_selection()
             got += fmt("%d ", kept[i]);
             if (ok && kept[i] != want[i]) ok = false;
         }
-        report(ok, name, "kept " + got);
+        check(ok, name, "kept " + got);
         return std::vector<int>(kept, kept + (n < 8 ? n : 8));
     };
     run(2, {1, 4}, "select_2_brightest_of_6");
@@ -544,7 +534,7 @@ void check_selection()
     run(-3, {}, "select_max_local_negative_keeps_none");
 
     // the tie really is a tie
-    report(lum[3] == lum[5], "select_tie_is_exact", fmt("%.17g vs %.17g", lum[3], lum[5]));
+    check(lum[3] == lum[5], "select_tie_is_exact", fmt("%.17g vs %.17g", lum[3], lum[5]));
 
     // max_local >= n folds nothing: the cube is untouched
     {
@@ -556,7 +546,7 @@ void check_selection()
         bool same = true;
         for (int f = 0; f < 6; ++f)
             for (int c = 0; c < 3; ++c) same = same && cube[f][c] == 0.25f;
-        report(n == 6 && same, "select_keep_all_folds_none", fmt("kept %d, cube changed: %d", n, (int)!same));
+        check(n == 6 && same, "select_keep_all_folds_none", fmt("kept %d, cube changed: %d", n, (int)!same));
     }
     // folding with max_local 2 == folding lights {0, 2, 3, 5} one by one
     {
@@ -568,7 +558,7 @@ void check_selection()
         double worst = 0.0;
         for (int f = 0; f < 6; ++f)
             for (int c = 0; c < 3; ++c) worst = std::fmax(worst, std::fabs((double)a[f][c] - b[f][c]));
-        report(worst < 1e-6, "select_folds_exactly_the_rest", fmt("max deviation %g", worst));
+        check(worst < 1e-6, "select_folds_exactly_the_rest", fmt("max deviation %g", worst));
     }
     // n == 0, NULL lights, NULL kept
     {
@@ -580,10 +570,10 @@ void check_selection()
         bool zero = true;
         for (int f = 0; f < 6; ++f)
             for (int c = 0; c < 3; ++c) zero = zero && cube[f][c] == 0.0f;
-        report(n0 == 0 && n1 == 0 && n2 == 0 && zero && kept[0] == -7, "select_n_0_is_fine",
+        check(n0 == 0 && n1 == 0 && n2 == 0 && zero && kept[0] == -7, "select_n_0_is_fine",
                fmt("returned %d %d %d", n0, n1, n2));
         int n3 = ts_fold_lights(ls.data(), 6, 2, kCenter, 0, cube, nullptr);
-        report(n3 == 2, "select_null_kept_is_fine", fmt("returned %d", n3));
+        check(n3 == 2, "select_null_kept_is_fine", fmt("returned %d", n3));
     }
     // an invalid light is neither kept nor folded
     {
@@ -597,7 +587,7 @@ void check_selection()
         double worst = 0.0;
         for (int f = 0; f < 6; ++f)
             for (int c = 0; c < 3; ++c) worst = std::fmax(worst, std::fabs((double)cube[f][c] - ref[f][c]));
-        report(n == 2 && kept[0] == 3 && kept[1] == 4 && worst < 1e-6, "select_invalid_light_skipped",
+        check(n == 2 && kept[0] == 3 && kept[1] == 4 && worst < 1e-6, "select_invalid_light_skipped",
                fmt("kept %d: %d %d, fold deviation %g", n, kept[0], kept[1], worst));
     }
 }
@@ -710,7 +700,7 @@ void check_pack()
         bool untouched = true;
         for (auto &row : out)
             for (float v : row) untouched = untouched && v == 42.0f;
-        report(r == 0 && std::strlen(err) > 0 && untouched, "pack_rejects_" + b.name,
+        check(r == 0 && std::strlen(err) > 0 && untouched, "pack_rejects_" + b.name,
                fmt("returned %d, err \"%s\", out untouched %d", r, err, (int)untouched));
     }
     // the message survives a tiny or missing buffer
@@ -721,7 +711,7 @@ void check_pack()
         l.cos_inner = 0.1f;
         int r1 = ts_light_pack(&l, out, tiny, sizeof tiny);
         int r2 = ts_light_pack(&l, out, nullptr, 0);
-        report(r1 == 0 && r2 == 0 && std::strlen(tiny) == 7, "pack_error_buffer_truncates",
+        check(r1 == 0 && r2 == 0 && std::strlen(tiny) == 7, "pack_error_buffer_truncates",
                fmt("%d %d \"%s\"", r1, r2, tiny));
         char err[200];
         ts_light l2 = point;
@@ -741,25 +731,25 @@ void check_pack()
                   o[3][2] == 0.7f && o[1][3] == 1.0f && o[0][3] == 0.0f && o[1][0] == 0.0f && o[1][1] == -1.0f &&
                   o[1][2] == 0.0f && o[2][0] == 4.0f && o[2][1] == 5.0f && o[2][2] == 6.0f && o[4][0] == 1.0f &&
                   o[4][1] == 0.5f && o[4][2] == 0.25f && o[0][0] == 1.0f && o[0][1] == 2.0f && o[0][2] == 3.0f;
-        report(ok, "pack_valid_spot_layout_w_is_1_over_cos_diff",
+        check(ok, "pack_valid_spot_layout_w_is_1_over_cos_diff",
                fmt("r %d err \"%s\" w %.9g want %.9g", r, err, o[3][3], want_w));
 
         r = ts_light_pack(&dirl, o, err, sizeof err);
         ok = r == 1 && o[0][3] == 1.0f && o[1][3] == 0.0f && std::fabs(o[1][0] - 0.6f) < 1e-7f && o[1][1] == 0.0f &&
              std::fabs(o[1][2] - 0.8f) < 1e-7f && o[4][0] == 1.0f && o[4][1] == 0.0f && o[4][2] == 0.0f;
-        report(ok, "pack_valid_directional_atten_100_dir_normalised", err);
+        check(ok, "pack_valid_directional_atten_100_dir_normalised", err);
 
         ts_light d2 = dirl;
         d2.atten[0] = d2.atten[1] = d2.atten[2] = 0.0f;  // ignored, so (0,0,0) is fine
         d2.atten[1] = -3.0f;                            // negative too: ignored for directional
         r = ts_light_pack(&d2, o, err, sizeof err);
-        report(r == 1 && o[4][0] == 1.0f && o[4][1] == 0.0f, "pack_directional_ignores_atten", err);
+        check(r == 1 && o[4][0] == 1.0f && o[4][1] == 0.0f, "pack_directional_ignores_atten", err);
 
         ts_light p2 = point;  // point light: dir ignored, may be zero
         r = ts_light_pack(&p2, o, err, sizeof err);
         ok = r == 1 && o[0][3] == 0.0f && o[1][3] == 0.0f && o[1][0] == 0.0f && o[3][0] == 0.0f && o[3][3] == 0.0f &&
              o[4][1] == 0.5f && std::strlen(err) == 0;
-        report(ok, "pack_valid_point_zero_dir_ok", err);
+        check(ok, "pack_valid_point_zero_dir_ok", err);
     }
 }
 
@@ -785,17 +775,17 @@ void check_incident()
             for (int c = 0; c < 3; ++c) worst = std::fmax(worst, rel_diff(sv[c], I[c]));
             if (t == TS_LIGHT_SPOT) spotf = std::fmin(spotf, I[1] / (color[1] / (1.0 + 0.2 * 3.0 + 0.05 * 9.0)));
         }
-        report(worst < 1e-6, fmt("incident_matches_model_lighting_d_%s", type_str(t)), fmt("max rel %.3e", worst));
-        report(unit < 1e-6, fmt("incident_direction_unit_towards_light_%s", type_str(t)), fmt("off by %.3e", unit));
+        check(worst < 1e-6, fmt("incident_matches_model_lighting_d_%s", type_str(t)), fmt("max rel %.3e", worst));
+        check(unit < 1e-6, fmt("incident_direction_unit_towards_light_%s", type_str(t)), fmt("off by %.3e", unit));
         if (t == TS_LIGHT_SPOT)
-            report(spotf > 0.01 && spotf < 0.99, "incident_spot_cone_fractional_in_tests", fmt("cone factor %g", spotf));
+            check(spotf > 0.01 && spotf < 0.99, "incident_spot_cone_fractional_in_tests", fmt("cone factor %g", spotf));
     }
     // invalid light -> zeros
     ts_light bad = make_light(TS_LIGHT_POINT);
     bad.color[0] = 1;
     double I[3] = {9, 9, 9}, L[3] = {9, 9, 9};
     ts_light_incident(&bad, kCenter, I, L);
-    report(I[0] == 0 && I[1] == 0 && I[2] == 0 && L[0] == 0 && L[1] == 0 && L[2] == 0, "incident_invalid_is_zero");
+    check(I[0] == 0 && I[1] == 0 && I[2] == 0 && L[0] == 0 && L[1] == 0 && L[2] == 0, "incident_invalid_is_zero");
 }
 
 // A light exactly at the centre: the shader's L is 0 (half-Lambert gives I/4
@@ -819,7 +809,7 @@ void check_degenerate()
         double worst = 0.0;
         for (int c = 0; c < 3; ++c)
             worst = std::fmax(worst, hl ? rel_diff(A.rgb[c], B.rgb[c]) : std::fabs(A.rgb[c] - B.rgb[c]));
-        report(worst < 1e-3, fmt("degenerate_light_at_centre_%s", hl ? "half_lambert" : "lambert"),
+        check(worst < 1e-3, fmt("degenerate_light_at_centre_%s", hl ? "half_lambert" : "lambert"),
                fmt("local %g folded %g (green)", A.rgb[1], B.rgb[1]));
     }
 }
@@ -837,7 +827,7 @@ int main()
     check_selection();
     check_end_to_end();
     check_degenerate();
-    if (g_failures) std::printf("%d check(s) FAILED\n", g_failures);
+    if (g_failed) std::printf("%d check(s) FAILED\n", g_failed);
     else std::printf("all checks passed\n");
-    return g_failures ? 1 : 0;
+    return g_failed ? 1 : 0;
 }

@@ -19,20 +19,10 @@
 #include "families/family.h"
 #include "math/hdr_formats.h"
 #include "hdr/luminance_histogram.h"
+#include "unit_check.h"
 
 namespace {
 
-int g_failed = 0;
-
-void check(bool ok, const std::string &name, const std::string &detail = "") {
-  if (ok) {
-    printf("PASS %s\n", name.c_str());
-  } else {
-    ++g_failed;
-    printf("FAIL %s: %s\n", name.c_str(), detail.c_str());
-  }
-  fflush(stdout);
-}
 
 const int W = 61, H = 37;  // odd sizes: the window margins round
 

@@ -26,19 +26,10 @@
 #include "scene/prepare.h"
 #include "hdr/srgb_rgba8_codes.h"
 #include "hdr/still_frame_exposure.h"
+#include "unit_check.h"
 #include <cstring>
 
 namespace {
-
-int g_failed = 0;
-void check(bool ok, const std::string &name, const std::string &detail = "") {
-  if (ok) {
-    printf("PASS %s\n", name.c_str());
-  } else {
-    printf("FAIL %s: %s\n", name.c_str(), detail.c_str());
-    ++g_failed;
-  }
-}
 
 void test_static_counts() {
   const int w = 97, h = 61;

@@ -29,19 +29,10 @@
 #include "offline/lightmap_page.h"
 #include "offline/rnm_bake.h"
 #include "cli/select_args.h"
+#include "unit_check.h"
 
 namespace {
 
-int g_failed = 0;
-
-void check(bool ok, const std::string &name, const std::string &detail = "") {
-  if (ok) printf("PASS %s\n", name.c_str());
-  else {
-    ++g_failed;
-    printf("FAIL %s: %s\n", name.c_str(), detail.c_str());
-  }
-  fflush(stdout);
-}
 
 std::string num(double v) {
   char b[64];

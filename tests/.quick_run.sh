@@ -1,0 +1,93 @@
+#!/usr/bin/env bash
+# tiershade test runner (make test). Every check prints "PASS name" or "FAIL name: why";
+# this script gathers them from:
+#   1. the unit-test programs (build/tests/*),
+#   2. the command-line checks (tests/cli/test_cli.sh),
+#   3. instruction budgets: every ps20/ps2b variant within its tier's limits,
+#   4. per-pixel conformance: every variant x {OSMesa GL 3.3, EGL GLES 2.0, GLES 3.0, GL 3.3}
+#      x {random, hard} input grids, 0 ULP against the C reference (glue/conform/conform.h),
+#   5. the demo frames (GL = C on every backend),
+#   6. the same unit, CLI and (smaller) conformance checks under AddressSanitizer + UBSan.
+# The last line is "N passed, N failed"; the exit status is 1 when anything failed.
+set -u
+cd "$(dirname "$0")/.."
+ROOT=$PWD
+PROBE=${TIERSHADE_PROBE_HDR:-$ROOT/../shared/data/probes/grace.hdr}
+LOG=$(mktemp -d)
+trap 'rm -rf "$LOG"' EXIT
+pass=0
+fail=0
+
+# Runs a command and counts its PASS/FAIL lines; a crash or non-zero exit with no FAIL line is a FAIL.
+run() {
+  local name=$1; shift
+  local out="$LOG/out" status
+  "$@" >"$out" 2>&1
+  status=$?
+  local p f
+  p=$(grep -c '^PASS' "$out")
+  f=$(grep -c '^FAIL' "$out")
+  grep '^FAIL' "$out" | sed "s|^|  [$name] |"
+  if [ "$status" -ne 0 ] && [ "$f" -eq 0 ]; then
+    echo "FAIL $name: exit status $status"
+    tail -n 15 "$out" | sed 's/^/    /'
+    f=1
+  fi
+  pass=$((pass + p))
+  fail=$((fail + f))
+  echo "$name: $p passed, $f failed"
+}
+
+# Turns `tiershade ... --verbose` ok/FAIL lines into PASS/FAIL lines.
+as_checks() {
+  local status
+  "$@" >"$LOG/cmd" 2>&1
+  status=$?
+  sed -n -e 's/^ok  */PASS /p' -e 's/^FAIL /FAIL /p' -e 's/^OVER /FAIL over budget: /p' "$LOG/cmd"
+  if [ "$status" -ne 0 ] && ! grep -q '^FAIL\|^OVER' "$LOG/cmd"; then
+    echo "FAIL $*: exit status $status"; tail -n 20 "$LOG/cmd"
+  fi
+  return 0
+}
+
+demo_check() {
+  local dir="$LOG/demo"
+  if "$1" demo -o "$dir" --size 96x48 >"$LOG/demo.txt" 2>&1; then
+    echo "PASS demo: every GL frame equals the C frame bit for bit"
+  else
+    echo "FAIL demo: $(tail -n 3 "$LOG/demo.txt" | tr '\n' ' ')"
+  fi
+  for f in model_lighting_tiers.png model_lighting_reference.exr model_lighting_sm3_cpu.exr; do
+    if [ -s "$dir/$f" ]; then echo "PASS demo wrote $f"; else echo "FAIL demo did not write $f"; fi
+  done
+  if ls "$dir" | grep -q '\.tmp\.'; then echo "FAIL demo left temporary files"; else echo "PASS demo left no temporary files"; fi
+}
+
+# Every unit-test program; a few take an argument.
+unit_tests() {
+  local dir=$1 prefix=$2 t name
+  for t in "$dir"/tests/test_*; do
+    [ -x "$t" ] || continue
+    name=$(basename "$t")
+    case "$name" in
+      test_budget) run "$prefix$name" "$t" tests/unit/fixtures ;;
+      test_image_io) run "$prefix$name" "$t" "$PROBE" ;;
+      *) run "$prefix$name" "$t" ;;
+    esac
+  done
+}
+
+echo "== unit tests"
+unit_tests build ""
+echo "== command line"
+for s in tests/cli/test_*.sh; do run "$(basename "$s" .sh)" bash "$s" build/tiershade; done
+echo "== budgets"
+run budget as_checks build/tiershade budget --verbose
+echo "== conformance (0 ULP, all variants, 4 backend/API pairs, random + hard inputs)"
+run conform as_checks build/tiershade conform --verbose --size 64
+echo "== demo"
+run demo demo_check build/tiershade
+
+
+echo "$pass passed, $fail failed"
+[ "$fail" -eq 0 ]
