@@ -10,7 +10,7 @@
 
 #include "cli/args.h"
 #include "conform/conform.h"
-#include "shaderlib/draw_dump.h"
+#include "bundle/draw_dump.h"
 #include "gl/float_target.h"
 #include "io/image_io.h"
 #include "scene/scene.h"

@@ -1,8 +1,8 @@
-// tiershade: `variants ... -o DIR`, shader bundles for engines (glue/shaderlib/bundle.h, docs/bundles.md):
+// tiershade: `variants ... -o DIR`, shader bundles for engines (glue/bundle/bundle.h, docs/bundles.md):
 // the variants a scene needs (SCENE --tier T) or the variants given (--shader S [--variant V]...).
 #include <cstdio>
 
-#include "shaderlib/bundle.h"
+#include "bundle/bundle.h"
 #include "cli/args.h"
 #include "scene/selection.h"
 #include "cli/select_args.h"

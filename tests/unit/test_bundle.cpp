@@ -14,9 +14,9 @@
 #include <string>
 #include <vector>
 
-#include "shaderlib/bundle.h"
+#include "bundle/bundle.h"
 #include "conform/conform.h"
-#include "shaderlib/draw_dump.h"
+#include "bundle/draw_dump.h"
 #include "gl/program_info.h"
 #include "unit_check.h"
 

@@ -1,5 +1,5 @@
 // tiershade glue: shader bundles for engines (see bundle.h and docs/bundles.md).
-#include "shaderlib/bundle.h"
+#include "bundle/bundle.h"
 
 #include <cstdio>
 #include <memory>

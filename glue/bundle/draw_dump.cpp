@@ -1,5 +1,5 @@
 // tiershade glue: the draw dump (see draw_dump.h and docs/bundles.md).
-#include "shaderlib/draw_dump.h"
+#include "bundle/draw_dump.h"
 
 #include <cstdio>
 #include <cstring>
