@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # tiershade test runner (make test). Every check prints "PASS name" or "FAIL name: why";
 # this script gathers them from:
+#   0. the layout check (tests/layout/check_architecture.sh against docs/architecture.md),
 #   1. the unit-test programs (build/tests/*),
 #   2. the command-line checks (tests/cli/test_cli.sh),
 #   3. instruction budgets: every ps20/ps2b variant within its tier's limits,
@@ -85,6 +86,8 @@ unit_tests() {
   done
 }
 
+echo "== layout (docs/architecture.md: who may include whom, file sizes)"
+run architecture bash tests/layout/check_architecture.sh
 echo "== unit tests"
 unit_tests build ""
 echo "== command line"
