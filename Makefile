@@ -7,7 +7,7 @@ SAN      ?=
 JOBS     ?= $(shell nproc 2>/dev/null || echo 2)
 CC       ?= gcc
 CXX      ?= g++
-PKGS     := OpenEXR libpng OpenColorIO tinygltf
+PKGS     := OpenEXR libpng OpenColorIO tinygltf spirv
 OPT      := -O2 -g
 ifeq ($(SAN),1)
 OPT      := -O1 -g -fsanitize=address,undefined -fno-omit-frame-pointer -fno-sanitize-recover=undefined
@@ -17,7 +17,7 @@ CXXFLAGS := -std=c++17 $(OPT) -Wall -Wextra -Werror -ffp-contract=off -fno-fast-
             $(shell pkg-config --cflags $(PKGS) 2>/dev/null)
 SANFLAGS := -fsanitize=address,undefined
 LDFLAGS  := $(if $(filter 1,$(SAN)),$(SANFLAGS))
-LDLIBS   := -lEGL $(shell pkg-config --libs $(PKGS) 2>/dev/null) -lpthread -ldl -lm
+LDLIBS   := -lEGL -lglslang-default-resource-limits $(shell pkg-config --libs $(PKGS) 2>/dev/null) -lpthread -ldl -lm
 
 SHADER_FILES := $(sort $(wildcard shaders/*.glsl shaders/*.fs shaders/*.vs shaders/*.variants))
 C_SRC   := $(sort $(shell find c_ref -name '*.c'))
@@ -35,7 +35,7 @@ all: $(BUILD)/tiershade $(UNIT_TESTS)
 # Debian packages (see README): installed only when missing, so a second run is quick.
 DEB_PKGS := build-essential pkg-config libosmesa6-dev libegl-dev libegl-mesa0 libgles-dev libgbm-dev \
             libglm-dev libopenexr-dev libopencolorio-dev libtinygltf-dev nlohmann-json3-dev libstb-dev \
-            libpng-dev glslang-tools spirv-tools
+            libpng-dev glslang-dev spirv-tools spirv-headers
 deps:
 	@missing=$$(for p in $(DEB_PKGS); do dpkg-query -W -f='$${Status}\n' $$p 2>/dev/null | grep -q 'install ok installed' || echo $$p; done); \
 	if [ -n "$$missing" ]; then \

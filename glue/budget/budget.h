@@ -9,19 +9,22 @@
 // This module estimates how many DX9 instruction slots a GLSL fragment shader
 // would take, so each variant can be checked against its tier's budget.
 //
-// Route: GLSL 3.30 -> glslangValidator -V (SPIR-V) -> spirv-opt -O ->
-// spirv-dis -> parse the text -> weight every instruction with a DX9 cost
-// table (vec4 SIMD: one slot per vector instruction; scalar-only DX9
-// instructions such as pow/rcp/rsq/exp/log/sincos are paid per component).
-// The model, the weight table and its known error against fxc are described
-// in docs/budget_model.md; budget_weight_table_markdown() prints the table.
+// Route, all in process: GLSL 3.30 -> glslang (C++ API, as glslangValidator -V)
+// -> SPIR-V -> spvtools::Optimizer with the spirv-opt -O passes -> walk the
+// optimised binary's instructions (spvBinaryParse) -> weight every instruction
+// with a DX9 cost table (vec4 SIMD: one slot per vector instruction;
+// scalar-only DX9 instructions such as pow/rcp/rsq/exp/log/sincos are paid per
+// component).  The model, the weight table and its known error against fxc are
+// described in docs/budget_model.md; budget_weight_table_markdown() prints the
+// table.  Files: glsl_to_spirv (compile + optimise), spirv_module (binary ->
+// instructions), weight_table, slot_counter + loop_trips (the counter),
+// nir_count (the NIR cross-check below).
 //
 // A second, independent counter reads Mesa's scalar NIR (ST_DEBUG=nir) for a
 // cross-check; its counts are scalar (roughly 3-4x a vec4 DX9 count).
 //
-// The tools are run as subprocesses (posix_spawnp, no shell) inside a private
-// mkdtemp directory that is always removed.  There is no global state; call
-// from one thread at a time.
+// No files and no processes; glslang is initialised once per process, and the
+// functions may be called from several threads at once.
 // ============================================================================
 #ifndef TIERSHADE_GLUE_BUDGET_H
 #define TIERSHADE_GLUE_BUDGET_H
@@ -42,7 +45,8 @@ struct BudgetCounts {
 // plain "#line N" / "#line N M" directives with integer M are fine).  A missing
 // version line gets "#version 330" prepended; a desktop version below 330 is
 // raised to 330 and "compatibility" becomes "core"; ES sources are rejected.
-// Returns false with a message in *err (e.g. the glslang compile log, or
+// Returns false with a message in *err (e.g. "GLSL compile failed:" and the
+// glslang log, positions "fragment.frag:L:" or "M:L:" after "#line L M"; or
 // "unbounded loop ...") on failure; *out is then left as zero counts.
 bool budget_count_fragment(const std::string &glsl330_source, BudgetCounts *out,
                            std::string *err);

@@ -4,8 +4,11 @@
 // With --nir, each variant's production program is also linked on OSMesa GL 3.3 under
 // ST_DEBUG=nir and Mesa's scalar NIR is counted (glue/budget/nir_capture.h) as a cross-check of
 // the model: nir_alu / alu must lie in [kNirRatioLo, kNirRatioHi].
+#include <cmath>
 #include <cstdio>
 #include <memory>
+
+#include <nlohmann/json.hpp>
 
 #include "shaderlib/assembler.h"
 #include "budget/budget.h"
@@ -23,6 +26,7 @@ static TierLimits limits_for(Tier t) {
   return {-1, -1, -1};
 }
 static std::string lim(int v) { return v < 0 ? "null" : std::to_string(v); }
+static nlohmann::ordered_json lim_json(int v) { return v < 0 ? nlohmann::ordered_json(nullptr) : nlohmann::ordered_json(v); }
 
 // Consistency band of the NIR cross-check: Mesa's scalar NIR ALU count over the model's
 // DX9 ALU slots.  Measured on all 84 model_lighting variants (Mesa 22.3.6 llvmpipe):
@@ -35,7 +39,8 @@ int cmd_budget(int argc, char **argv) {
   if (a.flag("--help")) {
     printf("usage: tiershade budget [--json] [--verbose] [--nir] [--shader S] [--tier T]... [--variant V]\n"
            "Counts DX9-style instruction slots of each variant's production fragment shader\n"
-           "(GLSL 3.30 -> SPIR-V -> spirv-opt -O -> weight table) and checks the tier limits:\n"
+           "(GLSL 3.30 -> SPIR-V -> the spirv-opt -O passes -> weight table, in process with the\n"
+           "glslang and SPIRV-Tools libraries) and checks the tier limits:\n"
            "ps20 <= 64 arithmetic and <= 32 texture slots, ps2b <= 512 slots. Exit status 1 when\n"
            "a variant is over budget or fails to compile.\n"
            "--nir also links each production program on OSMesa GL 3.3 with ST_DEBUG=nir, counts\n"
@@ -100,22 +105,26 @@ int cmd_budget(int argc, char **argv) {
       }
       if (!nir_ok && fits) ++inconsistent;
     }
-    if (json) {
-      std::string extra;
+    if (json) {  // one object per line, keys in this order (tests/cli/test_budget_nir.sh reads them)
+      nlohmann::ordered_json o;
+      o["shader"] = v.shader->name;
+      o["variant"] = v.name();
+      o["tier"] = tier_name(v.tier);
+      o["alu"] = c.alu;
+      o["tex"] = c.tex;
+      o["total"] = c.total();
+      o["limit_alu"] = lim_json(L.alu);
+      o["limit_tex"] = lim_json(L.tex);
+      o["limit_total"] = lim_json(L.total);
+      o["fits"] = fits;
       if (nir) {
-        char b[128];
-        if (nir_counted) snprintf(b, sizeof b, ",\"nir_alu\":%d,\"nir_tex\":%d", nc.alu, nc.tex);
-        else snprintf(b, sizeof b, ",\"nir_alu\":null,\"nir_tex\":null");
-        extra = b;
-        if (has_ratio) snprintf(b, sizeof b, ",\"nir_ratio\":%.3f", ratio);
-        else snprintf(b, sizeof b, ",\"nir_ratio\":null");
-        extra += b;
+        o["nir_alu"] = nir_counted ? nlohmann::ordered_json(nc.alu) : nlohmann::ordered_json(nullptr);
+        o["nir_tex"] = nir_counted ? nlohmann::ordered_json(nc.tex) : nlohmann::ordered_json(nullptr);
+        // three decimals, as documented (docs/budget_model.md)
+        o["nir_ratio"] = has_ratio ? nlohmann::ordered_json(std::round(ratio * 1000.0) / 1000.0)
+                                   : nlohmann::ordered_json(nullptr);
       }
-      printf("  {\"shader\":\"%s\",\"variant\":\"%s\",\"tier\":\"%s\",\"alu\":%d,\"tex\":%d,\"total\":%d,"
-             "\"limit_alu\":%s,\"limit_tex\":%s,\"limit_total\":%s,\"fits\":%s%s}%s\n",
-             v.shader->name.c_str(), v.name().c_str(), tier_name(v.tier), c.alu, c.tex, c.total(), lim(L.alu).c_str(),
-             lim(L.tex).c_str(), lim(L.total).c_str(), fits ? "true" : "false", extra.c_str(),
-             i + 1 < sel.variants.size() ? "," : "");
+      printf("  %s%s\n", o.dump().c_str(), i + 1 < sel.variants.size() ? "," : "");
     } else {
       std::string extra;
       if (nir) {

@@ -1,30 +1,32 @@
 // ============================================================================
 // tiershade -- tests/unit/test_budget.cpp
-// Unit test for glue/budget/budget.{h,cpp}: counts small known shaders and checks the
-// DX9 slot model (weights, mad fusion, _sat, loops, flattening, errors) and
-// the Mesa NIR cross-check parser.
+// Unit test for glue/budget/: counts small known shaders and checks the DX9 slot model
+// (weights, mad fusion, _sat, loops, flattening, errors), the in-process compile's error
+// positions (also mapped back to shaders/<file>:<line> through the assembler), and the Mesa
+// NIR cross-check parser.
 //
-// Build (from the repo root):
-//   g++ -std=c++17 -O2 -Wall -Wextra -Werror tests/unit/test_budget.cpp glue/budget/budget.cpp -o test_budget
-// Run:  ./test_budget [fixtures-dir]     (default: <dir of this file>/fixtures)
-// Needs glslangValidator, spirv-opt and spirv-dis in PATH.
-// Prints "PASS name" / "FAIL name: details" per check; exits 1 on any failure.
+// Built by the Makefile (build/tests/test_budget); links glslang and SPIRV-Tools, runs no
+// external program.
+// Run:  build/tests/test_budget [fixtures-dir]     (default: <dir of this file>/fixtures)
+// Prints "PASS name" / "FAIL name: details" per check (unit_check.h); exits 1 on any failure.
 // ============================================================================
 #include "budget/budget.h"
 
+#include <stdlib.h>
+#include <unistd.h>
+
+#include <cstdio>
 #include <fstream>
 #include <iostream>
 #include <sstream>
 #include <string>
+#include <thread>
+#include <vector>
+
+#include "shaderlib/assembler.h"
+#include "unit_check.h"
 
 namespace {
-
-int g_failures = 0;
-
-void check(bool ok, const std::string &name, const std::string &details = std::string()) {
-    if (ok) std::cout << "PASS " << name << "\n";
-    else { std::cout << "FAIL " << name << ": " << details << "\n"; ++g_failures; }
-}
 
 std::string describe(const BudgetCounts &c) {
     std::ostringstream s;
@@ -225,7 +227,7 @@ void test_sources_and_errors() {
     std::string err;
     BudgetCounts c;
     bool ok = budget_count_fragment(shader("o = v_a + foo;"), &c, &err);
-    check(!ok && err.find("glslangValidator failed") != std::string::npos &&
+    check(!ok && err.find("GLSL compile failed") != std::string::npos &&
               err.find("'foo' : undeclared identifier") != std::string::npos &&
               err.find("fragment.frag:15") != std::string::npos && err.find("/tmp") == std::string::npos,
           "compile error returns false with the glslang message", ok ? "unexpected success" : err);
@@ -243,6 +245,78 @@ void test_sources_and_errors() {
     expect_error("ES sources are rejected", "#version 300 es\nprecision highp float;\nout vec4 o;\nvoid main(){o=vec4(1);}\n",
                  "ES shaders");
     expect("constant output: only the mov", "#version 330\nout vec4 o;\nvoid main() { o = vec4(0.5); }\n", 1, 0);
+}
+
+// A compile error in an included library file is reported at that file's line: the assembler
+// numbers each file's source string in its #line directives, glslang reports "S:L:", and
+// map_compile_log names the file.  The library is a private copy (TIERSHADE_SHADER_DIR).
+void test_error_positions_through_the_assembler() {
+    char tmpl[] = "/tmp/tiershade-test-budget-XXXXXX";
+    const char *dir = mkdtemp(tmpl);
+    check(dir != nullptr, "assembler errors: temp shader dir");
+    if (!dir) return;
+    const std::string d = dir;
+    bool written = true;
+    for (const std::string &name : shader_library_files()) {  // the real library, for the prelude
+        std::string text;
+        written = written && shader_library_read(name, &text);
+        std::ofstream(d + "/" + name, std::ios::binary) << text;
+    }
+    std::ofstream(d + "/budget_test_main.fs", std::ios::binary)
+        << "out vec4 o;\n#include \"budget_test_inc.glsl\"\nvoid main() { o = helper(); }\n";
+    std::ofstream(d + "/budget_test_inc.glsl", std::ios::binary)
+        << "// a helper with an error on line 3\nvec4 helper() {\n  return undeclared_thing;\n}\n";
+    const char *old = getenv("TIERSHADE_SHADER_DIR");
+    const std::string saved = old ? old : "";
+    setenv("TIERSHADE_SHADER_DIR", dir, 1);
+    Assembled a;
+    std::string err;
+    bool assembled = assemble("budget_test_main.fs", Target::GLSL330, Stage::Fragment, {}, &a, &err);
+    check(written && assembled, "assembler errors: test shader assembles", err);
+    BudgetCounts c;
+    bool ok = assembled && budget_count_fragment(a.text, &c, &err);
+    const std::string mapped = map_compile_log(err, a);
+    check(assembled && !ok && mapped.find("shaders/budget_test_inc.glsl:3:") != std::string::npos &&
+              mapped.find("undeclared_thing") != std::string::npos,
+          "assembler errors: the budget's compile error names shaders/budget_test_inc.glsl:3", mapped);
+    if (old) setenv("TIERSHADE_SHADER_DIR", saved.c_str(), 1);
+    else unsetenv("TIERSHADE_SHADER_DIR");
+    for (const std::string &name : shader_library_files()) std::remove((d + "/" + name).c_str());
+    std::remove((d + "/budget_test_main.fs").c_str());
+    std::remove((d + "/budget_test_inc.glsl").c_str());
+    check(rmdir(dir) == 0, "assembler errors: temp shader dir removed", d);
+}
+
+// The counter may run on several threads at once (glslang is initialised once per process):
+// every thread gets the counts of the serial run.
+void test_threads() {
+    const std::string srcs[2] = {kPlatformNotesShader,
+                                 shader("vec4 a = vec4(0.0);\nfor (int i = 0; i < 4; i++) a += texture(s, v_uv + u_off[i].xy);\no = a;")};
+    BudgetCounts serial[2];
+    std::string err;
+    bool ok = budget_count_fragment(srcs[0], &serial[0], &err) && budget_count_fragment(srcs[1], &serial[1], &err);
+    check(ok, "threads: serial counts", err);
+    if (!ok) return;
+    constexpr int kThreads = 4, kRounds = 3;
+    std::vector<int> mismatches(kThreads, 0);
+    std::vector<std::thread> pool;
+    for (int t = 0; t < kThreads; ++t) {
+        pool.emplace_back([&, t] {
+            for (int r = 0; r < kRounds; ++r) {
+                const int k = (t + r) % 2;
+                BudgetCounts c;
+                std::string e;
+                if (!budget_count_fragment(srcs[k], &c, &e) || c.alu != serial[k].alu || c.tex != serial[k].tex ||
+                    c.by_op != serial[k].by_op)
+                    ++mismatches[t];
+            }
+        });
+    }
+    for (std::thread &th : pool) th.join();
+    int bad = 0;
+    for (int m : mismatches) bad += m;
+    check(bad == 0, "threads: 4 threads x 3 counts equal the serial counts",
+          std::to_string(bad) + " of " + std::to_string(kThreads * kRounds) + " differ");
 }
 
 void test_platform_notes_shader() {
@@ -322,10 +396,12 @@ int main(int argc, char **argv) {
     test_fusion_and_modifiers();
     test_control_flow();
     test_sources_and_errors();
+    test_error_positions_through_the_assembler();
+    test_threads();
     test_platform_notes_shader();
     test_table();
     test_nir(fixtures);
-    if (g_failures) std::cout << g_failures << " check(s) FAILED\n";
-    else std::cout << "all checks passed\n";
-    return g_failures ? 1 : 0;
+    std::cout.flush();
+    printf("%d passed, %d failed\n", g_passed, g_failed);
+    return g_failed ? 1 : 0;
 }
