@@ -93,28 +93,8 @@ std::vector<const BenchSection *> bench_sections();
 // the input mode (TS_CONFORM, TS_DEFERRED, or nothing for production).
 std::vector<Define> variant_defines(const Variant &v, InputMode mode);
 
-// Fills a w x h grid of input records: random records, or for the hard set hard case
-// (y*w + x) % num_hard applied to a random record, labelled in case_names.
-// random_pixel(rec) and hard_pixel(case, rec) draw from the caller's generator.
-template <int Slots, class RandomPixel, class HardPixel>
-void fill_record_grid(InputSet set, int w, int h, const char *const *hard_names, int num_hard, FamilyInputs *out,
-                      RandomPixel random_pixel, HardPixel hard_pixel) {
-  out->resize(w, h, Slots);
-  out->case_names.clear();
-  for (int y = 0; y < h; ++y) {
-    for (int x = 0; x < w; ++x) {
-      ts_vec4f rec[Slots];
-      if (set == InputSet::Random) {
-        random_pixel(rec);
-      } else {
-        const int c = (y * w + x) % num_hard;
-        hard_pixel(c, rec);
-        out->case_names.push_back(hard_names[c]);
-      }
-      for (int k = 0; k < Slots; ++k) out->set_slot(x, y, k, rec[k]);
-    }
-  }
-}
+// The grid of input records, random or hard (the hard cases are data: fill_record_grid in
+// families/hard_cases.h, tests/conform/<family>.cases).
 
 // The C sampler's view of a texture the shader samples (same filtering and wrapping).
 ts_tex2d tex2d_of(const TextureDesc &t);
