@@ -313,7 +313,7 @@ bool parse_case_assignment(const ShaderFamily &fam, const std::string &line, con
   ExprParser p(fam, rest);
   std::string e;
   if (!p.parse_list(&out->values, &e)) {
-    *err = where + ": " + e;
+    *err = where + ": " + t + ": " + e;
     return false;
   }
   int width = 0;
