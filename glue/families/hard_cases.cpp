@@ -8,6 +8,7 @@
 #include <cstdlib>
 #include <cstring>
 #include <fstream>
+#include <iterator>
 #include <map>
 #include <memory>
 #include <mutex>
@@ -512,18 +513,13 @@ bool use_hard_case_file(const std::string &path, std::string *err) {
     return false;
   }
   std::ifstream f(path, std::ios::binary);
-  if (!f) {
+  const std::string text = f ? std::string(std::istreambuf_iterator<char>(f), std::istreambuf_iterator<char>()) : "";
+  if (!f || f.bad()) {
     *err = path + ": cannot read: " + std::strerror(errno);
     return false;
   }
-  std::ostringstream ss;
-  ss << f.rdbuf();
-  if (f.bad()) {
-    *err = path + ": read error";
-    return false;
-  }
   std::unique_ptr<HardCases> hc(new HardCases);
-  if (!parse_hard_cases(*fam, path, ss.str(), hc.get(), err)) return false;
+  if (!parse_hard_cases(*fam, path, text, hc.get(), err)) return false;
   std::lock_guard<std::mutex> lock(g_cases_mutex);
   case_cache()[fam->name] = std::move(hc);
   return true;
