@@ -36,6 +36,7 @@ struct ShaderFamily {
   const char *name;
   int slots;
   std::vector<std::string> slot_names;
+  // The hard set applies tests/conform/<name>.cases (families/hard_cases.h: fill_record_grid).
   void (*make_inputs)(InputSet set, int w, int h, uint32_t seed, FamilyInputs *out);
   ts_vec4f (*eval_f)(const Variant &v, const FamilyInputs &in, int x, int y);
   ts_vec4d (*eval_d)(const Variant &v, const FamilyInputs &in, int x, int y);
@@ -92,9 +93,6 @@ std::vector<const BenchSection *> bench_sections();
 // #defines for a variant: each combo value, the tier (TS_TIER_PS20/PS2B/SM3) and
 // the input mode (TS_CONFORM, TS_DEFERRED, or nothing for production).
 std::vector<Define> variant_defines(const Variant &v, InputMode mode);
-
-// The grid of input records, random or hard (the hard cases are data: fill_record_grid in
-// families/hard_cases.h, tests/conform/<family>.cases).
 
 // The C sampler's view of a texture the shader samples (same filtering and wrapping).
 ts_tex2d tex2d_of(const TextureDesc &t);
