@@ -73,7 +73,7 @@ std::string slot_list(const ShaderFamily &fam) {
   return names;
 }
 
-// The built-in functions: name, argument count (-1: any), and how the width follows from the arguments.
+// The built-in functions (docs/conformance.md); add, sub, mul and nextafter work per component.
 bool componentwise(const std::string &fn) { return fn == "add" || fn == "sub" || fn == "mul" || fn == "nextafter"; }
 const char *const kBuiltins[] = {"vec", "add", "sub", "mul", "nextafter", "normalize", "uniform", "pick"};
 

@@ -70,7 +70,8 @@ bool parse_hard_cases(const ShaderFamily &fam, const std::string &file, const st
 // The family's cases: its --cases override, else the embedded tests/conform/<family>.cases
 // (parsed once). A missing or malformed file is an error.
 bool family_hard_cases(const ShaderFamily &fam, const HardCases **out, std::string *err);
-// Reads FILE (named <family>.cases, any directory) and makes it the cases of that family.
+// Reads FILE (named <family>.cases, any directory) and makes it the cases of that family. Call it
+// before the family's cases are used (it replaces what family_hard_cases returned).
 bool use_hard_case_file(const std::string &path, std::string *err);
 // The embedded case files (tests/conform/*.cases), by repository path.
 std::vector<std::string> embedded_case_files();
