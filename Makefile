@@ -20,6 +20,7 @@ LDFLAGS  := $(if $(filter 1,$(SAN)),$(SANFLAGS))
 LDLIBS   := -lEGL -lglslang-default-resource-limits $(shell pkg-config --libs $(PKGS) 2>/dev/null) -lpthread -ldl -lm
 
 SHADER_FILES := $(sort $(wildcard shaders/*.glsl shaders/*.fs shaders/*.vs shaders/*.variants))
+CASE_FILES   := $(sort $(wildcard tests/conform/*.cases))
 C_SRC   := $(sort $(shell find c_ref -name '*.c'))
 CXX_SRC := $(sort $(shell find glue -name '*.cpp'))
 C_OBJ   := $(C_SRC:%.c=$(BUILD)/obj/%.o)
@@ -48,9 +49,9 @@ $(BUILD)/tools/embed_files: tools/embed_files.c
 	@mkdir -p $(dir $@)
 	$(CC) -std=c99 -O1 -Wall -Wextra -Werror -o $@ $<
 
-$(BUILD)/gen/shader_sources.cpp: $(SHADER_FILES) $(BUILD)/tools/embed_files
+$(BUILD)/gen/shader_sources.cpp: $(SHADER_FILES) $(CASE_FILES) $(BUILD)/tools/embed_files
 	@mkdir -p $(dir $@)
-	$(BUILD)/tools/embed_files $@ $(foreach f,$(SHADER_FILES),$(notdir $(f))=$(f))
+	$(BUILD)/tools/embed_files $@ $(foreach f,$(SHADER_FILES),$(notdir $(f))=$(f)) $(foreach f,$(CASE_FILES),$(f)=$(f))
 
 $(BUILD)/obj/gen/shader_sources.o: $(BUILD)/gen/shader_sources.cpp
 	@mkdir -p $(dir $@)

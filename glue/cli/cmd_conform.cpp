@@ -5,18 +5,23 @@
 
 #include "conform/conform.h"
 #include "families/family.h"
+#include "families/hard_cases.h"
 #include "cli/select_args.h"
 
 int cmd_conform(int argc, char **argv) {
-  Args a("conform", argc, argv, {"--help", "--json", "--verbose"},
-         {"--shader", "--tier", "--variant", "--backend", "--api", "--size", "--set", "--seed"});
+  Args a("conform", argc, argv, {"--help", "--json", "--verbose", "--list-cases"},
+         {"--shader", "--tier", "--variant", "--backend", "--api", "--size", "--set", "--seed", "--cases"});
   if (a.flag("--help")) {
     puts("usage: tiershade conform [--shader S] [--tier T]... [--variant V] [--backend osmesa|egl|all]\n"
          "                         [--api gl33|gles2|gles3|all] [--size N] [--set random|hard|all] [--seed K] [--json] [--verbose]\n"
+         "                         [--cases FILE]... [--list-cases]\n"
          "Renders an N x N grid of per-pixel input records through each variant on llvmpipe,\n"
          "reads back RGBA32F and compares every pixel with the C reference (0 ULP allowed).\n"
-         "Hard inputs: zero/denormal/huge/NaN normals, light at the point, N.L = -1/0/1,\n"
-         "colours up to 65504, Inf/NaN inputs; outputs must also be finite and in range.\n"
+         "Hard inputs: the named cases of tests/conform/<shader>.cases (embedded; zero/denormal/huge/NaN\n"
+         "normals, light at the point, N.L = -1/0/1, colours up to 65504, Inf/NaN inputs...), each on a\n"
+         "random record; outputs must also be finite and in range. --cases FILE replaces the cases of the\n"
+         "shader FILE is named after (FILE = .../<shader>.cases; format: docs/conformance.md).\n"
+         "--list-cases prints the hard cases of the selected shaders and exits.\n"
          "Exit status 1 when any variant fails. --json prints one object per variant, backend, api and set.");
     return 0;
   }
@@ -28,8 +33,33 @@ int cmd_conform(int argc, char **argv) {
   if (set_name == "random" || set_name == "all") sets.push_back(InputSet::Random);
   if (set_name == "hard" || set_name == "all") sets.push_back(InputSet::Hard);
   if (sets.empty()) a.fail("unknown input set '" + set_name + "' (random, hard, all)");
+  for (const auto &file : a.all("--cases")) {
+    std::string err;
+    if (!use_hard_case_file(file, &err)) a.fail(err);
+  }
   Selection sel;
   select_variants(a, &sel);
+  // The hard cases of every selected family, checked before anything runs.
+  std::map<std::string, const HardCases *> cases;
+  for (const auto &v : sel.variants) {
+    const ShaderFamily *f = find_family(v.shader->name);
+    if (!f) a.fail("shader '" + v.shader->name + "' has no C twin registered");
+    std::string err;
+    if (!cases.count(f->name) && !family_hard_cases(*f, &cases[f->name], &err)) {
+      fprintf(stderr, "tiershade conform: %s\n", err.c_str());
+      return 1;
+    }
+  }
+  if (a.flag("--list-cases")) {
+    for (const auto &fc : cases) {
+      const HardCases &hc = *fc.second;
+      printf("%s: %zu hard cases (%s)", fc.first.c_str(), hc.cases.size(), hc.file.c_str());
+      if (!hc.repeat.empty()) printf(", each once per %s value (%zu)", hc.repeat_combo.c_str(), hc.repeat.size());
+      printf("\n");
+      for (const auto &c : hc.cases) printf("  %s\n", c.name.c_str());
+    }
+    return 0;
+  }
   const auto configs = select_configs(a);
   const bool json = a.flag("--json");
 
@@ -72,10 +102,10 @@ int cmd_conform(int argc, char **argv) {
           printf("%s  %s", first_json ? "" : ",\n", conform_result_json(res).c_str());
           first_json = false;
         } else if (!res.passed() || a.flag("--verbose")) {
-          printf("%s %s %s %s/%s %s: %ld px, %ld mismatched, max %u ULP, %ld non-finite, %ld out of range (%.2f s)\n",
+          printf("%s %s %s %s/%s %s: %ld px, %ld mismatched, max %u ULP, %ld non-finite, %ld out of range%s (%.2f s)\n",
                  res.passed() ? "ok  " : "FAIL", res.shader.c_str(), res.variant.c_str(), res.backend.c_str(),
                  res.api.c_str(), res.set.c_str(), res.pixels, res.mismatches, res.max_ulp, res.nonfinite,
-                 res.out_of_range, res.seconds);
+                 res.out_of_range, res.cube_maps_nearest ? ", cube maps NEAREST" : "", res.seconds);
         }
         if (!res.passed() && !json) {
           if (!res.error.empty()) printf("  error: %s\n", res.error.c_str());

@@ -10,52 +10,24 @@
 
 #include "conform/conform.h"
 #include "families/family.h"
+#include "families/hard_cases.h"
 #include "cli/select_args.h"
 
 namespace {
 
-bool parse_floats(const std::string &s, float v[4], int *n) {
-  std::string t = s;
-  for (char &c : t)
-    if (c == ',') c = ' ';
-  std::istringstream in(t);
-  std::string tok;
-  *n = 0;
-  while (in >> tok) {
-    if (*n >= 4) return false;
-    char *end = nullptr;
-    const float f = std::strtof(tok.c_str(), &end);  // accepts nan, inf, 1e-39, hex floats
-    if (end == tok.c_str() || *end) return false;
-    v[(*n)++] = f;
-  }
-  return *n > 0;
-}
-
-int slot_index(const ShaderFamily &f, const std::string &name) {
-  for (int k = 0; k < f.slots; ++k)
-    if (f.slot_names[k] == name) return k;
-  return -1;
-}
-
-void set_slot_value(const Args &a, const ShaderFamily &f, FamilyInputs *in, const std::string &where,
-                    const std::string &assignment) {
-  const size_t eq = assignment.find('=');
-  if (eq == std::string::npos) a.fail(where + ": '" + assignment + "' is not SLOT=x,y,z,w");
-  const std::string name = assignment.substr(0, eq);
-  const int k = slot_index(f, name);
-  if (k < 0) {
-    std::string names;
-    for (const auto &s : f.slot_names) names += " " + s;
-    a.fail(where + ": unknown slot '" + name + "'; " + f.name + " has:" + names);
-  }
-  float v[4] = {0, 0, 0, 0};
-  int n = 0;
-  ts_vec4f cur = in->slot(0, 0, k);
-  if (!parse_floats(assignment.substr(eq + 1), v, &n))
-    a.fail(where + ": slot '" + name + "' wants 1 to 4 numbers, got '" + assignment.substr(eq + 1) + "'");
-  float *c = &cur.x;
-  for (int i = 0; i < n; ++i) c[i] = v[i];
-  in->set_slot(0, 0, k, cur);
+// SLOT=x,y,z,w (--set) or a line 'SLOT x y z w' of --input: the case-file syntax
+// (families/hard_cases.h), where a bare slot may take 1 to 4 values (the first components).
+void set_slot_value(const Args &a, const ShaderFamily &f, FamilyInputs *in, Rng *rng, const std::string &where,
+                    const std::string &line) {
+  CaseAssignment asg;
+  std::string err;
+  if (!parse_case_assignment(f, line, where, true, &asg, &err)) a.fail(err);
+  std::vector<ts_vec4f> rec(static_cast<size_t>(f.slots));
+  for (int k = 0; k < f.slots; ++k) rec[k] = in->slot(0, 0, k);
+  CaseEval env;
+  env.rng = rng;
+  apply_case_assignment(asg, env, rec.data());
+  for (int k = 0; k < f.slots; ++k) in->set_slot(0, 0, k, rec[k]);
 }
 
 std::string fmt(float f) {
@@ -70,14 +42,18 @@ std::string fmt(float f) {
 
 int cmd_probe(int argc, char **argv) {
   Args a("probe", argc, argv, {"--help"},
-         {"--shader", "--variant", "--backend", "--api", "--set", "--input", "--grid", "--size", "--seed"});
+         {"--shader", "--variant", "--backend", "--api", "--set", "--input", "--grid", "--case", "--cases", "--size",
+          "--seed"});
   if (a.flag("--help")) {
     puts("usage: tiershade probe --shader S --variant V [--backend osmesa|egl] [--api gl33|gles2|gles3]\n"
-         "                       [--grid random|hard:X,Y [--size N --seed K]] [--input FILE] [--set SLOT=x,y,z,w]...\n"
+         "                       [--grid random|hard:X,Y | --case NAME] [--size N --seed K] [--cases FILE]\n"
+         "                       [--input FILE] [--set SLOT=x,y,z,w]...\n"
          "Evaluates one pixel of a variant in GL and in C and prints both, with the ULP distance\n"
          "and the double-precision reference. The pixel's input record starts from a conformance\n"
-         "grid pixel (--grid, same --size/--seed as `conform`), or from the first random record;\n"
-         "then FILE (lines 'SLOT x y z w', # comments) and --set override single slots.\n"
+         "grid pixel (--grid, same --size/--seed as `conform`), from the first pixel of the hard grid\n"
+         "that has hard case NAME (--case; the cases: tests/conform/<shader>.cases, or --cases FILE),\n"
+         "or from the first random record; then FILE (lines 'SLOT x y z w', # comments) and --set\n"
+         "override single slots (SLOT.xz for some components; the case-file syntax, docs/conformance.md).\n"
          "Values accept nan, inf and hex floats. Slot names: see the worst-pixel report of conform.");
     return 0;
   }
@@ -104,14 +80,42 @@ int cmd_probe(int argc, char **argv) {
       a.fail("--grid wants SET:X,Y, got '" + g + "'");
     if (gx < 0 || gy < 0 || gx >= size || gy >= size) a.fail("--grid pixel lies outside the " + std::to_string(size) + "^2 grid");
   }
+  for (const auto &file : a.all("--cases")) {
+    std::string err;
+    if (!use_hard_case_file(file, &err)) a.fail(err);
+  }
+  const HardCases *cases = nullptr;
+  if (a.has("--case")) {
+    if (a.has("--grid")) a.fail("--case and --grid both choose the pixel: give one");
+    std::string err;
+    if (!family_hard_cases(*f, &cases, &err)) a.fail(err);
+    set = InputSet::Hard;
+  }
   FamilyInputs grid;
   f->make_inputs(set, size, size, static_cast<uint32_t>(seed) * 7919u + static_cast<uint32_t>(set), &grid);
+  if (cases) {  // the first pixel of the case (any repeat value), or the exact pixel name
+    const std::string want = a.get("--case");
+    size_t i = 0;
+    while (i < grid.case_names.size() && grid.case_names[i] != want &&
+           cases->cases[i % cases->cases.size()].name != want)
+      ++i;
+    if (i == grid.case_names.size()) {
+      bool known = false;
+      for (const auto &c : cases->cases) known = known || c.name == want;
+      if (known) a.fail("hard case '" + want + "' has no pixel in the " + std::to_string(size) + "^2 grid (raise --size)");
+      a.fail("unknown hard case '" + want + "' (" + cases->file + " has " + std::to_string(cases->cases.size()) +
+             " cases; `tiershade conform --list-cases --shader " + f->name + "` lists them)");
+    }
+    gx = static_cast<int>(i % static_cast<size_t>(size));
+    gy = static_cast<int>(i / static_cast<size_t>(size));
+  }
   FamilyInputs in;
   in.resize(1, 1, f->slots);
   in.textures = grid.textures;
   for (int k = 0; k < f->slots; ++k) in.set_slot(0, 0, k, grid.slot(gx, gy, k));
   if (!grid.case_names.empty()) in.case_names = {grid.case_names[static_cast<size_t>(gy) * size + gx]};
 
+  Rng rng(static_cast<uint32_t>(seed));  // for uniform() and pick() in --input and --set values
   if (a.has("--input")) {
     const std::string path = a.get("--input");
     struct stat st;
@@ -128,11 +132,15 @@ int cmd_probe(int argc, char **argv) {
       std::string name, rest, tok;
       if (!(ls >> name)) continue;
       while (ls >> tok) rest += (rest.empty() ? "" : " ") + tok;
-      set_slot_value(a, *f, &in, path + ":" + std::to_string(lineno), name + "=" + rest);
+      set_slot_value(a, *f, &in, &rng, path + ":" + std::to_string(lineno), name + " " + rest);
     }
     if (file.bad()) a.fail("cannot read input file '" + path + "' (read error after line " + std::to_string(lineno) + ")");
   }
-  for (const auto &s : a.all("--set")) set_slot_value(a, *f, &in, "--set", s);
+  for (const auto &s : a.all("--set")) {
+    const size_t eq = s.find('=');
+    if (eq == std::string::npos) a.fail("--set: '" + s + "' is not SLOT=x,y,z,w");
+    set_slot_value(a, *f, &in, &rng, "--set", s.substr(0, eq) + " " + s.substr(eq + 1));
+  }
 
   Backend b = Backend::OSMesa;
   Api api = Api::GL33;

@@ -1,6 +1,8 @@
 // tiershade: `variants` and `assemble` subcommands.
 #include <cstdio>
 
+#include <nlohmann/json.hpp>
+
 #include "shaderlib/assembler.h"
 #include "families/family.h"
 #include "cli/select_args.h"
@@ -33,14 +35,17 @@ int cmd_variants(int argc, char **argv) {
     return 0;
   }
   if (a.flag("--json")) {
+    // One object per line, in an array.
     printf("[\n");
     for (size_t i = 0; i < sel.variants.size(); ++i) {
       const Variant &v = sel.variants[i];
-      printf("  {\"shader\":\"%s\",\"variant\":\"%s\",\"tier\":\"%s\",\"defines\":{", v.shader->name.c_str(),
-             v.name().c_str(), tier_name(v.tier));
-      for (size_t k = 0; k < v.values.size(); ++k)
-        printf("%s\"%s\":%d", k ? "," : "", v.values[k].first.c_str(), v.values[k].second);
-      printf("}}%s\n", i + 1 < sel.variants.size() ? "," : "");
+      nlohmann::ordered_json o, defines = nlohmann::ordered_json::object();
+      o["shader"] = v.shader->name;
+      o["variant"] = v.name();
+      o["tier"] = tier_name(v.tier);
+      for (const auto &kv : v.values) defines[kv.first] = kv.second;
+      o["defines"] = defines;
+      printf("  %s%s\n", o.dump().c_str(), i + 1 < sel.variants.size() ? "," : "");
     }
     printf("]\n");
     return 0;

@@ -7,6 +7,8 @@
 #include <cstring>
 #include <sstream>
 
+#include <nlohmann/json.hpp>
+
 Target target_for_api(Api a) {
   switch (a) {
     case Api::GLES2: return Target::ESSL100;
@@ -82,6 +84,7 @@ ConformResult conform_variant(const ConformRun &run, const ShaderFamily &fam, co
   }
   const FamilyInputs &in = adapt ? adapted : in_given;
   ConformResult res;
+  res.cube_maps_nearest = adapt;
   res.shader = fam.name;
   res.variant = v.name();
   res.tier = tier_name(v.tier);
@@ -169,28 +172,23 @@ ConformResult conform_variant(const ConformRun &run, const ShaderFamily &fam, co
   return res;
 }
 
-static std::string json_escape(const std::string &s) {
-  std::string o;
-  for (char c : s) {
-    if (c == '"' || c == '\\') { o += '\\'; o += c; }
-    else if (c == '\n') o += "\\n";
-    else if (static_cast<unsigned char>(c) < 32) o += ' ';
-    else o += c;
-  }
-  return o;
-}
-
 std::string conform_result_json(const ConformResult &r) {
-  std::ostringstream o;
-  char mabs[64];
-  if (std::isfinite(r.max_abs)) snprintf(mabs, sizeof mabs, "%.9g", r.max_abs);
-  else snprintf(mabs, sizeof mabs, "null");
-  o << "{\"shader\":\"" << r.shader << "\",\"variant\":\"" << r.variant << "\",\"tier\":\"" << r.tier
-    << "\",\"backend\":\"" << r.backend << "\",\"api\":\"" << r.api << "\",\"set\":\"" << r.set
-    << "\",\"pixels\":" << r.pixels << ",\"mismatches\":" << r.mismatches << ",\"max_ulp\":" << r.max_ulp
-    << ",\"max_abs\":" << mabs << ",\"nonfinite\":" << r.nonfinite << ",\"out_of_range\":" << r.out_of_range
-    << ",\"passed\":" << (r.passed() ? "true" : "false");
-  if (!r.error.empty()) o << ",\"error\":\"" << json_escape(r.error) << "\"";
-  o << "}";
-  return o.str();
+  nlohmann::ordered_json o;
+  o["shader"] = r.shader;
+  o["variant"] = r.variant;
+  o["tier"] = r.tier;
+  o["backend"] = r.backend;
+  o["api"] = r.api;
+  o["set"] = r.set;
+  o["pixels"] = r.pixels;
+  o["mismatches"] = r.mismatches;
+  o["max_ulp"] = r.max_ulp;
+  o["max_abs"] = r.max_abs;  // nlohmann writes a non-finite number as null
+  o["nonfinite"] = r.nonfinite;
+  o["out_of_range"] = r.out_of_range;
+  o["cube_maps_nearest"] = r.cube_maps_nearest;
+  o["passed"] = r.passed();
+  if (!r.error.empty()) o["error"] = r.error;
+  // A compiler message is not always UTF-8: replace what is not, rather than throw.
+  return o.dump(-1, ' ', false, nlohmann::ordered_json::error_handler_t::replace);
 }

@@ -19,6 +19,7 @@ struct ConformResult {
   unsigned max_ulp = 0;
   double max_abs = 0;
   double seconds = 0;
+  bool cube_maps_nearest = false;  // LINEAR cube maps sampled with NEAREST (GLES: adapt_textures_for_api)
   std::string error;   // compile/link/draw failure
   std::string worst;   // human report of the worst pixel (inputs, GL, C, ULP)
   bool passed() const { return error.empty() && mismatches == 0 && nonfinite == 0 && out_of_range == 0; }

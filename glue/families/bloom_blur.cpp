@@ -3,6 +3,7 @@
 // texture, and the bridge to its C twin (c_ref/twins/bloom_blur.c).
 #include "twins/bloom_blur.h"
 #include "families/family.h"
+#include "families/hard_cases.h"
 #include "families/hdr_inputs.h"
 
 namespace {
@@ -47,42 +48,10 @@ void random_pixel(Rng &r, ts_vec4f rec[BB_SLOTS]) {
   rec[BB_SLOT_PARAMS] = ts_v4f(r.next() % 2 ? 1.f : r.uniform(0.f, 2.f), 0.f, 0.f, 0.f);
 }
 
-const char *const kHardCases[] = {
-    "NaN position",       "Inf position",       "position -1e30",     "position 1e30",
-    "position 0 (corner)", "zero inverse size", "NaN inverse size",   "huge inverse size 1e30",
-    "NaN scale",          "zero scale",         "negative scale",     "scale 1e30 (overflow)",
-    "scale 65504",        "last pixel centre",
-};
-const int kNumHardCases = sizeof kHardCases / sizeof kHardCases[0];
-
-void hard_pixel(Rng &r, int c, ts_vec4f rec[BB_SLOTS]) {
-  random_pixel(r, rec);
-  ts_vec4f &p = rec[BB_SLOT_POS];
-  ts_vec4f &s = rec[BB_SLOT_SIZE];
-  ts_vec4f &k = rec[BB_SLOT_PARAMS];
-  switch (c) {
-    case 0: p.y = kHdrNaN; break;
-    case 1: p.x = -kHdrInf; break;
-    case 2: p = ts_v4f(-1e30f, -1e30f, 0, 0); break;
-    case 3: p = ts_v4f(2.5f, 1e30f, 0, 0); break;
-    case 4: p = ts_v4f(0, 0, 0, 0); break;
-    case 5: s.z = 0.f; s.w = 0.f; break;
-    case 6: s.w = kHdrNaN; s.z = kHdrNaN; break;
-    case 7: s.z = 1e30f; s.w = 1e30f; break;
-    case 8: k.x = kHdrNaN; break;
-    case 9: k.x = 0.f; break;
-    case 10: k.x = -1.f; break;
-    case 11: k.x = 1e30f; break;
-    case 12: k.x = 65504.f; break;
-    case 13: p = ts_v4f(kSourceW - 0.5f, kSourceH - 0.5f, 0, 0); break;
-    default: break;
-  }
-}
-
 void make_inputs(InputSet set, int w, int h, uint32_t seed, FamilyInputs *out) {
   Rng r(seed);
-  fill_record_grid<BB_SLOTS>(set, w, h, kHardCases, kNumHardCases, out, [&](ts_vec4f *rec) { random_pixel(r, rec); },
-                   [&](int c, ts_vec4f *rec) { hard_pixel(r, c, rec); });
+  // The hard cases: tests/conform/bloom_blur.cases.
+  fill_record_grid("bloom_blur", set, w, h, BB_SLOTS, r, [&](ts_vec4f *rec) { random_pixel(r, rec); }, out);
   out->textures = {hdr_test_texture(r, "u_source", kSourceW, kSourceH, true)};
 }
 

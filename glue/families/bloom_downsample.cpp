@@ -3,6 +3,7 @@
 // the bridge to its C twin (c_ref/twins/bloom_downsample.c).
 #include "twins/bloom_downsample.h"
 #include "families/family.h"
+#include "families/hard_cases.h"
 #include "families/hdr_inputs.h"
 
 namespace {
@@ -49,42 +50,10 @@ void random_pixel(Rng &r, ts_vec4f rec[BD_SLOTS]) {
   rec[BD_SLOT_SHAPE] = ts_v4f(r.uniform(0, 1), r.uniform(0, 1), r.uniform(0, 1), r.uniform(0.5f, 3.f));
 }
 
-const char *const kHardCases[] = {
-    "NaN position",        "Inf position",          "position -1e30",        "position 1e30",
-    "position 0 (corner)", "last pixel centre",     "zero inverse size",     "NaN inverse size",
-    "tint exponent 0",     "tint exponent 1e4",     "NaN tint",              "negative tint",
-    "huge inverse size 1e30", "Source's tint (0.3, 0.59, 0.11), exponent 2.2",
-};
-const int kNumHardCases = sizeof kHardCases / sizeof kHardCases[0];
-
-void hard_pixel(Rng &r, int c, ts_vec4f rec[BD_SLOTS]) {
-  random_pixel(r, rec);
-  ts_vec4f &p = rec[BD_SLOT_POS];
-  ts_vec4f &s = rec[BD_SLOT_SIZE];
-  ts_vec4f &t = rec[BD_SLOT_SHAPE];
-  switch (c) {
-    case 0: p.x = kHdrNaN; break;
-    case 1: p.y = kHdrInf; break;
-    case 2: p = ts_v4f(-1e30f, -1e30f, 0, 0); break;
-    case 3: p = ts_v4f(1e30f, 3.5f, 0, 0); break;
-    case 4: p = ts_v4f(0, 0, 0, 0); break;
-    case 5: p = ts_v4f(kSourceW / 4 - 0.5f, kSourceH / 4 - 0.5f, 0, 0); break;
-    case 6: s.z = 0.f; s.w = 0.f; break;
-    case 7: s.z = kHdrNaN; break;
-    case 8: t.w = 0.f; break;
-    case 9: t.w = 1e4f; break;
-    case 10: t.y = kHdrNaN; break;
-    case 11: t = ts_v4f(-0.3f, -0.59f, -0.11f, 2.2f); break;
-    case 12: s.w = 1e30f; break;
-    case 13: t = ts_v4f(0.3f, 0.59f, 0.11f, 2.2f); break;
-    default: break;
-  }
-}
-
 void make_inputs(InputSet set, int w, int h, uint32_t seed, FamilyInputs *out) {
   Rng r(seed);
-  fill_record_grid<BD_SLOTS>(set, w, h, kHardCases, kNumHardCases, out, [&](ts_vec4f *rec) { random_pixel(r, rec); },
-                   [&](int c, ts_vec4f *rec) { hard_pixel(r, c, rec); });
+  // The hard cases: tests/conform/bloom_downsample.cases.
+  fill_record_grid("bloom_downsample", set, w, h, BD_SLOTS, r, [&](ts_vec4f *rec) { random_pixel(r, rec); }, out);
   out->textures = {hdr_test_texture(r, "u_source", kSourceW, kSourceH, true)};
 }
 

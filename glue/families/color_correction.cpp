@@ -6,6 +6,7 @@
 #include "families/color_correction_inputs.h"
 #include "twins/color_correction.h"
 #include "families/family.h"
+#include "families/hard_cases.h"
 
 namespace {
 
@@ -73,71 +74,22 @@ void random_pixel(Rng &r, int n, ts_vec4f rec[CC_SLOTS]) {
   rec[CC_SLOT_LUT] = cc_lut_params(n);
 }
 
-const char *const kHardCases[] = {
-    "black (0, 0, 0)",          "white (1, 1, 1): the top cell",  "colour on lattice nodes k/(N-1)",
-    "just above a node",        "just below a node",              "1 - ulp",
-    "NaN colour",               "+Inf colour",                    "-Inf colour",
-    "colour -1e30",             "colour 65504",                   "denormal colour",
-    "-0 colour",                "NaN weights",                    "Inf weights",
-    "-Inf and huge weights",    "NaN default weight",             "Inf default weight on black",
-    "all weights 0",            "NaN and Inf alpha",              "mixed specials per channel",
-};
-const int kNumHardCases = sizeof kHardCases / sizeof kHardCases[0];
+// The hard grid's LUT edge: an odd 17^3 (a common .cube edge), so that both power-of-two and
+// other edges are addressed (the random grid has Source's 32^3).
+constexpr int kHardLutEdge = 17;
 
-float lattice(Rng &r, int n) { return static_cast<float>(r.next() % static_cast<uint32_t>(n)) / static_cast<float>(n - 1); }
-
-void hard_pixel(Rng &r, int n, int c, ts_vec4f rec[CC_SLOTS]) {
-  random_pixel(r, n, rec);
-  ts_vec4f &col = rec[CC_SLOT_COLOR];
-  ts_vec4f &w = rec[CC_SLOT_WEIGHTS];
-  switch (c) {
-    case 0: col = ts_v4f(0, 0, 0, 1); break;
-    case 1: col = ts_v4f(1, 1, 1, 1); break;
-    case 2: col = ts_v4f(lattice(r, n), lattice(r, n), lattice(r, n), 1); break;
-    case 3: col = ts_v4f(std::nextafter(lattice(r, n), 2.f), std::nextafter(lattice(r, n), 2.f),
-                         std::nextafter(lattice(r, n), 2.f), 1); break;
-    case 4: col = ts_v4f(std::nextafter(lattice(r, n), -1.f), std::nextafter(lattice(r, n), -1.f),
-                         std::nextafter(lattice(r, n), -1.f), 1); break;
-    case 5: col = ts_v4f(0.99999994f, 0.99999994f, 0.99999994f, 1); break;
-    case 6: col = ts_v4f(kNaN, 0.5f, kNaN, 1); break;
-    case 7: col = ts_v4f(kInf, kInf, 0.25f, 1); break;
-    case 8: col = ts_v4f(-kInf, 0.75f, -kInf, 1); break;
-    case 9: col = ts_v4f(-1e30f, 0.5f, -1e30f, 1); break;
-    case 10: col = ts_v4f(65504.f, 0.5f, 65504.f, 1); break;
-    case 11: col = ts_v4f(1e-39f, -1e-39f, 1e-40f, 1); break;
-    case 12: col = ts_v4f(-0.f, -0.f, -0.f, -0.f); break;
-    case 13: w = ts_v4f(kNaN, kNaN, 0.5f, kNaN); break;
-    case 14: w = ts_v4f(kInf, 0.5f, kInf, kInf); break;
-    case 15: w = ts_v4f(-kInf, 1e30f, -1e30f, 3e38f); break;
-    case 16: rec[CC_SLOT_PARAMS].x = kNaN; break;
-    case 17: col = ts_v4f(0, 0, 0, 1); rec[CC_SLOT_PARAMS].x = kInf; break;
-    case 18: w = ts_v4f(0, 0, 0, 0); rec[CC_SLOT_PARAMS].x = 0.f; break;
-    case 19: col.w = (r.next() & 1) ? kNaN : kInf; break;
-    case 20: col = ts_v4f(kNaN, kInf, -0.f, kNaN); w = ts_v4f(kInf, kNaN, 0.f, -kInf); break;
-    default: break;
-  }
-}
+// lattice(): a random lattice node k/(N-1) of the hard grid's LUTs, for tests/conform/color_correction.cases.
+const CaseFunctionRegistrar kCaseFunctions("color_correction",
+                                           {{"lattice", {}, 1, "", [](const float *, const CaseEval &env, float *out) {
+                                               const uint32_t n = kHardLutEdge;
+                                               out[0] = static_cast<float>(env.rng->next() % n) / static_cast<float>(n - 1);
+                                             }}});
 
 void make_inputs(InputSet set, int w, int h, uint32_t seed, FamilyInputs *out) {
-  // Random set: Source's 32^3; hard set: an odd 17^3 (a common .cube edge), so that both
-  // power-of-two and other edges are addressed.
-  const int n = set == InputSet::Random ? 32 : 17;
-  out->resize(w, h, CC_SLOTS);
-  out->case_names.clear();
+  const int n = set == InputSet::Random ? 32 : kHardLutEdge;
   Rng r(seed);
-  for (int y = 0; y < h; ++y) {
-    for (int x = 0; x < w; ++x) {
-      ts_vec4f rec[CC_SLOTS];
-      if (set == InputSet::Random) {
-        random_pixel(r, n, rec);
-      } else {
-        const int c = (y * w + x) % kNumHardCases;
-        hard_pixel(r, n, c, rec);
-        out->case_names.push_back(kHardCases[c]);
-      }
-      for (int k = 0; k < CC_SLOTS; ++k) out->set_slot(x, y, k, rec[k]);
-    }
-  }
+  // The hard cases: tests/conform/color_correction.cases.
+  fill_record_grid("color_correction", set, w, h, CC_SLOTS, r, [&](ts_vec4f *rec) { random_pixel(r, n, rec); }, out);
   std::vector<Lut3D> luts;
   for (int i = 0; i < CC_MAX_LOOKUPS; ++i) luts.push_back(random_lut(r, n, set == InputSet::Hard));
   cc_set_luts(out, {&luts[0], &luts[1], &luts[2], &luts[3]}, true);

@@ -36,6 +36,7 @@ struct ShaderFamily {
   const char *name;
   int slots;
   std::vector<std::string> slot_names;
+  // The hard set applies tests/conform/<name>.cases (families/hard_cases.h: fill_record_grid).
   void (*make_inputs)(InputSet set, int w, int h, uint32_t seed, FamilyInputs *out);
   ts_vec4f (*eval_f)(const Variant &v, const FamilyInputs &in, int x, int y);
   ts_vec4d (*eval_d)(const Variant &v, const FamilyInputs &in, int x, int y);
@@ -92,29 +93,6 @@ std::vector<const BenchSection *> bench_sections();
 // #defines for a variant: each combo value, the tier (TS_TIER_PS20/PS2B/SM3) and
 // the input mode (TS_CONFORM, TS_DEFERRED, or nothing for production).
 std::vector<Define> variant_defines(const Variant &v, InputMode mode);
-
-// Fills a w x h grid of input records: random records, or for the hard set hard case
-// (y*w + x) % num_hard applied to a random record, labelled in case_names.
-// random_pixel(rec) and hard_pixel(case, rec) draw from the caller's generator.
-template <int Slots, class RandomPixel, class HardPixel>
-void fill_record_grid(InputSet set, int w, int h, const char *const *hard_names, int num_hard, FamilyInputs *out,
-                      RandomPixel random_pixel, HardPixel hard_pixel) {
-  out->resize(w, h, Slots);
-  out->case_names.clear();
-  for (int y = 0; y < h; ++y) {
-    for (int x = 0; x < w; ++x) {
-      ts_vec4f rec[Slots];
-      if (set == InputSet::Random) {
-        random_pixel(rec);
-      } else {
-        const int c = (y * w + x) % num_hard;
-        hard_pixel(c, rec);
-        out->case_names.push_back(hard_names[c]);
-      }
-      for (int k = 0; k < Slots; ++k) out->set_slot(x, y, k, rec[k]);
-    }
-  }
-}
 
 // The C sampler's view of a texture the shader samples (same filtering and wrapping).
 ts_tex2d tex2d_of(const TextureDesc &t);

@@ -2,12 +2,8 @@
 #include "families/hdr_inputs.h"
 
 #include <cmath>
-#include <limits>
 
 #include "math/hdr_formats.h"
-
-const float kHdrNaN = std::numeric_limits<float>::quiet_NaN();
-const float kHdrInf = std::numeric_limits<float>::infinity();
 
 TextureDesc hdr_test_texture(Rng &r, const std::string &sampler, int w, int h, bool linear) {
   TextureDesc t;

@@ -6,9 +6,6 @@
 
 #include "families/family.h"
 
-extern const float kHdrNaN;
-extern const float kHdrInf;
-
 // A w x h RGBA32F texture holding values an fp16 target can hold (each rounded toward
 // zero to half, as llvmpipe writes them: c_ref/math/hdr_formats.h): mostly a wide HDR
 // range (1e-3 .. 64, log-uniform), with some zeros, 65504s and half denormals.

@@ -2,6 +2,7 @@
 // combine): input records (random and hard cases), the half-quantised bloom
 // texture, and the bridge to its C twin (c_ref/twins/hdr_tonemap.c).
 #include "families/family.h"
+#include "families/hard_cases.h"
 #include "families/hdr_inputs.h"
 #include "math/hdr_formats.h"
 #include "twins/hdr_tonemap.h"
@@ -52,43 +53,10 @@ void random_pixel(Rng &r, ts_vec4f rec[HT_SLOTS]) {
   rec[HT_SLOT_PARAMS] = ts_v4f(r.uniform(0.05f, 4.f), r.uniform(0.f, 2.f), r.uniform(0.5f, 3.f), 0.f);
 }
 
-const char *const kHardCases[] = {
-    "frame 65504, scale 4 (overflow)", "NaN frame texel",        "zero tone-map scale",   "negative tone-map scale",
-    "NaN tone-map scale",              "tone-map scale 1e6",     "bloom exponent 0",      "NaN bloom exponent",
-    "Inf bloom amount",                "NaN position",           "position 1e30",         "zero inverse size",
-    "black frame, no bloom",           "bloom amount 0",
-};
-const int kNumHardCases = sizeof kHardCases / sizeof kHardCases[0];
-
-void hard_pixel(Rng &r, int c, ts_vec4f rec[HT_SLOTS]) {
-  random_pixel(r, rec);
-  ts_vec4f &p = rec[HT_SLOT_POS];
-  ts_vec4f &fb = rec[HT_SLOT_FRAME];
-  ts_vec4f &s = rec[HT_SLOT_SIZE];
-  ts_vec4f &k = rec[HT_SLOT_PARAMS];
-  switch (c) {
-    case 0: fb = ts_v4f(65504.f, 65504.f, 65504.f, 1.f); k.x = 4.f; break;
-    case 1: fb.z = kHdrNaN; break;
-    case 2: k.x = 0.f; break;
-    case 3: k.x = -2.f; break;
-    case 4: k.x = kHdrNaN; break;
-    case 5: k.x = 1e6f; break;
-    case 6: k.z = 0.f; break;
-    case 7: k.z = kHdrNaN; break;
-    case 8: k.y = kHdrInf; break;
-    case 9: p.x = kHdrNaN; break;
-    case 10: p = ts_v4f(1e30f, -1e30f, 0, 0); break;
-    case 11: s.z = 0.f; s.w = 0.f; break;
-    case 12: fb = ts_v4f(0, 0, 0, 1); k.y = 0.f; break;
-    case 13: k.y = 0.f; break;
-    default: break;
-  }
-}
-
 void make_inputs(InputSet set, int w, int h, uint32_t seed, FamilyInputs *out) {
   Rng r(seed);
-  fill_record_grid<HT_SLOTS>(set, w, h, kHardCases, kNumHardCases, out, [&](ts_vec4f *rec) { random_pixel(r, rec); },
-                   [&](int c, ts_vec4f *rec) { hard_pixel(r, c, rec); });
+  // The hard cases: tests/conform/hdr_tonemap.cases.
+  fill_record_grid("hdr_tonemap", set, w, h, HT_SLOTS, r, [&](ts_vec4f *rec) { random_pixel(r, rec); }, out);
   out->textures = {hdr_test_texture(r, "u_bloom", kBloomW, kBloomH, true)};
 }
 

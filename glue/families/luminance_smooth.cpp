@@ -2,6 +2,7 @@
 // auto-exposure luminance): input records (random and hard cases) and the bridge
 // to its C twin (c_ref/twins/luminance_smooth.c).
 #include "families/family.h"
+#include "families/hard_cases.h"
 #include "families/hdr_inputs.h"
 #include "math/hdr_formats.h"
 #include "twins/luminance_smooth.h"
@@ -46,42 +47,11 @@ void random_pixel(Rng &r, ts_vec4f rec[LS_SLOTS]) {
   rec[LS_SLOT_PARAMS] = ts_v4f(k == 0 ? 1.f : k == 1 ? 0.0625f : r.uniform(0.f, 1.f), r.uniform(0.05f, 4.f), 0.f, 0.f);
 }
 
-const char *const kHardCases[] = {
-    "colour 65504, tone-map scale 4 (Inf lum)", "NaN colour",        "Inf colour",        "NaN history",
-    "history 65504, alpha 0",                   "alpha 1 (no smoothing)", "NaN alpha",   "negative alpha",
-    "NaN tone-map scale",                       "negative colour",   "alpha 1e30",        "denormal colour",
-    "sRGB decode edge 0.04045",
-};
-const int kNumHardCases = sizeof kHardCases / sizeof kHardCases[0];
-
-void hard_pixel(Rng &r, int c, ts_vec4f rec[LS_SLOTS]) {
-  random_pixel(r, rec);
-  ts_vec4f &col = rec[LS_SLOT_COLOR];
-  ts_vec4f &h = rec[LS_SLOT_HISTORY];
-  ts_vec4f &p = rec[LS_SLOT_PARAMS];
-  switch (c) {
-    case 0: col = ts_v4f(65504.f, 65504.f, 65504.f, 1.f); p.y = 4.f; break;
-    case 1: col.x = kHdrNaN; break;
-    case 2: col.y = kHdrInf; break;
-    case 3: h.x = kHdrNaN; break;
-    case 4: h.x = 65504.f; p.x = 0.f; break;
-    case 5: p.x = 1.f; break;
-    case 6: p.x = kHdrNaN; break;
-    case 7: p.x = -0.5f; break;
-    case 8: p.y = kHdrNaN; break;
-    case 9: col = ts_v4f(-1.f, -0.5f, -2.f, 1.f); break;
-    case 10: p.x = 1e30f; break;
-    case 11: col = ts_v4f(1e-39f, 1e-39f, 1e-39f, 1.f); p.x = 1.f; break;
-    case 12: col = ts_v4f(0.04045f, 0.04045f, 0.04045f, 1.f); p.x = 1.f; p.y = 1.f; break;
-    default: break;
-  }
-}
-
 void make_inputs(InputSet set, int w, int h, uint32_t seed, FamilyInputs *out) {
   Rng r(seed);
   out->textures.clear();
-  fill_record_grid<LS_SLOTS>(set, w, h, kHardCases, kNumHardCases, out, [&](ts_vec4f *rec) { random_pixel(r, rec); },
-                   [&](int c, ts_vec4f *rec) { hard_pixel(r, c, rec); });
+  // The hard cases: tests/conform/luminance_smooth.cases.
+  fill_record_grid("luminance_smooth", set, w, h, LS_SLOTS, r, [&](ts_vec4f *rec) { random_pixel(r, rec); }, out);
 }
 
 void bind_uniforms(const GlFns &gl, GLuint program, const std::vector<ts_vec4f> &shared) {

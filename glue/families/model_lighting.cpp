@@ -1,19 +1,15 @@
 // tiershade glue: the model_lighting family: input records (random and hard
 // cases), and the bridge to its C twin (c_ref/twins/model_lighting.c).
 #include <cmath>
-#include <limits>
 #include <memory>
 
 #include "families/model_lighting.h"
 #include "families/family.h"
+#include "families/hard_cases.h"
 #include "twins/model_lighting.h"
 #include "twins/model_lighting_batch.h"
 
 namespace {
-
-const float kNaN = std::numeric_limits<float>::quiet_NaN();
-const float kInf = std::numeric_limits<float>::infinity();
-
 
 // The C views of the family's textures, in make_inputs' order.
 enum { TEX_ALBEDO, TEX_NORMAL, TEX_EXPONENT, TEX_WARP, TEX_ENVMAP, TEX_COUNT };
@@ -137,126 +133,10 @@ void random_pixel(Rng &r, ts_vec4f rec[ML_SLOTS]) {
   for (int i = 0; i < ML_MAX_LIGHTS; ++i) random_light(r, &rec[ML_SLOT_LIGHT0 + 5 * i]);
 }
 
-// The hard cases: each pixel of the hard set applies one of these to a random base record.
-const char *const kHardCases[] = {
-    "zero-length normal",        "denormal normal",          "huge normal 1e20",
-    "light at the shaded point", "N.L = 1 exactly",          "N.L = -1 exactly",
-    "N.L = 0 exactly",           "light colour 65504",       "tone-map scale 1e6",
-    "NaN in the normal",         "Inf in a light colour",    "NaN in the position",
-    "light at 1e30",             "spot exponent 0 and 1e4",  "spot cos at the outer cone",
-    "zero l and q, huge d",      "NaN in the ambient cube",  "Inf in the ambient cube",
-    "negative tone-map scale",   "NaN tone-map scale",       "NaN light count",
-    "NaN spot direction",        "huge albedo uv 1e7",       "unnormalised tiny normal 1e-19",
-    "NaN and Inf vertex attenuation", "all attenuation coefficients 0 (1/0)",
-    "Phong: zero-length normal after normal-map decode", "Phong: exponent 150, R.L = 1 to the last bit",
-    "Phong: exponent 150, R.L just below 1", "Phong: N.V = 0", "Phong: N.V slightly negative",
-    "Phong: light behind, pow(0, k)", "Phong: eye at the shaded point", "Phong: NaN exponent and boost",
-    "Phong: Inf envmap scale and rim boost", "Phong: huge exponent 1e6",
-};
-const int kNumHardCases = sizeof kHardCases / sizeof kHardCases[0];
-
-void hard_pixel(Rng &r, int c, ts_vec4f rec[ML_SLOTS]) {
-  random_pixel(r, rec);
-  ts_vec4f *l0 = &rec[ML_SLOT_LIGHT0];
-  const ts_vec3f n = ts_normalize3f(ts_v3f(rec[0].x, rec[0].y, rec[0].z));
-  auto make_directional = [&](ts_vec4f *l, ts_vec3f travel) {
-    l[0].w = 1.f;
-    l[1] = v4(travel, 0.f);
-    l[4] = ts_v4f(1, 0, 0, 0);
-  };
-  switch (c) {
-    case 0: rec[ML_SLOT_NORMAL] = ts_v4f(0, 0, 0, 0); break;
-    case 1: rec[ML_SLOT_NORMAL] = ts_v4f(1e-39f, -2e-39f, 3e-40f, 0); break;
-    case 2: rec[ML_SLOT_NORMAL] = ts_v4f(1e20f, -3e19f, 2e20f, 0); break;
-    case 3: l0[2] = rec[ML_SLOT_POSITION]; l0[0].w = 0.f; break;
-    case 4:  // an axis normal and a directional light travelling against it: N.L = 1
-      rec[ML_SLOT_NORMAL] = ts_v4f(0, 0, 1, 0);
-      make_directional(l0, ts_v3f(0, 0, -1));
-      break;
-    case 5:
-      rec[ML_SLOT_NORMAL] = ts_v4f(0, 1, 0, 0);
-      make_directional(l0, ts_v3f(0, 1, 0));
-      break;
-    case 6:
-      rec[ML_SLOT_NORMAL] = ts_v4f(1, 0, 0, 0);
-      make_directional(l0, ts_v3f(0, 0, 1));
-      break;
-    case 7:
-      for (int i = 0; i < ML_MAX_LIGHTS; ++i) {
-        rec[ML_SLOT_LIGHT0 + 5 * i].x = 65504.f;
-        rec[ML_SLOT_LIGHT0 + 5 * i].y = 65504.f;
-        rec[ML_SLOT_LIGHT0 + 5 * i].z = 65504.f;
-      }
-      rec[ML_SLOT_PARAMS].x = 4.f;
-      break;
-    case 8: rec[ML_SLOT_PARAMS].x = 1e6f; break;
-    case 9: rec[ML_SLOT_NORMAL].y = kNaN; break;
-    case 10: l0[0].x = kInf; break;
-    case 11: rec[ML_SLOT_POSITION].z = kNaN; break;
-    case 12: l0[2] = ts_v4f(1e30f, -1e30f, 1e30f, 1); l0[0].w = 0.f; break;
-    case 13:
-      l0[1].w = 1.f;
-      l0[3].x = 0.f;
-      rec[ML_SLOT_LIGHT0 + 5 + 1].w = 1.f;
-      rec[ML_SLOT_LIGHT0 + 5 + 3].x = 1e4f;
-      break;
-    case 14: {  // a spot light whose axis makes cos = cos_outer exactly is hard to build; use the axis itself
-      l0[0].w = 0.f;
-      l0[1].w = 1.f;
-      l0[3].z = 1.f;  // cos_outer = 1: the cone test sits at its edge for an on-axis point
-      l0[3].w = 1e30f;
-      break;
-    }
-    case 15: l0[4] = ts_v4f(1.f, 0.f, 0.f, 0.f); l0[2] = ts_v4f(3e18f, 0, 0, 1); l0[0].w = 0.f; break;
-    case 16: rec[ML_SLOT_AMBIENT + 2].y = kNaN; rec[ML_SLOT_AMBIENT + 3].y = kNaN; break;
-    case 17: rec[ML_SLOT_AMBIENT + 0].x = kInf; rec[ML_SLOT_AMBIENT + 1].x = kInf; break;
-    case 18: rec[ML_SLOT_PARAMS].x = -2.f; break;
-    case 19: rec[ML_SLOT_PARAMS].x = kNaN; break;
-    case 20: rec[ML_SLOT_PARAMS].y = kNaN; break;
-    case 21: l0[1] = ts_v4f(kNaN, 0, 1, 1); break;
-    case 22: rec[ML_SLOT_UV] = ts_v4f(1e7f, -3e7f, 0, 0); break;
-    case 23: rec[ML_SLOT_NORMAL] = v4(ts_scale3f(n, 1e-19f), 0.f); break;
-    case 24: rec[ML_SLOT_VERTEX_ATTEN] = ts_v4f(kNaN, kInf, kNaN, kInf); break;
-    case 25: l0[4] = ts_v4f(0, 0, 0, 0); l0[0].w = 0.f; break;
-    case 26:  // the normal map's grey block decodes to (0,0,0) (make_inputs)
-      rec[ML_SLOT_UV] = ts_v4f(1.f / 16, 1.f / 16, 0, 0);
-      break;
-    case 27:
-    case 28: {  // flat normal from the map's (0.5, 0.5, 1) block, where the exponent map's r = 1
-      rec[ML_SLOT_UV] = ts_v4f(3.f / 16, 1.f / 16, 0, 0);
-      rec[ML_SLOT_NORMAL] = ts_v4f(0, 0, 1, 0);
-      rec[ML_SLOT_TANGENT] = ts_v4f(1, 0, 0, 0);
-      rec[ML_SLOT_BITANGENT] = ts_v4f(0, 1, 0, 0);
-      rec[ML_SLOT_POSITION] = ts_v4f(0, 0, 0, 1);
-      rec[ML_SLOT_EYE] = ts_v4f(0, 3, 4, 1);  // V = (0, 0.6, 0.8), R = (0, -0.6, 0.8)
-      rec[ML_SLOT_PHONG] = ts_v4f(150.f, 149.f, 1.f, 0.f);
-      ts_vec3f L = ts_v3f(0, -0.6f, 0.8f);
-      if (c == 28) L = ts_normalize3f(ts_v3f(0.0005f, -0.6f, 0.8f));
-      make_directional(l0, ts_scale3f(L, -1.f));
-      break;
-    }
-    case 29:
-    case 30:
-      rec[ML_SLOT_NORMAL] = ts_v4f(0, 0, 1, 0);
-      rec[ML_SLOT_TANGENT] = ts_v4f(1, 0, 0, 0);
-      rec[ML_SLOT_BITANGENT] = ts_v4f(0, 1, 0, 0);
-      rec[ML_SLOT_UV] = ts_v4f(3.f / 16, 1.f / 16, 0, 0);
-      rec[ML_SLOT_POSITION] = ts_v4f(1, 2, 3, 1);
-      rec[ML_SLOT_EYE] = ts_v4f(5, 2, c == 29 ? 3.f : 2.99f, 1);
-      break;
-    case 31: make_directional(l0, ts_scale3f(n, 1.f)); break;  // travels along N: behind the surface
-    case 32: rec[ML_SLOT_EYE] = rec[ML_SLOT_POSITION]; break;
-    case 33: rec[ML_SLOT_PHONG].x = kNaN; rec[ML_SLOT_PHONG].z = kNaN; break;
-    case 34: rec[ML_SLOT_ENVMAP].x = kInf; rec[ML_SLOT_RIM].y = kInf; break;
-    case 35: rec[ML_SLOT_PHONG].x = 1e6f; rec[ML_SLOT_PHONG].y = 1e6f; break;
-    default: break;
-  }
-}
-
 void make_inputs(InputSet set, int w, int h, uint32_t seed, FamilyInputs *out) {
   Rng r(seed);
-  fill_record_grid<ML_SLOTS>(set, w, h, kHardCases, kNumHardCases, out, [&](ts_vec4f *rec) { random_pixel(r, rec); },
-                   [&](int c, ts_vec4f *rec) { hard_pixel(r, c, rec); });
+  // The hard cases: tests/conform/model_lighting.cases.
+  fill_record_grid("model_lighting", set, w, h, ML_SLOTS, r, [&](ts_vec4f *rec) { random_pixel(r, rec); }, out);
   // Textures: RGBA32F, bilinear (RGBA8 would take llvmpipe's 8-bit fixed-point
   // filtering path: platform notes section 4). Order: enum TEX_*.
   auto tex2d = [&](const char *name, int w, int h, bool repeat) {
@@ -284,7 +164,7 @@ void make_inputs(InputSet set, int w, int h, uint32_t seed, FamilyInputs *out) {
     }
   TextureDesc expmap = tex2d("u_exponent_map", 16, 16, true);
   for (float &v : expmap.rgba) v = r.uniform(0, 1);
-  // Hard-case blocks (hard_pixel): texels (0..1, 0..1) of the normal map are grey, so
+  // Hard-case blocks (tests/conform/model_lighting.cases): texels (0..1, 0..1) of the normal map are grey, so
   // they decode to a zero vector; texels (2..3, 0..1) are a flat (0.5, 0.5, 1) normal
   // with exponent-map r = 1 (exponent 150).
   for (int y = 0; y < 2; ++y)

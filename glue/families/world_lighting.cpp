@@ -4,6 +4,7 @@
 // shared with the demo and the benchmark through family_world_lighting.h.
 #include "families/world_lighting.h"
 
+#include "families/hard_cases.h"
 #include "twins/world_lighting_batch.h"
 
 #include <cmath>
@@ -127,9 +128,6 @@ const float kNmSpecial[][4] = {
 };
 const int kNumNmSpecial = sizeof kNmSpecial / sizeof kNmSpecial[0];
 
-// Centre of 2x2 block (bx, by) in uv.
-ts_vec2f block_uv(int bx, int by, int w, int h) { return ts_v2f((bx + 1.f) / w, (by + 1.f) / h); }
-
 }  // namespace
 
 wl_variant wl_variant_of(const Variant &v) {
@@ -239,126 +237,10 @@ void random_pixel(Rng &r, ts_vec4f rec[WL_SLOTS]) {
   rec[WL_SLOT_FOG_PARAMS] = ts_v4f(1.f / range, start / range, 0, 0);
 }
 
-const char *const kHardCases[] = {
-    "zero-length normal texel",     "normal texel pointing down (zero RNM weights)", "NaN normal texel",
-    "huge normal texel 1e30",       "ssbump texel 0 (zero weights)", "normal texel = b0",
-    "grazing N.V = 0",              "N.V slightly negative",       "N.V = 1",
-    "zero eye vector",              "zero tangent frame",          "NaN eye vector",
-    "lightmap 65504",               "lightmap Inf",                "lightmap 1e30",
-    "RGBE largest exponent",        "RGBE smallest exponent",      "lightmap NaN",
-    "lightmap denormals",           "lightmap black, small mantissas", "cube texel 65504/Inf/NaN",
-    "envmap scale and tint 65504",  "envmap scale Inf",            "contrast 1, saturation 0, R0 0",
-    "negative saturation, contrast -1, R0 NaN", "fast-path defaults exactly", "tone-map scale 1e6",
-    "tone-map scale NaN",           "fog range 0 (1/0), depth 0",  "fog NaN density, huge depth",
-    "huge uvs 1e7",                 "NaN lightmap uv",             "lightmap tint Inf",
-};
-const int kNumHardCases = sizeof kHardCases / sizeof kHardCases[0];
-
-void aim_normal_block(ts_vec4f rec[WL_SLOTS], int i) {
-  const ts_vec2f uv = block_uv(2 * i, kTexSize / 2, kTexSize, kTexSize);
-  rec[WL_SLOT_UV].x = uv.x;
-  rec[WL_SLOT_UV].y = uv.y;
-}
-// The three bumped samples land on lightmap blocks i+1, i+2, i+3 (the flat one on block i).
-void aim_lightmap_block(ts_vec4f rec[WL_SLOTS], int i) {
-  const ts_vec2f uv = block_uv(2 * i, kPageH / 2, kPageW, kPageH);
-  rec[WL_SLOT_UV].z = uv.x;
-  rec[WL_SLOT_UV].w = uv.y;
-  rec[WL_SLOT_LM_OFFSET].x = 2.f / kPageW;
-  rec[WL_SLOT_LM_OFFSET].y = 0.f;
-}
-// World frame = tangent axes, a flat normal texel, eye along N: R = N = dir.
-void aim_reflection(ts_vec4f rec[WL_SLOTS], ts_vec3f dir) {
-  aim_normal_block(rec, 4);
-  rec[WL_SLOT_NORMAL] = v4(dir, 0);
-  rec[WL_SLOT_TANGENT] = ts_v4f(0, 0, 0, 0);
-  rec[WL_SLOT_BINORMAL] = ts_v4f(0, 0, 0, 0);
-  rec[WL_SLOT_EYE] = v4(dir, 0);
-}
-
-void hard_pixel(Rng &r, int c, ts_vec4f rec[WL_SLOTS]) {
-  random_pixel(r, rec);
-  switch (c) {
-    case 0: aim_normal_block(rec, 0); break;
-    case 1: aim_normal_block(rec, 1); break;
-    case 2: aim_normal_block(rec, 2); break;
-    case 3: aim_normal_block(rec, 3); break;
-    case 4: aim_normal_block(rec, 5); break;
-    case 5: aim_normal_block(rec, 6); break;
-    case 6:  // flat normal texel, N = +Z, eye along +X: N.V = 0 exactly
-      aim_normal_block(rec, 4);
-      rec[WL_SLOT_NORMAL] = ts_v4f(0, 0, 1, 0);
-      rec[WL_SLOT_TANGENT] = ts_v4f(1, 0, 0, 0);
-      rec[WL_SLOT_BINORMAL] = ts_v4f(0, 1, 0, 0);
-      rec[WL_SLOT_EYE] = ts_v4f(3, 0, 0, 0);
-      break;
-    case 7:
-      aim_normal_block(rec, 4);
-      rec[WL_SLOT_NORMAL] = ts_v4f(0, 0, 1, 0);
-      rec[WL_SLOT_TANGENT] = ts_v4f(1, 0, 0, 0);
-      rec[WL_SLOT_BINORMAL] = ts_v4f(0, 1, 0, 0);
-      rec[WL_SLOT_EYE] = ts_v4f(1, 0, -1e-3f, 0);
-      break;
-    case 8: aim_reflection(rec, ts_v3f(0, 0, 1)); break;
-    case 9: rec[WL_SLOT_EYE] = ts_v4f(0, 0, 0, 0); break;
-    case 10:
-      rec[WL_SLOT_NORMAL] = rec[WL_SLOT_TANGENT] = rec[WL_SLOT_BINORMAL] = ts_v4f(0, 0, 0, 0);
-      break;
-    case 11: rec[WL_SLOT_EYE] = ts_v4f(kNaN, 1, 0, 0); break;
-    case 12: aim_lightmap_block(rec, 0); break;
-    case 13: aim_lightmap_block(rec, 1); break;
-    case 14: aim_lightmap_block(rec, 2); break;
-    case 15:
-      aim_lightmap_block(rec, 3);
-      rec[WL_SLOT_LM_OFFSET].x = 0.f;  // every sample on the largest-exponent block
-      break;
-    case 16:
-      aim_lightmap_block(rec, 4);
-      rec[WL_SLOT_LM_OFFSET].x = 0.f;
-      break;
-    case 17: aim_lightmap_block(rec, 5); break;  // black, NaN, denormals, small mantissas
-    case 18: aim_lightmap_block(rec, 6); break;
-    case 19: aim_lightmap_block(rec, 7); rec[WL_SLOT_LM_OFFSET].x = -2.f / kPageW; break;
-    case 20: aim_reflection(rec, ts_normalize3f(ts_v3f(-0.5f - 0.1f * (r.next() % 4), -1, 0.5f))); break;
-    case 21: rec[WL_SLOT_ENV_TINT] = ts_v4f(65504.f, 65504.f, 65504.f, 65504.f); break;
-    case 22: rec[WL_SLOT_ENV_TINT].w = kInf; break;
-    case 23: rec[WL_SLOT_ENV_PARAMS] = ts_v4f(1, 0, 1, 0); break;
-    case 24: rec[WL_SLOT_ENV_PARAMS] = ts_v4f(-1, -1, 0.5f, kNaN); break;
-    case 25: rec[WL_SLOT_ENV_PARAMS] = ts_v4f(0, 1, 0, 1); break;
-    case 26: rec[WL_SLOT_TINT_SCALE].w = 1e6f; break;
-    case 27: rec[WL_SLOT_TINT_SCALE].w = kNaN; break;
-    case 28:
-      rec[WL_SLOT_FOG_PARAMS] = ts_v4f(kInf, kInf, 0, 0);
-      rec[WL_SLOT_LM_OFFSET].z = 0.f;
-      break;
-    case 29:
-      rec[WL_SLOT_FOG_COLOR].w = kNaN;
-      rec[WL_SLOT_LM_OFFSET].z = 1e38f;
-      break;
-    case 30: rec[WL_SLOT_UV] = ts_v4f(1e7f, -3e7f, 1e7f, -1e7f); break;
-    case 31: rec[WL_SLOT_UV].z = kNaN; break;
-    case 32: rec[WL_SLOT_TINT_SCALE].x = kInf; break;
-    default: break;
-  }
-}
-
 void make_inputs(InputSet set, int w, int h, uint32_t seed, FamilyInputs *out) {
-  out->resize(w, h, WL_SLOTS);
-  out->case_names.clear();
   Rng r(seed);
-  for (int y = 0; y < h; ++y) {
-    for (int x = 0; x < w; ++x) {
-      ts_vec4f rec[WL_SLOTS];
-      if (set == InputSet::Random) {
-        random_pixel(r, rec);
-      } else {
-        const int c = (y * w + x) % kNumHardCases;
-        hard_pixel(r, c, rec);
-        out->case_names.push_back(kHardCases[c]);
-      }
-      for (int k = 0; k < WL_SLOTS; ++k) out->set_slot(x, y, k, rec[k]);
-    }
-  }
+  // The hard cases: tests/conform/world_lighting.cases (aimed at the special blocks above).
+  fill_record_grid("world_lighting", set, w, h, WL_SLOTS, r, [&](ts_vec4f *rec) { random_pixel(r, rec); }, out);
   wl_test_textures(r, &out->textures);
 }
 
