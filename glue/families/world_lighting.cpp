@@ -134,7 +134,7 @@ ts_vec2f block_uv(int bx, int by, int w, int h) { return ts_v2f((bx + 1.f) / w, 
 
 wl_variant wl_variant_of(const Variant &v) {
   wl_variant w;
-  w.tier = v.tier == Tier::PS20 ? WL_TIER_PS20 : v.tier == Tier::PS2B ? WL_TIER_PS2B : WL_TIER_SM3;
+  w.tier = tier_id(v.tier);
   w.bumpmap = v.value("BUMPMAP");
   w.encoding = v.value("LIGHTMAP_ENCODING");
   w.envmap = v.value("ENVMAP");

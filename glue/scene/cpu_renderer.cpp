@@ -6,6 +6,9 @@
 #include <cmath>
 #include <cstring>
 
+#include <glm/glm.hpp>
+#include <glm/gtc/type_ptr.hpp>
+
 #include "base/parallel_rows.h"
 #include "families/family.h"
 #include "families/model_lighting.h"
@@ -91,10 +94,11 @@ void vertex_stage(const PreparedScene &p, const PreparedDraw &d, std::vector<flo
   for (size_t i = 0; i < n; ++i) {
     const float *P = &d.position[i * 3], *N = &d.normal[i * 3], *T = &d.tangent[i * 4], *UV = &d.uv[i * 2];
     float *c = &(*clip)[i * 4];
+    // u_view_proj * vec4(P, 1) in float, summed left to right as llvmpipe's vertex shader
+    // does (the visibility must match GL's): not glm's mat4 * vec4, which sums in pairs.
     for (int r = 0; r < 4; ++r) c[r] = m[r] * P[0] + m[4 + r] * P[1] + m[8 + r] * P[2] + m[12 + r];
     float *v = &(*vary)[i * kVary];
-    const float B[3] = {(N[1] * T[2] - N[2] * T[1]) * T[3], (N[2] * T[0] - N[0] * T[2]) * T[3],
-                        (N[0] * T[1] - N[1] * T[0]) * T[3]};
+    const glm::vec3 B = glm::cross(glm::make_vec3(N), glm::make_vec3(T)) * T[3];  // cross(N, T) * w: the same products
     auto put = [&](int slot, float x, float y, float z, float w) {
       v[slot * 4 + 0] = x;
       v[slot * 4 + 1] = y;

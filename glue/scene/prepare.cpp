@@ -234,7 +234,7 @@ bool model_draw(const Scene &s, const PreparedScene &ps, const SceneDrawChoice &
   // Lights: the tier's limit per pixel, the rest folded into the cube (docs/light_folding.md).
   std::vector<ts_light> lights;
   for (const SceneLight &l : s.lights) lights.push_back(l.light);
-  const int max_local = tier == Tier::PS20 ? 2 : 4;
+  const int max_local = max_local_lights(tier);
   std::vector<int> kept(lights.size() + 1);
   const float cf[3] = {static_cast<float>(center[0]), static_cast<float>(center[1]), static_cast<float>(center[2])};
   const int half = v.value("HALF_LAMBERT");

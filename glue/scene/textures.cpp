@@ -4,10 +4,11 @@
 #include <algorithm>
 #include <cmath>
 
+#include <glm/gtc/constants.hpp>
+
 #include "io/image_io.h"
 
 namespace {
-const double kPi = 3.14159265358979323846;
 
 TextureDesc tex2d(const char *sampler, int w, int h, bool repeat) {
   TextureDesc t;
@@ -47,7 +48,7 @@ TextureDesc make_bump_normal_map(const char *sampler, int n) {
       const double r = std::sqrt(fu * fu + fv * fv);
       double gx = 0, gy = 0;
       if (r < 0.4 && r > 1e-9) {
-        const double dh = -0.9 * std::sin(r / 0.4 * kPi) ;  // slope of the dimple
+        const double dh = -0.9 * std::sin(r / 0.4 * glm::pi<double>()) ;  // slope of the dimple
         gx = dh * fu / r;
         gy = dh * fv / r;
       }
@@ -68,7 +69,7 @@ TextureDesc make_exponent_map(const char *sampler, int n) {
   for (int y = 0; y < n; ++y) {
     for (int x = 0; x < n; ++x) {
       float *p = &t.rgba[(static_cast<size_t>(y) * n + x) * 4];
-      p[0] = static_cast<float>(0.05 + 0.6 * (0.5 + 0.5 * std::cos(2 * kPi * y / n * 2)));  // exponent 8..97
+      p[0] = static_cast<float>(0.05 + 0.6 * (0.5 + 0.5 * std::cos(2 * glm::pi<double>() * y / n * 2)));  // exponent 8..97
       p[1] = static_cast<float>(x) / n;                                                     // albedo-tint mask
       p[2] = 0.f;
       p[3] = 1.f;                                                                            // rim mask
@@ -118,8 +119,8 @@ bool cube_from_probe(const std::string &path, const char *sampler, int size, Tex
   if (!read_hdr(path, &probe, err)) return false;
   // Lat-long lookup: u = atan2(x, -z) / 2pi + 0.5, v = acos(y) / pi (row 0 = bottom in ImageF).
   auto sample = [&](const double d[3], double rgb[3]) {
-    const double u = std::atan2(d[0], -d[2]) / (2 * kPi) + 0.5;
-    const double v = std::acos(std::max(-1.0, std::min(1.0, d[1]))) / kPi;
+    const double u = std::atan2(d[0], -d[2]) / (2 * glm::pi<double>()) + 0.5;
+    const double v = std::acos(std::max(-1.0, std::min(1.0, d[1]))) / glm::pi<double>();
     const double fx = u * probe.w - 0.5, fy = (1 - v) * probe.h - 0.5;
     const int x0 = static_cast<int>(std::floor(fx)), y0 = static_cast<int>(std::floor(fy));
     const double wx = fx - x0, wy = fy - y0;
@@ -150,10 +151,10 @@ bool cube_from_probe(const std::string &path, const char *sampler, int size, Tex
   const double axes[6][3] = {{1, 0, 0}, {-1, 0, 0}, {0, 1, 0}, {0, -1, 0}, {0, 0, 1}, {0, 0, -1}};
   double sum[6][3] = {}, wsum[6] = {};
   for (int y = 0; y < probe.h; ++y) {
-    const double theta = (1 - (y + 0.5) / probe.h) * kPi;
+    const double theta = (1 - (y + 0.5) / probe.h) * glm::pi<double>();
     const double dw = std::sin(theta);
     for (int x = 0; x < probe.w; ++x) {
-      const double phi = ((x + 0.5) / probe.w - 0.5) * 2 * kPi;
+      const double phi = ((x + 0.5) / probe.w - 0.5) * 2 * glm::pi<double>();
       const double d[3] = {std::sin(theta) * std::sin(phi), std::cos(theta), -std::sin(theta) * std::cos(phi)};
       for (int a = 0; a < 6; ++a) {
         const double c = d[0] * axes[a][0] + d[1] * axes[a][1] + d[2] * axes[a][2];
