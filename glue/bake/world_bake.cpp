@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "bake/glm_ts.h"
+#include "base/cube_faces.h"
 #include "offline/envmap_probes.h"
 #include "offline/lightmap_encoding.h"
 
@@ -82,10 +83,7 @@ bool bake_world(const WorldBakeInput &s, WorldBake *out, std::string *err) {
       for (int j = 0; j < N; ++j) {
         for (int i = 0; i < N; ++i) {
           const double sc = 2 * (i + 0.5) / N - 1, tc = 2 * (j + 0.5) / N - 1;
-          // GL cube face table (major axis, sc, tc): +X (-z, -y), -X (z, -y), +Y (x, z), -Y (x, -z), +Z (x, -y), -Z (-x, -y).
-          const glm::dvec3 dirs[6] = {{1, -tc, -sc}, {-1, -tc, sc}, {sc, 1, tc},
-                                      {sc, -1, -tc}, {sc, -tc, 1}, {-sc, -tc, -1}};
-          const glm::dvec3 d = glm::normalize(dirs[face]);
+          const glm::dvec3 d = cube_face_direction(face, sc, tc);
           glm::dvec3 rad(0.0);
           double t, a, b;
           const int hit = world_cast(s.faces, pos, to_ts(d), &t, &a, &b);
