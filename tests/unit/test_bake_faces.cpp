@@ -125,10 +125,7 @@ void attenuation() {
 
 int main() {
   ts_math_init();
-  faces();
-  pool();
-  cube();
-  attenuation();
+  for (void (*part)() : {faces, pool, cube, attenuation}) part();
   printf("%d passed, %d failed\n", g_passed, g_failed);
   return g_failed ? 1 : 0;
 }
