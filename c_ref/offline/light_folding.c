@@ -12,6 +12,13 @@
 
 #include "math/ts_math.h"
 
+/* The attenuation formula once: common_lights.h's light_attenuation, instantiated
+ * here in double (light_attenuation_d). */
+#include "math/ts_generic.h"
+#include "math/ts_generic_double.h"
+#include "common/common_math.h"
+#include "common/common_lights.h"
+
 /* Fold constants (docs/light_folding.md, "Derivation"): the ambient cube
  * integrates to (2 pi / 3) * sum(faces) over the sphere of normals; a Lambert
  * light to pi * I, a half-Lambert light to (4 pi / 3) * I. */
@@ -164,33 +171,29 @@ int ts_light_pack(const ts_light *l, float out[5][4], char *err, size_t errlen)
   return 1;
 }
 
-/* ts_light_attenuation of common_lights.glsl in double on the packed floats. */
+double ts_packed_light_attenuation(const float packed[5][4], const double p[3], double to_light[3])
+{
+  ts_vec4d l[5];
+  for (int k = 0; k < 5; ++k) l[k] = ts_v4d(packed[k][0], packed[k][1], packed[k][2], packed[k][3]);
+  ts_vec3d L;
+  const double att = light_attenuation_d(l, ts_v3d(p[0], p[1], p[2]), &L);
+  if (to_light) {
+    to_light[0] = L.x;
+    to_light[1] = L.y;
+    to_light[2] = L.z;
+  }
+  return att;
+}
+
 void ts_light_incident(const ts_light *l, const float p[3], double rgb[3], double to_light[3])
 {
   float pk[5][4];
   for (int c = 0; c < 3; ++c) rgb[c] = to_light[c] = 0.0;
   if (!p || !validate(l, NULL, 0)) return;
   pack_valid(l, pk);
-
-  const int directional = pk[0][3] > 0.5f;
-  double Lv[3], L[3];
-  for (int c = 0; c < 3; ++c) Lv[c] = (double)pk[2][c] - (double)p[c];
-  /* d2 clamped at TS_MIN_LENGTH2 = 1e-30 and d at 1e18 (common_lights.glsl). */
-  double d2 = ts_maxd(Lv[0] * Lv[0] + Lv[1] * Lv[1] + Lv[2] * Lv[2], 1.0e-30);
-  double rinv = ts_inversesqrtd(d2);
-  double d = ts_mind(d2 * rinv, 1.0e18);
-  for (int c = 0; c < 3; ++c) L[c] = directional ? -(double)pk[1][c] : Lv[c] * rinv;
-  /* Fact sheet section 4: 1/(c + l d + q d^2); directional lights: 1. */
-  double dist_att = directional ? 1.0 : 1.0 / (((double)pk[4][0] + (double)pk[4][1] * d) + (double)pk[4][2] * (d * d));
-  /* Fact sheet section 4: saturate(pow(max(1e-4, (cos - spot.z) spot.w), spot.x)). */
-  double cos_a = -(L[0] * pk[1][0] + L[1] * pk[1][1] + L[2] * pk[1][2]);
-  double spot = ts_saturated(ts_powd(ts_maxd(1.0e-4, (cos_a - (double)pk[3][2]) * (double)pk[3][3]), (double)pk[3][0]));
-  spot = pk[1][3] > 0.5f ? spot : 1.0;
-  double att = dist_att * spot;
-  for (int c = 0; c < 3; ++c) {
-    rgb[c] = (double)pk[0][c] * att;
-    to_light[c] = L[c];
-  }
+  const double pd[3] = {p[0], p[1], p[2]};
+  const double att = ts_packed_light_attenuation(pk, pd, to_light);
+  for (int c = 0; c < 3; ++c) rgb[c] = (double)pk[0][c] * att;
 }
 
 static double luminance(const double rgb[3]) { return TS_LUMA_R * rgb[0] + TS_LUMA_G * rgb[1] + TS_LUMA_B * rgb[2]; }

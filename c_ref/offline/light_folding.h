@@ -51,6 +51,12 @@ int ts_light_pack(const ts_light *l, float out[5][4], char *err, size_t errlen);
  * p). A light ts_light_pack rejects gives rgb = to_light = 0. */
 void ts_light_incident(const ts_light *l, const float p[3], double rgb[3], double to_light[3]);
 
+/* Distance x cone attenuation of a packed light (5 vec4 as ts_light_pack writes
+ * them) at p: light_attenuation of c_ref/common/common_lights.h (the twin of
+ * common_lights.glsl) in double, the one host-side copy of the formula. The unit
+ * direction towards the light goes to to_light (when not NULL). */
+double ts_packed_light_attenuation(const float packed[5][4], const double p[3], double to_light[3]);
+
 /* Keeps the max_local lights with the largest incident luminance
  * (0.2126 R + 0.7152 G + 0.0722 B) at `center` (ties: the lower index wins) and
  * folds every other valid light into cube[6][3] (+X -X +Y -Y +Z -Z, added to what

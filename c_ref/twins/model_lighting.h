@@ -6,6 +6,7 @@
 #define TS_MODEL_LIGHTING_H
 #include "math/ts_math.h"
 #include "math/ts_sampler.h"
+#include "twins/tier_id.h"
 
 #ifdef __cplusplus
 extern "C" {
@@ -34,8 +35,6 @@ enum ml_slot {
   ML_SLOT_SELF_ILLUM = 41,  /* rgb tint, w amount */
   ML_SLOTS = 42
 };
-
-enum ts_tier_id { TS_TIER_ID_PS20 = 0, TS_TIER_ID_PS2B = 1, TS_TIER_ID_SM3 = 2 };
 
 typedef struct {
   int tier;           /* enum ts_tier_id */

@@ -6,6 +6,7 @@
 #define TS_WORLD_LIGHTING_H
 #include "math/ts_math.h"
 #include "math/ts_sampler.h"
+#include "twins/tier_id.h"
 
 #ifdef __cplusplus
 extern "C" {
@@ -27,13 +28,12 @@ enum wl_slot {
   WL_PIXEL_SLOTS = 6
 };
 
-enum wl_tier { WL_TIER_PS20 = 0, WL_TIER_PS2B = 1, WL_TIER_SM3 = 2 };
 enum wl_bump { WL_BUMP_NONE = 0, WL_BUMP_RNM = 1, WL_BUMP_SSBUMP = 2 };
 enum wl_encoding { WL_LM_FLOAT = 0, WL_LM_412 = 1, WL_LM_LDR = 2, WL_LM_RGBE = 3 };
 enum wl_mask { WL_MASK_NONE = 0, WL_MASK_TEXTURE = 1, WL_MASK_NORMAL_ALPHA = 2, WL_MASK_INV_BASE_ALPHA = 3 };
 
 typedef struct {
-  int tier;       /* enum wl_tier */
+  int tier;       /* enum ts_tier_id */
   int bumpmap;    /* BUMPMAP */
   int encoding;   /* LIGHTMAP_ENCODING */
   int envmap;     /* ENVMAP */

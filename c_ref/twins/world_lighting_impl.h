@@ -3,7 +3,7 @@
 
 static V3 FN(wl_lightmap)(const wl_variant *v, const ts_tex2d *lm, V2 uv, V2 offset, TS_REAL k) {
   V4 t = FN(sample2d)(lm, FN(lightmap_uv)(uv, offset, k));
-  if (v->tier == WL_TIER_PS20 && v->encoding == WL_LM_LDR) return FN(lightmap_ldr_to_linear_fast)(M(v3)(t.x, t.y, t.z));
+  if (v->tier == TS_TIER_ID_PS20 && v->encoding == WL_LM_LDR) return FN(lightmap_ldr_to_linear_fast)(M(v3)(t.x, t.y, t.z));
   return FN(lightmap_decode)(t, v->encoding);
 }
 
@@ -28,7 +28,7 @@ static V4 FN(world_lighting_impl)(const wl_variant *v, const ts_vec4f rec[WL_SLO
       n = M(sub3)(M(scale3)(t, K(2.0)), M(v3)(K(1.0), K(1.0), K(1.0)));
       diffuse = FN(rnm_blend)(FN(rnm_weights)(n), l0, l1, l2);
     } else {
-      n = v->tier == WL_TIER_PS20 ? FN(ssbump_direction)(t) : FN(ssbump_normal)(t);
+      n = v->tier == TS_TIER_ID_PS20 ? FN(ssbump_direction)(t) : FN(ssbump_normal)(t);
       diffuse = FN(ssbump_blend)(t, l0, l1, l2);
     }
   }
@@ -56,10 +56,10 @@ static V4 FN(world_lighting_impl)(const wl_variant *v, const ts_vec4f rec[WL_SLO
     } else {
       spec = M(mul3)(env, tint);
     }
-    int full = v->tier != WL_TIER_SM3 || env_params.x != K(0.0) || env_params.y != K(1.0) || env_params.w != K(1.0);
+    int full = v->tier != TS_TIER_ID_SM3 || env_params.x != K(0.0) || env_params.y != K(1.0) || env_params.w != K(1.0);
     if (full) {
       spec = FN(envmap_saturation)(FN(envmap_contrast)(spec, env_params.x), env_params.y);
-      TS_REAL NdotV = v->tier == WL_TIER_PS20 ? FN(cosine_between)(N, E)
+      TS_REAL NdotV = v->tier == TS_TIER_ID_PS20 ? FN(cosine_between)(N, E)
                                               : M(dot3)(FN(safe_normalize)(N), FN(safe_normalize)(E));
       spec = M(scale3)(spec, FN(fresnel)(NdotV, env_params.z, env_params.w));
     }
@@ -68,7 +68,7 @@ static V4 FN(world_lighting_impl)(const wl_variant *v, const ts_vec4f rec[WL_SLO
     color = M(mul3)(M(mul3)(base_rgb, diffuse), M(scale3)(FN(xyz4)(tint_scale), tint_scale.w));
   }
 
-  if (v->tier != WL_TIER_PS20)
+  if (v->tier != TS_TIER_ID_PS20)
     color = FN(range_fog)(color, lm_offset.z, FN(vec4_in)(rec[WL_SLOT_FOG_COLOR]), FN(vec4_in)(rec[WL_SLOT_FOG_PARAMS]));
   /* Not FN(final_output): Source's range fog sits between its scale and its clamp. */
   (void)FN(final_output);

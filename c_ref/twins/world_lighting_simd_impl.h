@@ -19,7 +19,7 @@ static V3v VFN(wl_lightmap)(const wl_variant *v, const ts_tex2d *lm, VF u, VF w,
   const VF kv = VFN(splat)(k);
   const V4v t = VFN(tex2d)(lm, u + kv * ox, w + kv * oy);
   const V3v rgb = VFN(v3)(t.x, t.y, t.z);
-  if (v->tier == WL_TIER_PS20 && v->encoding == WL_LM_LDR) {
+  if (v->tier == TS_TIER_ID_PS20 && v->encoding == WL_LM_LDR) {
     const V3v s = VFN(scale3)(rgb, VFN(splat)(2.0f));
     const V3v q = VFN(mul3)(s, s);
     const VF four = VFN(splat)(4.0f);
@@ -100,7 +100,7 @@ static void VFN(wl_block)(const wl_variant *v, const wl_batch_input *in, const w
       n = VFN(sub3)(VFN(scale3)(t, VFN(splat)(2.0f)), VFN(v3)(one, one, one));
       diffuse = VFN(rnm_blend)(VFN(rnm_weights)(n), l0, l1, l2);
     } else {
-      n = v->tier == WL_TIER_PS20 ? VFN(ssbump_direction)(t) : VFN(safe_normalize)(VFN(ssbump_direction)(t));
+      n = v->tier == TS_TIER_ID_PS20 ? VFN(ssbump_direction)(t) : VFN(safe_normalize)(VFN(ssbump_direction)(t));
       diffuse = VFN(ssbump_blend)(t, l0, l1, l2);
     }
   }
@@ -131,10 +131,10 @@ static void VFN(wl_block)(const wl_variant *v, const wl_batch_input *in, const w
       spec = VFN(mul3)(env, tint);
     }
     /* full = tier != sm3 || contrast != 0 || saturation != 1 || R0 != 1 (per lane, unordered) */
-    const VI full = v->tier != WL_TIER_SM3 ? VFN(spliti)(-1)
+    const VI full = v->tier != TS_TIER_ID_SM3 ? VFN(spliti)(-1)
                                            : (env_params.x != 0.0f) | (env_params.y != 1.0f) | (env_params.w != 1.0f);
     V3v s2 = VFN(envmap_saturation)(VFN(envmap_contrast)(spec, env_params.x), env_params.y);
-    const VF NdotV = v->tier == WL_TIER_PS20 ? VFN(cosine_between)(N, E)
+    const VF NdotV = v->tier == TS_TIER_ID_PS20 ? VFN(cosine_between)(N, E)
                                               : VFN(dot3)(VFN(safe_normalize)(N), VFN(safe_normalize)(E));
     s2 = VFN(scale3)(s2, VFN(wl_fresnel)(NdotV, env_params.z, env_params.w));
     spec = VFN(sel3)(full, s2, spec);
@@ -142,7 +142,7 @@ static void VFN(wl_block)(const wl_variant *v, const wl_batch_input *in, const w
   } else {
     color = VFN(mul3)(VFN(mul3)(base_rgb, diffuse), VFN(scale3)(VFN(xyz)(tint_scale), tint_scale.w));
   }
-  if (v->tier != WL_TIER_PS20) {
+  if (v->tier != TS_TIER_ID_PS20) {
     const V4v fc = VFN(wl_rec)(in, WL_SLOT_FOG_COLOR, pix), fp = VFN(wl_rec)(in, WL_SLOT_FOG_PARAMS, pix);
     const VF f = VFN(saturate)(VFN(min)(fc.w, lm_offset.z * fp.x - fp.y));
     color = VFN(add3)(color, VFN(scale3)(VFN(sub3)(VFN(xyz)(fc), color), f * f));

@@ -7,6 +7,8 @@
 #include <fstream>
 #include <sstream>
 
+#include <glm/gtc/constants.hpp>
+
 #include "families/family.h"
 #include "offline/light_folding.h"
 #include "io/lights_file.h"
@@ -34,7 +36,7 @@ double sphere_integral(const ts_vec4f rec_in[ML_SLOTS], int channel, int half_la
     const ts_vec4d c = model_lighting_d(&v, rec, nullptr);
     sum += channel == 0 ? c.x : channel == 1 ? c.y : c.z;
   }
-  return sum * 4 * 3.14159265358979 / n;
+  return sum * 4 * glm::pi<double>() / n;
 }
 
 }  // namespace
@@ -72,7 +74,7 @@ int cmd_fold(int argc, char **argv) {
   } else {
     lights = default_sphere_scene().lights;
   }
-  const int max_local = tier == Tier::PS20 ? 2 : 4;
+  const int max_local = max_local_lights(tier);
   const int half_lambert = a.flag("--lambert") ? 0 : 1;
   const int n = static_cast<int>(lights.size());
   float cube[6][3] = {};

@@ -5,11 +5,12 @@
 #include <algorithm>
 #include <cmath>
 
+#include <glm/gtc/constants.hpp>
+
 namespace {
 
-const double kPi = 3.14159265358979323846;
-double rad(double deg) { return deg * kPi / 180.0; }
-double deg(double r) { return r * 180.0 / kPi; }
+double rad(double deg) { return deg * glm::pi<double>() / 180.0; }
+double deg(double r) { return r * 180.0 / glm::pi<double>(); }
 
 // IEC 61966-2-1 sRGB decoding: c <= 0.04045 -> c / 12.92, else ((c + 0.055) / 1.055)^2.4.
 double srgb_decode(double c) { return c <= 0.04045 ? c / 12.92 : std::pow((c + 0.055) / 1.055, 2.4); }

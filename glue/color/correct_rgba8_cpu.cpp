@@ -13,7 +13,7 @@ void cc_apply_rgba8_c(const cc_variant &v, const ts_vec4f *shared, const cc_luts
                       std::vector<uint8_t> *frame, int threads) {
   float code[256];  // the RGBA8 texel fetch, code by code
   for (int c = 0; c < 256; ++c) code[c] = ts_unorm8_to_float(static_cast<uint8_t>(c));
-  scene_parallel_rows(h, threads, [&](int y) {
+  parallel_rows(h, threads, [&](int y) {
     uint8_t *c8 = &(*frame)[static_cast<size_t>(y) * w * 4];
     std::vector<ts_vec4f> colour(static_cast<size_t>(w)), out(static_cast<size_t>(w));
     for (int x = 0; x < w; ++x) {

@@ -3,8 +3,8 @@
 
 #include <algorithm>
 #include <cstring>
-#include <thread>
 
+#include "base/parallel_rows.h"
 #include "conform/conform.h"
 
 bool gl_frame_setup(GlRenderer &r, Api api, const ShaderFamily &f, const Variant &v, const FamilyInputs &in,
@@ -39,20 +39,6 @@ void gl_frame_release(GlRenderer &r, GlFrameProgram *fp) {
   fp->textures.clear();
   r.delete_program(fp->program);
   fp->program = 0;
-}
-
-template <class Fn>
-static void parallel_rows(int h, int threads, Fn fn) {
-  if (threads <= 0) threads = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
-  threads = std::min(threads, std::max(1, h));
-  std::vector<std::thread> pool;
-  for (int t = 0; t < threads; ++t) {
-    pool.emplace_back([=] {
-      ts_math_init();  // FTZ/DAZ is per thread (MXCSR)
-      for (int y = t; y < h; y += threads) fn(y);
-    });
-  }
-  for (auto &th : pool) th.join();
 }
 
 void cpu_render_frame(const ShaderFamily &f, const Variant &v, const FamilyInputs &in, ImageF *out, int threads) {

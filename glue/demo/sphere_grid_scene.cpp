@@ -48,16 +48,9 @@ TextureDesc albedo_texture() {
 
 // Distance x cone attenuation of a light at p, as shaders/common_lights.glsl defines it (double).
 double light_attenuation_at(const ts_light &L, const double p[3]) {
-  if (L.type == TS_LIGHT_DIRECTIONAL) return 1.0;
-  double v[3] = {L.pos[0] - p[0], L.pos[1] - p[1], L.pos[2] - p[2]};
-  const double d = std::sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]);
-  double att = 1.0 / (L.atten[0] + L.atten[1] * d + L.atten[2] * d * d);
-  if (L.type == TS_LIGHT_SPOT && d > 0) {
-    const double cos_a = -(v[0] * L.dir[0] + v[1] * L.dir[1] + v[2] * L.dir[2]) / d;
-    const double t = std::max(1e-4, (cos_a - L.cos_outer) / (static_cast<double>(L.cos_inner) - L.cos_outer));
-    att *= std::min(1.0, std::pow(t, static_cast<double>(L.spot_exponent)));
-  }
-  return att;
+  float packed[5][4];
+  if (!ts_light_pack(&L, packed, nullptr, 0)) return 0.0;
+  return ts_packed_light_attenuation(packed, p, nullptr);
 }
 
 // ps20 takes the attenuation interpolated from the vertices. The spheres are drawn

@@ -223,7 +223,7 @@ void bind_uniforms(const GlFns &gl, GLuint program, const std::vector<ts_vec4f> 
 
 ml_variant ml_variant_of(const Variant &v) {
   ml_variant m = {};
-  m.tier = v.tier == Tier::PS20 ? TS_TIER_ID_PS20 : v.tier == Tier::PS2B ? TS_TIER_ID_PS2B : TS_TIER_ID_SM3;
+  m.tier = tier_id(v.tier);
   m.albedo_texture = v.value("ALBEDO_TEXTURE");
   m.half_lambert = v.value("HALF_LAMBERT");
   m.output_mode = v.value("OUTPUT_MODE");

@@ -132,7 +132,7 @@ const int kNumNmSpecial = sizeof kNmSpecial / sizeof kNmSpecial[0];
 
 wl_variant wl_variant_of(const Variant &v) {
   wl_variant w;
-  w.tier = v.tier == Tier::PS20 ? WL_TIER_PS20 : v.tier == Tier::PS2B ? WL_TIER_PS2B : WL_TIER_SM3;
+  w.tier = tier_id(v.tier);
   w.bumpmap = v.value("BUMPMAP");
   w.encoding = v.value("LIGHTMAP_ENCODING");
   w.envmap = v.value("ENVMAP");

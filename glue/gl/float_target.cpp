@@ -16,6 +16,8 @@ GlRenderer::GlRenderer(GlContext &ctx) : ctx_(ctx) {
   g.EnableVertexAttribArray(0);
 }
 
+void GlRenderer::bind_fullscreen_triangle() const { gl().BindVertexArray(vao_); }
+
 GlRenderer::~GlRenderer() {
   const GlFns &g = gl();
   if (color_) g.DeleteTextures(1, &color_);

@@ -40,6 +40,9 @@ class GlRenderer {
   // *draw_ms (optional) receives the time of the draw alone, glFinish included.
   bool draw(GLuint program, const std::vector<std::pair<std::string, GLuint>> &textures, int w, int h,
             ImageF *out, std::string *err, double *draw_ms = nullptr);
+  // Binds the full-screen triangle (attribute 0 = a_corner: (-1,-1), (3,-1), (-1,3)), the one
+  // every full-screen pass draws (hdr/gl_passes.h draws it too).
+  void bind_fullscreen_triangle() const;
 
  private:
   bool ensure_target(int w, int h, std::string *err);

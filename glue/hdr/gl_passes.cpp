@@ -62,23 +62,10 @@ void free_target(const GlFns &g, GlTarget *t) {
   t->fbo = t->tex = 0;
 }
 
-PassRunner::PassRunner(GlRenderer &r) : r_(r) {
-  const GlFns &g = gl();
-  const float corners[6] = {-1.f, -1.f, 3.f, -1.f, -1.f, 3.f};
-  g.GenVertexArrays(1, &vao_);
-  g.BindVertexArray(vao_);
-  g.GenBuffers(1, &vbo_);
-  g.BindBuffer(GL_ARRAY_BUFFER, vbo_);
-  g.BufferData(GL_ARRAY_BUFFER, sizeof corners, corners, GL_STATIC_DRAW);
-  g.VertexAttribPointer(0, 2, GL_FLOAT, GL_FALSE, 0, nullptr);
-  g.EnableVertexAttribArray(0);
-}
+PassRunner::PassRunner(GlRenderer &r) : r_(r) {}
 
 PassRunner::~PassRunner() {
-  const GlFns &g = gl();
   for (auto &p : programs_) r_.delete_program(p.second);
-  if (vbo_) g.DeleteBuffers(1, &vbo_);
-  if (vao_) g.DeleteVertexArrays(1, &vao_);
 }
 
 GLuint PassRunner::program(Api api, const std::string &shader, const std::string &variant, std::string *err) {
@@ -127,7 +114,7 @@ bool PassRunner::draw(GLuint program, const GlTarget &t, const std::vector<PassT
     const GLint loc = g.GetUniformLocation(program, textures[i].sampler.c_str());
     if (loc >= 0) g.Uniform1i(loc, static_cast<GLint>(i));
   }
-  g.BindVertexArray(vao_);
+  r_.bind_fullscreen_triangle();
   g.DrawArrays(GL_TRIANGLES, 0, 3);
   g.Disable(GL_SCISSOR_TEST);
   const GLenum e = g.GetError();

@@ -34,7 +34,7 @@ struct PassTexture {
   bool linear;
 };
 
-// The full-screen triangle of every pass (attribute 0 = a_corner, as GlRenderer binds it).
+// Full-screen passes: GlRenderer's full-screen triangle into GlTargets.
 class PassRunner {
  public:
   explicit PassRunner(GlRenderer &r);
@@ -53,7 +53,6 @@ class PassRunner {
 
  private:
   GlRenderer &r_;
-  GLuint vao_ = 0, vbo_ = 0;
   std::vector<ShaderDecl> decls_;
   std::vector<std::pair<std::string, GLuint>> programs_;  // "shader|variant" -> program
 };

@@ -60,21 +60,21 @@ void bloom_chain(const std::vector<float> &hdr, int w, int h, Down down, Blur bl
   const ts_tex2d src = tex_of(hdr, w, h, true);
   const ts_vec4f drec[BD_SLOTS] = {ts_v4f(0.f, 0.f, 0.f, 0.f), size_of(w, h), ts_v4f(0.3f, 0.59f, 0.11f, 2.2f)};
   const ts_vec4f brec[BB_SLOTS] = {ts_v4f(0.f, 0.f, 0.f, 0.f), size_of(bw, bh), ts_v4f(1.f, 0.f, 0.f, 0.f)};
-  scene_parallel_rows(bh, threads, [&](int y) {
+  parallel_rows(bh, threads, [&](int y) {
     std::vector<ts_vec4f> pos, row(static_cast<size_t>(bw));
     centres(y, bw, &pos);
     down(pos.data(), drec, bw, &src, row.data());
     store_row(&ds, static_cast<size_t>(y) * bw, row, half);
   });
   const ts_tex2d tds = tex_of(ds, bw, bh, true);
-  scene_parallel_rows(bh, threads, [&](int y) {
+  parallel_rows(bh, threads, [&](int y) {
     std::vector<ts_vec4f> pos, row(static_cast<size_t>(bw));
     centres(y, bw, &pos);
     blur(0, pos.data(), brec, bw, &tds, row.data());
     store_row(&bx, static_cast<size_t>(y) * bw, row, half);
   });
   const ts_tex2d tbx = tex_of(bx, bw, bh, true);
-  scene_parallel_rows(bh, threads, [&](int y) {
+  parallel_rows(bh, threads, [&](int y) {
     std::vector<ts_vec4f> pos, row(static_cast<size_t>(bw));
     centres(y, bw, &pos);
     blur(1, pos.data(), brec, bw, &tbx, row.data());
@@ -140,7 +140,7 @@ void hdr_post_float_c(const std::vector<float> &hdr, int w, int h, const HdrSett
   const ht_variant tv = {2};
   out->display.resize(static_cast<size_t>(w) * h * 4);
   const ts_vec4f size = size_of(w, h), params = ts_v4f(s.tone_map_scale, s.bloom_amount, s.bloom_exponent, 0.f);
-  scene_parallel_rows(h, threads, [&](int y) {
+  parallel_rows(h, threads, [&](int y) {
     const size_t i = static_cast<size_t>(y) * w;
     std::vector<ts_vec4f> pos, fb(static_cast<size_t>(w)), row(static_cast<size_t>(w));
     centres(y, w, &pos);

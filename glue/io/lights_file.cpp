@@ -8,6 +8,8 @@
 #include <fstream>
 #include <sstream>
 
+#include <glm/gtc/constants.hpp>
+
 bool read_lights(const std::string &path, std::vector<ts_light> *out, std::string *err) {
   struct stat st;
   if (stat(path.c_str(), &st) != 0 || !S_ISREG(st.st_mode)) {
@@ -54,8 +56,8 @@ bool read_lights(const std::string &path, std::vector<ts_light> *out, std::strin
         l.type = TS_LIGHT_SPOT;
         for (int i = 0; i < 3; ++i) l.color[i] = v[i], l.pos[i] = v[3 + i], l.dir[i] = v[6 + i], l.atten[i] = v[12 + i];
         l.spot_exponent = v[9];
-        l.cos_inner = std::cos(v[10] * 3.14159265f / 180.f);
-        l.cos_outer = std::cos(v[11] * 3.14159265f / 180.f);
+        l.cos_inner = std::cos(v[10] * glm::pi<float>() / 180.f);
+        l.cos_outer = std::cos(v[11] * glm::pi<float>() / 180.f);
       }
     } else if (type == "directional") {
       want = 6;

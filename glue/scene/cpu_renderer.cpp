@@ -5,10 +5,15 @@
 #include <atomic>
 #include <cmath>
 #include <cstring>
-#include <thread>
 
+#include <glm/glm.hpp>
+#include <glm/gtc/type_ptr.hpp>
+
+#include "base/parallel_rows.h"
 #include "families/family.h"
+#include "families/model_lighting.h"
 #include "families/world_lighting.h"
+#include "offline/light_folding.h"
 #include "twins/model_lighting.h"
 #include "twins/model_lighting_batch.h"
 #include "twins/world_lighting_batch.h"
@@ -16,39 +21,11 @@
 
 namespace {
 
-template <class Fn>
-void parallel_rows(int h, int threads, Fn fn) {
-  if (threads <= 0) threads = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
-  threads = std::min(threads, std::max(1, h));
-  std::vector<std::thread> pool;
-  for (int t = 0; t < threads; ++t)
-    pool.emplace_back([=] {
-      ts_math_init();  // FTZ/DAZ is per thread
-      for (int y = t; y < h; y += threads) fn(t, y);
-    });
-  for (auto &th : pool) th.join();
-}
-
 // A new buffer of n copies of v in *out (made aside, then swapped in: the old one is freed).
 template <class T>
 void fresh_buffer(std::vector<T> *out, size_t n, T v) {
   std::vector<T> b(n, v);
   out->swap(b);
-}
-
-ml_variant ml_of(const Variant &v) {
-  ml_variant m = {};
-  m.tier = v.tier == Tier::PS20 ? TS_TIER_ID_PS20 : v.tier == Tier::PS2B ? TS_TIER_ID_PS2B : TS_TIER_ID_SM3;
-  m.albedo_texture = v.value("ALBEDO_TEXTURE");
-  m.half_lambert = v.value("HALF_LAMBERT");
-  m.output_mode = v.value("OUTPUT_MODE");
-  m.num_lights = v.value("NUM_LIGHTS");
-  m.phong = v.value("PHONG");
-  m.exponent_map = v.value("PHONG_EXPONENT_MAP");
-  m.rim_light = v.value("RIM_LIGHT");
-  m.envmap = v.value("ENVMAP");
-  m.light_warp = v.value("LIGHT_WARP");
-  return m;
 }
 
 // Per draw: the twin's variant, texture views and the record's shared slots.
@@ -84,7 +61,7 @@ void make_ctx(const PreparedScene &p, std::vector<DrawCtx> *out) {
       // u_base u_normalmap u_lightmap u_envmap_mask u_envmap
       c.wt = {&c.t2[0], &c.t2[1], &c.t2[2], &c.t2[3], &c.cube};
     } else {
-      c.ml = ml_of(*d.variant);
+      c.ml = ml_variant_of(*d.variant);
       // u_albedo u_normal_map u_exponent_map u_light_warp u_envmap
       c.mt = {&c.t2[0], &c.t2[1], &c.t2[2], &c.t2[3], &c.cube};
     }
@@ -117,10 +94,11 @@ void vertex_stage(const PreparedScene &p, const PreparedDraw &d, std::vector<flo
   for (size_t i = 0; i < n; ++i) {
     const float *P = &d.position[i * 3], *N = &d.normal[i * 3], *T = &d.tangent[i * 4], *UV = &d.uv[i * 2];
     float *c = &(*clip)[i * 4];
+    // u_view_proj * vec4(P, 1) in float, summed left to right as llvmpipe's vertex shader
+    // does (the visibility must match GL's): not glm's mat4 * vec4, which sums in pairs.
     for (int r = 0; r < 4; ++r) c[r] = m[r] * P[0] + m[4 + r] * P[1] + m[8 + r] * P[2] + m[12 + r];
     float *v = &(*vary)[i * kVary];
-    const float B[3] = {(N[1] * T[2] - N[2] * T[1]) * T[3], (N[2] * T[0] - N[0] * T[2]) * T[3],
-                        (N[0] * T[1] - N[1] * T[0]) * T[3]};
+    const glm::vec3 B = glm::cross(glm::make_vec3(N), glm::make_vec3(T)) * T[3];  // cross(N, T) * w: the same products
     auto put = [&](int slot, float x, float y, float z, float w) {
       v[slot * 4 + 0] = x;
       v[slot * 4 + 1] = y;
@@ -143,19 +121,12 @@ void vertex_stage(const PreparedScene &p, const PreparedDraw &d, std::vector<flo
       put(ML_SLOT_BITANGENT, B[0], B[1], B[2], 0);
       float att[4] = {0, 0, 0, 0};
       for (int l = 0; l < nl && l < 2; ++l) {
-        // ts_light_attenuation (common_lights.glsl) in double: the per-vertex value.
+        // The per-vertex value: ts_light_attenuation of common_lights.glsl in double.
         const ts_vec4f *L = &d.shared[ML_SLOT_LIGHT0 + 5 * l];
-        const double lv[3] = {L[2].x - P[0], L[2].y - P[1], L[2].z - P[2]};
-        const double d2 = std::max(lv[0] * lv[0] + lv[1] * lv[1] + lv[2] * lv[2], 1e-30);
-        const double dist = std::min(std::sqrt(d2), 1e18);
-        const bool directional = L[0].w > 0.5f;
-        double Ld[3];
-        for (int k = 0; k < 3; ++k) Ld[k] = directional ? -(&L[1].x)[k] : lv[k] / std::sqrt(d2);
-        double a = directional ? 1.0 : 1.0 / (L[4].x + L[4].y * dist + L[4].z * dist * dist);
-        if (L[1].w > 0.5f) {
-          const double cos_a = -(Ld[0] * L[1].x + Ld[1] * L[1].y + Ld[2] * L[1].z);
-          a *= std::min(1.0, std::max(0.0, std::pow(std::max(1e-4, (cos_a - L[3].z) * L[3].w), L[3].x)));
-        }
+        float pk[5][4];
+        for (int k = 0; k < 5; ++k) pk[k][0] = L[k].x, pk[k][1] = L[k].y, pk[k][2] = L[k].z, pk[k][3] = L[k].w;
+        const double pd[3] = {P[0], P[1], P[2]};
+        const double a = ts_packed_light_attenuation(pk, pd, nullptr);
         att[l] = static_cast<float>(a);
       }
       put(ML_SLOT_VERTEX_ATTEN, att[0], att[1], att[2], att[3]);
@@ -431,7 +402,7 @@ void scene_rasterize_cpu(const PreparedScene &p, SceneVisibility *vis, int threa
   std::vector<std::vector<int>> band_tris(static_cast<size_t>(bands));
   for (size_t i = 0; i < tris.size(); ++i)
     for (int b = tris[i].y0 / kBand; b <= tris[i].y1 / kBand; ++b) band_tris[static_cast<size_t>(b)].push_back(static_cast<int>(i));
-  parallel_rows(bands, threads, [&](int, int band) {
+  parallel_rows(bands, threads, [&](int band) {
     const int ra = band * kBand, rb = std::min(p.h, ra + kBand);
     if (reuse) {
       const size_t i0 = static_cast<size_t>(ra) * p.w, i1 = static_cast<size_t>(rb) * p.w;
@@ -463,9 +434,8 @@ void scene_shade_cpu(const PreparedScene &p, const SceneVisibility &vis, ImageF 
     fresh_buffer(&out->rgba, static_cast<size_t>(p.w) * p.h * 4, 0.f);
   std::atomic<int> rows{0};
   // Per thread: the run's pixel slots and results (kept across rows).
-  const int nthreads = threads <= 0 ? static_cast<int>(std::max(1u, std::thread::hardware_concurrency())) : threads;
-  std::vector<std::vector<ts_vec4f>> pix_of(static_cast<size_t>(nthreads));
-  parallel_rows(p.h, threads, [&](int t, int y) {
+  std::vector<std::vector<ts_vec4f>> pix_of(static_cast<size_t>(parallel_workers(p.h, threads)));
+  parallel_rows_by_worker(p.h, threads, [&](int t, int y) {
     // Runs of pixels of one draw are shaded together by the batched twins (8 pixels per
     // instruction where the host has AVX2; the same bits as one pixel at a time).
     std::vector<ts_vec4f> &pix = pix_of[static_cast<size_t>(t)];
@@ -524,7 +494,7 @@ void scene_shade_records(const PreparedScene &p, const std::vector<int> &draw, c
   out->w = p.w;
   out->h = p.h;
   out->rgba.assign(static_cast<size_t>(p.w) * p.h * 4, 0.f);
-  parallel_rows(p.h, threads, [&](int, int y) {
+  parallel_rows(p.h, threads, [&](int y) {
     std::vector<ts_vec4f> pix(static_cast<size_t>(kPixelSlots) * p.w);
     std::vector<ts_vec4f> res(static_cast<size_t>(p.w));
     const size_t row = static_cast<size_t>(y) * p.w;

@@ -11,7 +11,6 @@
 #include "families/color_correction_inputs.h"
 #include "color/correct_rgba8_cpu.h"
 #include "twins/color_correction.h"
-#include "base/parallel_rows.h"
 #include "families/family.h"
 #include "demo/family_frame.h"
 #include "math/hdr_formats.h"

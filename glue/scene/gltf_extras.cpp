@@ -4,12 +4,14 @@
 #include <cmath>
 #include <cstring>
 
+#include <glm/gtc/constants.hpp>
+
 #include "io/image_io.h"
 #include "scene/gltf_util.h"
 
 namespace scene_gltf {
 
-bool convert_light(const tinygltf::Model &m, int li, const double world[16], const std::string &node_place,
+bool convert_light(const tinygltf::Model &m, int li, const glm::dmat4 &world, const std::string &node_place,
                    Scene *s, Err &e) {
   const tinygltf::Light &L = m.lights[li];
   const std::string place = named("extensions.KHR_lights_punctual.lights[" + std::to_string(li) + "]", L.name);
@@ -28,13 +30,12 @@ bool convert_light(const tinygltf::Model &m, int li, const double world[16], con
     if (!(c >= 0 && std::isfinite(c))) return e.fail(place + ".color", "values must be finite and >= 0");
   if (!(L.intensity >= 0 && std::isfinite(L.intensity))) return e.fail(place + ".intensity", "must be finite and >= 0");
   for (int k = 0; k < 3; ++k) l.color[k] = static_cast<float>(color[k] * L.intensity);
-  double dir[3];
-  for (int r = 0; r < 3; ++r) {  // the node's -Z, and its origin
-    dir[r] = -world[8 + r];
-    l.pos[r] = static_cast<float>(world[12 + r]);
+  const glm::dvec3 dir = -glm::dvec3(world[2]);  // the node's -Z, and its origin
+  const double dl = glm::length(dir);
+  for (int r = 0; r < 3; ++r) {
+    l.pos[r] = static_cast<float>(world[3][r]);
+    l.dir[r] = static_cast<float>(dl > 0 ? dir[r] / dl : 0);
   }
-  const double dl = std::sqrt(dir[0] * dir[0] + dir[1] * dir[1] + dir[2] * dir[2]);
-  for (int r = 0; r < 3; ++r) l.dir[r] = static_cast<float>(dl > 0 ? dir[r] / dl : 0);
   double atten[3] = {0, 0, 1}, exponent = 1;
   if (L.extras.IsObject() && L.extras.Has("source")) {
     const std::string sp = place + ".extras.source";
@@ -56,7 +57,7 @@ bool convert_light(const tinygltf::Model &m, int li, const double world[16], con
   for (int k = 0; k < 3; ++k) l.atten[k] = static_cast<float>(atten[k]);
   if (l.type == TS_LIGHT_SPOT) {
     const double in = L.spot.innerConeAngle, out = L.spot.outerConeAngle;
-    if (!(in >= 0 && in < out && out <= 1.5707964))
+    if (!(in >= 0 && in < out && static_cast<float>(out) <= glm::half_pi<float>()))  // pi/2 as a float writer stores it
       return e.fail(place + ".spot", "needs 0 <= innerConeAngle < outerConeAngle <= pi/2");
     l.cos_inner = static_cast<float>(std::cos(in));
     l.cos_outer = static_cast<float>(std::cos(out));

@@ -3,8 +3,11 @@
 // Not a public interface: glue/scene/scene.h is.
 #pragma once
 #include <cmath>
+#include <cstdint>
 #include <initializer_list>
 #include <string>
+
+#include <glm/glm.hpp>
 
 #include <tiny_gltf.h>
 
@@ -28,6 +31,11 @@ inline std::string named(const std::string &base, const std::string &name) {
 }
 
 inline std::string quoted(const std::string &s) { return "\"" + s + "\""; }
+
+// A little-endian 32-bit word (GLB headers, accessor data).
+inline uint32_t le32(const unsigned char *p) {
+  return p[0] | p[1] << 8 | p[2] << 16 | static_cast<uint32_t>(p[3]) << 24;
+}
 
 // The JSON type of a value, for messages ("a string", "an array" ...).
 std::string value_kind(const tinygltf::Value &v);
@@ -56,8 +64,12 @@ bool convert_materials(const tinygltf::Model &m, Scene *s, Err &e);
 
 // Part 3 (glue/scene/gltf_extras.cpp): a KHR_lights_punctual light placed by a node's world
 // matrix, and the root extras.tiershade settings (cameras are already in s).
-bool convert_light(const tinygltf::Model &m, int light, const double world[16], const std::string &place,
+bool convert_light(const tinygltf::Model &m, int light, const glm::dmat4 &world, const std::string &place,
                    Scene *s, Err &e);
 bool convert_tiershade_extras(const tinygltf::Model &m, const std::string &scene_dir, Scene *s, Err &e);
+
+// Part 4 (glue/scene/gltf_nodes.cpp): the node hierarchy of the default scene flattened to
+// world space: mesh primitives (accessors read and checked), cameras and lights.
+bool convert_nodes(const tinygltf::Model &m, Scene *s, Err &e);
 
 }  // namespace scene_gltf

@@ -1,6 +1,6 @@
 // tiershade glue: prepares a scene's draws (glue/scene/prepare.h): camera, per-draw shared
-// slots and textures, the world bake (c_ref/offline/rnm_bake.c via glue/demo/room_scene.h) and the probe
-// cube maps, all limited to what the selected variants use.
+// slots and textures, the world bake (glue/bake/world_bake.h) and the probe cube maps, all
+// limited to what the selected variants use. Host geometry in double with GLM.
 #include "scene/prepare.h"
 
 #include <algorithm>
@@ -9,54 +9,34 @@
 #include <cmath>
 #include <map>
 
-#include "twins/model_lighting.h"
+#include <glm/glm.hpp>
+#include <glm/gtc/matrix_transform.hpp>
+#include <glm/gtc/type_ptr.hpp>
+
+#include "bake/world_bake.h"
 #include "scene/textures.h"
-#include "demo/room_scene.h"
+#include "twins/model_lighting.h"
 #include "twins/world_lighting.h"
 
 namespace {
 
 using Clock = std::chrono::steady_clock;
 
-struct D3 {
-  double x, y, z;
-};
-D3 d3(const double *p) { return {p[0], p[1], p[2]}; }
-D3 d3f(const float *p) { return {p[0], p[1], p[2]}; }
-D3 operator-(D3 a, D3 b) { return {a.x - b.x, a.y - b.y, a.z - b.z}; }
-D3 operator+(D3 a, D3 b) { return {a.x + b.x, a.y + b.y, a.z + b.z}; }
-D3 operator*(D3 a, double s) { return {a.x * s, a.y * s, a.z * s}; }
-double dot(D3 a, D3 b) { return a.x * b.x + a.y * b.y + a.z * b.z; }
-D3 cross(D3 a, D3 b) { return {a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x}; }
-D3 unit(D3 a) {
-  const double l = std::sqrt(dot(a, a));
-  return l > 0 ? a * (1.0 / l) : a;
-}
-ts_vec3d tv(D3 a) { return ts_v3d(a.x, a.y, a.z); }
-
-// Column-major 4x4 products in double (the float matrix is what GL and C use).
-void mat_mul(const double a[16], const double b[16], double out[16]) {
-  for (int c = 0; c < 4; ++c)
-    for (int r = 0; r < 4; ++r) {
-      double s = 0;
-      for (int k = 0; k < 4; ++k) s += a[k * 4 + r] * b[c * 4 + k];
-      out[c * 4 + r] = s;
-    }
-}
+glm::dvec3 d3(const double *p) { return glm::make_vec3(p); }
+glm::dvec3 d3f(const float *p) { return glm::dvec3(p[0], p[1], p[2]); }
+glm::dvec3 d3(ts_vec3d v) { return glm::dvec3(v.x, v.y, v.z); }
+double length2(const glm::dvec3 &v) { return glm::dot(v, v); }
 
 // View (right-handed, camera looks down -Z) and projection (OpenGL clip space, glTF's
-// perspective: infinite when zfar is 0).
-void camera_matrix(const SceneCamera &c, double aspect, double out[16]) {
-  const D3 f = unit(d3(c.forward)), s = unit(cross(f, d3(c.up))), u = cross(s, f), e = d3(c.eye);
-  const double view[16] = {s.x, u.x, -f.x, 0, s.y, u.y, -f.y, 0, s.z, u.z, -f.z, 0,
-                           -dot(s, e), -dot(u, e), dot(f, e), 1};
-  const double t = 1.0 / std::tan(c.yfov / 2), n = c.znear, fa = c.zfar;
-  double proj[16] = {t / aspect, 0, 0, 0, 0, t, 0, 0, 0, 0, -1, -1, 0, 0, -2 * n, 0};
-  if (fa > 0) {
-    proj[10] = (fa + n) / (n - fa);
-    proj[14] = 2 * fa * n / (n - fa);
-  }
-  mat_mul(proj, view, out);
+// perspective: infinite when zfar is 0; glTF 2.0, 3.10.3), in double.
+glm::dmat4 camera_matrix(const SceneCamera &c, double aspect) {
+  // lookAt from the origin along forward, then the eye's translation: lookAt(eye, eye + forward)
+  // would round eye + forward - eye.
+  const glm::dmat4 view =
+      glm::lookAtRH(glm::dvec3(0.0), d3(c.forward), d3(c.up)) * glm::translate(glm::dmat4(1.0), -d3(c.eye));
+  const glm::dmat4 proj = c.zfar > 0 ? glm::perspectiveRH_NO(c.yfov, aspect, c.znear, c.zfar)
+                                     : glm::infinitePerspectiveRH(c.yfov, aspect, c.znear);
+  return proj * view;
 }
 
 float srgb_to_linear(float c) {
@@ -184,10 +164,10 @@ int nearest_probe(const Scene &s, const double c[3], int explicit_index) {
   int best = -1;
   double bd = 0;
   for (size_t i = 0; i < s.probes.size(); ++i) {
-    const D3 d = d3(s.probes[i].position) - d3(c);
-    if (best < 0 || dot(d, d) < bd) {
+    const double dd = length2(d3(s.probes[i].position) - d3(c));
+    if (best < 0 || dd < bd) {
       best = static_cast<int>(i);
-      bd = dot(d, d);
+      bd = dd;
     }
   }
   return best;
@@ -236,10 +216,10 @@ bool model_draw(const Scene &s, const PreparedScene &ps, const SceneDrawChoice &
   int best = -1;
   double bd = 0;
   for (size_t i = 0; i < s.ambient.size(); ++i) {
-    const D3 dd = d3(s.ambient[i].position) - d3(center);
-    if (best < 0 || dot(dd, dd) < bd) {
+    const double dd = length2(d3(s.ambient[i].position) - d3(center));
+    if (best < 0 || dd < bd) {
       best = static_cast<int>(i);
-      bd = dot(dd, dd);
+      bd = dd;
     }
   }
   if (best >= 0) {
@@ -254,7 +234,7 @@ bool model_draw(const Scene &s, const PreparedScene &ps, const SceneDrawChoice &
   // Lights: the tier's limit per pixel, the rest folded into the cube (docs/light_folding.md).
   std::vector<ts_light> lights;
   for (const SceneLight &l : s.lights) lights.push_back(l.light);
-  const int max_local = tier == Tier::PS20 ? 2 : 4;
+  const int max_local = max_local_lights(tier);
   std::vector<int> kept(lights.size() + 1);
   const float cf[3] = {static_cast<float>(center[0]), static_cast<float>(center[1]), static_cast<float>(center[2])};
   const int half = v.value("HALF_LAMBERT");
@@ -359,9 +339,9 @@ bool prepare_scene(const Scene &s, const SceneSelection &sel, int w, int h, Api 
     return false;
   }
   const SceneCamera &cam = s.cameras[s.camera];
-  double vp[16];
   // The output's aspect: a glTF aspectRatio that differs would stretch the picture.
-  camera_matrix(cam, static_cast<double>(w) / h, vp);
+  const glm::dmat4 vpm = camera_matrix(cam, static_cast<double>(w) / h);
+  const double *vp = glm::value_ptr(vpm);  // column-major, as GL takes it
   for (int i = 0; i < 16; ++i) {
     ps.view_proj[i] = static_cast<float>(vp[i]);
     ps.model[i] = (i % 5 == 0) ? 1.f : 0.f;
@@ -372,7 +352,7 @@ bool prepare_scene(const Scene &s, const SceneSelection &sel, int w, int h, Api 
   TexturePool pool{&ps.textures, {}};
 
   // World: faces from the World primitives, baked only if some draw is a world draw.
-  WorldScene ws;
+  WorldBakeInput ws;
   std::vector<int> face_of_draw(sel.draws.size(), -1);
   std::vector<std::array<double, 4>> face_frame;  // min a, min b (projection offsets)
   std::vector<int> world_probe_index(s.probes.size(), -1);
@@ -382,37 +362,15 @@ bool prepare_scene(const Scene &s, const SceneSelection &sel, int w, int h, Api 
     const ScenePrimitive &p = s.primitives[c.primitive];
     const SceneMaterial &m = s.materials[p.material];
     if (p.indices.size() < 3) continue;
-    const D3 p0 = d3f(&p.position[p.indices[0] * 3]), p1 = d3f(&p.position[p.indices[1] * 3]),
-             p2 = d3f(&p.position[p.indices[2] * 3]);
-    D3 n = unit(cross(p1 - p0, p2 - p0));
-    const D3 sn = d3f(&p.normal[p.indices[0] * 3]);
-    if (dot(n, sn) < 0) n = n * -1.0;  // the face's front is the side its vertex normals face
-    D3 t = p.tangent.size() >= 4 ? d3f(&p.tangent[p.indices[0] * 4]) : D3{1, 0, 0};
-    t = t - n * dot(n, t);
-    if (dot(t, t) < 1e-12) t = std::fabs(n.x) < 0.9 ? D3{1, 0, 0} - n * n.x : D3{0, 1, 0} - n * n.y;
-    t = unit(t);
-    const double hand = p.tangent.size() >= 4 && p.tangent[p.indices[0] * 4 + 3] < 0 ? -1.0 : 1.0;
-    const D3 b = cross(n, t) * hand;
-    double amin = 1e300, amax = -1e300, bmin = 1e300, bmax = -1e300;
-    for (size_t i = 0; i + 2 < p.position.size(); i += 3) {
-      const D3 q = d3f(&p.position[i]);
-      amin = std::fmin(amin, dot(q, t));
-      amax = std::fmax(amax, dot(q, t));
-      bmin = std::fmin(bmin, dot(q, b));
-      bmax = std::fmax(bmax, dot(q, b));
-    }
     WorldFace f{};
-    f.name = m.name.c_str();
-    f.origin = tv(t * amin + b * bmin + n * dot(p0, n));
-    f.u = tv(t);
-    f.v = tv(b);
-    f.su = std::fmax(amax - amin, 1e-3);
-    f.sv = std::fmax(bmax - bmin, 1e-3);
-    f.probe = m.probe;
-    f.normal = tv(n);
+    double frame_min[2];
+    if (!world_face_from_quad(p.position, p.normal, p.tangent, p.indices, m.name.c_str(), m.probe, &f, frame_min)) {
+      *err = s.path + ": " + p.where + ": a world primitive whose first triangle and normal are degenerate";
+      return false;
+    }
     face_of_draw[di] = static_cast<int>(ws.faces.size());
     ws.faces.push_back(f);
-    face_frame.push_back({amin, bmin, 0, 0});
+    face_frame.push_back({frame_min[0], frame_min[1], 0, 0});
   }
   WorldBake bake;
   if (!ws.faces.empty()) {
@@ -494,10 +452,10 @@ bool prepare_scene(const Scene &s, const SceneSelection &sel, int w, int h, Api 
     // Per-vertex lightmap coordinates: the face's (a, b) in [0, 1] placed on the page.
     const size_t n = p.position.size() / 3;
     d.lightmap.resize(n * 4);
-    const D3 t = {f.u.x, f.u.y, f.u.z}, b = {f.v.x, f.v.y, f.v.z};
+    const glm::dvec3 t = d3(f.u), b = d3(f.v);
     for (size_t i = 0; i < n; ++i) {
-      const D3 q = d3f(&p.position[i * 3]);
-      const double a = (dot(q, t) - face_frame[fi][0]) / f.su, bb = (dot(q, b) - face_frame[fi][1]) / f.sv;
+      const glm::dvec3 q = d3f(&p.position[i * 3]);
+      const double a = (glm::dot(q, t) - face_frame[fi][0]) / f.su, bb = (glm::dot(q, b) - face_frame[fi][1]) / f.sv;
       float lm[2];
       lm_page_uv(&bake.place[fi], ws.page_w, ws.page_h, a, bb, lm);
       d.lightmap[i * 4 + 0] = lm[0];
@@ -508,8 +466,8 @@ bool prepare_scene(const Scene &s, const SceneSelection &sel, int w, int h, Api 
       d.tangent[i * 4 + 0] = static_cast<float>(t.x);
       d.tangent[i * 4 + 1] = static_cast<float>(t.y);
       d.tangent[i * 4 + 2] = static_cast<float>(t.z);
-      const D3 nn = d3f(&d.normal[i * 3]);
-      d.tangent[i * 4 + 3] = dot(cross(nn, t), b) < 0 ? -1.f : 1.f;
+      const glm::dvec3 nn = d3f(&d.normal[i * 3]);
+      d.tangent[i * 4 + 3] = glm::dot(glm::cross(nn, t), b) < 0 ? -1.f : 1.f;
     }
     d.shared.assign(WL_SLOTS, v4(0, 0, 0, 0));
     // c12 = tint x lightmap scale: sqrt3 for bumped lightmaps (docs/world_lighting.md), 1 flat.
@@ -536,9 +494,8 @@ bool prepare_scene(const Scene &s, const SceneSelection &sel, int w, int h, Api 
       d.tex.push_back(pool.get(key_solid("u_envmap_mask", 1, 1, 1, 1), [&] { return solid("u_envmap_mask", 1, 1, 1, 1); }));
     int pi = -1;
     if (v.value("ENVMAP") && !s.probes.empty()) {
-      const D3 mid = D3{f.origin.x, f.origin.y, f.origin.z} + t * (f.su / 2) + b * (f.sv / 2);
-      const double cc[3] = {mid.x, mid.y, mid.z};
-      pi = nearest_probe(s, cc, m.probe);
+      const glm::dvec3 mid = d3(f.origin) + t * (f.su / 2) + b * (f.sv / 2);
+      pi = nearest_probe(s, glm::value_ptr(mid), m.probe);
       if (!probes.cube(pi, nullptr, nullptr, err)) return false;
     }
     d.tex.push_back(pool.get("u_envmap|" + std::to_string(pi), [&] {

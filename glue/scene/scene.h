@@ -1,6 +1,6 @@
 // tiershade glue: a scene as tiershade renders it, loaded from glTF 2.0 (glue/scene/gltf_load.cpp;
 // the format, the Source material keys and the tiershade extras are in docs/scenes.md).
-// Everything is in world space after node transforms; the renderer (glue/scene_render.*)
+// Everything is in world space after node transforms; the renderer (glue/scene/prepare.cpp, frame.cpp)
 // derives the variants and CPU work from what this structure uses, nothing more.
 #pragma once
 #include <string>

@@ -16,8 +16,6 @@ const ShaderDecl *find_decl(const std::vector<ShaderDecl> &decls, const std::str
   return nullptr;
 }
 
-int max_local_lights(Tier t) { return t == Tier::PS20 ? 2 : 4; }  // fact sheet section 4
-
 // Is an image one value everywhere (within 1/4096 per channel)? Then sampling it is a constant.
 bool image_constant(const SceneImage &im, float *value) {
   if (im.rgba.empty()) return false;
@@ -221,7 +219,7 @@ bool select_scene_variants(const Scene &s, Tier tier, const std::string &hdr_pat
           kv.second = 1;
         if (k == "HALF_LAMBERT" && tier != Tier::PS20) kv.second = 1;  // Phong needs it
         if (k == "BUMPMAP") kv.second = 1;
-        if (k == "NUM_LIGHTS") kv.second = tier == Tier::PS20 ? 2 : 4;
+        if (k == "NUM_LIGHTS") kv.second = max_local_lights(tier);
       }
       c.why.assign(1, "all features compiled in (the baseline without selection)");
       w.why.clear();

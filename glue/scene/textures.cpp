@@ -4,10 +4,13 @@
 #include <algorithm>
 #include <cmath>
 
+#include <glm/gtc/constants.hpp>
+#include <glm/gtc/type_ptr.hpp>
+
+#include "base/cube_faces.h"
 #include "io/image_io.h"
 
 namespace {
-const double kPi = 3.14159265358979323846;
 
 TextureDesc tex2d(const char *sampler, int w, int h, bool repeat) {
   TextureDesc t;
@@ -20,19 +23,6 @@ TextureDesc tex2d(const char *sampler, int w, int h, bool repeat) {
   return t;
 }
 
-// Direction of texel (s, t) in [-1, 1] on cube face f (GL conventions: +X -X +Y -Y +Z -Z).
-void face_dir(int f, double s, double t, double d[3]) {
-  switch (f) {
-    case 0: d[0] = 1; d[1] = -t; d[2] = -s; break;
-    case 1: d[0] = -1; d[1] = -t; d[2] = s; break;
-    case 2: d[0] = s; d[1] = 1; d[2] = t; break;
-    case 3: d[0] = s; d[1] = -1; d[2] = -t; break;
-    case 4: d[0] = s; d[1] = -t; d[2] = 1; break;
-    default: d[0] = -s; d[1] = -t; d[2] = -1; break;
-  }
-  const double n = std::sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);
-  for (int i = 0; i < 3; ++i) d[i] /= n;
-}
 }  // namespace
 
 TextureDesc make_bump_normal_map(const char *sampler, int n) {
@@ -47,16 +37,16 @@ TextureDesc make_bump_normal_map(const char *sampler, int n) {
       const double r = std::sqrt(fu * fu + fv * fv);
       double gx = 0, gy = 0;
       if (r < 0.4 && r > 1e-9) {
-        const double dh = -0.9 * std::sin(r / 0.4 * kPi) ;  // slope of the dimple
+        const double dh = -0.9 * std::sin(r / 0.4 * glm::pi<double>()) ;  // slope of the dimple
         gx = dh * fu / r;
         gy = dh * fv / r;
       }
-      double nx = -gx, ny = -gy, nz = 1;
-      const double l = std::sqrt(nx * nx + ny * ny + nz * nz);
+      const glm::dvec3 nrm(-gx, -gy, 1.0);
+      const double l = glm::length(nrm);
       float *p = &t.rgba[(static_cast<size_t>(y) * n + x) * 4];
-      p[0] = static_cast<float>(0.5 + 0.5 * nx / l);
-      p[1] = static_cast<float>(0.5 + 0.5 * ny / l);
-      p[2] = static_cast<float>(0.5 + 0.5 * nz / l);
+      p[0] = static_cast<float>(0.5 + 0.5 * nrm.x / l);
+      p[1] = static_cast<float>(0.5 + 0.5 * nrm.y / l);
+      p[2] = static_cast<float>(0.5 + 0.5 * nrm.z / l);
       p[3] = ((x * 4 / n) & 1) ? 1.f : 0.35f;
     }
   }
@@ -68,7 +58,7 @@ TextureDesc make_exponent_map(const char *sampler, int n) {
   for (int y = 0; y < n; ++y) {
     for (int x = 0; x < n; ++x) {
       float *p = &t.rgba[(static_cast<size_t>(y) * n + x) * 4];
-      p[0] = static_cast<float>(0.05 + 0.6 * (0.5 + 0.5 * std::cos(2 * kPi * y / n * 2)));  // exponent 8..97
+      p[0] = static_cast<float>(0.05 + 0.6 * (0.5 + 0.5 * std::cos(2 * glm::pi<double>() * y / n * 2)));  // exponent 8..97
       p[1] = static_cast<float>(x) / n;                                                     // albedo-tint mask
       p[2] = 0.f;
       p[3] = 1.f;                                                                            // rim mask
@@ -100,8 +90,7 @@ TextureDesc make_sky_cube(const char *sampler, int size) {
   for (int f = 0; f < 6; ++f)
     for (int y = 0; y < size; ++y)
       for (int x = 0; x < size; ++x) {
-        double d[3];
-        face_dir(f, (x + 0.5) / size * 2 - 1, (y + 0.5) / size * 2 - 1, d);
+        const glm::dvec3 d = cube_face_direction(f, (x + 0.5) / size * 2 - 1, (y + 0.5) / size * 2 - 1);
         const double up = std::max(0.0, d[1]), down = std::max(0.0, -d[1]);
         float *p = &t.rgba[((static_cast<size_t>(f) * size + y) * size + x) * 4];
         p[0] = static_cast<float>(0.3 + 0.6 * up + 0.2 * down);
@@ -118,8 +107,8 @@ bool cube_from_probe(const std::string &path, const char *sampler, int size, Tex
   if (!read_hdr(path, &probe, err)) return false;
   // Lat-long lookup: u = atan2(x, -z) / 2pi + 0.5, v = acos(y) / pi (row 0 = bottom in ImageF).
   auto sample = [&](const double d[3], double rgb[3]) {
-    const double u = std::atan2(d[0], -d[2]) / (2 * kPi) + 0.5;
-    const double v = std::acos(std::max(-1.0, std::min(1.0, d[1]))) / kPi;
+    const double u = std::atan2(d[0], -d[2]) / (2 * glm::pi<double>()) + 0.5;
+    const double v = std::acos(std::max(-1.0, std::min(1.0, d[1]))) / glm::pi<double>();
     const double fx = u * probe.w - 0.5, fy = (1 - v) * probe.h - 0.5;
     const int x0 = static_cast<int>(std::floor(fx)), y0 = static_cast<int>(std::floor(fy));
     const double wx = fx - x0, wy = fy - y0;
@@ -140,23 +129,23 @@ bool cube_from_probe(const std::string &path, const char *sampler, int size, Tex
   for (int f = 0; f < 6; ++f)
     for (int y = 0; y < size; ++y)
       for (int x = 0; x < size; ++x) {
-        double d[3], rgb[3];
-        face_dir(f, (x + 0.5) / size * 2 - 1, (y + 0.5) / size * 2 - 1, d);
-        sample(d, rgb);
+        double rgb[3];
+        const glm::dvec3 d = cube_face_direction(f, (x + 0.5) / size * 2 - 1, (y + 0.5) / size * 2 - 1);
+        sample(glm::value_ptr(d), rgb);
         float *p = &cube->rgba[((static_cast<size_t>(f) * size + y) * size + x) * 4];
         for (int c = 0; c < 3; ++c) p[c] = static_cast<float>(rgb[c]);
       }
   // Ambient cube from the probe's texels (solid-angle weighted).
-  const double axes[6][3] = {{1, 0, 0}, {-1, 0, 0}, {0, 1, 0}, {0, -1, 0}, {0, 0, 1}, {0, 0, -1}};
+  const glm::dvec3 axes[6] = {{1, 0, 0}, {-1, 0, 0}, {0, 1, 0}, {0, -1, 0}, {0, 0, 1}, {0, 0, -1}};
   double sum[6][3] = {}, wsum[6] = {};
   for (int y = 0; y < probe.h; ++y) {
-    const double theta = (1 - (y + 0.5) / probe.h) * kPi;
+    const double theta = (1 - (y + 0.5) / probe.h) * glm::pi<double>();
     const double dw = std::sin(theta);
     for (int x = 0; x < probe.w; ++x) {
-      const double phi = ((x + 0.5) / probe.w - 0.5) * 2 * kPi;
-      const double d[3] = {std::sin(theta) * std::sin(phi), std::cos(theta), -std::sin(theta) * std::cos(phi)};
+      const double phi = ((x + 0.5) / probe.w - 0.5) * 2 * glm::pi<double>();
+      const glm::dvec3 d(std::sin(theta) * std::sin(phi), std::cos(theta), -std::sin(theta) * std::cos(phi));
       for (int a = 0; a < 6; ++a) {
-        const double c = d[0] * axes[a][0] + d[1] * axes[a][1] + d[2] * axes[a][2];
+        const double c = glm::dot(d, axes[a]);
         if (c <= 0) continue;
         wsum[a] += c * dw;
         for (int k = 0; k < 3; ++k) sum[a][k] += c * dw * probe.rgba[(static_cast<size_t>(y) * probe.w + x) * 4 + k];

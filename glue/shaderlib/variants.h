@@ -5,7 +5,13 @@
 #include <string>
 #include <vector>
 
-enum class Tier { PS20, PS2B, SM3 };
+#include "twins/tier_id.h"
+
+// The tier, with the values of the twins' enum ts_tier_id (tier_id() gives that value).
+enum class Tier { PS20 = TS_TIER_ID_PS20, PS2B = TS_TIER_ID_PS2B, SM3 = TS_TIER_ID_SM3 };
+inline int tier_id(Tier t) { return static_cast<int>(t); }
+// Local lights a tier shades per pixel (fact sheet section 4): ps20 2, ps2b and sm3 4.
+inline int max_local_lights(Tier t) { return t == Tier::PS20 ? 2 : 4; }
 const char *tier_name(Tier t);
 bool parse_tier(const std::string &s, Tier *out);
 std::vector<Tier> all_tiers();

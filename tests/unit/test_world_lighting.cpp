@@ -208,13 +208,13 @@ void check_twin() {
   // n = b0: d = (1, 0, 0) + 1e-30: the b0 lightmap alone (the others weigh < 1e-15).
   const ts_vec3d b0 = rnm_basis(0);
   s.nm.set(0, 0, static_cast<float>(0.5 * b0.x + 0.5), 0.5f, static_cast<float>(0.5 * b0.z + 0.5), 1);
-  ts_vec4f c = s.shade(WL_TIER_SM3, WL_BUMP_RNM, WL_LM_FLOAT);
+  ts_vec4f c = s.shade(TS_TIER_ID_SM3, WL_BUMP_RNM, WL_LM_FLOAT);
   // 1e-6: the 8-bit-free float texel of b0 and the float basis constants agree to ~1e-7.
   check(std::fabs(c.x - 1) < 1e-6 && c.y < 1e-6 && c.z < 1e-6, "RNM: n = b0 selects lightmap 1",
         num(c.x) + " " + num(c.y) + " " + num(c.z));
   // Flat normal: equal weights, the mean of the three.
   s.nm.set(0, 0, 0.5f, 0.5f, 1.f, 1);
-  c = s.shade(WL_TIER_SM3, WL_BUMP_RNM, WL_LM_FLOAT);
+  c = s.shade(TS_TIER_ID_SM3, WL_BUMP_RNM, WL_LM_FLOAT);
   check(std::fabs(c.x - 1 / 3.) < 1e-6 && std::fabs(c.y - 1 / 3.) < 1e-6 && std::fabs(c.z - 1 / 3.) < 1e-6,
         "RNM: the flat normal averages the three lightmaps", num(c.x) + " " + num(c.y) + " " + num(c.z));
   // Zero-length texel and a normal pointing into the surface: sum(d_k) = 0 would be 0/0.
@@ -230,23 +230,23 @@ void check_twin() {
   }
   // ssbump: the texel is the weights, no normalisation.
   s.nm.set(0, 0, 0.25f, 0.5f, 2.f, 1);
-  c = s.shade(WL_TIER_SM3, WL_BUMP_SSBUMP, WL_LM_FLOAT);
+  c = s.shade(TS_TIER_ID_SM3, WL_BUMP_SSBUMP, WL_LM_FLOAT);
   check(c.x == 0.25f && c.y == 0.5f && c.z == 2.f, "ssbump: weights straight from the texel",
         num(c.x) + " " + num(c.y) + " " + num(c.z));
   s.nm.set(0, 0, 0, 0, 0, 1);
-  c = s.shade(WL_TIER_PS20, WL_BUMP_SSBUMP, WL_LM_FLOAT, 1, 0);
+  c = s.shade(TS_TIER_ID_PS20, WL_BUMP_SSBUMP, WL_LM_FLOAT, 1, 0);
   // Zero weights and a zero normal: diffuse 0; R = 0 samples the centre of +Z (cube = 1)
   // and N.V = 0 gives F = 1 with R0 = 1: exactly the cube value.
   check(c.x == 1 && c.y == 1 && c.z == 1, "ssbump zero texel: no diffuse, finite envmap term",
         num(c.x) + " " + num(c.y));
   // Flat lightmap: texel 0 times c12 and the tone-map scale.
   s.rec[WL_SLOT_TINT_SCALE] = ts_v4f(0.5f, 1, 2, 2);
-  c = s.shade(WL_TIER_PS2B, WL_BUMP_NONE, WL_LM_FLOAT);
+  c = s.shade(TS_TIER_ID_PS2B, WL_BUMP_NONE, WL_LM_FLOAT);
   check(c.x == 9 && c.y == 18 && c.z == 36, "flat lightmap x tint x tone-map scale", num(c.x) + " " + num(c.z));
   s.rec[WL_SLOT_TINT_SCALE] = ts_v4f(1, 1, 1, 1);
 
   // The decodes, read back through the flat path (white base, unit scales).
-  auto flat = [&](int enc, float r, float g, float b, float a, int tier = WL_TIER_SM3) {
+  auto flat = [&](int enc, float r, float g, float b, float a, int tier = TS_TIER_ID_SM3) {
     s.lm.set(0, 0, r, g, b, a);
     return s.shade(tier, WL_BUMP_NONE, enc);
   };
@@ -278,20 +278,20 @@ void check_twin() {
   check(std::isfinite(c.x) && c.x >= 0 && c.x < 1.2e-38f, "RGBE smallest exponent: finite, ~0", num(c.x));
 
   // ps20 decodes LDR as (2t)^2: exact at 2t = 1, 0.25 against 0.2176 at 2t = 0.5.
-  c = flat(WL_LM_LDR, 0.5f, 0.25f, 0, 0, WL_TIER_PS20);
+  c = flat(WL_LM_LDR, 0.5f, 0.25f, 0, 0, TS_TIER_ID_PS20);
   check(c.x == 1.f && c.y == 0.25f && c.z == 0, "ps20 LDR decode: (2t)^2", num(c.x) + " " + num(c.y));
 
   // Envmap: cube = 1 everywhere; flat normal, eye along N: R = N, N.V = 1, F = R0.
   s.lm.fill(0, 0, 0, 0);
   s.rec[WL_SLOT_EYE] = ts_v4f(0, 0, 2, 0);
   s.rec[WL_SLOT_ENV_PARAMS] = ts_v4f(0, 1, 0.75f, 0.25f);
-  c = s.shade(WL_TIER_SM3, WL_BUMP_NONE, WL_LM_FLOAT, 1, 0);
+  c = s.shade(TS_TIER_ID_SM3, WL_BUMP_NONE, WL_LM_FLOAT, 1, 0);
   check(c.x == 0.25f, "Fresnel at N.V = 1 is R0", num(c.x));
   s.rec[WL_SLOT_EYE] = ts_v4f(2, 0, 0, 0);
-  c = s.shade(WL_TIER_SM3, WL_BUMP_NONE, WL_LM_FLOAT, 1, 0);
+  c = s.shade(TS_TIER_ID_SM3, WL_BUMP_NONE, WL_LM_FLOAT, 1, 0);
   check(c.x == 1.f, "Fresnel at N.V = 0 is 1", num(c.x));
   s.rec[WL_SLOT_EYE] = ts_v4f(2, 0, -1, 0);
-  c = s.shade(WL_TIER_PS20, WL_BUMP_NONE, WL_LM_FLOAT, 1, 0);
+  c = s.shade(TS_TIER_ID_PS20, WL_BUMP_NONE, WL_LM_FLOAT, 1, 0);
   check(c.x == 1.f, "Fresnel with N.V < 0 (back-facing) is clamped to 1", num(c.x));
   s.rec[WL_SLOT_EYE] = ts_v4f(1, 0, 1, 0);  // N.V = cos 45 deg: F = (1 - 0.7071)^5 0.75 + 0.25
   const double f45 = std::pow(1 - std::sqrt(0.5), 5) * 0.75 + 0.25;
@@ -304,11 +304,11 @@ void check_twin() {
   s.mask.set(0, 0, 0.5f, 0.25f, 0, 1);
   s.nm.set(0, 0, 0.5f, 0.5f, 1, 0.125f);
   s.base.set(0, 0, 1, 1, 1, 0.75f);
-  c = s.shade(WL_TIER_PS2B, WL_BUMP_NONE, WL_LM_FLOAT, 1, WL_MASK_TEXTURE);
+  c = s.shade(TS_TIER_ID_PS2B, WL_BUMP_NONE, WL_LM_FLOAT, 1, WL_MASK_TEXTURE);
   check(c.x == 0.5f && c.y == 0.25f && c.z == 0, "mask from the mask texture", num(c.x));
-  c = s.shade(WL_TIER_PS2B, WL_BUMP_RNM, WL_LM_FLOAT, 1, WL_MASK_NORMAL_ALPHA);
+  c = s.shade(TS_TIER_ID_PS2B, WL_BUMP_RNM, WL_LM_FLOAT, 1, WL_MASK_NORMAL_ALPHA);
   check(c.x == 0.125f, "mask from the normal-map alpha", num(c.x));
-  c = s.shade(WL_TIER_PS2B, WL_BUMP_NONE, WL_LM_FLOAT, 1, WL_MASK_INV_BASE_ALPHA);
+  c = s.shade(TS_TIER_ID_PS2B, WL_BUMP_NONE, WL_LM_FLOAT, 1, WL_MASK_INV_BASE_ALPHA);
   check(c.x == 0.25f, "mask from the inverted base alpha", num(c.x));
   // Contrast 1 squares, saturation 0 gives the luma (0.299, 0.587, 0.114 weights).
   s.cube_px.assign(6 * 4, 0.f);
@@ -316,7 +316,7 @@ void check_twin() {
   s.base.set(0, 0, 1, 1, 1, 1);
   s.rec[WL_SLOT_ENV_PARAMS] = ts_v4f(1, 0, 0, 1);
   s.rec[WL_SLOT_EYE] = ts_v4f(0, 0, 1, 0);
-  c = s.shade(WL_TIER_SM3, WL_BUMP_NONE, WL_LM_FLOAT, 1, 0);
+  c = s.shade(TS_TIER_ID_SM3, WL_BUMP_NONE, WL_LM_FLOAT, 1, 0);
   check(std::fabs(c.x - 0.25 * 0.299) < 1e-7 && std::fabs(c.y - 0.25 * 0.299) < 1e-7,
         "contrast 1 squares, saturation 0 takes the luma", num(c.x) + " " + num(c.y));
 }

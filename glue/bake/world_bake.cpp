@@ -1,0 +1,151 @@
+// tiershade bake: the world bake (glue/bake/world_bake.h): luxels, page, probes, encodings.
+#include "bake/world_bake.h"
+
+#include <cmath>
+
+#include "bake/glm_ts.h"
+#include "base/cube_faces.h"
+#include "offline/envmap_probes.h"
+#include "offline/lightmap_encoding.h"
+
+namespace {
+
+int luxels(double len, double per_unit) { return std::max(2, static_cast<int>(std::lround(len * per_unit)) + 1); }
+
+}  // namespace
+
+bool bake_world(const WorldBakeInput &s, WorldBake *out, std::string *err) {
+  for (const WorldFace &f : s.faces)
+    if (!(f.normal.x * f.normal.x + f.normal.y * f.normal.y + f.normal.z * f.normal.z > 0)) {
+      *err = std::string(f.name) + ": the face has no front normal";
+      return false;
+    }
+  std::vector<lm_face_size> sizes;
+  for (const WorldFace &f : s.faces)
+    sizes.push_back({luxels(f.su, s.luxels_per_unit), luxels(f.sv, s.luxels_per_unit), 1});
+  out->place.resize(s.faces.size());
+  char msg[256];
+  if (lm_page_pack(s.page_w, s.page_h, sizes.data(), static_cast<int>(sizes.size()), out->place.data(), msg,
+                   sizeof msg) != 0) {
+    *err = msg;
+    return false;
+  }
+  out->page.assign(static_cast<size_t>(s.page_w) * s.page_h * 4, 0.f);
+  for (size_t i = 0; i < out->page.size(); i += 4) out->page[i + 3] = 1.f;
+  for (size_t fi = 0; s.bake_luxels && fi < s.faces.size(); ++fi) {
+    const WorldFace &f = s.faces[fi];
+    const ts_vec3d n = world_face_normal(f);
+    ts_vec3d bump[3];
+    if (rnm_bump_basis(f.u, f.v, n, n, bump, msg, sizeof msg) != 0) {
+      *err = std::string(f.name) + ": " + msg;
+      return false;
+    }
+    const lm_face_size &sz = sizes[fi];
+    for (int j = 0; j < sz.luxels_h; ++j) {
+      for (int i = 0; i < sz.luxels_w; ++i) {
+        const ts_vec3d p = world_face_point(f, static_cast<double>(i) / (sz.luxels_w - 1), static_cast<double>(j) / (sz.luxels_h - 1));
+        ts_vec3d v4[4];
+        if (rnm_bake_texel(p, n, bump, s.lights.data(), static_cast<int>(s.lights.size()), v4, msg, sizeof msg) != 0) {
+          *err = std::string(f.name) + ": " + msg;
+          return false;
+        }
+        for (int k = 0; k < 4; ++k) {
+          int tx, ty;
+          lm_page_texel(&out->place[fi], k, i, j, &tx, &ty);
+          float *t = &out->page[(static_cast<size_t>(ty) * s.page_w + tx) * 4];
+          t[0] = static_cast<float>(v4[k].x);
+          t[1] = static_cast<float>(v4[k].y);
+          t[2] = static_cast<float>(v4[k].z);
+        }
+      }
+    }
+    lm_page_fill_borders(&out->place[fi], s.page_w, out->page.data());
+  }
+  // Probes: each face's, then each probe's cube, ray cast from the probe: a wall shows its
+  // flat lightmap value times its mean albedo, a light shows as a small bright sphere.
+  out->face_probe.clear();
+  for (const WorldFace &f : s.faces) {
+    const int p = env_pick_probe(world_face_point(f, 0.5, 0.5), s.probes.data(), static_cast<int>(s.probes.size()), f.probe,
+                                 msg, sizeof msg);
+    if (p < 0) {
+      *err = std::string(f.name) + ": " + msg;
+      return false;
+    }
+    out->face_probe.push_back(p);
+  }
+  out->cubes.clear();
+  const int N = s.cube_size;
+  for (const ts_vec3d &pos : s.probes) {
+    TextureDesc c = wl_texture("u_envmap", N, N * 6, true, false);
+    c.kind = TexKind::Cube;
+    c.h = N;
+    for (int face = 0; face < 6; ++face) {
+      for (int j = 0; j < N; ++j) {
+        for (int i = 0; i < N; ++i) {
+          const double sc = 2 * (i + 0.5) / N - 1, tc = 2 * (j + 0.5) / N - 1;
+          const glm::dvec3 d = cube_face_direction(face, sc, tc);
+          glm::dvec3 rad(0.0);
+          double t, a, b;
+          const int hit = world_cast(s.faces, pos, to_ts(d), &t, &a, &b);
+          if (hit >= 0) {
+            const WorldFace &f = s.faces[hit];
+            const ts_vec3d n = world_face_normal(f);
+            ts_vec3d bump[3], v4[4];
+            rnm_bump_basis(f.u, f.v, n, n, bump, msg, sizeof msg);
+            rnm_bake_texel(world_face_point(f, a, b), n, bump, s.lights.data(), static_cast<int>(s.lights.size()), v4, msg,
+                           sizeof msg);
+            rad = to_glm(v4[0]) * 0.6;
+          }
+          for (const rnm_light &l : s.lights) {  // a light bulb of radius 0.08 (not for a sun)
+            if (l.directional) continue;
+            const glm::dvec3 lp = to_glm(l.pos) - to_glm(pos);
+            const double along = glm::dot(lp, d);
+            if (along > 0 && along < t && glm::dot(lp, lp) - along * along < 0.08 * 0.08) rad = to_glm(l.color) * 4.0;
+          }
+          float *px = &c.rgba[((static_cast<size_t>(face) * N + j) * N + i) * 4];
+          px[0] = static_cast<float>(rad.x);
+          px[1] = static_cast<float>(rad.y);
+          px[2] = static_cast<float>(rad.z);
+          px[3] = 1.f;
+        }
+      }
+    }
+    out->cubes.push_back(c);
+  }
+  return true;
+}
+
+TextureDesc encode_page(const WorldBakeInput &s, const WorldBake &b, int encoding) {
+  TextureDesc t = wl_texture("u_lightmap", s.page_w, s.page_h, encoding != WL_LM_RGBE, false);
+  for (size_t i = 0; i < b.page.size(); i += 4) {
+    const float *in = &b.page[i];
+    float *o = &t.rgba[i];
+    o[3] = 1.f;
+    if (encoding == WL_LM_RGBE) {
+      ts_rgbe e;
+      ts_rgbe_encode(in, &e);  // the page is finite (the baker refuses anything else)
+      ts_rgbe_texel(e, o);
+      continue;
+    }
+    for (int c = 0; c < 3; ++c) {
+      switch (encoding) {
+        case WL_LM_FLOAT: o[c] = ts_half_quantize(in[c]); break;
+        case WL_LM_412: o[c] = ts_u16_412_quantize(in[c]); break;
+        case WL_LM_LDR: o[c] = ts_ldr_quantize(in[c]); break;
+        default: o[c] = in[c]; break;  // float32, unquantised
+      }
+    }
+  }
+  return t;
+}
+
+void decode_texel(int encoding, const float t[4], double rgb[3]) {
+  for (int c = 0; c < 3; ++c) {
+    switch (encoding) {
+      case WL_LM_412: rgb[c] = 16.0 * t[c]; break;
+      case WL_LM_LDR: rgb[c] = std::pow(2.0 * t[c], 2.2); break;
+      case WL_LM_RGBE: rgb[c] = t[c] * std::ldexp(1.0, static_cast<int>(std::lround(t[3] * 255.0)) - 128); break;
+      default: rgb[c] = t[c]; break;
+    }
+  }
+}

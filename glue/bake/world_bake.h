@@ -1,0 +1,39 @@
+// tiershade bake: the lightmap bake of a set of world faces: radiosity-normal-mapped luxels
+// (c_ref/offline/rnm_bake.c) on one page laid out by c_ref/offline/lightmap_page.c, each face's
+// cube-map probe (c_ref/offline/envmap_probes.c) and the probes' cube maps ray cast from the faces;
+// the page's run-time lightmap encodings.
+#pragma once
+#include <string>
+#include <vector>
+
+#include "bake/world_faces.h"
+#include "families/world_lighting.h"
+#include "offline/lightmap_page.h"
+#include "offline/rnm_bake.h"
+
+struct WorldBakeInput {
+  std::vector<WorldFace> faces;
+  std::vector<rnm_light> lights;
+  std::vector<ts_vec3d> probes;  // at least one
+  double luxels_per_unit = 6;
+  int page_w = 512, page_h = 256;
+  int cube_size = 64;
+  bool bake_luxels = true;  // false: the page is left black (alpha 1) for a page read from a file
+};
+
+// The baked lighting: the page in float32 (flat, b0, b1, b2 per face, borders filled),
+// the faces' places in it, each face's probe and the probes' cube maps (linear radiance).
+struct WorldBake {
+  std::vector<lm_face_place> place;
+  std::vector<float> page;  // page_w x page_h RGBA32F, alpha 1
+  std::vector<int> face_probe;
+  std::vector<TextureDesc> cubes;  // "u_envmap", LINEAR (a frame for GLES switches them to NEAREST)
+};
+bool bake_world(const WorldBakeInput &s, WorldBake *out, std::string *err);
+
+// Lightmap encodings of the page for the shader (LIGHTMAP_ENCODING 0..3, -1 = float32
+// unquantised): what each run-time format stores, uploaded as RGBA32F holding exactly
+// those values. RGBE is sampled NEAREST (it does not filter), the others LINEAR.
+TextureDesc encode_page(const WorldBakeInput &s, const WorldBake &b, int encoding);
+// The value a texel of that encoding decodes to (double), for error measurements.
+void decode_texel(int encoding, const float texel[4], double rgb[3]);

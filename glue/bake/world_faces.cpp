@@ -1,0 +1,89 @@
+// tiershade bake: world faces (glue/bake/world_faces.h): a face from a mesh's planar quad, points
+// on a face and ray casts against faces, in double with GLM.
+#include "bake/world_faces.h"
+
+#include <cmath>
+
+#include "bake/glm_ts.h"
+
+namespace {
+
+glm::dvec3 at3(const std::vector<float> &a, size_t i, size_t stride) {
+  return glm::dvec3(a[i * stride], a[i * stride + 1], a[i * stride + 2]);
+}
+
+// v / |v| (GLM's normalize), or v itself when it has no length.
+glm::dvec3 unit(const glm::dvec3 &v) { return glm::dot(v, v) > 0 ? glm::normalize(v) : v; }
+
+}  // namespace
+
+bool world_face_from_quad(const std::vector<float> &position, const std::vector<float> &normal,
+                          const std::vector<float> &tangent, const std::vector<uint32_t> &indices, const char *name,
+                          int probe, WorldFace *out, double frame_min[2]) {
+  if (indices.size() < 3) return false;
+  const uint32_t i0 = indices[0];
+  const glm::dvec3 p0 = at3(position, i0, 3), p1 = at3(position, indices[1], 3), p2 = at3(position, indices[2], 3);
+  const glm::dvec3 sn = normal.size() >= (i0 + 1) * 3 ? at3(normal, i0, 3) : glm::dvec3(0.0);
+  glm::dvec3 n = unit(glm::cross(p1 - p0, p2 - p0));
+  if (glm::dot(n, n) == 0) n = unit(sn);  // a degenerate first triangle: the vertex normal alone
+  if (glm::dot(n, n) == 0) return false;
+  if (glm::dot(n, sn) < 0) n = -n;  // the face's front is the side its vertex normals face
+  const bool has_tangent = tangent.size() >= (i0 + 1) * 4;
+  glm::dvec3 t = has_tangent ? at3(tangent, i0, 4) : glm::dvec3(1, 0, 0);
+  t = t - n * glm::dot(n, t);
+  if (glm::dot(t, t) < 1e-12) t = std::fabs(n.x) < 0.9 ? glm::dvec3(1, 0, 0) - n * n.x : glm::dvec3(0, 1, 0) - n * n.y;
+  t = unit(t);
+  const double hand = has_tangent && tangent[i0 * 4 + 3] < 0 ? -1.0 : 1.0;
+  const glm::dvec3 b = glm::cross(n, t) * hand;
+  double amin = 1e300, amax = -1e300, bmin = 1e300, bmax = -1e300;
+  for (size_t i = 0; i + 2 < position.size(); i += 3) {
+    const glm::dvec3 q = at3(position, i / 3, 3);
+    amin = std::fmin(amin, glm::dot(q, t));
+    amax = std::fmax(amax, glm::dot(q, t));
+    bmin = std::fmin(bmin, glm::dot(q, b));
+    bmax = std::fmax(bmax, glm::dot(q, b));
+  }
+  WorldFace f{};
+  f.name = name;
+  f.origin = to_ts(t * amin + b * bmin + n * glm::dot(p0, n));
+  f.u = to_ts(t);
+  f.v = to_ts(b);
+  f.su = std::fmax(amax - amin, 1e-3);
+  f.sv = std::fmax(bmax - bmin, 1e-3);
+  f.probe = probe;
+  f.normal = to_ts(n);
+  *out = f;
+  frame_min[0] = amin;
+  frame_min[1] = bmin;
+  return true;
+}
+
+ts_vec3d world_face_normal(const WorldFace &f) { return to_ts(glm::normalize(to_glm(f.normal))); }
+
+ts_vec3d world_face_point(const WorldFace &f, double a, double b) {
+  return to_ts(to_glm(f.origin) + (to_glm(f.u) * (a * f.su) + to_glm(f.v) * (b * f.sv)));
+}
+
+int world_cast(const std::vector<WorldFace> &faces, ts_vec3d o, ts_vec3d d, double *t_out, double *a_out,
+               double *b_out) {
+  const glm::dvec3 og = to_glm(o), dg = to_glm(d);
+  int best = -1;
+  double best_t = 1e30;
+  for (size_t i = 0; i < faces.size(); ++i) {
+    const WorldFace &f = faces[i];
+    const glm::dvec3 n = to_glm(world_face_normal(f));
+    const double dn = glm::dot(dg, n);
+    if (dn >= 0) continue;  // parallel, or from behind
+    const double t = glm::dot(to_glm(f.origin) - og, n) / dn;
+    if (!(t > 1e-6) || t >= best_t) continue;
+    const glm::dvec3 q = (og + dg * t) - to_glm(f.origin);
+    const double a = glm::dot(q, to_glm(f.u)) / f.su, b = glm::dot(q, to_glm(f.v)) / f.sv;
+    if (a < 0 || a > 1 || b < 0 || b > 1) continue;
+    best = static_cast<int>(i);
+    best_t = t;
+    *a_out = a;
+    *b_out = b;
+  }
+  *t_out = best_t;
+  return best;
+}

@@ -1,0 +1,36 @@
+// tiershade bake: world faces, the planar quads a lightmap page holds: a face from a mesh's
+// quad (its own front normal, from the winding and the vertex normals), points on a face,
+// and the nearest face a ray hits from the front.
+#pragma once
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "math/ts_math.h"
+
+struct WorldFace {
+  const char *name;
+  ts_vec3d origin, u, v;  // corner and unit edge directions (u = the S texture axis, v = T)
+  double su, sv;          // edge lengths
+  int probe;              // explicit cube-map probe, or -1 for the nearest
+  ts_vec3d normal = {0, 0, 0};  // the front normal (the lit side), not necessarily unit; bake_world refuses zero
+};
+
+// A face from one planar quad of world-space triangles (positions xyz, normals xyz, tangents
+// xyzw or empty; every index < the vertex count): the front is the side of the first
+// triangle's winding normal that its vertex normal faces; u is the first vertex's tangent made
+// orthogonal to it (else an axis), v = normal x u times the tangent's handedness. The face
+// spans the vertices' extent along u and v; frame_min receives that extent's low corner
+// (dot(p, u), dot(p, v)) for the lightmap coordinates of vertex p: ((p.u - min_u) / su, ...).
+// False for fewer than 3 indices or a degenerate first triangle.
+bool world_face_from_quad(const std::vector<float> &position, const std::vector<float> &normal,
+                          const std::vector<float> &tangent, const std::vector<uint32_t> &indices, const char *name,
+                          int probe, WorldFace *out, double frame_min[2]);
+
+ts_vec3d world_face_normal(const WorldFace &f);  // the unit front normal
+ts_vec3d world_face_point(const WorldFace &f, double a, double b);  // origin + a su u + b sv v, (a, b) in [0, 1]^2
+
+// Nearest face hit from the front by the ray o + t d (t > 1e-6): its index (-1: none; *t_out
+// then 1e30), t and the hit's (a, b).
+int world_cast(const std::vector<WorldFace> &faces, ts_vec3d o, ts_vec3d d, double *t_out, double *a_out,
+               double *b_out);
