@@ -9,7 +9,7 @@
 // This module estimates how many DX9 instruction slots a GLSL fragment shader
 // would take, so each variant can be checked against its tier's budget.
 //
-// Route, all in process: GLSL 3.30 -> glslang (C++ API, as glslangValidator -V)
+// Route, all in process: GLSL 3.30 -> glslang (C interface, as glslangValidator -V)
 // -> SPIR-V -> spvtools::Optimizer with the spirv-opt -O passes -> walk the
 // optimised binary's instructions (spvBinaryParse) -> weight every instruction
 // with a DX9 cost table (vec4 SIMD: one slot per vector instruction;
@@ -46,7 +46,7 @@ struct BudgetCounts {
 // version line gets "#version 330" prepended; a desktop version below 330 is
 // raised to 330 and "compatibility" becomes "core"; ES sources are rejected.
 // Returns false with a message in *err (e.g. "GLSL compile failed:" and the
-// glslang log, positions "fragment.frag:L:" or "M:L:" after "#line L M"; or
+// glslang log, positions "0:L:" (source string 0) or "M:L:" after "#line L M"; or
 // "unbounded loop ...") on failure; *out is then left as zero counts.
 bool budget_count_fragment(const std::string &glsl330_source, BudgetCounts *out,
                            std::string *err);

@@ -1,15 +1,17 @@
 // tiershade budget: GLSL 3.30 fragment source -> optimised SPIR-V in process, with glslang's
-// C++ API (glslang/Public/ShaderLang.h, SPIRV/GlslangToSpv.h) and SPIRV-Tools'
-// spvtools::Optimizer (spirv-tools/optimizer.hpp). The settings are those of the commands the
-// counter used to run: glslangValidator -V -R -S frag --amb --aml, then spirv-opt -O.
+// C interface (glslang/Include/glslang_c_interface.h) and SPIRV-Tools' spvtools::Optimizer
+// (spirv-tools/optimizer.hpp). The settings are those of the commands the counter used to
+// run: glslangValidator -V -R -S frag --amb --aml, then spirv-opt -O. The C interface, not
+// glslang's C++ classes: Debian builds glslang without RTTI, and the SAN=1 build's UBSan vptr
+// check needs the typeinfo of every polymorphic class used in our code (link error otherwise).
 #include "budget/glsl_to_spirv.h"
 #include "budget/trim.h"
 
-#include <glslang/Public/ResourceLimits.h>
-#include <glslang/Public/ShaderLang.h>
-#include <glslang/SPIRV/GlslangToSpv.h>
+#include <glslang/Include/glslang_c_interface.h>
+#include <glslang/Public/resource_limits_c.h>
 #include <spirv-tools/optimizer.hpp>
 
+#include <memory>
 #include <mutex>
 #include <sstream>
 
@@ -17,17 +19,16 @@ namespace budget {
 
 namespace {
 
-// glslang wants InitializeProcess() once per process before any TShader; afterwards shaders
-// may be compiled on several threads at once (each TShader has its own pool).  We never call
-// FinalizeProcess: the tables live until exit.
+// glslang wants glslang_initialize_process() once per process before any shader; afterwards
+// shaders may be compiled on several threads at once (each shader has its own pool).  We never
+// call glslang_finalize_process: the tables live until exit.
 void init_glslang_once() {
     static std::once_flag once;
-    std::call_once(once, [] { glslang::InitializeProcess(); });
+    std::call_once(once, [] { glslang_initialize_process(); });
 }
 
-// The name glslang gives the source string in its messages ("fragment.frag:15: ..."), as when
-// glslangValidator compiled the file fragment.frag.
-constexpr const char *kSourceName = "fragment.frag";
+// A glslang C object with its delete function.
+template <typename T> using Handle = std::unique_ptr<T, void (*)(T *)>;
 
 // Non-empty lines of a glslang log, each ending in a newline.
 std::string log_lines(const std::string &text) {
@@ -82,40 +83,51 @@ bool prepare_source(const std::string &src, std::string *out, std::string *err) 
 
 bool compile_glsl_fragment(const std::string &prepared_source, std::vector<uint32_t> *spirv, std::string *err) {
     init_glslang_once();
-    const EShLanguage stage = EShLangFragment;
-    glslang::TShader shader(stage);
-    const char *text = prepared_source.c_str();
-    const int length = static_cast<int>(prepared_source.size());
-    const char *name = kSourceName;
-    shader.setStringsWithLengthsAndNames(&text, &length, &name, 1);
     // -V: Vulkan 1.0 client, SPIR-V 1.0, Vulkan input semantics 100; -R: relaxed Vulkan rules
     // (uniforms outside blocks); --amb / --aml: automatic bindings and locations.
-    shader.setEnvInput(glslang::EShSourceGlsl, stage, glslang::EShClientVulkan, 100);
-    shader.setEnvClient(glslang::EShClientVulkan, glslang::EShTargetVulkan_1_0);
-    shader.setEnvTarget(glslang::EShTargetSpv, glslang::EShTargetSpv_1_0);
-    shader.setEnvInputVulkanRulesRelaxed();
-    shader.setAutoMapBindings(true);
-    shader.setAutoMapLocations(true);
-    const EShMessages messages = static_cast<EShMessages>(EShMsgSpvRules | EShMsgVulkanRules);
-    const int default_version = 100;  // what a source without #version means (never: see prepare_source)
-    if (!shader.parse(GetDefaultResources(), default_version, false, messages)) {
-        *err = "GLSL compile failed:\n" + log_lines(shader.getInfoLog()) + log_lines(shader.getInfoDebugLog());
+    glslang_input_t input = {};
+    input.language = GLSLANG_SOURCE_GLSL;
+    input.stage = GLSLANG_STAGE_FRAGMENT;
+    input.client = GLSLANG_CLIENT_VULKAN;
+    input.client_version = GLSLANG_TARGET_VULKAN_1_0;
+    input.target_language = GLSLANG_TARGET_SPV;
+    input.target_language_version = GLSLANG_TARGET_SPV_1_0;
+    input.code = prepared_source.c_str();
+    input.default_version = 100;  // what a source without #version means (never: see prepare_source)
+    input.default_profile = GLSLANG_NO_PROFILE;
+    input.force_default_version_and_profile = 0;
+    input.forward_compatible = 0;
+    input.messages = static_cast<glslang_messages_t>(GLSLANG_MSG_SPV_RULES_BIT | GLSLANG_MSG_VULKAN_RULES_BIT);
+    input.resource = glslang_default_resource();
+
+    Handle<glslang_shader_t> shader(glslang_shader_create(&input), glslang_shader_delete);
+    glslang_shader_set_options(shader.get(), GLSLANG_SHADER_AUTO_MAP_BINDINGS | GLSLANG_SHADER_AUTO_MAP_LOCATIONS |
+                                                 GLSLANG_SHADER_VULKAN_RULES_RELAXED);
+    // The C interface parses the text glslang_shader_preprocess leaves (which keeps the
+    // positions: it writes #line directives where lines or source strings change).
+    if (!glslang_shader_preprocess(shader.get(), &input) || !glslang_shader_parse(shader.get(), &input)) {
+        *err = "GLSL compile failed:\n" + log_lines(glslang_shader_get_info_log(shader.get())) +
+               log_lines(glslang_shader_get_info_debug_log(shader.get()));
         return false;
     }
-    glslang::TProgram program;
-    program.addShader(&shader);
-    if (!program.link(messages) || !program.mapIO()) {
-        *err = "GLSL link failed:\n" + log_lines(program.getInfoLog()) + log_lines(program.getInfoDebugLog());
+    Handle<glslang_program_t> program(glslang_program_create(), glslang_program_delete);
+    glslang_program_add_shader(program.get(), shader.get());
+    if (!glslang_program_link(program.get(), input.messages) || !glslang_program_map_io(program.get())) {
+        *err = "GLSL link failed:\n" + log_lines(glslang_program_get_info_log(program.get())) +
+               log_lines(glslang_program_get_info_debug_log(program.get()));
         return false;
     }
-    spv::SpvBuildLogger logger;
-    glslang::SpvOptions options;  // no debug info, no glslang-side optimisation (as -V without -Os)
-    spirv->clear();
-    glslang::GlslangToSpv(*program.getIntermediate(stage), *spirv, &logger, &options);
-    if (spirv->empty()) {
-        *err = "GLSL to SPIR-V failed:\n" + log_lines(logger.getAllMessages());
+    glslang_spv_options_t options = {};  // no debug info, no glslang-side optimisation (as -V without -Os)
+    options.disable_optimizer = true;
+    glslang_program_SPIRV_generate_with_options(program.get(), input.stage, &options);
+    const size_t words = glslang_program_SPIRV_get_size(program.get());
+    if (words == 0) {
+        const char *msg = glslang_program_SPIRV_get_messages(program.get());
+        *err = "GLSL to SPIR-V failed:\n" + log_lines(msg ? msg : "(no message)");
         return false;
     }
+    spirv->assign(words, 0u);
+    glslang_program_SPIRV_get(program.get(), spirv->data());
     return true;
 }
 

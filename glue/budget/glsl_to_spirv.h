@@ -1,5 +1,5 @@
 // tiershade budget: GLSL 3.30 fragment source -> SPIR-V -> optimised SPIR-V, in process:
-// glslang's C++ API (the settings of `glslangValidator -V -R -S frag --amb --aml`) and
+// glslang's C interface (the settings of `glslangValidator -V -R -S frag --amb --aml`) and
 // spvtools::Optimizer with the `spirv-opt -O` passes. Internal to glue/budget/.
 #pragma once
 
@@ -13,7 +13,7 @@ namespace budget {
 bool prepare_source(const std::string &src, std::string *out, std::string *err);
 
 // Compiles a prepared fragment shader to SPIR-V.  On failure *err holds "GLSL compile failed:"
-// and glslang's log, whose positions read "fragment.frag:L:" (or "M:L:" after "#line L M").
+// and glslang's log, whose positions read "0:L:" (source string 0; "M:L:" after "#line L M").
 bool compile_glsl_fragment(const std::string &prepared_source, std::vector<uint32_t> *spirv, std::string *err);
 
 // Runs the performance passes of `spirv-opt -O` (after validating the module, as spirv-opt does).

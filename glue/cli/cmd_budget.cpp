@@ -1,5 +1,5 @@
 // tiershade: `budget` subcommand: instruction slots per variant in the DX9-like
-// model of glue/budget/budget.cpp (docs/budget_model.md), checked against the tier limits:
+// model of glue/budget/ (docs/budget_model.md), checked against the tier limits:
 // ps20 = ps_2_0 (64 arithmetic + 32 texture slots), ps2b = ps_2_b (512 slots), sm3 unlimited.
 // With --nir, each variant's production program is also linked on OSMesa GL 3.3 under
 // ST_DEBUG=nir and Mesa's scalar NIR is counted (glue/budget/nir_capture.h) as a cross-check of
