@@ -438,23 +438,20 @@ void test_portability_macros(Backend b, Api api) {
   std::string tag;
   Ctx c = checked_ctx(b, api, "portability", &tag);
   if (!c.ok()) return;
-  const Target t = target_of(api);
-  Assembled vs, fs;
+  // Assembled and built as one pair: the fragment text is kept for the order check.
+  Assembled pair[2];
   std::string err;
-  if (!assemble("t_port.vs", t, Stage::Vertex, {}, &vs, &err) ||
-      !assemble("t_port.fs", t, Stage::Fragment, {}, &fs, &err)) {
-    check(false, "portability." + tag + "_assemble", err);
-    release(c);
-    return;
-  }
-  check(t != Target::ESSL100 || fs.text.find("#extension GL_OES_texture_3D") < fs.text.find("#define TS_ESSL100"),
-        "portability." + tag + "_extension_before_defines");
-  const GLuint p = c.r->build_program(vs, fs, &err);
+  const bool assembled = assemble("t_port.vs", target_of(api), Stage::Vertex, {}, &pair[0], &err) &&
+                         assemble("t_port.fs", target_of(api), Stage::Fragment, {}, &pair[1], &err);
+  const GLuint p = assembled ? c.r->build_program(pair[0], pair[1], &err) : 0;
   check(p != 0, "portability." + tag + "_builds", err);
   if (!p) {
     release(c);
     return;
   }
+  const std::string &fs = pair[1].text;
+  check(api != Api::GLES2 || fs.find("#extension GL_OES_texture_3D") < fs.find("#define TS_ESSL100"),
+        "portability." + tag + "_extension_before_defines");
   TextureDesc tex, cube, vol;
   tex.sampler = "u_tex";
   tex.w = tex.h = 1;
