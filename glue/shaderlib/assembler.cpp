@@ -92,7 +92,8 @@ bool is_extension_directive(const std::string &line) {
 
 // `extensions` collects the entry file's #extension lines (depth 0): ESSL (and Mesa for every
 // version) wants them before any non-preprocessor token, so assemble() puts them right after
-// #version, ahead of the prelude's precision statements; a blank line keeps their place.
+// #version, ahead of the portability header's precision statements; a blank line keeps their
+// place.
 bool expand(const std::string &name, int depth, std::vector<std::string> &stack, Assembled *out,
             std::ostringstream &o, std::string *err, const std::string &from, std::string *extensions) {
   if (depth > 16) {
