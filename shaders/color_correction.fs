@@ -14,15 +14,15 @@
 // ESSL 1.00 has 3D textures only through OES_texture_3D (docs/color_correction.md). The
 // assembler puts this line right after #version; `enable` is a warning where it is unknown.
 #extension GL_OES_texture_3D : enable
-#if !LUT_ATLAS && (defined(TS_ESSL100) || defined(TS_ESSL300))
-precision highp sampler3D;  // no default precision on ES; llvmpipe returns fp16 texels for lowp
+#if !LUT_ATLAS
+TS_SAMPLER3D_PRECISION  // ts_portability.glsl: highp on ES (llvmpipe returns fp16 texels for lowp)
 #endif
 #include "common_math.glsl"
 #include "common_inputs.glsl"
 #include "common_color_correction.glsl"
 #include "color_correction_slots.glsl"
 
-TS_VARYING_IN vec2 v_uv;
+TS_VARYING vec2 v_uv;
 uniform sampler2D u_frame;  // the tone-mapped, display-encoded frame
 uniform vec4 u_cc_weights;  // weights of LUTs 0..3
 uniform vec4 u_cc_params;   // x: default weight

@@ -18,12 +18,6 @@
 #ifndef TS_COMMON_COLOR_CORRECTION_GLSL
 #define TS_COMMON_COLOR_CORRECTION_GLSL
 
-#ifdef TS_ESSL100
-#define TS_CC_TEX3D(s, p) texture3D(s, p)
-#else
-#define TS_CC_TEX3D(s, p) texture(s, p)
-#endif
-
 // Texel-centre addressing (fact sheet section 9), lut = ((N-1)/N, 0.5/N, N-1, 1/N).
 vec3 ts_cc_uvw(vec3 c, vec4 lut) {
     return c * lut.x + lut.y;
@@ -72,19 +66,19 @@ vec3 ts_cc_atlas_shader(sampler2D lut, vec4 u, vec2 v, vec3 f) {
 #else
 // Hardware filtering on a 3D texture: one trilinear tap.
 vec3 ts_cc_volume_hw(sampler3D lut, vec3 uvw) {
-    return TS_CC_TEX3D(lut, uvw).rgb;
+    return TS_TEX3D(lut, uvw).rgb;
 }
 
 // Shader filtering on a 3D texture: c0, c1 = the centres of the cell's corners.
 vec3 ts_cc_volume_shader(sampler3D lut, vec3 c0, vec3 c1, vec3 f) {
-    vec3 t000 = TS_CC_TEX3D(lut, vec3(c0.x, c0.y, c0.z)).rgb;
-    vec3 t100 = TS_CC_TEX3D(lut, vec3(c1.x, c0.y, c0.z)).rgb;
-    vec3 t010 = TS_CC_TEX3D(lut, vec3(c0.x, c1.y, c0.z)).rgb;
-    vec3 t110 = TS_CC_TEX3D(lut, vec3(c1.x, c1.y, c0.z)).rgb;
-    vec3 t001 = TS_CC_TEX3D(lut, vec3(c0.x, c0.y, c1.z)).rgb;
-    vec3 t101 = TS_CC_TEX3D(lut, vec3(c1.x, c0.y, c1.z)).rgb;
-    vec3 t011 = TS_CC_TEX3D(lut, vec3(c0.x, c1.y, c1.z)).rgb;
-    vec3 t111 = TS_CC_TEX3D(lut, vec3(c1.x, c1.y, c1.z)).rgb;
+    vec3 t000 = TS_TEX3D(lut, vec3(c0.x, c0.y, c0.z)).rgb;
+    vec3 t100 = TS_TEX3D(lut, vec3(c1.x, c0.y, c0.z)).rgb;
+    vec3 t010 = TS_TEX3D(lut, vec3(c0.x, c1.y, c0.z)).rgb;
+    vec3 t110 = TS_TEX3D(lut, vec3(c1.x, c1.y, c0.z)).rgb;
+    vec3 t001 = TS_TEX3D(lut, vec3(c0.x, c0.y, c1.z)).rgb;
+    vec3 t101 = TS_TEX3D(lut, vec3(c1.x, c0.y, c1.z)).rgb;
+    vec3 t011 = TS_TEX3D(lut, vec3(c0.x, c1.y, c1.z)).rgb;
+    vec3 t111 = TS_TEX3D(lut, vec3(c1.x, c1.y, c1.z)).rgb;
     vec3 s0 = ts_cc_lerp(ts_cc_lerp(t000, t100, f.x), ts_cc_lerp(t010, t110, f.x), f.y);
     vec3 s1 = ts_cc_lerp(ts_cc_lerp(t001, t101, f.x), ts_cc_lerp(t011, t111, f.x), f.y);
     return ts_cc_lerp(s0, s1, f.z);

@@ -7,8 +7,10 @@
 //       (0.299, 0.587, 0.114)
 //   F = (1 - N.V)^5 (1 - R0) + R0, with N.V saturated (a back-facing or grazing
 //       normal gives F = 1, never above it)
-// The lerps are written a + t (b - a): GLSL mix() is lowered by NIR in more than
-// one way, an explicit form is what the C twin can mirror.
+// The lerps are mix(), like every lerp in the library (docs/conformance.md). Mesa rewrites
+// mix(s, s*s, c) to s * mix(1, s, c) = s * ((1 - c) + s*c), and mix(luma, s, t), whose a and t
+// are the same in all three lanes, to luma*(1 - t) + s*t (measured, unfused); the C twin
+// mirrors both forms.
 // C twin: c_ref/common/common_envmap.h
 //------------------------------------------------------------------------------
 #ifndef TS_COMMON_ENVMAP_GLSL
@@ -19,12 +21,12 @@ vec3 ts_reflect_unnormalized(vec3 N, vec3 E) {
 }
 
 vec3 ts_envmap_contrast(vec3 s, float contrast) {
-    return s + (s * s - s) * contrast;
+    return mix(s, s * s, contrast);
 }
 
 vec3 ts_envmap_saturation(vec3 s, float saturation) {
     float luma = dot(s, vec3(0.299, 0.587, 0.114));
-    return luma + (s - luma) * saturation;
+    return mix(vec3(luma), s, saturation);
 }
 
 // cos(N, E) = N.E / sqrt((N.N)(E.E)) with one inversesqrt (ps20's normalization

@@ -23,7 +23,7 @@ vec4 ts_fetch(int slot) {
 #else
     // GLSL ES 1.00 has no texelFetch: sample the texel centre with NEAREST filtering.
     vec2 p = gl_FragCoord.xy + vec2(0.0, float(slot) * ts_grid_height);
-    return texture2D(ts_record, p / ts_record_size);
+    return TS_TEX2D(ts_record, p / ts_record_size);
 #endif
 }
 #endif

@@ -13,6 +13,9 @@
 #define TS_COMMON_LIGHTS_GLSL
 
 // Keeps d*d below FLT_MAX, so a zero coefficient times d*d is 0, never 0*inf = NaN.
+// fp16: NOT a half-float number (above the largest, 65504): in fp16 (mediump on llvmpipe's
+// GLES) it is +Inf and the min() clamps nothing; d*d overflows to Inf from d = 256 on, so a
+// zero coefficient gives 0 * Inf = NaN again. Mediump variants keep lights within 256 units.
 #define TS_MAX_LIGHT_DISTANCE 1.0e18
 
 struct TsLight {

@@ -24,6 +24,8 @@
 #define TS_RNM_OO_SQRT_3 0.577350269189626
 
 // Added to every weight: a normal float, so 3 x it is never flushed to zero.
+// fp16: NOT a half-float number; in fp16 (mediump) it is 0, so three zero weights give
+// 0 / 0 = NaN in ts_rnm_blend. world_lighting has no mediump variant.
 #define TS_RNM_MIN_WEIGHT 1.0e-30
 
 // The three weights of a tangent-space normal n. b0.y = 0, so its dot product

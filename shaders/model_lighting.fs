@@ -22,22 +22,12 @@
 #include "common_phong.glsl"
 #include "common_output.glsl"
 #include "model_lighting_slots.glsl"
+#include "model_lighting_varyings.glsl"
 
 #ifdef TS_TIER_SM3
 #define ML_LOOP_LIGHTS ML_MAX_LIGHTS
 #else
 #define ML_LOOP_LIGHTS NUM_LIGHTS
-#endif
-
-TS_VARYING_IN vec3 v_normal;     // world-space normal, as interpolated (not unit length)
-TS_VARYING_IN vec3 v_position;   // world-space position
-TS_VARYING_IN vec2 v_uv;
-#ifdef TS_TIER_PS20
-TS_VARYING_IN vec4 v_light_atten;  // per-vertex attenuation of lights 0..3 (model_lighting.vs)
-#endif
-#if PHONG
-TS_VARYING_IN vec3 v_tangent;    // world-space tangent and bitangent of the normal map
-TS_VARYING_IN vec3 v_bitangent;
 #endif
 
 uniform vec4 u_ambient_cube[6];  // +X -X +Y -Y +Z -Z
@@ -73,6 +63,21 @@ vec3 ml_ambient_cube(vec3 n) {
         TS_UNIFORM_INPUT(ML_SLOT_AMBIENT + 0, u_ambient_cube[0]).rgb, TS_UNIFORM_INPUT(ML_SLOT_AMBIENT + 1, u_ambient_cube[1]).rgb,
         TS_UNIFORM_INPUT(ML_SLOT_AMBIENT + 2, u_ambient_cube[2]).rgb, TS_UNIFORM_INPUT(ML_SLOT_AMBIENT + 3, u_ambient_cube[3]).rgb,
         TS_UNIFORM_INPUT(ML_SLOT_AMBIENT + 4, u_ambient_cube[4]).rgb, TS_UNIFORM_INPUT(ML_SLOT_AMBIENT + 5, u_ambient_cube[5]).rgb);
+}
+
+// The diffuse of one local light, by variant (fact sheet section 4): the light-warp ramp
+// indexed by the unsquared half-Lambert term, times 2; else half-Lambert or Lambert.
+// It takes the light, not its colour: given a vec3 colour parameter Mesa regrouped
+// color * (2 warp) * att as (color * 2) * (warp * att), 1 ULP off the C twin (measured).
+vec3 ml_light_diffuse(TsLight l, float att, float NdotL) {
+#if LIGHT_WARP
+    vec3 warp = TS_TEX2D(u_light_warp, vec2(saturate(0.5 * NdotL + 0.5), 0.5)).rgb;
+    return l.color.rgb * (2.0 * warp) * att;
+#elif HALF_LAMBERT
+    return l.color.rgb * (att * ts_half_lambert(NdotL));
+#else
+    return l.color.rgb * (att * ts_lambert(NdotL));
+#endif
 }
 
 void main() {
@@ -140,18 +145,7 @@ void main() {
         float att = ts_light_attenuation(l, P, L);
 #endif
         float NdotL = dot(N, L);
-#if LIGHT_WARP
-        // Light warp: the unsquared half-Lambert term indexes a ramp, times 2 (fact sheet section 4).
-        vec3 warp = TS_TEX2D(u_light_warp, vec2(saturate(0.5 * NdotL + 0.5), 0.5)).rgb;
-        diffuse += l.color.rgb * (2.0 * warp) * att;
-#else
-#if HALF_LAMBERT
-        float term = ts_half_lambert(NdotL);
-#else
-        float term = ts_lambert(NdotL);
-#endif
-        diffuse += l.color.rgb * (att * term);
-#endif
+        diffuse += ml_light_diffuse(l, att, NdotL);
 #if PHONG
         float RdotL = saturate(dot(R, L));
         vec3 lit = l.color.rgb * (saturate(NdotL) * att);

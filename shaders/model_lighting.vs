@@ -8,23 +8,18 @@
 #include "common_math.glsl"
 #include "common_lights.glsl"
 #include "model_lighting_slots.glsl"
+#include "model_lighting_varyings.glsl"
 
 TS_ATTRIBUTE vec3 a_position;
 TS_ATTRIBUTE vec3 a_normal;
 TS_ATTRIBUTE vec2 a_uv;
 #if PHONG
 TS_ATTRIBUTE vec4 a_tangent;   // xyz tangent, w handedness (+1 or -1), as glTF stores it
-TS_VARYING_OUT vec3 v_tangent;
-TS_VARYING_OUT vec3 v_bitangent;
 #endif
 uniform mat4 u_model;          // object -> world (rigid or uniformly scaled)
 uniform mat4 u_view_proj;
-TS_VARYING_OUT vec3 v_normal;
-TS_VARYING_OUT vec3 v_position;
-TS_VARYING_OUT vec2 v_uv;
 #ifdef TS_TIER_PS20
 uniform vec4 u_lights[5 * ML_MAX_LIGHTS];
-TS_VARYING_OUT vec4 v_light_atten;
 #endif
 
 void main() {

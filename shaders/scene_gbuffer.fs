@@ -8,24 +8,11 @@
 // (world_lighting_slots.glsl). GBUFFER_SLOT k: slot k; -1: vec4(u_draw_index, 0, 0, 1).
 //------------------------------------------------------------------------------
 uniform float u_draw_index;
+// The assembler expands both includes; the #if keeps one family's declarations.
 #if GBUFFER_FAMILY == 0
-TS_VARYING_IN vec3 v_normal;
-TS_VARYING_IN vec3 v_position;
-TS_VARYING_IN vec2 v_uv;
-#ifdef TS_TIER_PS20
-TS_VARYING_IN vec4 v_light_atten;
-#endif
-#if PHONG
-TS_VARYING_IN vec3 v_tangent;
-TS_VARYING_IN vec3 v_bitangent;
-#endif
+#include "model_lighting_varyings.glsl"
 #else
-TS_VARYING_IN vec4 v_uv;
-TS_VARYING_IN vec4 v_lm_offset;
-TS_VARYING_IN vec4 v_normal;
-TS_VARYING_IN vec4 v_tangent;
-TS_VARYING_IN vec4 v_binormal;
-TS_VARYING_IN vec4 v_eye;
+#include "world_lighting_varyings.glsl"
 #endif
 
 TS_DECLARE_FRAG_COLOR

@@ -19,14 +19,7 @@
 #include "common_envmap.glsl"
 #include "common_fog.glsl"
 #include "world_lighting_slots.glsl"
-
-TS_VARYING_IN vec4 v_uv;         // xy base uv, zw lightmap uv
-TS_VARYING_IN vec4 v_lm_offset;  // xy offset to the next lightmap, z fog depth
-// vec4 so that the production path reads them with no construction (w unused, 0).
-TS_VARYING_IN vec4 v_normal;     // world-space tangent frame (interpolated, not unit length)
-TS_VARYING_IN vec4 v_tangent;
-TS_VARYING_IN vec4 v_binormal;
-TS_VARYING_IN vec4 v_eye;        // surface point -> eye, world space
+#include "world_lighting_varyings.glsl"
 
 uniform vec4 u_tint_scale;       // rgb c12 (tint x lightmap scale), w tone-map scale
 uniform vec4 u_envmap_tint;      // rgb tint, w ENV_MAP_SCALE

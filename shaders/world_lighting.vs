@@ -12,12 +12,7 @@ TS_ATTRIBUTE vec2 a_uv;          // base-texture uv
 TS_ATTRIBUTE vec4 a_lightmap;    // xy lightmap uv of the flat lightmap, zw offset to the next one
 uniform mat4 u_view_proj;
 uniform vec4 u_eye_position;
-TS_VARYING_OUT vec4 v_uv;
-TS_VARYING_OUT vec4 v_lm_offset;
-TS_VARYING_OUT vec4 v_normal;
-TS_VARYING_OUT vec4 v_tangent;
-TS_VARYING_OUT vec4 v_binormal;
-TS_VARYING_OUT vec4 v_eye;
+#include "world_lighting_varyings.glsl"
 
 void main() {
     gl_Position = u_view_proj * vec4(a_position, 1.0);

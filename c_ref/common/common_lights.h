@@ -6,6 +6,8 @@
 
 static inline TS_REAL FN(light_attenuation)(const V4 l[5], V3 P, V3 *L) {
   V3 Lv = M(sub3)(FN(xyz4)(l[2]), P);
+  /* TS_MIN_LENGTH2 and TS_MAX_LIGHT_DISTANCE: neither is an fp16 number (0 and +Inf in fp16:
+   * what that does to mediump shaders is in shaders/common_lights.glsl). */
   TS_REAL d2 = M(max)(M(dot3)(Lv, Lv), K(1.0e-30));
   TS_REAL rinv = M(inversesqrt)(d2);
   TS_REAL d = M(min)(d2 * rinv, K(1.0e18));
@@ -22,7 +24,7 @@ static inline TS_REAL FN(light_attenuation)(const V4 l[5], V3 P, V3 *L) {
 /* ps20: direction only; the attenuation arrives interpolated from the vertex shader. */
 static inline V3 FN(light_direction)(const V4 l[5], V3 P) {
   V3 Lv = M(sub3)(FN(xyz4)(l[2]), P);
-  TS_REAL rinv = M(inversesqrt)(M(max)(M(dot3)(Lv, Lv), K(1.0e-30)));
+  TS_REAL rinv = M(inversesqrt)(M(max)(M(dot3)(Lv, Lv), K(1.0e-30))); /* TS_MIN_LENGTH2: 0 in fp16 */
   return l[0].w > K(0.5) ? M(neg3)(FN(xyz4)(l[1])) : M(scale3)(Lv, rinv);
 }
 

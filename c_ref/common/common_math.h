@@ -1,7 +1,9 @@
 /* c_ref/common/common_math.h: generic twin of shaders/common_math.glsl (see ts_generic.h).
  * Included once per precision; no include guard on purpose. */
 
-/* TS_MIN_LENGTH2 = 1.0e-30: zero-length vectors normalise to 0, not NaN. */
+/* TS_MIN_LENGTH2 = 1.0e-30: zero-length vectors normalise to 0, not NaN. Not an fp16 number:
+ * 0 in fp16, where a zero vector gives NaN (shaders/common_math.glsl); the twins are float32
+ * and double only, like the highp shaders they mirror. */
 static inline V3 FN(safe_normalize)(V3 v) {
   return M(scale3)(v, M(inversesqrt)(M(max)(M(dot3)(v, v), K(1.0e-30))));
 }

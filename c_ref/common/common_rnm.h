@@ -6,7 +6,8 @@
 #define WL_OO_SQRT_2 K(0.707106781186548)
 #define WL_OO_SQRT_3 K(0.577350269189626)
 
-/* d_k = saturate(n . b_k)^2 + 1e-30. The b0 dot has two terms (its y lane is 0 and
+/* d_k = saturate(n . b_k)^2 + 1e-30 (TS_RNM_MIN_WEIGHT, not an fp16 number: 0 in fp16, see
+ * shaders/common_rnm.glsl). The b0 dot has two terms (its y lane is 0 and
  * NIR drops it); the others are dot() with a constant vector (ts_dot3, last lane first). */
 static V3 FN(rnm_weights)(V3 n) {
   V3 d = M(v3)(n.x * WL_SQRT_2_OVER_3 + n.z * WL_OO_SQRT_3,

@@ -10,7 +10,13 @@
 extern "C" {
 #endif
 
-enum bb_slot { BB_SLOT_POS = 0, BB_SLOT_SIZE = 1, BB_SLOT_PARAMS = 2, BB_SLOTS = 3, BB_PIXEL_SLOTS = 1 };
+/* The input record's slots (enum bb_slot) and its counts (BB_SLOTS, BB_PIXEL_SLOTS, as #defines)
+ * come from the one table shaders/bloom_blur_slots.glsl. */
+#define TS_SLOT(ID, first, ...) ID = first,
+enum bb_slot {
+#include "../../shaders/bloom_blur_slots.glsl"
+};
+#undef TS_SLOT
 
 typedef struct {
   int direction; /* DIRECTION: 0 X, 1 Y */

@@ -11,7 +11,13 @@
 extern "C" {
 #endif
 
-enum bd_slot { BD_SLOT_POS = 0, BD_SLOT_SIZE = 1, BD_SLOT_SHAPE = 2, BD_SLOTS = 3, BD_PIXEL_SLOTS = 1 };
+/* The input record's slots (enum bd_slot) and its counts (BD_SLOTS, BD_PIXEL_SLOTS, as #defines)
+ * come from the one table shaders/bloom_downsample_slots.glsl. */
+#define TS_SLOT(ID, first, ...) ID = first,
+enum bd_slot {
+#include "../../shaders/bloom_downsample_slots.glsl"
+};
+#undef TS_SLOT
 
 typedef struct {
   int shape; /* SHAPE: 0 plain box, 1 shaped taps */

@@ -12,15 +12,13 @@
 extern "C" {
 #endif
 
+/* The input record's slots (enum cc_slot) and its counts (CC_SLOTS, CC_PIXEL_SLOTS, as #defines)
+ * come from the one table shaders/color_correction_slots.glsl. */
+#define TS_SLOT(ID, first, ...) ID = first,
 enum cc_slot {
-  CC_MAX_LOOKUPS = 4,
-  CC_SLOT_COLOR = 0,   /* the colour to correct; alpha passes through */
-  CC_SLOT_WEIGHTS = 1, /* weights of LUTs 0..3 */
-  CC_SLOT_PARAMS = 2,  /* x: the default weight */
-  CC_SLOT_LUT = 3,     /* ((N-1)/N, 0.5/N, N-1, 1/N) for LUT edge N */
-  CC_SLOTS = 4,
-  CC_PIXEL_SLOTS = 1 /* the colour: per pixel in deferred frames */
+#include "../../shaders/color_correction_slots.glsl"
 };
+#undef TS_SLOT
 
 typedef struct {
   int atlas;            /* LUT_ATLAS: 1 = 2D atlas, 0 = 3D texture */

@@ -11,14 +11,13 @@
 extern "C" {
 #endif
 
+/* The input record's slots (enum ht_slot) and its counts (HT_SLOTS, HT_PIXEL_SLOTS, as #defines)
+ * come from the one table shaders/hdr_tonemap_slots.glsl. */
+#define TS_SLOT(ID, first, ...) ID = first,
 enum ht_slot {
-  HT_SLOT_POS = 0,
-  HT_SLOT_FRAME = 1,
-  HT_SLOT_SIZE = 2,
-  HT_SLOT_PARAMS = 3,
-  HT_SLOTS = 4,
-  HT_PIXEL_SLOTS = 2
+#include "../../shaders/hdr_tonemap_slots.glsl"
 };
+#undef TS_SLOT
 
 typedef struct {
   int output_mode; /* OUTPUT_MODE: 0 linear, 1 gamma 2.2, 2 exact sRGB */

@@ -10,7 +10,13 @@
 extern "C" {
 #endif
 
-enum lc_slot { LC_SLOT_COLOR = 0, LC_SLOT_RANGE = 1, LC_SLOTS = 2, LC_PIXEL_SLOTS = 1 };
+/* The input record's slots (enum lc_slot) and its counts (LC_SLOTS, LC_PIXEL_SLOTS, as #defines)
+ * come from the one table shaders/luminance_compare_slots.glsl. */
+#define TS_SLOT(ID, first, ...) ID = first,
+enum lc_slot {
+#include "../../shaders/luminance_compare_slots.glsl"
+};
+#undef TS_SLOT
 
 typedef struct {
   int input_encoding; /* INPUT_ENCODING: 0 linear x tone-map scale, 1 sRGB-encoded, 2 luminance image (.r) */

@@ -10,7 +10,13 @@
 extern "C" {
 #endif
 
-enum ls_slot { LS_SLOT_COLOR = 0, LS_SLOT_HISTORY = 1, LS_SLOT_PARAMS = 2, LS_SLOTS = 3, LS_PIXEL_SLOTS = 2 };
+/* The input record's slots (enum ls_slot) and its counts (LS_SLOTS, LS_PIXEL_SLOTS, as #defines)
+ * come from the one table shaders/luminance_smooth_slots.glsl. */
+#define TS_SLOT(ID, first, ...) ID = first,
+enum ls_slot {
+#include "../../shaders/luminance_smooth_slots.glsl"
+};
+#undef TS_SLOT
 
 typedef struct {
   int input_encoding; /* INPUT_ENCODING: 0 linear x tone-map scale, 1 sRGB-encoded */

@@ -12,29 +12,13 @@
 extern "C" {
 #endif
 
+/* The input record's slots (enum ml_slot) and its counts (ML_SLOTS, ML_PIXEL_SLOTS, as #defines)
+ * come from the one table shaders/model_lighting_slots.glsl. */
+#define TS_SLOT(ID, first, ...) ID = first,
 enum ml_slot {
-  ML_MAX_LIGHTS = 4,
-  ML_SLOT_NORMAL = 0,
-  ML_SLOT_POSITION = 1,
-  ML_SLOT_UV = 2,
-  ML_SLOT_VERTEX_ATTEN = 3, /* ps20: attenuation of lights 0..3 from the vertex shader */
-  ML_SLOT_TANGENT = 4,      /* Phong: world tangent (normal-map x axis) */
-  ML_SLOT_BITANGENT = 5,    /* Phong: world bitangent (normal-map y axis) */
-  ML_PIXEL_SLOTS = 6,       /* per pixel in deferred frames */
-  ML_SLOT_AMBIENT = 6,      /* 6 slots: +X -X +Y -Y +Z -Z */
-  ML_SLOT_PARAMS = 12,      /* x tone-map scale, y light count (sm3) */
-  ML_SLOT_ALBEDO = 13,
-  ML_SLOT_LIGHT0 = 14,      /* 5 slots per light: color, dir, pos, spot, atten */
-  ML_SLOT_EYE = 34,
-  ML_SLOT_PHONG = 35,       /* x constant exponent, y exponent factor, z boost, w mask from base alpha */
-  ML_SLOT_FRESNEL = 36,     /* ((mid-min)*2, mid, (max-mid)*2), w invert the mask */
-  ML_SLOT_PHONG_TINT = 37,  /* rgb tint, w > 0.5: lerp(1, albedo, exponent-map g) */
-  ML_SLOT_RIM = 38,         /* x rim exponent, y rim boost, z rim-mask amount */
-  ML_SLOT_ENVMAP = 39,      /* x scale, y Fresnel amount, z > 0.5: mask = spec mask */
-  ML_SLOT_ENVMAP_TINT = 40,
-  ML_SLOT_SELF_ILLUM = 41,  /* rgb tint, w amount */
-  ML_SLOTS = 42
+#include "../../shaders/model_lighting_slots.glsl"
 };
+#undef TS_SLOT
 
 typedef struct {
   int tier;           /* enum ts_tier_id */

@@ -29,6 +29,7 @@ static V3v VFN(ml_ambient)(V3v n, const ml_batch_input *in, const size_t *pix) {
 /* common_lights.h light_attenuation */
 TSV_INL VF VFN(light_attenuation)(const V4v l[5], V3v P, V3v *L) {
   const V3v Lv = VFN(sub3)(VFN(xyz)(l[2]), P);
+  /* TS_MIN_LENGTH2, TS_MAX_LIGHT_DISTANCE: not fp16 numbers (shaders/common_lights.glsl) */
   const VF d2 = VFN(max)(VFN(dot3)(Lv, Lv), VFN(splat)(1.0e-30f));
   const VF rinv = VFN(inversesqrt)(d2);
   const VF d = VFN(min)(d2 * rinv, VFN(splat)(1.0e18f));
@@ -45,7 +46,7 @@ TSV_INL VF VFN(light_attenuation)(const V4v l[5], V3v P, V3v *L) {
 /* common_lights.h light_direction (ps20) */
 TSV_INL V3v VFN(light_direction)(const V4v l[5], V3v P) {
   const V3v Lv = VFN(sub3)(VFN(xyz)(l[2]), P);
-  const VF rinv = VFN(inversesqrt)(VFN(max)(VFN(dot3)(Lv, Lv), VFN(splat)(1.0e-30f)));
+  const VF rinv = VFN(inversesqrt)(VFN(max)(VFN(dot3)(Lv, Lv), VFN(splat)(1.0e-30f))); /* 0 in fp16 */
   return VFN(sel3)(l[0].w > 0.5f, VFN(neg3)(VFN(xyz)(l[1])), VFN(scale3)(Lv, rinv));
 }
 

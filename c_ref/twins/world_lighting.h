@@ -12,21 +12,13 @@
 extern "C" {
 #endif
 
+/* The input record's slots (enum wl_slot) and its counts (WL_SLOTS, WL_PIXEL_SLOTS, as #defines)
+ * come from the one table shaders/world_lighting_slots.glsl. */
+#define TS_SLOT(ID, first, ...) ID = first,
 enum wl_slot {
-  WL_SLOT_UV = 0,         /* xy base uv, zw lightmap uv */
-  WL_SLOT_LM_OFFSET = 1,  /* xy offset to the next lightmap, z fog depth */
-  WL_SLOT_NORMAL = 2,
-  WL_SLOT_TANGENT = 3,
-  WL_SLOT_BINORMAL = 4,
-  WL_SLOT_EYE = 5,        /* surface point -> eye */
-  WL_SLOT_TINT_SCALE = 6, /* rgb c12, w tone-map scale */
-  WL_SLOT_ENV_TINT = 7,   /* rgb tint, w ENV_MAP_SCALE */
-  WL_SLOT_ENV_PARAMS = 8, /* contrast, saturation, 1 - R0, R0 */
-  WL_SLOT_FOG_COLOR = 9,  /* rgb, w max density */
-  WL_SLOT_FOG_PARAMS = 10, /* 1 / range, start / range */
-  WL_SLOTS = 11,
-  WL_PIXEL_SLOTS = 6
+#include "../../shaders/world_lighting_slots.glsl"
 };
+#undef TS_SLOT
 
 enum wl_bump { WL_BUMP_NONE = 0, WL_BUMP_RNM = 1, WL_BUMP_SSBUMP = 2 };
 enum wl_encoding { WL_LM_FLOAT = 0, WL_LM_412 = 1, WL_LM_LDR = 2, WL_LM_RGBE = 3 };

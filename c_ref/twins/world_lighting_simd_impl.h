@@ -41,7 +41,7 @@ TSV_INL V3v VFN(rnm_weights)(V3v n) {
                   VFN(dot3)(n, VFN(v3)(VFN(splat)(-WLV_OO_SQRT_6), VFN(splat)(WLV_OO_SQRT_2), VFN(splat)(WLV_OO_SQRT_3))),
                   VFN(dot3)(n, VFN(v3)(VFN(splat)(-WLV_OO_SQRT_6), VFN(splat)(-WLV_OO_SQRT_2), VFN(splat)(WLV_OO_SQRT_3))));
   d = VFN(saturate3)(d);
-  const VF e = VFN(splat)(1.0e-30f);
+  const VF e = VFN(splat)(1.0e-30f); /* TS_RNM_MIN_WEIGHT: not an fp16 number (common_rnm.glsl) */
   return VFN(add3)(VFN(mul3)(d, d), VFN(v3)(e, e, e));
 }
 TSV_INL V3v VFN(rnm_blend)(V3v d, V3v l0, V3v l1, V3v l2) {
@@ -61,16 +61,19 @@ TSV_INL V3v VFN(ssbump_direction)(V3v t) {
 TSV_INL V3v VFN(reflect_unnormalized)(V3v N, V3v E) {
   return VFN(sub3)(VFN(scale3)(N, 2.0f * VFN(dot3)(N, E)), VFN(scale3)(E, VFN(dot3)(N, N)));
 }
+/* mix() as Mesa compiles it, unfused (common_envmap.h): s * ((1 - c) + s*c) and
+ * luma*(1 - t) + s*t */
 TSV_INL V3v VFN(envmap_contrast)(V3v s, VF contrast) {
-  return VFN(add3)(s, VFN(scale3)(VFN(sub3)(VFN(mul3)(s, s), s), contrast));
+  const VF u = 1.0f - contrast;
+  return VFN(v3)((u + s.x * contrast) * s.x, (u + s.y * contrast) * s.y, (u + s.z * contrast) * s.z);
 }
 TSV_INL V3v VFN(envmap_saturation)(V3v s, VF saturation) {
   const VF luma = VFN(dot3)(s, VFN(v3)(VFN(splat)(0.299f), VFN(splat)(0.587f), VFN(splat)(0.114f)));
-  const V3v d = VFN(scale3)(VFN(sub3)(s, VFN(v3)(luma, luma, luma)), saturation);
-  return VFN(v3)(luma + d.x, luma + d.y, luma + d.z);
+  const VF a = luma * (1.0f - saturation);
+  return VFN(v3)(a + s.x * saturation, a + s.y * saturation, a + s.z * saturation);
 }
 TSV_INL VF VFN(cosine_between)(V3v N, V3v E) {
-  return VFN(dot3)(N, E) * VFN(inversesqrt)(VFN(max)(VFN(dot3)(N, N) * VFN(dot3)(E, E), VFN(splat)(1.0e-30f)));
+  return VFN(dot3)(N, E) * VFN(inversesqrt)(VFN(max)(VFN(dot3)(N, N) * VFN(dot3)(E, E), VFN(splat)(1.0e-30f))); /* 0 in fp16 */
 }
 TSV_INL VF VFN(wl_fresnel)(VF NdotV, VF one_minus_r0, VF r0) {
   const VF x = 1.0f - VFN(saturate)(NdotV);

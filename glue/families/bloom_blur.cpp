@@ -4,6 +4,7 @@
 #include "twins/bloom_blur.h"
 #include "families/family.h"
 #include "families/hard_cases.h"
+#include "families/slot_table.h"
 #include "families/hdr_inputs.h"
 
 namespace {
@@ -55,17 +56,24 @@ void make_inputs(InputSet set, int w, int h, uint32_t seed, FamilyInputs *out) {
   out->textures = {hdr_test_texture(r, "u_source", kSourceW, kSourceH, true)};
 }
 
+// The record layout: shaders/bloom_blur_slots.glsl, the one table (slot_table.h).
+#define TS_SLOT TS_SLOT_ROW
+constexpr SlotRow kSlotRows[] = {
+#include "../../shaders/bloom_blur_slots.glsl"
+};
+#undef TS_SLOT
+static_assert(slot_rows_valid(kSlotRows, BB_SLOTS, BB_PIXEL_SLOTS), "shaders/bloom_blur_slots.glsl: bad rows");
+
+std::vector<std::string> slot_names() { return slot_names_of(kSlotRows); }
+
 void bind_uniforms(const GlFns &gl, GLuint program, const std::vector<ts_vec4f> &shared) {
-  const GLint size = gl.GetUniformLocation(program, "u_source_size");
-  if (size >= 0) gl.Uniform4fv(size, 1, &shared.at(BB_SLOT_SIZE).x);
-  const GLint params = gl.GetUniformLocation(program, "u_params");
-  if (params >= 0) gl.Uniform4fv(params, 1, &shared.at(BB_SLOT_PARAMS).x);
+  bind_slot_uniforms(gl, program, shared, kSlotRows, BB_PIXEL_SLOTS);
 }
 
 }  // namespace
 
 const ShaderFamily kBloomBlurFamily = {
-    "bloom_blur", BB_SLOTS, {"position", "source_size", "params"}, make_inputs, eval_f, eval_d, output_range,
+    "bloom_blur", BB_SLOTS, slot_names(), make_inputs, eval_f, eval_d, output_range,
     BB_PIXEL_SLOTS, bind_uniforms,
 };
 const FamilyRegistrar kRegisterBloomBlur(&kBloomBlurFamily);

@@ -4,6 +4,7 @@
 #include "twins/bloom_downsample.h"
 #include "families/family.h"
 #include "families/hard_cases.h"
+#include "families/slot_table.h"
 #include "families/hdr_inputs.h"
 
 namespace {
@@ -57,17 +58,24 @@ void make_inputs(InputSet set, int w, int h, uint32_t seed, FamilyInputs *out) {
   out->textures = {hdr_test_texture(r, "u_source", kSourceW, kSourceH, true)};
 }
 
+// The record layout: shaders/bloom_downsample_slots.glsl, the one table (slot_table.h).
+#define TS_SLOT TS_SLOT_ROW
+constexpr SlotRow kSlotRows[] = {
+#include "../../shaders/bloom_downsample_slots.glsl"
+};
+#undef TS_SLOT
+static_assert(slot_rows_valid(kSlotRows, BD_SLOTS, BD_PIXEL_SLOTS), "shaders/bloom_downsample_slots.glsl: bad rows");
+
+std::vector<std::string> slot_names() { return slot_names_of(kSlotRows); }
+
 void bind_uniforms(const GlFns &gl, GLuint program, const std::vector<ts_vec4f> &shared) {
-  const GLint size = gl.GetUniformLocation(program, "u_source_size");
-  if (size >= 0) gl.Uniform4fv(size, 1, &shared.at(BD_SLOT_SIZE).x);
-  const GLint shape = gl.GetUniformLocation(program, "u_shape");
-  if (shape >= 0) gl.Uniform4fv(shape, 1, &shared.at(BD_SLOT_SHAPE).x);
+  bind_slot_uniforms(gl, program, shared, kSlotRows, BD_PIXEL_SLOTS);
 }
 
 }  // namespace
 
 const ShaderFamily kBloomDownsampleFamily = {
-    "bloom_downsample", BD_SLOTS, {"position", "source_size", "shape"}, make_inputs, eval_f, eval_d, output_range,
+    "bloom_downsample", BD_SLOTS, slot_names(), make_inputs, eval_f, eval_d, output_range,
     BD_PIXEL_SLOTS, bind_uniforms,
 };
 const FamilyRegistrar kRegisterBloomDownsample(&kBloomDownsampleFamily);

@@ -7,6 +7,7 @@
 #include "twins/color_correction.h"
 #include "families/family.h"
 #include "families/hard_cases.h"
+#include "families/slot_table.h"
 
 namespace {
 
@@ -101,16 +102,18 @@ void make_inputs(InputSet set, int w, int h, uint32_t seed, FamilyInputs *out) {
   }
 }
 
-std::vector<std::string> slot_names() { return {"color", "weights", "params", "lut"}; }
+// The record layout: shaders/color_correction_slots.glsl, the one table (slot_table.h).
+#define TS_SLOT TS_SLOT_ROW
+constexpr SlotRow kSlotRows[] = {
+#include "../../shaders/color_correction_slots.glsl"
+};
+#undef TS_SLOT
+static_assert(slot_rows_valid(kSlotRows, CC_SLOTS, CC_PIXEL_SLOTS), "shaders/color_correction_slots.glsl: bad rows");
+
+std::vector<std::string> slot_names() { return slot_names_of(kSlotRows); }
 
 void bind_uniforms(const GlFns &gl, GLuint program, const std::vector<ts_vec4f> &shared) {
-  auto set = [&](const char *name, int slot) {
-    const GLint loc = gl.GetUniformLocation(program, name);
-    if (loc >= 0) gl.Uniform4fv(loc, 1, &shared.at(slot).x);
-  };
-  set("u_cc_weights", CC_SLOT_WEIGHTS);
-  set("u_cc_params", CC_SLOT_PARAMS);
-  set("u_cc_lut", CC_SLOT_LUT);
+  bind_slot_uniforms(gl, program, shared, kSlotRows, CC_PIXEL_SLOTS);
 }
 
 }  // namespace

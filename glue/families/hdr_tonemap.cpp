@@ -3,6 +3,7 @@
 // texture, and the bridge to its C twin (c_ref/twins/hdr_tonemap.c).
 #include "families/family.h"
 #include "families/hard_cases.h"
+#include "families/slot_table.h"
 #include "families/hdr_inputs.h"
 #include "math/hdr_formats.h"
 #include "twins/hdr_tonemap.h"
@@ -60,17 +61,24 @@ void make_inputs(InputSet set, int w, int h, uint32_t seed, FamilyInputs *out) {
   out->textures = {hdr_test_texture(r, "u_bloom", kBloomW, kBloomH, true)};
 }
 
+// The record layout: shaders/hdr_tonemap_slots.glsl, the one table (slot_table.h).
+#define TS_SLOT TS_SLOT_ROW
+constexpr SlotRow kSlotRows[] = {
+#include "../../shaders/hdr_tonemap_slots.glsl"
+};
+#undef TS_SLOT
+static_assert(slot_rows_valid(kSlotRows, HT_SLOTS, HT_PIXEL_SLOTS), "shaders/hdr_tonemap_slots.glsl: bad rows");
+
+std::vector<std::string> slot_names() { return slot_names_of(kSlotRows); }
+
 void bind_uniforms(const GlFns &gl, GLuint program, const std::vector<ts_vec4f> &shared) {
-  const GLint size = gl.GetUniformLocation(program, "u_frame_size");
-  if (size >= 0) gl.Uniform4fv(size, 1, &shared.at(HT_SLOT_SIZE).x);
-  const GLint params = gl.GetUniformLocation(program, "u_params");
-  if (params >= 0) gl.Uniform4fv(params, 1, &shared.at(HT_SLOT_PARAMS).x);
+  bind_slot_uniforms(gl, program, shared, kSlotRows, HT_PIXEL_SLOTS);
 }
 
 }  // namespace
 
 const ShaderFamily kHdrTonemapFamily = {
-    "hdr_tonemap", HT_SLOTS, {"position", "frame", "frame_size", "params"}, make_inputs, eval_f, eval_d, output_range,
+    "hdr_tonemap", HT_SLOTS, slot_names(), make_inputs, eval_f, eval_d, output_range,
     HT_PIXEL_SLOTS, bind_uniforms,
 };
 const FamilyRegistrar kRegisterHdrTonemap(&kHdrTonemapFamily);

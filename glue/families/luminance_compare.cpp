@@ -5,6 +5,7 @@
 
 #include "families/family.h"
 #include "families/hard_cases.h"
+#include "families/slot_table.h"
 #include "families/hdr_inputs.h"
 #include "twins/luminance_compare.h"
 
@@ -70,15 +71,24 @@ void make_inputs(InputSet set, int w, int h, uint32_t seed, FamilyInputs *out) {
   fill_record_grid("luminance_compare", set, w, h, LC_SLOTS, r, [&](ts_vec4f *rec) { random_pixel(r, rec); }, out);
 }
 
+// The record layout: shaders/luminance_compare_slots.glsl, the one table (slot_table.h).
+#define TS_SLOT TS_SLOT_ROW
+constexpr SlotRow kSlotRows[] = {
+#include "../../shaders/luminance_compare_slots.glsl"
+};
+#undef TS_SLOT
+static_assert(slot_rows_valid(kSlotRows, LC_SLOTS, LC_PIXEL_SLOTS), "shaders/luminance_compare_slots.glsl: bad rows");
+
+std::vector<std::string> slot_names() { return slot_names_of(kSlotRows); }
+
 void bind_uniforms(const GlFns &gl, GLuint program, const std::vector<ts_vec4f> &shared) {
-  const GLint loc = gl.GetUniformLocation(program, "u_range");
-  if (loc >= 0) gl.Uniform4fv(loc, 1, &shared.at(LC_SLOT_RANGE).x);
+  bind_slot_uniforms(gl, program, shared, kSlotRows, LC_PIXEL_SLOTS);
 }
 
 }  // namespace
 
 const ShaderFamily kLuminanceCompareFamily = {
-    "luminance_compare", LC_SLOTS, {"color", "range"}, make_inputs, eval_f, eval_d, output_range, LC_PIXEL_SLOTS,
+    "luminance_compare", LC_SLOTS, slot_names(), make_inputs, eval_f, eval_d, output_range, LC_PIXEL_SLOTS,
     bind_uniforms,
 };
 const FamilyRegistrar kRegisterLuminanceCompare(&kLuminanceCompareFamily);

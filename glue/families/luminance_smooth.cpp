@@ -3,6 +3,7 @@
 // to its C twin (c_ref/twins/luminance_smooth.c).
 #include "families/family.h"
 #include "families/hard_cases.h"
+#include "families/slot_table.h"
 #include "families/hdr_inputs.h"
 #include "math/hdr_formats.h"
 #include "twins/luminance_smooth.h"
@@ -54,15 +55,24 @@ void make_inputs(InputSet set, int w, int h, uint32_t seed, FamilyInputs *out) {
   fill_record_grid("luminance_smooth", set, w, h, LS_SLOTS, r, [&](ts_vec4f *rec) { random_pixel(r, rec); }, out);
 }
 
+// The record layout: shaders/luminance_smooth_slots.glsl, the one table (slot_table.h).
+#define TS_SLOT TS_SLOT_ROW
+constexpr SlotRow kSlotRows[] = {
+#include "../../shaders/luminance_smooth_slots.glsl"
+};
+#undef TS_SLOT
+static_assert(slot_rows_valid(kSlotRows, LS_SLOTS, LS_PIXEL_SLOTS), "shaders/luminance_smooth_slots.glsl: bad rows");
+
+std::vector<std::string> slot_names() { return slot_names_of(kSlotRows); }
+
 void bind_uniforms(const GlFns &gl, GLuint program, const std::vector<ts_vec4f> &shared) {
-  const GLint loc = gl.GetUniformLocation(program, "u_params");
-  if (loc >= 0) gl.Uniform4fv(loc, 1, &shared.at(LS_SLOT_PARAMS).x);
+  bind_slot_uniforms(gl, program, shared, kSlotRows, LS_PIXEL_SLOTS);
 }
 
 }  // namespace
 
 const ShaderFamily kLuminanceSmoothFamily = {
-    "luminance_smooth", LS_SLOTS, {"color", "history", "params"}, make_inputs, eval_f, eval_d, output_range,
+    "luminance_smooth", LS_SLOTS, slot_names(), make_inputs, eval_f, eval_d, output_range,
     LS_PIXEL_SLOTS, bind_uniforms,
 };
 const FamilyRegistrar kRegisterLuminanceSmooth(&kLuminanceSmoothFamily);

@@ -4,6 +4,7 @@
 #include <memory>
 
 #include "families/model_lighting.h"
+#include "families/slot_table.h"
 #include "families/family.h"
 #include "families/hard_cases.h"
 #include "twins/model_lighting.h"
@@ -186,37 +187,18 @@ void make_inputs(InputSet set, int w, int h, uint32_t seed, FamilyInputs *out) {
   out->textures = {albedo, nmap, expmap, warp, env};
 }
 
-std::vector<std::string> slot_names() {
-  std::vector<std::string> n = {"normal", "position", "uv", "vertex_atten", "tangent", "bitangent"};
-  const char *faces[6] = {"+x", "-x", "+y", "-y", "+z", "-z"};
-  for (const char *f : faces) n.push_back(std::string("ambient") + f);
-  n.push_back("params");
-  n.push_back("albedo");
-  const char *parts[5] = {"color", "dir", "pos", "spot", "atten"};
-  for (int i = 0; i < ML_MAX_LIGHTS; ++i)
-    for (const char *p : parts) n.push_back("light" + std::to_string(i) + "." + p);
-  for (const char *p : {"eye", "phong", "fresnel_ranges", "phong_tint", "rim", "envmap", "envmap_tint", "self_illum"})
-    n.push_back(p);
-  return n;
-}
+// The record layout: shaders/model_lighting_slots.glsl, the one table (slot_table.h).
+#define TS_SLOT TS_SLOT_ROW
+constexpr SlotRow kSlotRows[] = {
+#include "../../shaders/model_lighting_slots.glsl"
+};
+#undef TS_SLOT
+static_assert(slot_rows_valid(kSlotRows, ML_SLOTS, ML_PIXEL_SLOTS), "shaders/model_lighting_slots.glsl: bad rows");
+
+std::vector<std::string> slot_names() { return slot_names_of(kSlotRows); }
 
 void bind_uniforms(const GlFns &gl, GLuint program, const std::vector<ts_vec4f> &shared) {
-  auto set = [&](const char *name, int first, int count) {
-    const GLint loc = gl.GetUniformLocation(program, name);
-    if (loc >= 0) gl.Uniform4fv(loc, count, &shared.at(first).x);
-  };
-  set("u_ambient_cube", ML_SLOT_AMBIENT, 6);
-  set("u_params", ML_SLOT_PARAMS, 1);
-  set("u_albedo_color", ML_SLOT_ALBEDO, 1);
-  set("u_lights", ML_SLOT_LIGHT0, 5 * ML_MAX_LIGHTS);
-  set("u_eye", ML_SLOT_EYE, 1);
-  set("u_phong", ML_SLOT_PHONG, 1);
-  set("u_fresnel_ranges", ML_SLOT_FRESNEL, 1);
-  set("u_phong_tint", ML_SLOT_PHONG_TINT, 1);
-  set("u_rim", ML_SLOT_RIM, 1);
-  set("u_envmap_params", ML_SLOT_ENVMAP, 1);
-  set("u_envmap_tint", ML_SLOT_ENVMAP_TINT, 1);
-  set("u_self_illum", ML_SLOT_SELF_ILLUM, 1);
+  bind_slot_uniforms(gl, program, shared, kSlotRows, ML_PIXEL_SLOTS);
 }
 
 }  // namespace

@@ -3,6 +3,7 @@
 // and the bridge to its C twin (c_ref/twins/world_lighting.c). The texture builders are
 // shared with the demo and the benchmark through family_world_lighting.h.
 #include "families/world_lighting.h"
+#include "families/slot_table.h"
 
 #include "families/hard_cases.h"
 #include "twins/world_lighting_batch.h"
@@ -244,23 +245,20 @@ void make_inputs(InputSet set, int w, int h, uint32_t seed, FamilyInputs *out) {
   wl_test_textures(r, &out->textures);
 }
 
-std::vector<std::string> slot_names() {
-  return {"uv",      "lm_offset",  "normal",     "tangent",   "binormal",  "eye",
-          "tint_scale", "env_tint", "env_params", "fog_color", "fog_params"};
-}
+// The record layout: shaders/world_lighting_slots.glsl, the one table (slot_table.h).
+#define TS_SLOT TS_SLOT_ROW
+constexpr SlotRow kSlotRows[] = {
+#include "../../shaders/world_lighting_slots.glsl"
+};
+#undef TS_SLOT
+static_assert(slot_rows_valid(kSlotRows, WL_SLOTS, WL_PIXEL_SLOTS), "shaders/world_lighting_slots.glsl: bad rows");
+
+std::vector<std::string> slot_names() { return slot_names_of(kSlotRows); }
 
 }  // namespace
 
 void wl_bind_uniforms(const GlFns &gl, GLuint program, const std::vector<ts_vec4f> &shared) {
-  auto set = [&](const char *name, int slot) {
-    const GLint loc = gl.GetUniformLocation(program, name);
-    if (loc >= 0) gl.Uniform4fv(loc, 1, &shared.at(slot).x);
-  };
-  set("u_tint_scale", WL_SLOT_TINT_SCALE);
-  set("u_envmap_tint", WL_SLOT_ENV_TINT);
-  set("u_envmap_params", WL_SLOT_ENV_PARAMS);
-  set("u_fog_color", WL_SLOT_FOG_COLOR);
-  set("u_fog_params", WL_SLOT_FOG_PARAMS);
+  bind_slot_uniforms(gl, program, shared, kSlotRows, WL_PIXEL_SLOTS);
 }
 
 const ShaderFamily kWorldLightingFamily = {

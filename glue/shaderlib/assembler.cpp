@@ -1,8 +1,6 @@
 // tiershade glue: GLSL source assembler (see assembler.h).
-// Portability layer in the spirit of bgfx's shader macros: the library code uses
-// TS_VARYING_IN/OUT, TS_ATTRIBUTE, TS_TEX2D, TS_FRAG_COLOR, and every target
-// gets `precision highp` so GLES results can be compared with C float32
-// (llvmpipe computes mediump in fp16: ../shared/docs/platform_notes.md section 3).
+// The language differences between targets live in shaders/ts_portability.glsl; this file
+// writes only #version and the defines that select the target, stage and precision.
 #include "shaderlib/assembler.h"
 
 #include <cstdlib>
@@ -55,41 +53,18 @@ std::vector<std::string> shader_library_files() {
 
 namespace {
 
-std::string prelude(Target t, Stage s, const std::string &prec) {
-  std::ostringstream o;
+// The lines that select the target, the stage and the float precision, after #version: what
+// shaders/ts_portability.glsl (kPortabilityHeader) turns into each target's words.
+std::string selection_defines(Target t, Stage s, const std::string &prec) {
+  std::string o;
   switch (t) {
-    case Target::ESSL100:
-      o << "#version 100\n";
-      o << "precision " << prec << " float;\nprecision highp int;\n";
-      // Samplers default to lowp in ES fragment shaders, and llvmpipe really returns
-      // fp16 texels for them: every compared value must be highp.
-      o << "precision highp sampler2D;\nprecision highp samplerCube;\n";
-      o << "#define TS_ESSL100 1\n";
-      if (s == Stage::Vertex) {
-        o << "#define TS_ATTRIBUTE attribute\n#define TS_VARYING_OUT varying\n";
-      } else {
-        o << "#define TS_VARYING_IN varying\n#define TS_FRAG_COLOR gl_FragColor\n";
-        o << "#define TS_DECLARE_FRAG_COLOR\n";
-      }
-      o << "#define TS_TEX2D(s, uv) texture2D(s, uv)\n#define TS_TEXCUBE(s, d) textureCube(s, d)\n";
-      break;
-    case Target::ESSL300:
-    case Target::GLSL330:
-      o << (t == Target::ESSL300 ? "#version 300 es\n" : "#version 330 core\n");
-      o << "precision " << prec << " float;\nprecision highp int;\n";
-      if (t == Target::ESSL300) o << "precision highp sampler2D;\nprecision highp samplerCube;\n";
-      o << (t == Target::ESSL300 ? "#define TS_ESSL300 1\n" : "#define TS_GLSL330 1\n");
-      o << "#define TS_HAS_TEXEL_FETCH 1\n";
-      if (s == Stage::Vertex) {
-        o << "#define TS_ATTRIBUTE in\n#define TS_VARYING_OUT out\n";
-      } else {
-        o << "#define TS_VARYING_IN in\n#define TS_FRAG_COLOR ts_FragColor\n";
-        o << "#define TS_DECLARE_FRAG_COLOR out vec4 ts_FragColor;\n";
-      }
-      o << "#define TS_TEX2D(s, uv) texture(s, uv)\n#define TS_TEXCUBE(s, d) texture(s, d)\n";
-      break;
+    case Target::ESSL100: o += "#define TS_ESSL100 1\n"; break;
+    case Target::ESSL300: o += "#define TS_ESSL300 1\n"; break;
+    case Target::GLSL330: o += "#define TS_GLSL330 1\n"; break;
   }
-  return o.str();
+  o += s == Stage::Vertex ? "#define TS_VERTEX 1\n" : "#define TS_FRAGMENT 1\n";
+  o += "#define TS_FLOAT_PRECISION " + prec + "\n";
+  return o;
 }
 
 // Recognises `#include "name"` (spaces allowed around '#' and the keyword).
@@ -117,7 +92,8 @@ bool is_extension_directive(const std::string &line) {
 
 // `extensions` collects the entry file's #extension lines (depth 0): ESSL (and Mesa for every
 // version) wants them before any non-preprocessor token, so assemble() puts them right after
-// #version, ahead of the prelude's precision statements; a blank line keeps their place.
+// #version, ahead of the portability header's precision statements; a blank line keeps their
+// place.
 bool expand(const std::string &name, int depth, std::vector<std::string> &stack, Assembled *out,
             std::ostringstream &o, std::string *err, const std::string &from, std::string *extensions) {
   if (depth > 16) {
@@ -168,6 +144,8 @@ bool expand(const std::string &name, int depth, std::vector<std::string> &stack,
 
 }  // namespace
 
+const char *const kPortabilityHeader = "ts_portability.glsl";
+
 bool assemble(const std::string &entry, Target target, Stage stage, const std::vector<Define> &defines,
               Assembled *out, std::string *err, const std::string &float_precision) {
   *out = Assembled();
@@ -175,15 +153,24 @@ bool assemble(const std::string &entry, Target target, Stage stage, const std::v
     *err = "unknown float precision '" + float_precision + "'";
     return false;
   }
+  const char *version = target == Target::ESSL100   ? "#version 100\n"
+                        : target == Target::ESSL300 ? "#version 300 es\n"
+                                                    : "#version 330 core\n";
   std::ostringstream o;
-  const std::string pre = prelude(target, stage, float_precision);
-  const size_t version_end = pre.find('\n') + 1;  // the prelude starts with the #version line
-  o << pre.substr(version_end);
+  o << selection_defines(target, stage, float_precision);
   for (const auto &d : defines) o << "#define " << d.name << " " << d.value << "\n";
+  // Source string 0 is the entry file (compiler messages "0:L" name it), the header comes next.
+  out->files.push_back("shaders/" + entry);
   std::vector<std::string> stack;
-  std::string extensions;
+  std::string extensions, header_extensions;
+  if (!expand(kPortabilityHeader, 0, stack, out, o, err, "assembler (portability header)", &header_extensions))
+    return false;
+  if (!header_extensions.empty()) {
+    *err = std::string("shaders/") + kPortabilityHeader + ": #extension belongs in the shader that needs it";
+    return false;
+  }
   if (!expand(entry, 0, stack, out, o, err, "assembler", &extensions)) return false;
-  out->text = pre.substr(0, version_end) + extensions + o.str();
+  out->text = version + extensions + o.str();
   return true;
 }
 

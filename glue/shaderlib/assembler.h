@@ -1,7 +1,10 @@
 // tiershade glue: the GLSL source assembler.
-// Resolves #include "file" from the shader library, prepends the target's
-// #version, precision and portability lines and the variant's #defines, and
-// emits #line directives whose source-string number indexes `files`, so that a
+// Resolves #include "file" from the shader library and writes, in order: the target's
+// #version, the entry file's #extension lines, the defines that select target, stage and
+// float precision (TS_ESSL100|TS_ESSL300|TS_GLSL330, TS_VERTEX|TS_FRAGMENT,
+// TS_FLOAT_PRECISION), the variant's #defines, the portability header
+// shaders/ts_portability.glsl, then the entry file. #line directives carry a source-string
+// number that indexes `files` (0 is the entry file, 1 the portability header), so that a
 // compiler message "3:17(5): error" can be mapped back to "shaders/x.glsl:17".
 #pragma once
 #include <string>
@@ -15,6 +18,9 @@ const char *target_name(Target t);
 bool parse_target(const std::string &s, Target *out);
 
 struct Define { std::string name; std::string value; };
+
+// The shim header every assembled shader starts with ("ts_portability.glsl").
+extern const char *const kPortabilityHeader;
 
 struct Assembled {
   std::string text;

@@ -55,6 +55,7 @@ std::string quote(const std::string &s) { return "'" + s + "'"; }
 // ---- private shader directory ----------------------------------------------
 std::string g_dir;
 std::vector<std::string> g_written;
+std::string g_header;  // the library's portability header, copied into g_dir
 
 void write_shader(const std::string &name, const std::string &text) {
   const std::string path = g_dir + "/" + name;
@@ -87,10 +88,10 @@ void test_targets_and_prelude() {
         "assembler.parse_target_rejects_unknown");
 
   write_shader("plain.fs", "// plain entry\nvoid main() {}\n");
-  struct Case { Target t; const char *first; bool es; };
-  const Case cases[] = {{Target::ESSL100, "#version 100", true},
-                        {Target::ESSL300, "#version 300 es", true},
-                        {Target::GLSL330, "#version 330 core", false}};
+  struct Case { Target t; const char *first; const char *target_define; };
+  const Case cases[] = {{Target::ESSL100, "#version 100", "#define TS_ESSL100 1\n"},
+                        {Target::ESSL300, "#version 300 es", "#define TS_ESSL300 1\n"},
+                        {Target::GLSL330, "#version 330 core", "#define TS_GLSL330 1\n"}};
   for (const auto &c : cases) {
     for (Stage st : {Stage::Vertex, Stage::Fragment}) {
       const std::string tag =
@@ -103,20 +104,52 @@ void test_targets_and_prelude() {
       const auto lines = split_lines(a.text);
       check(!lines.empty() && lines[0] == c.first, "assembler.prelude_" + tag + "_version_first_line",
             "first line " + (lines.empty() ? std::string("<none>") : quote(lines[0])) + ", want " + quote(c.first));
-      check(contains(a.text, "precision highp float;\n"), "assembler.prelude_" + tag + "_highp_float");
-      if (c.es)
-        check(contains(a.text, "precision highp sampler2D;\n"), "assembler.prelude_" + tag + "_highp_sampler2D");
-      // every prelude line precedes the entry file
+      // The assembler writes only #version and the selecting defines: one target, one stage,
+      // the precision; the words of each language come from the portability header.
+      int targets = 0;
+      for (const auto &o : cases) targets += contains(a.text, o.target_define) ? 1 : 0;
+      check(contains(a.text, c.target_define) && targets == 1, "assembler.prelude_" + tag + "_one_target_define",
+            std::to_string(targets) + " target defines");
+      const bool vertex = contains(a.text, "#define TS_VERTEX 1\n"), fragment = contains(a.text, "#define TS_FRAGMENT 1\n");
+      check(vertex == (st == Stage::Vertex) && fragment == (st == Stage::Fragment),
+            "assembler.prelude_" + tag + "_stage_define");
+      check(contains(a.text, "#define TS_FLOAT_PRECISION highp\n"), "assembler.prelude_" + tag + "_highp_float");
+      // order: selecting defines, then the header (source string 1), then the entry (string 0)
+      const size_t sel = a.text.find(c.target_define);
+      const size_t header = a.text.find("#line 1 1\n");
       const size_t line0 = a.text.find("#line 1 0\n");
-      const size_t prec = a.text.find("precision highp float;");
-      check(line0 != std::string::npos && prec < line0, "assembler.prelude_" + tag + "_before_source");
-      // the portability macros the library uses
-      const char *need = st == Stage::Vertex ? "#define TS_ATTRIBUTE " : "#define TS_FRAG_COLOR ";
-      check(contains(a.text, need), "assembler.prelude_" + tag + "_portability_macros", std::string("missing ") + need);
-      check(a.files.size() == 1 && a.files[0] == "shaders/plain.fs", "assembler.prelude_" + tag + "_files",
-            a.files.empty() ? "no files" : a.files[0]);
+      check(sel != std::string::npos && header != std::string::npos && line0 != std::string::npos && sel < header &&
+                header < line0,
+            "assembler.prelude_" + tag + "_defines_header_entry_order");
+      check(header != std::string::npos && a.text.compare(header + 10, g_header.size(), g_header) == 0,
+            "assembler.prelude_" + tag + "_header_text_verbatim");
+      const std::vector<std::string> want_files = {"shaders/plain.fs", std::string("shaders/") + kPortabilityHeader};
+      check(a.files == want_files, "assembler.prelude_" + tag + "_files",
+            a.files.empty() ? "no files" : a.files[0] + " (" + std::to_string(a.files.size()) + " files)");
+      // no language words outside the header
+      const std::string outside = a.text.substr(0, header == std::string::npos ? 0 : header);
+      check(!contains(outside, "precision") && !contains(outside, "varying") && !contains(outside, "texture"),
+            "assembler.prelude_" + tag + "_no_language_words_outside_header", "prelude: " + outside);
     }
   }
+}
+
+// The header is looked up like any library file, and may not carry #extension lines (those
+// belong in the shader that needs the extension, which the assembler hoists after #version).
+void test_portability_header_errors() {
+  Assembled a;
+  std::string err;
+  write_shader(kPortabilityHeader, "// a header that wants an extension\n#extension GL_OES_texture_3D : enable\n");
+  bool ok = assemble("plain.fs", Target::ESSL100, Stage::Fragment, {}, &a, &err);
+  check(!ok && contains(err, kPortabilityHeader) && contains(err, "#extension"), "assembler.header_extension_rejected",
+        ok ? "assembled" : "message: " + err);
+  const std::string path = g_dir + "/" + kPortabilityHeader;
+  unlink(path.c_str());
+  err.clear();
+  ok = assemble("plain.fs", Target::GLSL330, Stage::Fragment, {}, &a, &err);
+  check(!ok && contains(err, kPortabilityHeader) && contains(err, "cannot find"), "assembler.missing_header_named",
+        ok ? "assembled" : "message: " + err);
+  write_shader(kPortabilityHeader, g_header);
 }
 
 void test_defines() {
@@ -126,7 +159,7 @@ void test_defines() {
   const bool ok = assemble("plain.fs", Target::GLSL330, Stage::Fragment, defs, &a, &err);
   check(ok, "assembler.defines_assemble", err);
   if (!ok) return;
-  const size_t entry = a.text.find("#line 1 0\n");
+  const size_t entry = a.text.find("#line 1 1\n");  // the portability header
   size_t last = 0;
   bool ordered = true;
   for (const auto &d : defs) {
@@ -137,19 +170,21 @@ void test_defines() {
     last = p;
   }
   check(ordered, "assembler.defines_in_order_before_source");
-  check(a.text.find("#version") == 0 && a.text.find("#define ALPHA") > a.text.find("precision highp float;"),
-        "assembler.defines_after_prelude");
+  check(a.text.find("#version") == 0 && a.text.find("#define ALPHA") > a.text.find("#define TS_FLOAT_PRECISION") &&
+            a.text.find("#define GAMMA") < a.text.find("#line 1 1\n"),
+        "assembler.defines_after_selection_before_header");
 }
 
 void test_precision_option() {
   Assembled a;
   std::string err;
   bool ok = assemble("plain.fs", Target::ESSL300, Stage::Fragment, {}, &a, &err, "mediump");
-  check(ok && contains(a.text, "precision mediump float;\n") && !contains(a.text, "precision highp float;") &&
-            contains(a.text, "precision highp sampler2D;\n"),
+  check(ok && contains(a.text, "#define TS_FLOAT_PRECISION mediump\n") &&
+            !contains(a.text, "#define TS_FLOAT_PRECISION highp") &&
+            contains(a.text, "precision TS_FLOAT_PRECISION float;\n") && contains(a.text, "precision highp sampler2D;\n"),
         "assembler.mediump_float_keeps_highp_samplers", err);
   ok = assemble("plain.fs", Target::ESSL100, Stage::Fragment, {}, &a, &err);
-  check(ok && contains(a.text, "precision highp float;\n"), "assembler.default_precision_highp", err);
+  check(ok && contains(a.text, "#define TS_FLOAT_PRECISION highp\n"), "assembler.default_precision_highp", err);
   err.clear();
   ok = assemble("plain.fs", Target::ESSL300, Stage::Fragment, {}, &a, &err, "ultrap");
   check(!ok && contains(err, "ultrap"), "assembler.unknown_precision_rejected", ok ? "accepted" : "message: " + err);
@@ -182,7 +217,8 @@ void test_includes() {
         "a.glsl included twice, its body appears " + std::to_string(count_of(a.text, "float marker_a;")) + " times");
   check(count_of(a.text, "float marker_b;") == 1, "assembler.include_single_expansion");
   check(!contains(a.text, "#include"), "assembler.no_include_directive_left");
-  const std::vector<std::string> want_files = {"shaders/entry.fs", "shaders/a.glsl", "shaders/b.glsl"};
+  const std::vector<std::string> want_files = {"shaders/entry.fs", std::string("shaders/") + kPortabilityHeader,
+                                               "shaders/a.glsl", "shaders/b.glsl"};
   std::string got_files;
   for (const auto &f : a.files) got_files += f + " ";
   check(a.files == want_files, "assembler.files_one_entry_per_file", "files: " + got_files);
@@ -191,14 +227,14 @@ void test_includes() {
   const std::string want_body =
       "#line 1 0\n"
       "// entry line 1\n"
-      "#line 1 1\n"
+      "#line 1 2\n"
       "#ifndef A_GLSL\n#define A_GLSL\nfloat marker_a;\n#endif\n"
       "#line 3 0\n"
       "float entry_line3;\n"
+      "#line 1 3\n"
       "#line 1 2\n"
-      "#line 1 1\n"
       "#ifndef A_GLSL\n#define A_GLSL\nfloat marker_a;\n#endif\n"
-      "#line 2 2\n"
+      "#line 2 3\n"
       "float marker_b;\n"
       "#pragma once\n"  // passed through on its own line (or blanked): line numbers kept
       "float after_pragma;\n"
@@ -209,7 +245,7 @@ void test_includes() {
   const size_t blank = got_body.find("float marker_b;\n\nfloat after_pragma;");
   if (blank != std::string::npos) got_body.insert(blank + 16, "#pragma once");  // blanked is fine too
   check(got_body == want_body, "assembler.line_directives_exact", "body was:\n" + got_body);
-  check(count_of(a.text, "#line ") == 7, "assembler.line_directive_count",
+  check(count_of(a.text, "#line ") == 8, "assembler.line_directive_count",
         std::to_string(count_of(a.text, "#line ")) + " #line directives");
 }
 
@@ -315,6 +351,14 @@ Ctx make_ctx(Backend b, Api api) {
   return c;
 }
 
+// The context for one backend/API, checked as "<group>.<backend>_<api>_context".
+Ctx checked_ctx(Backend b, Api api, const std::string &group, std::string *tag) {
+  *tag = std::string(backend_name(b)) + "_" + api_name(api);
+  Ctx c = make_ctx(b, api);
+  check(c.ok(), group + "." + *tag + "_context", c.err);
+  return c;
+}
+
 void release(Ctx &c) {
   if (c.ctx) c.ctx->make_current();
   c.r.reset();
@@ -361,10 +405,92 @@ void write_gl_shaders() {
                "void main() { TS_FRAG_COLOR = TS_TEST_COLOR + TS_TEX2D(u_tex, vec2(0.5, 0.5)); }\n");
 }
 
+// Every macro of shaders/ts_portability.glsl in one program: a varying through TS_VARYING in
+// both stages, 2D, cube and 3D lookups (ESSL 1.00: GL_OES_texture_3D, enabled by the entry and
+// hoisted after #version), TS_SAMPLER3D_PRECISION, TS_FRAG_COLOR, texelFetch where it exists.
+void write_portability_shaders() {
+  write_shader("t_port.vs",
+               "// the varying written by the vertex stage\n"
+               "TS_ATTRIBUTE vec2 a_corner;\n"
+               "TS_VARYING vec2 v_corner;\n"
+               "void main() { v_corner = a_corner; gl_Position = vec4(a_corner, 0.0, 1.0); }\n");
+  write_shader("t_port.fs",
+               "// reads the varying and one texel of each kind\n"
+               "#extension GL_OES_texture_3D : enable\n"
+               "TS_SAMPLER3D_PRECISION\n"
+               "uniform sampler2D u_tex;\n"
+               "uniform samplerCube u_cube;\n"
+               "uniform sampler3D u_vol;\n"
+               "TS_VARYING vec2 v_corner;\n"
+               "TS_DECLARE_FRAG_COLOR\n"
+               "void main() {\n"
+               "    vec4 c = TS_TEX2D(u_tex, vec2(0.5)) + TS_TEXCUBE(u_cube, vec3(1.0, 0.0, 0.0)) +\n"
+               "             TS_TEX3D(u_vol, vec3(0.5));\n"
+               "#ifdef TS_HAS_TEXEL_FETCH\n"
+               "    c += texelFetch(u_tex, ivec2(0), 0);\n"
+               "#else\n"
+               "    c += TS_TEX2D(u_tex, vec2(0.5));\n"
+               "#endif\n"
+               "    TS_FRAG_COLOR = c + vec4(0.0, 0.0, 0.0, step(-1.0, v_corner.x));\n"
+               "}\n");
+}
+
+void test_portability_macros(Backend b, Api api) {
+  std::string tag;
+  Ctx c = checked_ctx(b, api, "portability", &tag);
+  if (!c.ok()) return;
+  // Assembled and built as one pair: the fragment text is kept for the order check.
+  Assembled pair[2];
+  std::string err;
+  const bool assembled = assemble("t_port.vs", target_of(api), Stage::Vertex, {}, &pair[0], &err) &&
+                         assemble("t_port.fs", target_of(api), Stage::Fragment, {}, &pair[1], &err);
+  const GLuint p = assembled ? c.r->build_program(pair[0], pair[1], &err) : 0;
+  check(p != 0, "portability." + tag + "_builds", err);
+  if (!p) {
+    release(c);
+    return;
+  }
+  const std::string &fs = pair[1].text;
+  check(api != Api::GLES2 || fs.find("#extension GL_OES_texture_3D") < fs.find("#define TS_ESSL100"),
+        "portability." + tag + "_extension_before_defines");
+  TextureDesc tex, cube, vol;
+  tex.sampler = "u_tex";
+  tex.w = tex.h = 1;
+  tex.rgba = {0.5f, 0.25f, 0.125f, 0.0f};
+  cube.sampler = "u_cube";
+  cube.kind = TexKind::Cube;
+  cube.w = cube.h = 1;
+  cube.rgba.assign(6 * 4, 0.0f);
+  cube.rgba[0] = 2.0f;  // +X face, red
+  vol.sampler = "u_vol";
+  vol.kind = TexKind::Tex3D;
+  vol.w = vol.h = vol.d = 1;
+  vol.rgba = {0.0f, 0.0f, 4.0f, 0.0f};
+  const GLuint t2 = c.r->upload_texture(tex), tc = c.r->upload_texture(cube), t3 = c.r->upload_texture(vol);
+  ImageF img;
+  const bool ok = c.r->draw(p, {{"u_tex", t2}, {"u_cube", tc}, {"u_vol", t3}}, 2, 2, &img, &err);
+  check(ok, "portability." + tag + "_draw", err);
+  if (ok) {
+    // 2 x texel + cube + volume + (0, 0, 0, 1): exact in float
+    const float want[4] = {3.0f, 0.5f, 4.25f, 1.0f};
+    bool all = img.rgba.size() == 16;
+    std::string detail = "size " + std::to_string(img.w) + "x" + std::to_string(img.h);
+    for (size_t i = 0; all && i < img.rgba.size(); ++i)
+      if (img.rgba[i] != want[i % 4]) {
+        all = false;
+        detail = "value " + std::to_string(i) + " is " + std::to_string(img.rgba[i]) + ", want " +
+                 std::to_string(want[i % 4]);
+      }
+    check(all, "portability." + tag + "_pixels", detail);
+  }
+  for (GLuint id : {t2, tc, t3}) c.r->delete_texture(id);
+  c.r->delete_program(p);
+  release(c);
+}
+
 void test_compile_error_mapping(Backend b, Api api) {
-  const std::string tag = std::string(backend_name(b)) + "_" + api_name(api);
-  Ctx c = make_ctx(b, api);
-  check(c.ok(), "gl." + tag + "_context", c.err);
+  std::string tag;
+  Ctx c = checked_ctx(b, api, "gl", &tag);
   if (!c.ok()) return;
   const Target t = target_of(api);
   Assembled vs, fs;
@@ -869,9 +995,12 @@ int main() {
     return 1;
   }
   g_dir = tmpl;
+  check(shader_library_read(kPortabilityHeader, &g_header) && !g_header.empty(), "setup.embedded_portability_header");
+  write_shader(kPortabilityHeader, g_header);
   setenv("TIERSHADE_SHADER_DIR", g_dir.c_str(), 1);
 
   test_targets_and_prelude();
+  test_portability_header_errors();
   test_defines();
   test_precision_option();
   test_includes();
@@ -881,6 +1010,10 @@ int main() {
   test_compile_error_mapping(Backend::OSMesa, Api::GL33);
   test_compile_error_mapping(Backend::EGL, Api::GLES2);
   test_compile_error_mapping(Backend::EGL, Api::GLES3);
+  write_portability_shaders();
+  test_portability_macros(Backend::OSMesa, Api::GL33);
+  test_portability_macros(Backend::EGL, Api::GLES2);
+  test_portability_macros(Backend::EGL, Api::GLES3);
   test_backends_in_one_process();
 
   unsetenv("TIERSHADE_SHADER_DIR");
