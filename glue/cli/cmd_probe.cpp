@@ -11,6 +11,7 @@
 #include "conform/conform.h"
 #include "families/family.h"
 #include "cli/select_args.h"
+#include "base/image_diff.h"
 
 namespace {
 

@@ -1,6 +1,7 @@
 // tiershade glue: sRGB -> CIELAB and CIEDE2000 (see color_difference.h). Written from
 // the published formulas; equation numbers are Sharma, Wu and Dalal (2005).
 #include "color/ciede2000.h"
+#include "color/srgb.h"
 
 #include <algorithm>
 #include <cmath>
@@ -10,9 +11,6 @@ namespace {
 const double kPi = 3.14159265358979323846;
 double rad(double deg) { return deg * kPi / 180.0; }
 double deg(double r) { return r * 180.0 / kPi; }
-
-// IEC 61966-2-1 sRGB decoding: c <= 0.04045 -> c / 12.92, else ((c + 0.055) / 1.055)^2.4.
-double srgb_decode(double c) { return c <= 0.04045 ? c / 12.92 : std::pow((c + 0.055) / 1.055, 2.4); }
 
 // CIE 15:2004 L*a*b* companding: t^(1/3) above (6/29)^3, else t / (3 (6/29)^2) + 4/29.
 double lab_f(double t) {

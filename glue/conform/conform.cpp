@@ -1,5 +1,6 @@
 // tiershade glue: per-pixel GL-vs-C conformance (see conform.h).
 #include "conform/conform.h"
+#include "base/image_diff.h"
 
 #include <chrono>
 #include <cmath>

@@ -4,7 +4,9 @@
 #include <cmath>
 #include <cstring>
 
-#include "io/image_io.h"
+#include "base/image.h"
+#include "io/exr.h"
+#include "io/radiance_hdr.h"
 #include "scene/gltf_util.h"
 
 namespace scene_gltf {

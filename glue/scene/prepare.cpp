@@ -13,6 +13,7 @@
 #include "scene/textures.h"
 #include "demo/room_scene.h"
 #include "twins/world_lighting.h"
+#include "color/srgb.h"
 
 namespace {
 
@@ -60,8 +61,7 @@ void camera_matrix(const SceneCamera &c, double aspect, double out[16]) {
 }
 
 float srgb_to_linear(float c) {
-  const double v = c;
-  return static_cast<float>(v <= 0.04045 ? v / 12.92 : std::pow((v + 0.055) / 1.055, 2.4));
+  return static_cast<float>(srgb_decode<double>(c));
 }
 
 TextureDesc black_cube() {

@@ -4,7 +4,8 @@
 #include <algorithm>
 #include <cmath>
 
-#include "io/image_io.h"
+#include "base/image.h"
+#include "io/radiance_hdr.h"
 
 namespace {
 const double kPi = 3.14159265358979323846;
