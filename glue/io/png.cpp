@@ -148,24 +148,13 @@ bool png_read_c(FILE *fp, PngRaw *raw, PngCtx *ctx) {
   return true;
 }
 
-// Transfer functions, evaluated in double. Inputs are in [0,1].
-double encode_value(double v, Encode enc) {
+// The Encode curve (encode) or its inverse, evaluated in double; v in [0,1].
+double transfer(double v, Encode enc, bool encode) {
   switch (enc) {
     case Encode::SRGB:
-      return srgb_encode<double>(v);
+      return encode ? srgb_encode(v) : srgb_decode(v);
     case Encode::Gamma22:
-      return std::pow(v, 1.0 / 2.2);
-    case Encode::Linear:
-      break;
-  }
-  return v;
-}
-double decode_value(double v, Encode enc) {
-  switch (enc) {
-    case Encode::SRGB:
-      return srgb_decode<double>(v);
-    case Encode::Gamma22:
-      return std::pow(v, 2.2);
+      return std::pow(v, encode ? 1.0 / 2.2 : 2.2);
     case Encode::Linear:
       break;
   }
@@ -176,7 +165,7 @@ double decode_value(double v, Encode enc) {
 // encode, round to nearest.
 uint8_t quantize(float f, Encode enc) {
   double v = std::isnan(f) ? 0.0 : std::min(1.0, std::max(0.0, (double)f));
-  v = std::min(1.0, std::max(0.0, encode_value(v, enc)));
+  v = std::min(1.0, std::max(0.0, transfer(v, enc, true)));
   return (uint8_t)(v * 255.0 + 0.5);
 }
 
@@ -247,7 +236,7 @@ bool read_png(const std::string &path, ImageF *out, Encode decode, std::string *
   const bool wide = raw.depth == 16;
   const double maxcode = wide ? 65535.0 : 255.0;
   float lut[256];  // 8-bit decode table for colour channels
-  for (int i = 0; i < 256; ++i) lut[i] = (float)decode_value(i / 255.0, decode);
+  for (int i = 0; i < 256; ++i) lut[i] = (float)transfer(i / 255.0, decode, false);
 
   ImageF img;
   img.w = w;
@@ -260,7 +249,7 @@ bool read_png(const std::string &path, ImageF *out, Encode decode, std::string *
       const bool alpha = (i & 3) == 3;
       if (wide) {
         const double v = ((src[2 * i] << 8) | src[2 * i + 1]) / maxcode;
-        dst[i] = (float)(alpha ? v : decode_value(v, decode));
+        dst[i] = (float)(alpha ? v : transfer(v, decode, false));
       } else {
         dst[i] = alpha ? (float)(src[i] / maxcode) : lut[src[i]];
       }
