@@ -1,10 +1,11 @@
 // tiershade glue: sRGB -> CIELAB and CIEDE2000 (see color_difference.h). Written from
 // the published formulas; equation numbers are Sharma, Wu and Dalal (2005).
 #include "color/ciede2000.h"
-#include "color/srgb.h"
 
 #include <algorithm>
 #include <cmath>
+
+#include "color/srgb.h"
 
 namespace {
 

@@ -1,12 +1,13 @@
 // tiershade glue: per-pixel GL-vs-C conformance (see conform.h).
 #include "conform/conform.h"
-#include "base/image_diff.h"
 
 #include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <cstring>
 #include <sstream>
+
+#include "base/image_diff.h"
 
 Target target_for_api(Api a) {
   switch (a) {

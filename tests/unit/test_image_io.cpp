@@ -18,14 +18,6 @@
 // EXR/PNG/HDR input, .tmp. leftovers, write_file_atomic, ulp_distance, diff_image, hstack
 // and read_hdr (synthetic files, damaged headers, and the real probes against stb_image).
 // ============================================================================
-#include "unit_check.h"
-#include "base/image.h"
-#include "base/image_diff.h"
-#include "io/exr.h"
-#include "io/png.h"
-#include "io/radiance_hdr.h"
-#include "io/atomic_file.h"
-#include "color/srgb.h"
 
 #include <ImfChannelList.h>
 #include <ImfFrameBuffer.h>
@@ -49,12 +41,20 @@
 #include <string>
 #include <vector>
 
+#include "unit_check.h"
+#include "base/image.h"
+#include "base/image_diff.h"
+#include "io/exr.h"
+#include "io/png.h"
+#include "io/radiance_hdr.h"
+#include "io/atomic_file.h"
+#include "color/srgb.h"
+
 namespace fs = std::filesystem;
 
 namespace {
 
 std::string g_tmp;  // the mkdtemp directory
-
 
 std::string in_tmp(const std::string &name) { return g_tmp + "/" + name; }
 
@@ -110,6 +110,18 @@ std::string hex(uint32_t u)
     return buf;
 }
 
+// A libpng simplified-API image description of w x h pixels in `format`, for writing test files.
+png_image png_image_of(int w, int h, png_uint_32 format)
+{
+    png_image pi;
+    std::memset(&pi, 0, sizeof pi);
+    pi.version = PNG_IMAGE_VERSION;
+    pi.width = (png_uint_32)w;
+    pi.height = (png_uint_32)h;
+    pi.format = format;
+    return pi;
+}
+
 bool contains(const std::string &s, const std::string &sub) { return s.find(sub) != std::string::npos; }
 
 std::vector<unsigned char> read_bytes(const std::string &path)
@@ -133,7 +145,6 @@ std::string tmp_leftovers()
         if (contains(e.path().filename().string(), ".tmp.")) found += e.path().string() + " ";
     return found;
 }
-
 
 // ------------------------------------------------------------------ EXR ---
 
@@ -485,12 +496,7 @@ void test_png_other_formats()
     // 8-bit grey, no alpha.
     {
         const std::string path = in_tmp("grey.png");
-        png_image pi;
-        std::memset(&pi, 0, sizeof pi);
-        pi.version = PNG_IMAGE_VERSION;
-        pi.width = 4;
-        pi.height = 2;
-        pi.format = PNG_FORMAT_GRAY;
+        png_image pi = png_image_of(4, 2, PNG_FORMAT_GRAY);
         const uint8_t g[8] = {0, 10, 20, 30, 200, 210, 220, 255};
         const bool wrote = png_image_write_to_file(&pi, path.c_str(), 0, g, 0, nullptr) != 0;
         png_image_free(&pi);
@@ -506,12 +512,7 @@ void test_png_other_formats()
     // Palette with transparency (tRNS).
     {
         const std::string path = in_tmp("palette.png");
-        png_image pi;
-        std::memset(&pi, 0, sizeof pi);
-        pi.version = PNG_IMAGE_VERSION;
-        pi.width = 3;
-        pi.height = 1;
-        pi.format = PNG_FORMAT_RGBA_COLORMAP;
+        png_image pi = png_image_of(3, 1, PNG_FORMAT_RGBA_COLORMAP);
         pi.colormap_entries = 3;
         const uint8_t cmap[12] = {255, 0, 0, 255, 0, 255, 0, 128, 0, 0, 255, 0};
         const uint8_t idx[3] = {2, 0, 1};
@@ -530,12 +531,7 @@ void test_png_other_formats()
     // 16-bit linear RGB.
     {
         const std::string path = in_tmp("rgb16.png");
-        png_image pi;
-        std::memset(&pi, 0, sizeof pi);
-        pi.version = PNG_IMAGE_VERSION;
-        pi.width = 2;
-        pi.height = 1;
-        pi.format = PNG_FORMAT_LINEAR_RGB;
+        png_image pi = png_image_of(2, 1, PNG_FORMAT_LINEAR_RGB);
         const uint16_t v[6] = {0, 1, 65535, 12345, 54321, 32768};
         const bool wrote = png_image_write_to_file(&pi, path.c_str(), 0, v, 0, nullptr) != 0;
         png_image_free(&pi);
