@@ -42,21 +42,22 @@ void png_read_cb(png_structp png, png_bytep data, size_t length) {
     png_error(png, std::feof(fp) ? "unexpected end of file (truncated?)" : "read error");
 }
 
+bool out_of_memory(PngCtx *ctx) {
+  std::snprintf(ctx->msg, sizeof ctx->msg, "out of memory");
+  return false;
+}
+
 enum PngChunk { kChunkNone, kChunkSRGB, kChunkGamma22 };
 
 // Writes an 8-bit RGBA PNG from top-down row pointers.  C-style on purpose:
 // no C++ object may be live in a frame that png_longjmp() unwinds.
 bool png_write_c(FILE *fp, int w, int h, png_bytep *rows, PngChunk chunk, PngCtx *ctx) {
   png_structp png = png_create_write_struct(PNG_LIBPNG_VER_STRING, ctx, png_error_cb, png_warning_cb);
-  if (!png) {
-    std::snprintf(ctx->msg, sizeof ctx->msg, "out of memory");
-    return false;
-  }
+  if (!png) return out_of_memory(ctx);
   png_infop info = png_create_info_struct(png);
   if (!info) {
     png_destroy_write_struct(&png, nullptr);
-    std::snprintf(ctx->msg, sizeof ctx->msg, "out of memory");
-    return false;
+    return out_of_memory(ctx);
   }
   if (setjmp(png_jmpbuf(png))) {
     png_destroy_write_struct(&png, &info);
@@ -95,15 +96,11 @@ bool png_read_c(FILE *fp, PngRaw *raw, PngCtx *ctx) {
     return false;
   }
   png_structp png = png_create_read_struct(PNG_LIBPNG_VER_STRING, ctx, png_error_cb, png_warning_cb);
-  if (!png) {
-    std::snprintf(ctx->msg, sizeof ctx->msg, "out of memory");
-    return false;
-  }
+  if (!png) return out_of_memory(ctx);
   png_infop info = png_create_info_struct(png);
   if (!info) {
     png_destroy_read_struct(&png, nullptr, nullptr);
-    std::snprintf(ctx->msg, sizeof ctx->msg, "out of memory");
-    return false;
+    return out_of_memory(ctx);
   }
   if (setjmp(png_jmpbuf(png))) {
     png_destroy_read_struct(&png, &info, nullptr);
