@@ -7,7 +7,7 @@ SAN      ?=
 JOBS     ?= $(shell nproc 2>/dev/null || echo 2)
 CC       ?= gcc
 CXX      ?= g++
-PKGS     := OpenEXR libpng OpenColorIO tinygltf spirv
+PKGS     := OpenEXR libpng OpenColorIO tinygltf spirv stb
 OPT      := -O2 -g
 ifeq ($(SAN),1)
 OPT      := -O1 -g -fsanitize=address,undefined -fno-omit-frame-pointer -fno-sanitize-recover=undefined

@@ -15,6 +15,8 @@
 #include "color/ciede2000.h"
 #include "demo/family_frame.h"
 #include "cli/select_args.h"
+#include "base/image_diff.h"
+#include "base/stats.h"
 
 namespace {
 
@@ -27,11 +29,6 @@ struct Row {
   double de_max = 0, de_mean = 0, model_max = 0, model_mean = 0, ms = 0;
   long mismatched = -1;
 };
-
-double median(std::vector<double> v) {
-  std::sort(v.begin(), v.end());
-  return v.empty() ? 0 : v[v.size() / 2];
-}
 
 std::string variant_name(int atlas, int shader, int lookups) {
   return std::string(atlas ? "ps20" : "ps2b") + ":LUT_ATLAS=" + std::to_string(atlas) +

@@ -21,13 +21,9 @@
 #include "demo/hdr_scene.h"
 #include "twins/luminance_compare.h"
 #include "twins/model_lighting.h"
+#include "base/stats.h"
 
 namespace {
-
-double median(std::vector<double> v) {
-  std::sort(v.begin(), v.end());
-  return v.empty() ? 0 : v[v.size() / 2];
-}
 
 struct ErrorStats {
   double max = 0, mean = 0, over1 = 0;  // codes; share of channels off by more than 1 code (%)

@@ -18,15 +18,12 @@
 #include "scene/scene.h"
 #include "scene/selection.h"
 #include "scene/frame.h"
+#include "base/stats.h"
 
 namespace {
 
 using Clock = std::chrono::steady_clock;
 double ms_since(Clock::time_point t0) { return std::chrono::duration<double, std::milli>(Clock::now() - t0).count(); }
-double median(std::vector<double> v) {
-  std::sort(v.begin(), v.end());
-  return v.empty() ? 0 : v[v.size() / 2];
-}
 std::string f1(double v) {
   char b[32];
   snprintf(b, sizeof b, "%.1f", v);

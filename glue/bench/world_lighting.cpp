@@ -13,20 +13,16 @@
 #include "budget/budget.h"
 #include "cli/select_args.h"
 #include "demo/room_render.h"
+#include "base/image_diff.h"
+#include "base/stats.h"
+#include "color/srgb.h"
 
 namespace {
 
 double now_ms() {
   return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now().time_since_epoch()).count();
 }
-double median(std::vector<double> v) {
-  std::sort(v.begin(), v.end());
-  return v.empty() ? 0 : v[v.size() / 2];
-}
-double srgb(double x) {
-  x = std::min(1.0, std::max(0.0, x));
-  return x <= 0.0031308 ? 12.92 * x : 1.055 * std::pow(x, 1 / 2.4) - 0.055;
-}
+double srgb(double x) { return srgb_encode_clamped(x); }
 
 struct Err {
   double max = 0, mean = 0, over1 = 0;  // 8-bit display codes; % of channels off by more than 1 code

@@ -6,7 +6,8 @@
 #include <cstdio>
 
 #include "cli/args.h"
-#include "io/image_io.h"
+#include "base/image.h"
+#include "io/exr.h"
 #include "scene/scene.h"
 #include "scene/selection.h"
 #include "scene/prepare.h"

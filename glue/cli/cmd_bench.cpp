@@ -17,6 +17,10 @@
 #include "demo/family_frame.h"
 #include "demo/sphere_grid_scene.h"
 #include "cli/select_args.h"
+#include "base/image_diff.h"
+#include "base/stats.h"
+#include "color/srgb.h"
+#include "io/atomic_file.h"
 
 namespace {
 
@@ -34,19 +38,11 @@ struct BenchRow {
   long gl_vs_c_mismatch = -1;
 };
 
-double median(std::vector<double> v) {
-  std::sort(v.begin(), v.end());
-  return v.empty() ? 0 : v[v.size() / 2];
-}
-
 double now_ms() {
   return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now().time_since_epoch()).count();
 }
 
-double srgb(double x) {
-  x = std::min(1.0, std::max(0.0, x));
-  return x <= 0.0031308 ? 12.92 * x : 1.055 * std::pow(x, 1 / 2.4) - 0.055;
-}
+double srgb(double x) { return srgb_encode_clamped(x); }
 
 // Display value (sRGB-encoded, [0,1]) of a variant's output channel.
 double display(int output_mode, double v) { return output_mode == 0 ? srgb(v) : std::min(1.0, std::max(0.0, v)); }
@@ -215,16 +211,10 @@ std::string plot(const std::vector<BenchRow> &rows, int n) {
 }
 
 bool write_atomic(const std::string &path, const std::string &text) {
-  const std::string tmp = path + ".tmp." + std::to_string(getpid());
-  std::ofstream f(tmp, std::ios::binary);
-  f << text;
-  f.close();
-  if (!f || std::rename(tmp.c_str(), path.c_str()) != 0) {
-    std::remove(tmp.c_str());
-    fprintf(stderr, "tiershade bench: cannot write '%s'\n", path.c_str());
-    return false;
-  }
-  return true;
+  std::string err;
+  if (write_file_atomic(path, text, &err)) return true;
+  fprintf(stderr, "tiershade bench: %s\n", err.c_str());
+  return false;
 }
 
 std::string stem(const std::string &path) {

@@ -12,6 +12,10 @@
 #include "io/lights_file.h"
 #include "demo/sphere_grid_scene.h"
 #include "cli/select_args.h"
+#include "base/image_diff.h"
+#include "io/exr.h"
+#include "io/png.h"
+#include "color/srgb.h"
 
 namespace {
 
@@ -152,23 +156,9 @@ int cmd_demo(int argc, char **argv) {
   }
   // Side by side: ps20 | ps2b | sm3 | reference, each as a display image.
   std::vector<ImageF> display;
-  for (size_t i = 0; i < panels.size(); ++i) {
-    ImageF d = panels[i];
-    if (kTiers[i].png == Encode::SRGB)
-      for (size_t p = 0; p < d.rgba.size(); ++p)
-        if (p % 4 != 3) {
-          const float x = std::fmin(std::fmax(d.rgba[p], 0.f), 1.f);
-          d.rgba[p] = x <= 0.0031308f ? 12.92f * x : 1.055f * std::pow(x, 1.f / 2.4f) - 0.055f;
-        }
-    display.push_back(d);
-  }
-  ImageF r = ref_img;
-  for (size_t p = 0; p < r.rgba.size(); ++p)
-    if (p % 4 != 3) {
-      const float x = std::fmin(std::fmax(r.rgba[p], 0.f), 1.f);
-      r.rgba[p] = x <= 0.0031308f ? 12.92f * x : 1.055f * std::pow(x, 1.f / 2.4f) - 0.055f;
-    }
-  display.push_back(r);
+  for (size_t i = 0; i < panels.size(); ++i)
+    display.push_back(kTiers[i].png == Encode::SRGB ? srgb_display(panels[i]) : panels[i]);
+  display.push_back(srgb_display(ref_img));
   std::vector<const ImageF *> ptrs;
   for (const auto &d : display) ptrs.push_back(&d);
   if (!write_png(dir + "/model_lighting_tiers.png", hstack(ptrs, 4, 1.f), Encode::Linear, &err)) {

@@ -12,6 +12,7 @@
 #include "families/family.h"
 #include "families/hard_cases.h"
 #include "cli/select_args.h"
+#include "base/image_diff.h"
 
 namespace {
 

@@ -12,11 +12,14 @@
 #include "conform/conform.h"
 #include "bundle/draw_dump.h"
 #include "gl/float_target.h"
-#include "io/image_io.h"
+#include "base/image.h"
+#include "io/exr.h"
+#include "io/png.h"
 #include "scene/scene.h"
 #include "scene/selection.h"
 #include "scene/frame.h"
 #include "scene/prepare.h"
+#include "base/stats.h"
 
 namespace {
 
@@ -61,7 +64,7 @@ bool compile_all_programs(const SceneSelection &sel, Backend b, Api api, double 
   return true;
 }
 
-// The first frame (init included) and the median of 3 further frames, in ms.
+// The first frame (init included) and the median of 5 further frames, in ms.
 bool warm_frame_ms(const Scene &s, const SceneSelection &sel, const SceneRenderConfig &cfg, double *first,
                    double *frame, double *lit, std::string *err) {
   const auto t0 = Clock::now();
@@ -75,10 +78,8 @@ bool warm_frame_ms(const Scene &s, const SceneSelection &sel, const SceneRenderC
     t.push_back(res.frame_ms);
     l.push_back(res.lit_ms);
   }
-  std::sort(t.begin(), t.end());
-  std::sort(l.begin(), l.end());
-  *frame = t[2];
-  *lit = l[2];
+  *frame = median(t);
+  *lit = median(l);
   return true;
 }
 

@@ -7,13 +7,12 @@
 
 #include <glm/gtc/constants.hpp>
 
+#include "color/srgb.h"
+
 namespace {
 
 double rad(double deg) { return deg * glm::pi<double>() / 180.0; }
 double deg(double r) { return r * 180.0 / glm::pi<double>(); }
-
-// IEC 61966-2-1 sRGB decoding: c <= 0.04045 -> c / 12.92, else ((c + 0.055) / 1.055)^2.4.
-double srgb_decode(double c) { return c <= 0.04045 ? c / 12.92 : std::pow((c + 0.055) / 1.055, 2.4); }
 
 // CIE 15:2004 L*a*b* companding: t^(1/3) above (6/29)^3, else t / (3 (6/29)^2) + 4/29.
 double lab_f(double t) {

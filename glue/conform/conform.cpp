@@ -9,6 +9,8 @@
 
 #include <nlohmann/json.hpp>
 
+#include "base/image_diff.h"
+
 Target target_for_api(Api a) {
   switch (a) {
     case Api::GLES2: return Target::ESSL100;

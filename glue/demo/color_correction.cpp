@@ -11,6 +11,9 @@
 #include "demo/color_correction_scene.h"
 #include "demo/family_frame.h"
 #include "cli/select_args.h"
+#include "base/image_diff.h"
+#include "io/exr.h"
+#include "io/png.h"
 
 namespace {
 

@@ -6,13 +6,10 @@
 #include <cstdlib>
 
 #include "color/ciede2000.h"
+#include "io/radiance_hdr.h"
+#include "color/srgb.h"
 
 namespace {
-
-double srgb_encode(double x) {  // IEC 61966-2-1
-  x = std::min(1.0, std::max(0.0, x));
-  return x <= 0.0031308 ? 12.92 * x : 1.055 * std::pow(x, 1.0 / 2.4) - 0.055;
-}
 
 // HSV (h in [0, 1)) to RGB, for the chart.
 void hsv(double h, double s, double v, double rgb[3]) {
@@ -89,7 +86,7 @@ ImageF cc_frame(int w, int h, std::string *note) {
       for (int k = 0; k < 3; ++k) {
         auto at = [&](int xx, int yy) { return static_cast<double>(probe.rgba[(static_cast<size_t>(yy) * probe.w + xx) * 4 + k]); };
         const double c = (at(x0, y0) * (1 - fx) + at(x1, y0) * fx) * (1 - fy) + (at(x0, y1) * (1 - fx) + at(x1, y1) * fx) * fy;
-        rgb[k] = srgb_encode(c * exposure);
+        rgb[k] = srgb_encode_clamped(c * exposure);
       }
       put(&img, x, y, rgb);
     }

@@ -4,7 +4,7 @@
 #include <string>
 #include <vector>
 
-#include "io/image_io.h"
+#include "base/image.h"
 #include "color/ocio_lut_bake.h"
 #include "color/lut_texture.h"
 

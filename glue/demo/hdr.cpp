@@ -15,6 +15,9 @@
 
 #include "demo/exposure_walk.h"
 #include "demo/hdr_scene.h"
+#include "io/exr.h"
+#include "io/png.h"
+#include "io/atomic_file.h"
 
 namespace {
 
@@ -52,20 +55,6 @@ ImageF half_size(const ImageF &a) {
         o.rgba[(static_cast<size_t>(y) * o.w + x) * 4 + c] = s * 0.25f;
       }
   return o;
-}
-
-// Writes PATH.tmp.PID and renames it over PATH, so that a failed write leaves nothing behind.
-bool write_text_atomic(const std::string &path, const std::string &text, std::string *err) {
-  const std::string tmp = path + ".tmp." + std::to_string(getpid());
-  std::ofstream f(tmp, std::ios::binary);
-  f << text;
-  f.close();
-  if (!f || std::rename(tmp.c_str(), path.c_str()) != 0) {
-    std::remove(tmp.c_str());
-    *err = "cannot write '" + path + "'";
-    return false;
-  }
-  return true;
 }
 
 std::string scale_tag(float s) {
@@ -243,7 +232,7 @@ bool adaptation(const DemoOptions &opt, int *failures, std::string *err) {
       float *p = &hist.rgba[(static_cast<size_t>(spec.frames - 1 - f) * hist.w + b) * 4];
       p[0] = p[1] = p[2] = v;
     }
-  if (!write_text_atomic(opt.dir + "/hdr_adaptation.svg", adaptation_svg(cf, spec), err) ||
+  if (!write_file_atomic(opt.dir + "/hdr_adaptation.svg", adaptation_svg(cf, spec), err) ||
       !write_png(opt.dir + "/hdr_adaptation_strip.png", hstack(ptrs, 2, 1.f), Encode::Linear, err) ||
       !write_exr(opt.dir + "/hdr_adaptation_histograms.exr", hist, err))
     return false;

@@ -10,6 +10,10 @@
 #include "conform/conform.h"
 #include "demo/family_frame.h"
 #include "demo/sphere_grid_scene.h"
+#include "base/image_diff.h"
+#include "io/exr.h"
+#include "io/png.h"
+#include "color/srgb.h"
 
 namespace {
 
@@ -31,14 +35,7 @@ const Panel kPanels[] = {
 };
 
 ImageF to_display(const ImageF &img, Encode enc) {
-  ImageF d = img;
-  if (enc != Encode::SRGB) return d;
-  for (size_t p = 0; p < d.rgba.size(); ++p)
-    if (p % 4 != 3) {
-      const float x = std::fmin(std::fmax(d.rgba[p], 0.f), 1.f);
-      d.rgba[p] = x <= 0.0031308f ? 12.92f * x : 1.055f * std::pow(x, 1.f / 2.4f) - 0.055f;
-    }
-  return d;
+  return enc == Encode::SRGB ? srgb_display(img) : img;
 }
 
 bool run(const DemoOptions &opt, std::string *err) {

@@ -5,7 +5,8 @@
 #include <cstdio>
 
 #include "families/family.h"
-#include "io/image_io.h"
+#include "io/exr.h"
+#include "io/png.h"
 #include "scene/scene.h"
 #include "scene/selection.h"
 #include "scene/frame.h"

@@ -9,6 +9,10 @@
 
 #include "cli/select_args.h"
 #include "demo/room_render.h"
+#include "base/image_diff.h"
+#include "io/exr.h"
+#include "io/png.h"
+#include "color/srgb.h"
 
 namespace {
 
@@ -120,12 +124,7 @@ bool run(const DemoOptions &opt, std::string *err) {
   // Grid: top row final shading (ps20 | ps2b | sm3 | double reference), bottom row lightmaps
   // only (ps20 | ps2b | sm3 | the flat lightmap without normal maps); sRGB-encoded for display.
   auto display = [](std::vector<ImageF> v) {
-    for (ImageF &im : v)
-      for (size_t i = 0; i < im.rgba.size(); ++i)
-        if (i % 4 != 3) {
-          const float x = std::fmin(std::fmax(im.rgba[i], 0.f), 1.f);
-          im.rgba[i] = x <= 0.0031308f ? 12.92f * x : 1.055f * std::pow(x, 1.f / 2.4f) - 0.055f;
-        }
+    for (ImageF &im : v) im = srgb_display(im);
     return v;
   };
   const std::vector<ImageF> top = display(finals), bottom = display(lightmaps);

@@ -5,7 +5,7 @@
 
 #include "twins/color_correction.h"
 #include "families/family.h"
-#include "io/image_io.h"
+#include "base/image.h"
 #include "color/lut_texture.h"
 
 // Sets in->textures to the eight LUT textures color_correction declares: u_lut0..3 (3D)

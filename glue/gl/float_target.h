@@ -7,7 +7,7 @@
 
 #include "shaderlib/assembler.h"
 #include "gl/context.h"
-#include "io/image_io.h"
+#include "base/image.h"
 
 enum class TexKind { Tex2D, Cube, Tex3D };
 

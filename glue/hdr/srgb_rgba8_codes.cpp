@@ -6,14 +6,14 @@
 #include <mutex>
 
 #include "math/hdr_formats.h"
+#include "color/srgb.h"
 
 namespace {
 
-float srgb_encode(float v) {
+float encode_clamped(float v) {
   if (!(v > 0.f)) return 0.f;
   if (v >= 1.f) return 1.f;
-  const double d = v;
-  return static_cast<float>(d <= 0.0031308 ? d * 12.92 : 1.055 * std::pow(d, 1.0 / 2.4) - 0.055);
+  return static_cast<float>(srgb_encode<double>(v));
 }
 
 float from_bits(uint32_t b) {
@@ -45,7 +45,7 @@ const Thresholds &thresholds() {
 
 }  // namespace
 
-uint8_t srgb_code_direct(float v) { return ts_unorm8_from_float(srgb_encode(v)); }
+uint8_t srgb_code_direct(float v) { return ts_unorm8_from_float(encode_clamped(v)); }
 
 uint8_t srgb_code(float v) {
   if (!(v > 0.f)) return 0;  // negative, zero, denormal (DAZ) and NaN: code 0, as the formula

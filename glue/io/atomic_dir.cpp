@@ -1,4 +1,4 @@
-// tiershade glue: atomic output directories (see dir_write.h).
+// tiershade io: atomic output directories (io/atomic_dir.h).
 #include "io/atomic_dir.h"
 
 #include <unistd.h>
@@ -7,6 +7,8 @@
 #include <cstdio>
 #include <cstring>
 #include <filesystem>
+
+#include "io/atomic_file.h"
 
 namespace fs = std::filesystem;
 
@@ -30,7 +32,7 @@ bool DirWriter::begin(const std::string &dir, const std::string &marker, const s
       return false;
     }
   }
-  tmp_ = dir_ + ".tmp." + std::to_string(static_cast<long>(getpid()));
+  tmp_ = temp_path_for(dir_);
   fs::remove_all(tmp_, ec);
   if (!fs::create_directory(tmp_, ec)) {
     *err = dir_ + ": cannot create the temporary " + tmp_ + ": " + (ec ? ec.message() : std::string("already exists"));
@@ -53,14 +55,13 @@ bool DirWriter::mkdir(const std::string &rel, std::string *err) {
 bool DirWriter::write(const std::string &rel, const void *data, size_t bytes, std::string *err) {
   const std::string p = path(rel);
   FILE *f = fopen(p.c_str(), "wb");
+  std::string why;
   if (!f) {
     *err = "cannot write " + dir_ + "/" + rel + ": " + strerror(errno);
     return false;
   }
-  const bool ok = (bytes == 0 || fwrite(data, 1, bytes, f) == bytes) && fflush(f) == 0;
-  const int e = errno;
-  if (fclose(f) != 0 || !ok) {
-    *err = "cannot write " + dir_ + "/" + rel + ": " + strerror(e ? e : EIO);
+  if (!write_and_close(f, data, bytes, &why)) {
+    *err = "cannot write " + dir_ + "/" + rel + ": " + why;
     return false;
   }
   return true;

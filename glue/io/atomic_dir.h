@@ -1,4 +1,4 @@
-// tiershade glue: writing an output directory atomically. Files go into DIR.tmp.<pid>, which
+// tiershade io: writing an output directory atomically. Files go into DIR.tmp.<pid>, which
 // is renamed over DIR at the end; an existing DIR is only replaced when it holds `marker`
 // (a file this kind of output always writes), so a user's other directory is never lost.
 #pragma once

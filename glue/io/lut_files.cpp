@@ -15,6 +15,8 @@
 #include <fstream>
 #include <sstream>
 
+#include "io/atomic_file.h"
+
 namespace {
 
 std::string at(const std::string &path, int line) { return path + ":" + std::to_string(line) + ": "; }
@@ -70,29 +72,6 @@ bool ends_with(const std::string &s, const std::string &suffix) {
 }
 
 }  // namespace
-
-bool write_file_atomic(const std::string &path, const std::string &bytes, std::string *err) {
-  const std::string tmp = path + ".tmp." + std::to_string(getpid());
-  FILE *f = std::fopen(tmp.c_str(), "wb");
-  if (!f) {
-    *err = path + ": cannot write (" + std::string(std::strerror(errno)) + ")";
-    return false;
-  }
-  const bool ok = std::fwrite(bytes.data(), 1, bytes.size(), f) == bytes.size() && std::fflush(f) == 0;
-  const int saved = errno;
-  if (std::fclose(f) != 0 || !ok) {
-    std::remove(tmp.c_str());
-    *err = path + ": write failed (" + std::string(std::strerror(ok ? errno : saved)) + ")";
-    return false;
-  }
-  if (std::rename(tmp.c_str(), path.c_str()) != 0) {
-    const std::string why = std::strerror(errno);
-    std::remove(tmp.c_str());
-    *err = path + ": cannot replace (" + why + ")";
-    return false;
-  }
-  return true;
-}
 
 bool read_cube(const std::string &path, CubeFile *out, std::string *err) {
   std::string bytes;

@@ -8,8 +8,8 @@
 //    the low bits up (IColorCorrection.h SetLookup(RGBX5551_t in, color24 out)).
 //
 // Every failure fills *err with "<file>: <problem>" or "<file>:<line>: <problem>".
-// Writers write "<path>.tmp.<pid>" and rename() it over <path> only when everything was
-// written and flushed; on failure the temporary is removed and <path> is untouched.
+// Writers write atomically (io/atomic_file.h): on failure the temporary is removed and <path>
+// is untouched.
 // Grammar accepted for .cube: docs/color_correction.md, "LUT files".
 #pragma once
 #include <string>
@@ -48,6 +48,3 @@ bool write_source_raw(const std::string &path, const Lut3D &lut, std::string *er
 // Reads any LUT tiershade can use directly: .cube (a 3D table on the unit domain) or .raw,
 // chosen by the file name's extension.
 bool read_lut_file(const std::string &path, Lut3D *out, std::string *err);
-
-// Writes `bytes` to `path` atomically (temporary file + rename), as the writers above do.
-bool write_file_atomic(const std::string &path, const std::string &bytes, std::string *err);

@@ -9,7 +9,7 @@
 #include <functional>
 #include <vector>
 
-#include "io/image_io.h"
+#include "base/image.h"
 #include "scene/prepare.h"
 
 // A buffer passed again at the same size is reused (reset by the rasteriser's bands, not

@@ -23,6 +23,7 @@
 #include "scene/prepare.h"
 #include "hdr/srgb_rgba8_codes.h"
 #include "hdr/still_frame_exposure.h"
+#include "base/image_diff.h"
 
 namespace {
 

@@ -13,7 +13,7 @@
 
 #include "gl/context.h"
 #include "gl/fns.h"
-#include "io/image_io.h"
+#include "base/image.h"
 #include "scene/scene.h"
 #include "scene/selection.h"
 

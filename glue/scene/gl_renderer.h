@@ -10,7 +10,7 @@
 #include <vector>
 
 #include "gl/float_target.h"
-#include "io/image_io.h"
+#include "base/image.h"
 #include "scene/prepare.h"
 
 class SceneGl {

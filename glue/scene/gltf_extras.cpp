@@ -6,7 +6,9 @@
 
 #include <glm/gtc/constants.hpp>
 
-#include "io/image_io.h"
+#include "base/image.h"
+#include "io/exr.h"
+#include "io/radiance_hdr.h"
 #include "scene/gltf_util.h"
 
 namespace scene_gltf {

@@ -17,6 +17,7 @@
 #include "scene/textures.h"
 #include "twins/model_lighting.h"
 #include "twins/world_lighting.h"
+#include "color/srgb.h"
 
 namespace {
 
@@ -40,8 +41,7 @@ glm::dmat4 camera_matrix(const SceneCamera &c, double aspect) {
 }
 
 float srgb_to_linear(float c) {
-  const double v = c;
-  return static_cast<float>(v <= 0.04045 ? v / 12.92 : std::pow((v + 0.055) / 1.055, 2.4));
+  return static_cast<float>(srgb_decode<double>(c));
 }
 
 TextureDesc black_cube() {

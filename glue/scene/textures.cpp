@@ -8,7 +8,8 @@
 #include <glm/gtc/type_ptr.hpp>
 
 #include "base/cube_faces.h"
-#include "io/image_io.h"
+#include "base/image.h"
+#include "io/radiance_hdr.h"
 
 namespace {
 

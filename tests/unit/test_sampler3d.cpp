@@ -31,7 +31,8 @@
 #include "shaderlib/assembler.h"
 #include "gl/context.h"
 #include "gl/float_target.h"
-#include "io/image_io.h"
+#include "base/image.h"
+#include "base/image_diff.h"
 #include "math/ts_sampler3d.h"
 #include "unit_check.h"
 

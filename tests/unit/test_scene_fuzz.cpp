@@ -28,7 +28,8 @@
 #include "scene/selection.h"
 #include "scene/frame.h"
 #include "scene/prepare.h"
-#include "io/image_io.h"
+#include "base/image.h"
+#include "io/exr.h"
 #include "unit_check.h"
 
 namespace {

@@ -22,7 +22,8 @@
 #include <string>
 #include <vector>
 
-#include "io/image_io.h"
+#include "base/image.h"
+#include "io/exr.h"
 #include "scene/scene.h"
 #include "unit_check.h"
 

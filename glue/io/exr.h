@@ -1,0 +1,20 @@
+// tiershade io: OpenEXR image files. Writers write atomically (io/atomic_file.h); readers and
+// writers flip between the file's top-down rows and ImageF's bottom-up rows (base/image.h).
+// Failures fill *err (may be null) with "<function>: '<path>': <reason>"; nothing throws.
+#pragma once
+#include <string>
+
+#include "base/image.h"
+
+// RGBA FLOAT (32-bit) channels, ZIP compression. Lossless: every bit of every value
+// (denormals, -0, Inf, NaN payloads) survives a write_exr/read_exr trip.
+bool write_exr(const std::string &path, const ImageF &img, std::string *err);
+
+// RGBA HALF channels, ZIP compression. Values are rounded to the nearest half
+// (round-to-nearest-even); magnitudes above 65504 become +-Inf.
+bool write_exr_half(const std::string &path, const ImageF &img, std::string *err);
+
+// Reads any scanline or tiled single-part EXR that has R, G and B channels (HALF, FLOAT or
+// UINT; full resolution). A missing A channel reads as 1. Missing, truncated or corrupt files
+// fail with a message naming the file.
+bool read_exr(const std::string &path, ImageF *out, std::string *err);
