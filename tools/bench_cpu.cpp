@@ -61,9 +61,10 @@ int main(int argc, char **argv) {
       {"sm3 full", "sm3:ALBEDO_TEXTURE=1,HALF_LAMBERT=1,OUTPUT_MODE=2,PHONG=1,PHONG_EXPONENT_MAP=1,RIM_LIGHT=1,ENVMAP=1", 4,
        true},
   };
-  const SphereScene grid = default_sphere_scene();
-  std::string note;
-  const SphereScene ball = phong_sphere_scene("../shared/data/probes/grace.hdr", &note);
+  SphereScene grid, ball;
+  std::string note, err0;
+  if (!sphere_grid_scene(&grid, &err0) || !phong_sphere_scene("../shared/data/probes/grace.hdr", &ball, &note, &err0))
+    return fprintf(stderr, "%s\n", err0.c_str()), 1;
   printf("%-12s %10s %12s %8s %10s %8s %10s\n", "row", "llvmpipe", "C scalar", "C/llvm", "C fast", "C/llvm", "mismatch");
   ShaderFamily scalar_fam = *fam;
   scalar_fam.eval_row_f = nullptr;

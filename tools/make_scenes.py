@@ -1,7 +1,8 @@
 #!/usr/bin/env python3
 # tiershade -- tools/make_scenes.py
-# Writes the three shipped glTF scenes (scenes/model_lighting.gltf, world_lighting.gltf,
-# hdr_atrium.gltf), their geometry (.bin next to each) and small procedural PNG textures
+# Writes the shipped glTF scenes (scenes/model_lighting.gltf, world_lighting.gltf,
+# hdr_atrium.gltf, and sphere_grid.gltf: the demo's and bench's sphere grid, whose lights are
+# read from scenes/sphere_grid.lights, their one source), their geometry (.bin next to each) and small procedural PNG textures
 # (scenes/textures/). Python 3 standard library only. Run once from the repo root:
 #   python3 tools/make_scenes.py
 # The output is committed; builds and tests never run this script. Format: docs/scenes.md.
@@ -322,6 +323,12 @@ class Gltf:
             node["rotation"] = look_quat(eye, target)
         return self.node(node)
 
+    def ortho_camera(self, name, eye, target, xmag, ymag, znear, zfar):
+        self.doc["cameras"].append({"name": name, "type": "orthographic",
+                                    "orthographic": {"xmag": xmag, "ymag": ymag, "znear": znear, "zfar": zfar}})
+        return self.node({"name": name, "camera": len(self.doc["cameras"]) - 1,
+                          "translation": list(eye), "rotation": look_quat(eye, target)})
+
     def camera(self, name, eye, target, yfov, aspect=None):
         cam = {"name": name, "type": "perspective", "perspective": {"yfov": yfov, "znear": 0.05, "zfar": 100.0}}
         if aspect:
@@ -347,6 +354,11 @@ class Gltf:
 def make_textures():
     os.makedirs(TEX, exist_ok=True)
     w = lambda name, px, ch=4: write_png(os.path.join(TEX, name), len(px[0]), len(px), px, ch)
+    # sphere grid albedo: hue bands across u, a soft checker across v (sRGB codes of the linear colour)
+    enc = lambda c: 255 * (12.92 * c if c <= 0.0031308 else 1.055 * c ** (1 / 2.4) - 0.055)
+    band = lambda x, y, k, off: (1.0 if (x // 8 + y // 8) % 2 else 0.75) * (0.5 + 0.3 * math.cos(2 * math.pi * (x / 64 + off))) * k
+    w("sphere_bands.png", image(64, 64, lambda x, y: (enc(band(x, y, 1, 0.0)), enc(band(x, y, 1, 0.33)),
+                                                      enc(band(x, y, 0.8 + 0.2 * y / 64, 0.67)))), 3)
     w("checker.png", image(128, 128, lambda x, y: (200, 190, 170) if (x // 16 + y // 16) % 2 else (70, 90, 130)), 3)
     w("skin.png", image(128, 128, lambda x, y: tuple(c * (0.9 + 0.1 * smooth_noise(x / 128, y / 128, 16, 1))
                                                      for c in (224, 172, 150)) + (255,)))
@@ -508,10 +520,77 @@ def hdr_atrium():
                      "luts": [{"file": "luts/day_for_night.cube", "weight": 0.3},
                               {"file": "luts/desaturate.cube", "weight": 0.2}]}})
 
+def read_lights(path):
+    """The lights of a tiershade lights file (format: `tiershade fold --help`) as dicts."""
+    out = []
+    with open(path) as f:
+        for line in f:
+            v = line.split("#")[0].split()
+            if not v:
+                continue
+            n = [float(x) for x in v[1:]]
+            l = {"type": v[0], "color": n[0:3]}
+            if v[0] == "directional":
+                l["dir"] = n[3:6]
+            elif v[0] == "point":
+                l["pos"], l["atten"] = n[3:6], n[6:9]
+            elif v[0] == "spot":
+                l["pos"], l["dir"], l["exponent"] = n[3:6], n[6:9], n[9]
+                l["inner"], l["outer"], l["atten"] = math.radians(n[10]), math.radians(n[11]), n[12:15]
+            else:
+                raise ValueError("%s: unknown light type %r" % (path, v[0]))
+            out.append(l)
+    return out
+
+
+def sphere_grid():
+    """The model-lighting demo and bench scene: a 5 x 3 grid of unit spheres 2.4 apart seen by an
+    orthographic camera on +Z, the six lights of scenes/sphere_grid.lights and a sky-lit ambient cube."""
+    g = Gltf("sphere_grid")
+    mat = g.material("halflambert_bands", {"shader": "VertexLitGeneric", "$halflambert": 1}, base="sphere_bands.png")
+    cols, rows, spacing = 5, 3, 2.4
+    # One mesh, one draw: the lights beyond a tier's limit are folded once, at the grid's centre
+    # (the mesh's bounding-box centre), as a deferred frame of the grid has one set of uniforms.
+    base = uv_sphere(1.0, 48, 24)
+    grid = dict(pos=[], nrm=[], uv=[], tan=[], idx=[])
+    for r in range(rows):
+        for c in range(cols):
+            off = [(c - (cols - 1) / 2) * spacing, (r - (rows - 1) / 2) * spacing, 0.0]
+            first = len(grid["pos"])
+            grid["pos"] += [[p[k] + off[k] for k in range(3)] for p in base["pos"]]
+            grid["nrm"] += base["nrm"]
+            grid["tan"] += base["tan"]
+            # each sphere shows another part of the texture (u twice around, shifted per column and row)
+            grid["uv"] += [[2.0 * (u + 0.17 * c), v + 0.29 * r] for u, v in base["uv"]]
+            grid["idx"] += [first + i for i in base["idx"]]
+    g.mesh("sphere_grid", [(grid, mat)])
+    for i, l in enumerate(read_lights(os.path.join(SCENES, "sphere_grid.lights"))):
+        name = "%s_%d" % (l["type"], i)
+        if l["type"] == "directional":
+            g.light(name, "directional", l["color"], 1.0, (0.0, 0.0, 0.0), norm(l["dir"]))
+        else:
+            src = dict(zip(("constant", "linear", "quadratic"), l["atten"]))
+            if l["type"] == "spot":
+                src["exponent"] = l["exponent"]
+                tgt = [l["pos"][k] + l["dir"][k] for k in range(3)]
+                g.light(name, "spot", l["color"], 1.0, l["pos"], tgt, l["inner"], l["outer"], src)
+            else:
+                g.light(name, "point", l["color"], 1.0, l["pos"], source=src)
+    # xmag/ymag: the grid's half extents; the view keeps square pixels (docs/scenes.md)
+    g.ortho_camera("front", (0.0, 0.0, 60.0), (0.0, 0.0, 0.0), round(cols * spacing / 2, 6), round(rows * spacing / 2, 6),
+                   1.0, 120.0)
+    g.write({"camera": 0,
+             # sky-lit ambient cube (+X -X +Y -Y +Z -Z): blue from above, warm bounce from below
+             "ambient": [{"position": [0, 0, 0], "cube": [[0.10, 0.10, 0.12], [0.08, 0.08, 0.10],
+                                                          [0.16, 0.20, 0.30], [0.07, 0.05, 0.04],
+                                                          [0.10, 0.10, 0.11], [0.05, 0.05, 0.06]]}],
+             "hdr": {"path": "integer", "tone_map_scale": 0.6}})
+
 
 if __name__ == "__main__":
     make_textures()
     model_lighting()
     world_lighting()
     hdr_atrium()
-    print("wrote scenes/model_lighting.gltf, scenes/world_lighting.gltf, scenes/hdr_atrium.gltf")
+    sphere_grid()
+    print("wrote scenes/model_lighting.gltf, world_lighting.gltf, hdr_atrium.gltf, sphere_grid.gltf")

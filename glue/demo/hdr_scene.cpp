@@ -33,7 +33,8 @@ std::string hdr_default_probe() {
 }
 
 SphereScene hdr_daylight_scene(const std::string &probe_path, std::string *note) {
-  SphereScene s = default_sphere_scene();
+  SphereScene s;
+  s.textures = sphere_grid_textures();
   s.lights.clear();
   ts_light sun = {};
   sun.type = TS_LIGHT_DIRECTIONAL;
@@ -76,7 +77,8 @@ SphereScene hdr_daylight_scene(const std::string &probe_path, std::string *note)
 }
 
 SphereScene hdr_dark_room_scene() {
-  SphereScene s = default_sphere_scene();
+  SphereScene s;
+  s.textures = sphere_grid_textures();
   s.lights.clear();
   s.lights.push_back(point_light(0.10f, 0.075f, 0.045f, -2.f, 2.f, 2.5f, 0.5f, 0.2f, 0.1f));  // a dim lamp
   const float room[6][3] = {{0.004f, 0.0036f, 0.0032f}, {0.003f, 0.0028f, 0.0024f}, {0.005f, 0.0045f, 0.004f},

@@ -46,7 +46,8 @@ bool run(const DemoOptions &opt, std::string *err) {
   if (!load_shader_decls(&decls, err)) return false;
   const ShaderFamily *fam = find_family("model_lighting");
   std::string note;
-  const SphereScene base = phong_sphere_scene("../shared/data/probes/grace.hdr", &note);
+  SphereScene base;
+  if (!phong_sphere_scene("../shared/data/probes/grace.hdr", &base, &note, err)) return false;
   const int size = std::max(32, std::min(opt.w, opt.h));
   printf("phong sphere: %s\n", note.c_str());
   std::vector<ImageF> display;

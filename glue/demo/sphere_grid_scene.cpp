@@ -1,29 +1,14 @@
-// tiershade glue: the sphere-grid scene (see scene_spheres.h).
+// tiershade demo: the sphere-grid scene of the legacy analytic frames (see sphere_grid_scene.h).
 #include "demo/sphere_grid_scene.h"
 
 #include <algorithm>
 #include <cmath>
 
-#include "demo/family_frame.h"
 #include "twins/model_lighting.h"
+#include "scene/scene.h"
 #include "scene/textures.h"
 
 namespace {
-
-ts_light point(float r, float g, float b, float x, float y, float z, float c, float l, float q) {
-  ts_light L = {};
-  L.type = TS_LIGHT_POINT;
-  L.color[0] = r; L.color[1] = g; L.color[2] = b;
-  L.pos[0] = x; L.pos[1] = y; L.pos[2] = z;
-  L.dir[2] = -1.f;
-  L.atten[0] = c; L.atten[1] = l; L.atten[2] = q;
-  return L;
-}
-
-void normalize3(float v[3]) {
-  const float n = std::sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]);
-  for (int i = 0; i < 3; ++i) v[i] /= n;
-}
 
 // A 64x64 colourful albedo: hue bands across u, a soft checker across v.
 TextureDesc albedo_texture() {
@@ -85,38 +70,33 @@ double vertex_interpolated_attenuation(const ts_light &L, const double center[3]
 
 }  // namespace
 
-SphereScene default_sphere_scene() {
-  SphereScene s;
-  // Sky-lit ambient cube (+X -X +Y -Y +Z -Z): blue from above, warm bounce from below.
-  const float amb[6][3] = {{0.10f, 0.10f, 0.12f}, {0.08f, 0.08f, 0.10f}, {0.16f, 0.20f, 0.30f},
-                           {0.07f, 0.05f, 0.04f}, {0.10f, 0.10f, 0.11f}, {0.05f, 0.05f, 0.06f}};
-  for (int i = 0; i < 6; ++i)
-    for (int c = 0; c < 3; ++c) s.ambient[i][c] = amb[i][c];
-  ts_light key = {};
-  key.type = TS_LIGHT_DIRECTIONAL;
-  key.color[0] = 1.1f; key.color[1] = 0.95f; key.color[2] = 0.75f;
-  key.dir[0] = -0.5f; key.dir[1] = -0.6f; key.dir[2] = -0.62f;
-  normalize3(key.dir);
-  s.lights.push_back(key);
-  s.lights.push_back(point(0.25f, 0.45f, 1.6f, -5.f, 2.f, 3.f, 0.3f, 0.05f, 0.02f));  // blue fill
-  ts_light spot = point(2.2f, 0.45f, 0.25f, 4.f, 3.5f, 4.f, 0.5f, 0.02f, 0.01f);     // red spot
-  spot.type = TS_LIGHT_SPOT;
-  spot.dir[0] = -4.f; spot.dir[1] = -3.5f; spot.dir[2] = -4.f;
-  normalize3(spot.dir);
-  spot.spot_exponent = 2.f;
-  spot.cos_inner = std::cos(0.22f);
-  spot.cos_outer = std::cos(0.42f);
-  s.lights.push_back(spot);
-  s.lights.push_back(point(0.3f, 1.2f, 0.35f, 0.5f, -3.5f, 2.f, 0.4f, 0.1f, 0.05f));  // green from below
-  s.lights.push_back(point(0.7f, 0.15f, 0.7f, 5.f, -2.5f, 1.f, 0.5f, 0.1f, 0.05f));   // magenta rim
-  s.lights.push_back(point(0.5f, 0.5f, 0.45f, -3.f, -3.f, 4.f, 0.6f, 0.1f, 0.05f));   // dim white
-  s.textures = {albedo_texture(), make_bump_normal_map("u_normal_map", 128), make_exponent_map("u_exponent_map", 64),
-                make_warp_ramp("u_light_warp"), make_sky_cube("u_envmap", 32)};
-  return s;
+const char *const kSphereGridGltf = "scenes/sphere_grid.gltf";
+const char *const kSphereGridLights = "scenes/sphere_grid.lights";
+
+std::vector<TextureDesc> sphere_grid_textures() {
+  return {albedo_texture(), make_bump_normal_map("u_normal_map", 128), make_exponent_map("u_exponent_map", 64),
+          make_warp_ramp("u_light_warp"), make_sky_cube("u_envmap", 32)};
 }
 
-SphereScene phong_sphere_scene(const std::string &probe_path, std::string *note) {
-  SphereScene s = default_sphere_scene();
+bool sphere_grid_scene(SphereScene *out, std::string *err) {
+  Scene g;
+  if (!load_scene(kSphereGridGltf, &g, err)) return false;
+  if (g.ambient.size() != 1 || g.ambient[0].from_probe >= 0) {
+    *err = std::string(kSphereGridGltf) + ": extras.tiershade.ambient: expected one explicit ambient cube";
+    return false;
+  }
+  SphereScene s;
+  std::copy(&g.ambient[0].cube[0][0], &g.ambient[0].cube[0][0] + 18, &s.ambient[0][0]);
+  for (const SceneLight &l : g.lights) s.lights.push_back(l.light);
+  s.tone_map_scale = g.hdr.tone_map_scale;
+  s.textures = sphere_grid_textures();
+  *out = s;
+  return true;
+}
+
+bool phong_sphere_scene(const std::string &probe_path, SphereScene *out, std::string *note, std::string *err) {
+  SphereScene s;
+  if (!sphere_grid_scene(&s, err)) return false;
   s.cols = s.rows = 1;
   s.lights.resize(4);  // every tier above ps20 keeps all four local
   s.lights[1].color[0] = 0.6f; s.lights[1].color[1] = 0.8f; s.lights[1].color[2] = 1.8f;
@@ -126,16 +106,17 @@ SphereScene phong_sphere_scene(const std::string &probe_path, std::string *note)
   s.phong.albedo_tint = true;
   float ambient[6][3];
   TextureDesc cube;
-  std::string err;
-  if (!probe_path.empty() && cube_from_probe(probe_path, "u_envmap", 32, &cube, ambient, &err)) {
+  std::string probe_err;  // a missing probe is not an error: the procedural sky stands in
+  if (!probe_path.empty() && cube_from_probe(probe_path, "u_envmap", 32, &cube, ambient, &probe_err)) {
     s.textures[4] = cube;
     for (int i = 0; i < 6; ++i)
       for (int c = 0; c < 3; ++c) s.ambient[i][c] = 0.35f * ambient[i][c];
     *note = "envmap and ambient cube from " + probe_path;
   } else {
-    *note = "procedural sky envmap (" + (probe_path.empty() ? std::string("no probe given") : err) + ")";
+    *note = "procedural sky envmap (" + (probe_path.empty() ? std::string("no probe given") : probe_err) + ")";
   }
-  return s;
+  *out = s;
+  return true;
 }
 
 bool sphere_frame(const SphereScene &scene, int w, int h, int max_local, SphereFrame *out, std::string *err) {
@@ -219,40 +200,6 @@ bool sphere_frame(const SphereScene &scene, int w, int h, int max_local, SphereF
   in.shared[ML_SLOT_SELF_ILLUM] = ts_v4f(m.self_illum[0], m.self_illum[1], m.self_illum[2], m.self_illum[3]);
   in.textures = scene.textures;
   return true;
-}
-
-void sphere_reference_linear(const SphereScene &scene, const SphereFrame &frame, std::vector<double> *rgb) {
-  // Linear output is albedo * (ambient + sum of lights) * scale, linear in the lights,
-  // so the reference with all N lights local is a sum of twin evaluations over
-  // groups of ML_MAX_LIGHTS lights (the first group carries the ambient cube).
-  const FamilyInputs &g = frame.in;
-  const int n = static_cast<int>(scene.lights.size());
-  rgb->assign(static_cast<size_t>(g.w) * g.h * 3, 0.0);
-  Variant v;
-  v.shader = nullptr;
-  v.tier = Tier::SM3;
-  v.values = {{"ALBEDO_TEXTURE", 1}, {"HALF_LAMBERT", 1}, {"OUTPUT_MODE", 0}};
-  const ShaderFamily *f = find_family("model_lighting");
-  for (int first = 0; first < std::max(n, 1); first += static_cast<int>(ML_MAX_LIGHTS)) {
-    FamilyInputs in = g;
-    in.shared.assign(ML_SLOTS, ts_v4f(0, 0, 0, 0));
-    const int count = std::min(static_cast<int>(ML_MAX_LIGHTS), n - first);
-    if (first == 0)
-      for (int i = 0; i < 6; ++i)
-        in.shared[ML_SLOT_AMBIENT + i] = ts_v4f(scene.ambient[i][0], scene.ambient[i][1], scene.ambient[i][2], 0);
-    in.shared[ML_SLOT_PARAMS] = ts_v4f(scene.tone_map_scale, static_cast<float>(count), 0, 0);
-    for (int i = 0; i < count; ++i) {
-      float packed[5][4];
-      char msg[200];
-      if (!ts_light_pack(&scene.lights[first + i], packed, msg, sizeof msg)) continue;
-      for (int k = 0; k < 5; ++k)
-        in.shared[ML_SLOT_LIGHT0 + 5 * i + k] = ts_v4f(packed[k][0], packed[k][1], packed[k][2], packed[k][3]);
-    }
-    std::vector<double> part;
-    cpu_render_frame_double(*f, v, in, &part);
-    for (size_t p = 0; p < static_cast<size_t>(g.w) * g.h; ++p)
-      for (int c = 0; c < 3; ++c) (*rgb)[p * 3 + c] += frame.hit[p] ? part[p * 4 + c] : 0.0;
-  }
 }
 
 void sphere_mask(const SphereFrame &frame, ImageF *img) {

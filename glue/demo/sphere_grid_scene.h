@@ -1,6 +1,6 @@
-// tiershade glue: the demo/benchmark scene of the model-lighting family: a grid of
-// lit spheres (orthographic view), six coloured lights of all three types and an
-// ambient cube. Lights beyond a tier's limit are folded into the cube
+// tiershade demo: analytic G-buffer frames of the sphere grid (orthographic view, spheres
+// hit per pixel), still used by the benchmarks, the HDR scene and the Phong section; the demo's
+// model-lighting tiers render scenes/sphere_grid.gltf through the scene renderer instead. Lights beyond a tier's limit are folded into the cube
 // (c_ref/offline/light_folding.c, docs/light_folding.md).
 #pragma once
 #include <string>
@@ -30,10 +30,17 @@ struct SphereScene {
   std::vector<TextureDesc> textures;  // u_albedo, u_normal_map, u_exponent_map, u_light_warp, u_envmap
 };
 
-SphereScene default_sphere_scene();
+// The grid's lights, ambient cube and tone-map scale from scenes/sphere_grid.gltf (the scene the
+// demo renders through the scene renderer; its lights come from scenes/sphere_grid.lights), with
+// the procedural textures of the analytic frames below.
+extern const char *const kSphereGridGltf;
+extern const char *const kSphereGridLights;  // scenes/sphere_grid.lights
+bool sphere_grid_scene(SphereScene *out, std::string *err);
+// The procedural textures: albedo bands, bump normal map, exponent map, warp ramp, sky cube.
+std::vector<TextureDesc> sphere_grid_textures();
 // One big sphere lit for the Episode One Phong comparison: normal map, exponent map,
 // and (when the file is readable) a cube map and ambient cube from a real light probe.
-SphereScene phong_sphere_scene(const std::string &probe_path, std::string *note);
+bool phong_sphere_scene(const std::string &probe_path, SphereScene *out, std::string *note, std::string *err);
 
 struct SphereFrame {
   FamilyInputs in;          // G-buffer (normal, position, uv) + shared slots for the tier
@@ -43,10 +50,6 @@ struct SphereFrame {
 
 // Builds the frame of `scene` at w x h for a tier that shades at most max_local lights.
 bool sphere_frame(const SphereScene &scene, int w, int h, int max_local, SphereFrame *out, std::string *err);
-
-// The reference: linear radiance (rgb per pixel, double) with every light local
-// (none folded), evaluated with the double twin; background pixels are 0.
-void sphere_reference_linear(const SphereScene &scene, const SphereFrame &frame, std::vector<double> *rgb);
 
 // Zeroes background pixels (rgb 0, alpha 1) so GL, C and reference frames compare alike.
 void sphere_mask(const SphereFrame &frame, ImageF *img);

@@ -514,16 +514,24 @@ bool convert_camera(Walk &w, int cam, const Mat4 world, const std::string &node_
   const std::string place = "cameras[" + std::to_string(cam) + "]";
   if (cam < 0 || static_cast<size_t>(cam) >= w.m.cameras.size()) return w.e.fail(place, "does not exist");
   const tinygltf::Camera &c = w.m.cameras[cam];
-  if (c.type != "perspective")
-    return w.e.fail(named(place, c.name), "type " + quoted(c.type) + ": only perspective cameras are supported");
-  const tinygltf::PerspectiveCamera &p = c.perspective;
-  if (!(p.yfov > 0 && p.yfov < 3.14159)) return w.e.fail(named(place, c.name) + ".perspective.yfov", "must be in (0, pi)");
-  if (!(p.znear > 0 && std::isfinite(p.znear))) return w.e.fail(named(place, c.name) + ".perspective.znear", "must be > 0");
-  if (!(p.zfar == 0 || (p.zfar > p.znear && std::isfinite(p.zfar))))
-    return w.e.fail(named(place, c.name) + ".perspective.zfar", "must be > znear (or absent)");
-  if (!(p.aspectRatio >= 0 && std::isfinite(p.aspectRatio)))
-    return w.e.fail(named(place, c.name) + ".perspective.aspectRatio", "must be > 0 (or absent)");
   SceneCamera sc;
+  if (c.type == "orthographic") {
+    if (!read_orthographic(c, named(place, c.name), &sc, w.e)) return false;
+  } else if (c.type != "perspective") {
+    return w.e.fail(named(place, c.name), "type " + quoted(c.type) + ": not perspective or orthographic");
+  } else {
+    const tinygltf::PerspectiveCamera &p = c.perspective;
+    if (!(p.yfov > 0 && p.yfov < 3.14159)) return w.e.fail(named(place, c.name) + ".perspective.yfov", "must be in (0, pi)");
+    if (!(p.znear > 0 && std::isfinite(p.znear))) return w.e.fail(named(place, c.name) + ".perspective.znear", "must be > 0");
+    if (!(p.zfar == 0 || (p.zfar > p.znear && std::isfinite(p.zfar))))
+      return w.e.fail(named(place, c.name) + ".perspective.zfar", "must be > znear (or absent)");
+    if (!(p.aspectRatio >= 0 && std::isfinite(p.aspectRatio)))
+      return w.e.fail(named(place, c.name) + ".perspective.aspectRatio", "must be > 0 (or absent)");
+    sc.yfov = p.yfov;
+    sc.znear = p.znear;
+    sc.zfar = p.zfar;
+    sc.aspect = p.aspectRatio;
+  }
   sc.name = !c.name.empty() ? c.name : !node_name.empty() ? node_name : place;
   const double o[3] = {0, 0, 0}, fz[3] = {0, 0, -1}, uy[3] = {0, 1, 0};
   double m3[9];
@@ -536,10 +544,6 @@ bool convert_camera(Walk &w, int cam, const Mat4 world, const std::string &node_
   const double d = sc.up[0] * sc.forward[0] + sc.up[1] * sc.forward[1] + sc.up[2] * sc.forward[2];
   for (int k = 0; k < 3; ++k) sc.up[k] -= d * sc.forward[k];
   normalize3(sc.up);
-  sc.yfov = p.yfov;
-  sc.znear = p.znear;
-  sc.zfar = p.zfar;
-  sc.aspect = p.aspectRatio;
   w.s->cameras.push_back(sc);
   return true;
 }
@@ -641,7 +645,7 @@ bool load(const std::string &path, Scene *s, Err &e) {
       p.material = static_cast<int>(s->materials.size()) - 1;
     }
   if (s->primitives.empty()) return e.fail("scene", "no triangles (a scene needs at least one mesh primitive)");
-  if (s->cameras.empty()) return e.fail("scene", "no camera (a scene needs a node with a perspective camera)");
+  if (s->cameras.empty()) return e.fail("scene", "no camera (a scene needs a node with a camera)");
   return convert_tiershade_extras(m, dir, s, e);
 }
 

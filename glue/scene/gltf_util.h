@@ -60,4 +60,7 @@ bool convert_light(const tinygltf::Model &m, int light, const double world[16], 
                    Scene *s, Err &e);
 bool convert_tiershade_extras(const tinygltf::Model &m, const std::string &scene_dir, Scene *s, Err &e);
 
+// glue/scene/camera_ortho.cpp: an orthographic camera's xmag, ymag, znear, zfar into *sc.
+bool read_orthographic(const tinygltf::Camera &c, const std::string &place, SceneCamera *sc, Err &e);
+
 }  // namespace scene_gltf

@@ -7,11 +7,13 @@
 #include <array>
 #include <chrono>
 #include <cmath>
+#include <cstring>
 #include <map>
 
 #include "twins/model_lighting.h"
 #include "scene/textures.h"
 #include "demo/room_scene.h"
+#include "scene/camera_ortho.h"
 #include "twins/world_lighting.h"
 
 namespace {
@@ -251,6 +253,7 @@ bool model_draw(const Scene &s, const PreparedScene &ps, const SceneDrawChoice &
         for (int k = 0; k < 3; ++k) cube[f][k] = a.cube[f][k];
     }
   }
+  std::memcpy(d->ambient, cube, sizeof cube);
   // Lights: the tier's limit per pixel, the rest folded into the cube (docs/light_folding.md).
   std::vector<ts_light> lights;
   for (const SceneLight &l : s.lights) lights.push_back(l.light);
@@ -361,7 +364,10 @@ bool prepare_scene(const Scene &s, const SceneSelection &sel, int w, int h, Api 
   const SceneCamera &cam = s.cameras[s.camera];
   double vp[16];
   // The output's aspect: a glTF aspectRatio that differs would stretch the picture.
-  camera_matrix(cam, static_cast<double>(w) / h, vp);
+  if (cam.orthographic)
+    ortho_view_projection(cam, static_cast<double>(w) / h, vp);
+  else
+    camera_matrix(cam, static_cast<double>(w) / h, vp);
   for (int i = 0; i < 16; ++i) {
     ps.view_proj[i] = static_cast<float>(vp[i]);
     ps.model[i] = (i % 5 == 0) ? 1.f : 0.f;
