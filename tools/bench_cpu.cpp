@@ -20,7 +20,8 @@
 
 #include "demo/family_frame.h"
 #include "gl/context.h"
-#include "demo/sphere_grid_scene.h"
+#include "demo/scene_files.h"
+#include "scene/deferred.h"
 #include "demo/room_scene.h"
 #include "math/ts_batch.h"
 #include "demo/room_render.h"
@@ -61,10 +62,9 @@ int main(int argc, char **argv) {
       {"sm3 full", "sm3:ALBEDO_TEXTURE=1,HALF_LAMBERT=1,OUTPUT_MODE=2,PHONG=1,PHONG_EXPONENT_MAP=1,RIM_LIGHT=1,ENVMAP=1", 4,
        true},
   };
-  SphereScene grid, ball;
-  std::string note, err0;
-  if (!sphere_grid_scene(&grid, &err0) || !phong_sphere_scene("../shared/data/probes/grace.hdr", &ball, &note, &err0))
-    return fprintf(stderr, "%s\n", err0.c_str()), 1;
+  Scene grid, ball;
+  if (!load_scene(kSphereGridGltf, &grid, &err) || !load_scene(kPhongSphereGltf, &ball, &err))
+    return fprintf(stderr, "%s\n", err.c_str()), 1;
   printf("%-12s %10s %12s %8s %10s %8s %10s\n", "row", "llvmpipe", "C scalar", "C/llvm", "C fast", "C/llvm", "mismatch");
   ShaderFamily scalar_fam = *fam;
   scalar_fam.eval_row_f = nullptr;
@@ -72,8 +72,8 @@ int main(int argc, char **argv) {
     if (*only && !strstr(row.label, only)) continue;
     Variant v;
     if (!find_variant(decls, "model_lighting", row.variant, &v, &err)) return fprintf(stderr, "%s\n", err.c_str()), 1;
-    SphereFrame frame;
-    if (!sphere_frame(row.phong_scene ? ball : grid, n, n, row.max_local, &frame, &err))
+    SceneDeferredFrame frame;  // the scene renderer's G-buffer, lights folded for the row's tier
+    if (!scene_deferred_frame(row.phong_scene ? ball : grid, v.tier, n, n, &frame, &err, row.phong_scene))
       return fprintf(stderr, "%s\n", err.c_str()), 1;
     ImageF gl_img, cpu, cpu_scalar;
     std::vector<double> tg, tc, ts;

@@ -16,7 +16,7 @@
 #include "shaderlib/assembler.h"
 #include "budget/budget.h"
 #include "demo/family_frame.h"
-#include "demo/sphere_grid_scene.h"
+#include "demo/scene_files.h"
 #include "cli/select_args.h"
 #include "scene/deferred.h"
 #include "scene/scene.h"
@@ -26,7 +26,6 @@ namespace {
 struct BenchRow {
   const char *label;
   const char *variant;
-  int max_local;
   const char *precision;  // float precision of the GLSL (mediump only matters on GLES)
   bool c_twin;            // the C twin models this row (not for mediump)
   const char *what;
@@ -297,13 +296,13 @@ int cmd_bench(int argc, char **argv) {
   Scene grid;
   if (!load_scene(kSphereGridGltf, &grid, &err)) a.fail(err);
   std::vector<BenchRow> hl2 = {
-      {"ps20", "ps20:ALBEDO_TEXTURE=1,HALF_LAMBERT=1,NUM_LIGHTS=2", 2, "highp", true,
+      {"ps20", "ps20:ALBEDO_TEXTURE=1,HALF_LAMBERT=1,NUM_LIGHTS=2", "highp", true,
        "2 local lights with per-vertex attenuation, 4 folded into the ambient cube, linear out (sRGB target)", {}},
-      {"ps2b", "ps2b:ALBEDO_TEXTURE=1,HALF_LAMBERT=1,OUTPUT_MODE=1,NUM_LIGHTS=4", 4, "highp", true,
+      {"ps2b", "ps2b:ALBEDO_TEXTURE=1,HALF_LAMBERT=1,OUTPUT_MODE=1,NUM_LIGHTS=4", "highp", true,
        "4 local lights per pixel, 2 folded, gamma 2.2 in the shader", {}},
-      {"sm3", "sm3:ALBEDO_TEXTURE=1,HALF_LAMBERT=1,OUTPUT_MODE=2", 4, "highp", true,
+      {"sm3", "sm3:ALBEDO_TEXTURE=1,HALF_LAMBERT=1,OUTPUT_MODE=2", "highp", true,
        "4 local lights in a dynamic loop, 2 folded, exact sRGB in the shader", {}},
-      {"sm3 mediump", "sm3:ALBEDO_TEXTURE=1,HALF_LAMBERT=1,OUTPUT_MODE=2", 4, "mediump", false,
+      {"sm3 mediump", "sm3:ALBEDO_TEXTURE=1,HALF_LAMBERT=1,OUTPUT_MODE=2", "mediump", false,
        "the sm3 shader at mediump on GLES 3.0 (llvmpipe computes fp16)", {}},
   };
   SceneDeferredFrame ref_frame;
@@ -324,34 +323,34 @@ int cmd_bench(int argc, char **argv) {
 
   // ---- Episode One Phong: one normal-mapped sphere, four lights (none folded) ----
   std::string note;
-  SphereScene ball;
-  if (!phong_sphere_scene("../shared/data/probes/grace.hdr", &ball, &note, &err)) a.fail(err);
+  Scene ball;
+  if (!load_scene(kPhongSphereGltf, &ball, &err)) a.fail(err);
+  note = std::string(kPhongSphereGltf) + ", envmap and ambient cube from the Grace Cathedral probe";
   const char *full = "sm3:ALBEDO_TEXTURE=1,HALF_LAMBERT=1,OUTPUT_MODE=2,PHONG=1,PHONG_EXPONENT_MAP=1,RIM_LIGHT=1,ENVMAP=1";
   std::vector<BenchRow> ep1 = {
-      {"ps20 (no Phong)", "ps20:ALBEDO_TEXTURE=1,HALF_LAMBERT=1,NUM_LIGHTS=2", 2, "highp", true,
+      {"ps20 (no Phong)", "ps20:ALBEDO_TEXTURE=1,HALF_LAMBERT=1,NUM_LIGHTS=2", "highp", true,
        "HL2 lighting: no normal map, no specular; 2 local lights, 2 folded", {}},
-      {"ps2b Phong", "ps2b:ALBEDO_TEXTURE=1,HALF_LAMBERT=1,OUTPUT_MODE=2,PHONG=1,PHONG_EXPONENT_MAP=1,NUM_LIGHTS=4", 4,
+      {"ps2b Phong", "ps2b:ALBEDO_TEXTURE=1,HALF_LAMBERT=1,OUTPUT_MODE=2,PHONG=1,PHONG_EXPONENT_MAP=1,NUM_LIGHTS=4",
        "highp", true, "normal map, exponent map, Fresnel ranges, 4 Phong lights; no rim, no envmap", {}},
-      {"ps2b full", "ps2b:ALBEDO_TEXTURE=1,HALF_LAMBERT=1,OUTPUT_MODE=2,PHONG=1,PHONG_EXPONENT_MAP=1,RIM_LIGHT=1,ENVMAP=1,NUM_LIGHTS=4",
-       4, "highp", true, "Phong + rim light + envmap, 4 lights as dynamic combos", {}},
-      {"sm3 full", full, 4, "highp", true, "the same in a dynamic loop over the light count", {}},
+      {"ps2b full", "ps2b:ALBEDO_TEXTURE=1,HALF_LAMBERT=1,OUTPUT_MODE=2,PHONG=1,PHONG_EXPONENT_MAP=1,RIM_LIGHT=1,ENVMAP=1,NUM_LIGHTS=4", "highp", true, "Phong + rim light + envmap, 4 lights as dynamic combos", {}},
+      {"sm3 full", full, "highp", true, "the same in a dynamic loop over the light count", {}},
   };
   {
     Variant v;
     if (!find_variant(cx.decls, "model_lighting", full, &v, &err)) a.fail(err);
-    SphereFrame frame;
-    if (!sphere_frame(ball, n, n, 4, &frame, &err)) a.fail(err);
+    SceneDeferredFrame frame;
+    if (!scene_deferred_frame(ball, Tier::SM3, n, n, &frame, &err, true)) a.fail(err);
     std::vector<double> dbl;
     cpu_render_frame_double(*cx.fam, v, frame.in, &dbl, static_cast<int>(cx.cores));
     ref_display.assign(static_cast<size_t>(n) * n * 3, 0.0);
     for (size_t p = 0; p < frame.hit.size(); ++p)
       for (int c = 0; c < 3; ++c) ref_display[p * 3 + c] = display(2, dbl[p * 4 + c]);
   }
-  const FrameOf ball_frame = [&](const BenchRow &row, const Variant &, RowFrame *f, std::string *e) {
-    SphereFrame sf;
-    if (!sphere_frame(ball, n, n, row.max_local, &sf, e)) return false;
-    f->in = std::move(sf.in);
-    f->hit = std::move(sf.hit);
+  const FrameOf ball_frame = [&](const BenchRow &, const Variant &v, RowFrame *f, std::string *e) {
+    SceneDeferredFrame d;
+    if (!scene_deferred_frame(ball, v.tier, n, n, &d, e, true)) return false;
+    f->in = std::move(d.in);
+    f->hit = std::move(d.hit);
     return true;
   };
   if (!measure_rows(cx, ball_frame, ref_display, &ep1, &err)) {

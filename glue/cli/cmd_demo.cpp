@@ -9,7 +9,8 @@
 #include <cstring>
 
 #include "cli/select_args.h"
-#include "demo/sphere_grid_scene.h"
+#include "demo/scene_files.h"
+#include "families/family.h"
 #include "io/image_io.h"
 #include "io/lights_file.h"
 #include "scene/cpu_renderer.h"

@@ -11,7 +11,7 @@
 #include "offline/light_folding.h"
 #include "io/lights_file.h"
 #include "twins/model_lighting.h"
-#include "demo/sphere_grid_scene.h"
+#include "demo/scene_files.h"
 #include "cli/select_args.h"
 
 namespace {

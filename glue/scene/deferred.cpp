@@ -57,3 +57,11 @@ bool scene_deferred_frame(const Scene &s, Tier tier, int w, int h, SceneDeferred
   *out = std::move(f);
   return true;
 }
+
+void scene_deferred_mask(const SceneDeferredFrame &f, ImageF *img) {
+  for (size_t p = 0; p < f.hit.size(); ++p) {
+    if (f.hit[p]) continue;
+    img->rgba[p * 4 + 0] = img->rgba[p * 4 + 1] = img->rgba[p * 4 + 2] = 0.f;
+    img->rgba[p * 4 + 3] = 1.f;
+  }
+}

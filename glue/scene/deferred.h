@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "families/family.h"
+#include "io/image_io.h"
 #include "scene/scene.h"
 
 struct SceneDeferredFrame {
@@ -23,3 +24,7 @@ struct SceneDeferredFrame {
 // variant (every feature the material has sampled: its real textures; glue/scene/selection.h).
 bool scene_deferred_frame(const Scene &s, Tier tier, int w, int h, SceneDeferredFrame *out, std::string *err,
                           bool all_features = false, bool with_reference = false);
+
+// Background pixels of img (a frame shaded from f) to rgb 0, alpha 1, so that GL, C and reference
+// frames compare alike (the background's records are zero: its shading means nothing).
+void scene_deferred_mask(const SceneDeferredFrame &f, ImageF *img);
