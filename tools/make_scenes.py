@@ -570,8 +570,9 @@ def sphere_grid_mesh(cols, rows, spacing):
             grid["pos"] += [[p[k] + off[k] for k in range(3)] for p in base["pos"]]
             grid["nrm"] += base["nrm"]
             grid["tan"] += base["tan"]
-            # each sphere shows another part of the texture (u twice around, shifted per column and row)
-            grid["uv"] += [[2.0 * (u + 0.17 * c), v + 0.29 * r] for u, v in base["uv"]]
+            # each sphere shows another part of the texture (u twice around, 0.75 turning u = 0 to -Z,
+            # the back; shifted per column and row)
+            grid["uv"] += [[2.0 * (u + 0.75 + 0.17 * c), v + 0.29 * r] for u, v in base["uv"]]
             grid["idx"] += [first + i for i in base["idx"]]
     return grid
 

@@ -7,6 +7,8 @@
 //     C rasteriser covers each sphere's centre and leaves the gaps between spheres empty;
 //   - the C renderer's G-buffer (scene_records_cpu): shading its records with the C twin
 //     (scene_shade_records) gives the C fallback's frame (scene_shade_cpu) bit for bit, per tier;
+//   - deferred frames (scene_deferred_frame): the family's C twin over the frame's records equals
+//     the C renderer's frame bit for bit; a scene of several draws is refused;
 //   - the double reference (scene_reference_linear): 0 on the background, equal to the float
 //     frame within float rounding when no light is folded, and away from the folded sm3 frame
 //     by the folding's approximation when 2 of the 6 lights are folded.
@@ -24,7 +26,9 @@
 #include <vector>
 
 #include "scene/camera_ortho.h"
+#include "demo/family_frame.h"
 #include "scene/cpu_renderer.h"
+#include "scene/deferred.h"
 #include "scene/prepare.h"
 #include "scene/reference.h"
 #include "scene/scene.h"
@@ -144,6 +148,44 @@ void test_coverage_and_records(const Scene &s) {
   }
 }
 
+void test_deferred(const Scene &s) {
+  const int w = 120, h = 60;
+  std::vector<ShaderDecl> decls;
+  std::string err;
+  if (!load_shader_decls(&decls, &err)) return check(false, "deferred: shader declarations", err);
+  const ShaderFamily *fam = find_family("model_lighting");
+  for (Tier tier : {Tier::PS20, Tier::SM3}) {
+    const std::string tn = tier_name(tier);
+    SceneDeferredFrame f;
+    PreparedScene p;
+    SceneSelection sel;
+    if (!scene_deferred_frame(s, tier, w, h, &f, &err) || !select_scene_variants(s, tier, "", &sel, &err) ||
+        !prepare_scene(s, sel, w, h, Api::GL33, s.hdr.tone_map_scale, &p, &err))
+      return check(false, "deferred: " + tn, err);
+    SceneVisibility vis;
+    scene_rasterize_cpu(p, &vis, 2);
+    ImageF scene_frame, family_frame;
+    scene_shade_cpu(p, vis, &scene_frame, 2);
+    cpu_render_frame(*fam, sel.variants.at(0), f.in, &family_frame, 2);
+    long lit = 0, differ = 0;
+    for (size_t q = 0; q < f.hit.size(); ++q) {
+      if (!f.hit[q]) continue;
+      ++lit;
+      differ += std::memcmp(&scene_frame.rgba[q * 4], &family_frame.rgba[q * 4], 4 * sizeof(float)) != 0;
+    }
+    check(differ == 0 && lit > w * h / 3 && f.lights_local == (tier == Tier::PS20 ? 2 : 4) &&
+              f.lights_local + f.lights_folded == 6,
+          "deferred: " + tn + ": the family's C twin over the frame = the C renderer's frame bit for bit",
+          std::to_string(differ) + " of " + std::to_string(lit) + " lit pixels differ");
+  }
+  Scene five;
+  SceneDeferredFrame f;
+  const bool loaded = load_scene("scenes/model_lighting.gltf", &five, &err);
+  const bool ok = loaded && scene_deferred_frame(five, Tier::SM3, 64, 32, &f, &err);
+  check(loaded && !ok && err.find("needs one model_lighting draw") != std::string::npos,
+        "deferred: a scene of several draws is refused", ok ? "accepted" : err);
+}
+
 double max_rel(const std::vector<double> &ref, const ImageF &img, const std::vector<int> &draw) {
   double m = 0;
   for (size_t q = 0; q < draw.size(); ++q) {
@@ -223,6 +265,7 @@ int main() {
     test_camera(grid);
     test_camera_errors();
     test_coverage_and_records(grid);
+    test_deferred(grid);
     test_reference(grid);
   }
   printf("%d passed, %d failed\n", g_passed, g_failed);
