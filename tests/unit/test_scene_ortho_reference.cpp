@@ -39,8 +39,9 @@ namespace {
 
 const char *kGrid = "scenes/sphere_grid.gltf";
 
-bool prepared(const Scene &s, Tier tier, const std::string &hdr, int w, int h, PreparedScene *p, std::string *err) {
-  SceneSelection *sel = new SceneSelection;  // the prepared draws point into it: kept for the test's life
+// *sel must outlive *p (the prepared draws point into it).
+bool prepared(const Scene &s, Tier tier, const std::string &hdr, int w, int h, SceneSelection *sel, PreparedScene *p,
+              std::string *err) {
   return select_scene_variants(s, tier, hdr, sel, err) &&
          prepare_scene(s, *sel, w, h, Api::GL33, s.hdr.tone_map_scale, p, err);
 }
@@ -113,9 +114,10 @@ void test_camera_errors() {
 void test_coverage_and_records(const Scene &s) {
   const int w = 160, h = 80;  // 0.09 world units per pixel
   for (Tier tier : {Tier::PS20, Tier::PS2B, Tier::SM3}) {
+    SceneSelection sel;
     PreparedScene p;
     std::string err;
-    if (!prepared(s, tier, "", w, h, &p, &err)) return check(false, "prepare the grid", err);
+    if (!prepared(s, tier, "", w, h, &sel, &p, &err)) return check(false, "prepare the grid", err);
     SceneVisibility vis;
     scene_rasterize_cpu(p, &vis, 2);
     const std::string tn = tier_name(tier);
@@ -203,8 +205,9 @@ void test_reference(const Scene &grid) {
   Scene s4 = grid;
   s4.lights.resize(4);
   s4.hdr.tone_map_scale = 1.f;
+  SceneSelection sel4, sel6;
   PreparedScene p4;
-  if (!prepared(s4, Tier::SM3, "float", w, h, &p4, &err)) return check(false, "prepare 4 lights", err);
+  if (!prepared(s4, Tier::SM3, "float", w, h, &sel4, &p4, &err)) return check(false, "prepare 4 lights", err);
   SceneVisibility vis;
   scene_rasterize_cpu(p4, &vis, 2);
   std::vector<int> draw;
@@ -225,7 +228,7 @@ void test_reference(const Scene &grid) {
   Scene s6 = grid;
   s6.hdr.tone_map_scale = 1.f;
   PreparedScene p6;
-  if (!prepared(s6, Tier::SM3, "float", w, h, &p6, &err)) return check(false, "prepare 6 lights", err);
+  if (!prepared(s6, Tier::SM3, "float", w, h, &sel6, &p6, &err)) return check(false, "prepare 6 lights", err);
   scene_rasterize_cpu(p6, &vis, 2);
   scene_records_cpu(p6, vis, &draw, &slots, 2);
   ImageF f6;
