@@ -1,7 +1,8 @@
 #!/usr/bin/env python3
 # tiershade -- tools/make_scenes.py
-# Writes the three shipped glTF scenes (scenes/model_lighting.gltf, world_lighting.gltf,
-# hdr_atrium.gltf), their geometry (.bin next to each) and small procedural PNG textures
+# Writes the shipped glTF scenes (scenes/model_lighting.gltf, world_lighting.gltf,
+# hdr_atrium.gltf, and sphere_grid.gltf: the demo's and bench's sphere grid, whose lights are
+# read from scenes/sphere_grid.lights, their one source), their geometry (.bin next to each) and small procedural PNG textures
 # (scenes/textures/). Python 3 standard library only. Run once from the repo root:
 #   python3 tools/make_scenes.py
 # The output is committed; builds and tests never run this script. Format: docs/scenes.md.
@@ -322,6 +323,12 @@ class Gltf:
             node["rotation"] = look_quat(eye, target)
         return self.node(node)
 
+    def ortho_camera(self, name, eye, target, xmag, ymag, znear, zfar):
+        self.doc["cameras"].append({"name": name, "type": "orthographic",
+                                    "orthographic": {"xmag": xmag, "ymag": ymag, "znear": znear, "zfar": zfar}})
+        return self.node({"name": name, "camera": len(self.doc["cameras"]) - 1,
+                          "translation": list(eye), "rotation": look_quat(eye, target)})
+
     def camera(self, name, eye, target, yfov, aspect=None):
         cam = {"name": name, "type": "perspective", "perspective": {"yfov": yfov, "znear": 0.05, "zfar": 100.0}}
         if aspect:
@@ -347,6 +354,25 @@ class Gltf:
 def make_textures():
     os.makedirs(TEX, exist_ok=True)
     w = lambda name, px, ch=4: write_png(os.path.join(TEX, name), len(px[0]), len(px), px, ch)
+    # sphere grid albedo: hue bands across u, a soft checker across v (sRGB codes of the linear colour)
+    enc = lambda c: 255 * (12.92 * c if c <= 0.0031308 else 1.055 * c ** (1 / 2.4) - 0.055)
+    band = lambda x, y, k, off: (1.0 if (x // 8 + y // 8) % 2 else 0.75) * (0.5 + 0.3 * math.cos(2 * math.pi * (x / 64 + off))) * k
+    w("sphere_bands.png", image(64, 64, lambda x, r: (enc(band(x, 63 - r, 1, 0.0)), enc(band(x, 63 - r, 1, 0.33)),
+                                                      enc(band(x, 63 - r, 0.8 + 0.2 * (63 - r) / 64, 0.67)))), 3)
+    # Phong sphere: a grid of round dimples (normals from the height gradient; alpha: glossy
+    # stripes, the specular mask) and the exponent map (r exponent, g albedo-tint mask, a rim mask)
+    def dimple(x, y, n=128, cells=8):
+        u, v = (x + 0.5) / n * cells, (y + 0.5) / n * cells
+        fu, fv = u - math.floor(u) - 0.5, v - math.floor(v) - 0.5
+        r = math.hypot(fu, fv)
+        g = (-0.9 * math.sin(r / 0.4 * math.pi) / r) if 1e-9 < r < 0.4 else 0.0
+        nx, ny, nz = -g * fu, -g * fv, 1.0
+        ln = math.sqrt(nx * nx + ny * ny + nz * nz)
+        return (255 * (0.5 + 0.5 * nx / ln), 255 * (0.5 + 0.5 * ny / ln), 255 * (0.5 + 0.5 * nz / ln),
+                255 if (x * 4 // n) % 2 else 0.35 * 255)
+    w("dimples_normal.png", image(128, 128, lambda x, r: dimple(x, 127 - r)))
+    w("phong_exponent.png", image(64, 64, lambda x, r: (255 * (0.05 + 0.6 * (0.5 + 0.5 * math.cos(
+        2 * math.pi * (63 - r) / 64 * 2))), 255 * x / 64, 0, 255)))
     w("checker.png", image(128, 128, lambda x, y: (200, 190, 170) if (x // 16 + y // 16) % 2 else (70, 90, 130)), 3)
     w("skin.png", image(128, 128, lambda x, y: tuple(c * (0.9 + 0.1 * smooth_noise(x / 128, y / 128, 16, 1))
                                                      for c in (224, 172, 150)) + (255,)))
@@ -508,10 +534,164 @@ def hdr_atrium():
                      "luts": [{"file": "luts/day_for_night.cube", "weight": 0.3},
                               {"file": "luts/desaturate.cube", "weight": 0.2}]}})
 
+def read_lights(path):
+    """The lights of a tiershade lights file (format: `tiershade fold --help`) as dicts."""
+    out = []
+    with open(path) as f:
+        for line in f:
+            v = line.split("#")[0].split()
+            if not v:
+                continue
+            n = [float(x) for x in v[1:]]
+            l = {"type": v[0], "color": n[0:3]}
+            if v[0] == "directional":
+                l["dir"] = n[3:6]
+            elif v[0] == "point":
+                l["pos"], l["atten"] = n[3:6], n[6:9]
+            elif v[0] == "spot":
+                l["pos"], l["dir"], l["exponent"] = n[3:6], n[6:9], n[9]
+                l["inner"], l["outer"], l["atten"] = math.radians(n[10]), math.radians(n[11]), n[12:15]
+            else:
+                raise ValueError("%s: unknown light type %r" % (path, v[0]))
+            out.append(l)
+    return out
+
+
+def sphere_grid_mesh(cols, rows, spacing):
+    """cols x rows unit spheres `spacing` apart around the origin, in one mesh: one draw, so the
+    lights beyond a tier's limit are folded once, at the grid's centre (the mesh's bounding-box
+    centre), as a deferred frame of the grid has one set of uniforms."""
+    base = uv_sphere(1.0, 48, 24)
+    grid = dict(pos=[], nrm=[], uv=[], tan=[], idx=[])
+    for r in range(rows):
+        for c in range(cols):
+            off = [(c - (cols - 1) / 2) * spacing, (r - (rows - 1) / 2) * spacing, 0.0]
+            first = len(grid["pos"])
+            grid["pos"] += [[p[k] + off[k] for k in range(3)] for p in base["pos"]]
+            grid["nrm"] += base["nrm"]
+            grid["tan"] += base["tan"]
+            # each sphere shows another part of the texture (u twice around, 0.75 turning u = 0 to -Z,
+            # the back; shifted per column and row)
+            grid["uv"] += [[2.0 * (u + 0.75 + 0.17 * c), v + 0.29 * r] for u, v in base["uv"]]
+            grid["idx"] += [first + i for i in base["idx"]]
+    return grid
+
+
+def add_wall(mesh, z, half):
+    """A wall facing +Z at depth z behind the grid (2 half wide), in the same mesh; uv = world / 4."""
+    first = len(mesh["pos"])
+    for x, y in ((-half, -half), (half, -half), (half, half), (-half, half)):
+        mesh["pos"].append([x, y, z])
+        mesh["nrm"].append([0.0, 0.0, 1.0])
+        mesh["tan"].append([1.0, 0.0, 0.0, 1.0])
+        mesh["uv"].append([0.25 * x, 0.25 * y])
+    mesh["idx"] += [first, first + 1, first + 2, first, first + 2, first + 3]
+    return mesh
+
+
+def hdr_spheres(name, lights, ambient, probes=None):
+    """The HDR demo and bench scenes: the sphere grid before a wall (z = -1.2), the integer path at
+    tone-map scale 1 (the HDR code scales the linear frame itself), sm3's 4 lights: none folded."""
+    g = Gltf(name)
+    mat = g.material("halflambert_bands", {"shader": "VertexLitGeneric", "$halflambert": 1}, base="sphere_bands.png")
+    g.mesh("spheres_and_wall", [(add_wall(sphere_grid_mesh(5, 3, 2.4), -1.2, 40.0), mat)])
+    for l in lights:
+        g.light(*l[:5], **l[5] if len(l) > 5 else {})
+    g.ortho_camera("front", (0.0, 0.0, 60.0), (0.0, 0.0, 0.0), 6.0, 3.6, 1.0, 120.0)
+    extras = {"camera": 0, "ambient": [ambient], "hdr": {"path": "integer", "tone_map_scale": 1.0}}
+    if probes:
+        extras["probes"] = probes
+    g.write(extras)
+
+
+def hdr_scenes():
+    # Daylight: a sun, a hot spot on the wall (well above 1 after any sensible exposure: the
+    # bloom's source) and a cool bounce; the sky's ambient cube from the Uffizi probe x 0.12.
+    sun_dir = norm([-0.45, -0.55, -0.70])
+    spot_dir = norm([0.2, 0.1, -1.0])
+    hdr_spheres("hdr_daylight", [
+        ("sun", "directional", (0.9, 0.82, 0.68), 1.0, (0.0, 0.0, 0.0), dict(target=sun_dir)),
+        ("hot_spot", "spot", (250.0, 190.0, 120.0), 1.0, (3.5, 2.5, 1.5),
+         dict(target=[3.5 + spot_dir[0], 2.5 + spot_dir[1], 1.5 + spot_dir[2]], inner=0.06, outer=0.20,
+              source={"exponent": 1, "constant": 1, "linear": 0, "quadratic": 0.6})),
+        ("cool_bounce", "point", (0.1, 0.15, 0.35), 1.0, (-5.0, -1.0, 3.0),
+         dict(source={"constant": 0.5, "linear": 0.1, "quadratic": 0.05})),
+    ], {"position": [0, 0, 0], "from_probe": 0},
+        [{"name": "uffizi", "position": [0, 0, 0], "image": "../../shared/data/probes/uffizi.hdr", "scale": 0.12,
+          "size": 8}])
+    # A dark room: one dim lamp and a faint ambient cube.
+    hdr_spheres("hdr_dark_room", [
+        ("dim_lamp", "point", (0.10, 0.075, 0.045), 1.0, (-2.0, 2.0, 2.5),
+         dict(source={"constant": 0.5, "linear": 0.2, "quadratic": 0.1})),
+    ], {"position": [0, 0, 0], "cube": [[0.004, 0.0036, 0.0032], [0.003, 0.0028, 0.0024], [0.005, 0.0045, 0.004],
+                                        [0.002, 0.0016, 0.0016], [0.004, 0.0036, 0.0032], [0.0024, 0.002, 0.002]]})
+
+
+def phong_sphere():
+    """The Episode One section of the demo and bench: one sphere with the dimple normal map, the
+    exponent map, rim light and the Grace Cathedral envmap; the first four grid lights (the blue
+    fill brighter); the ambient cube from the probe x 0.35 (a second, scaled probe)."""
+    g = Gltf("phong_sphere")
+    mat = g.material("episode_one", {"shader": "VertexLitGeneric", "$phong": 1, "$phongboost": 4.0,
+                                     "$phongexponenttexture": g.tex("phong_exponent.png"), "$phongexponentfactor": 149,
+                                     "$phongfresnelranges": [0.15, 0.5, 1.0], "$phongalbedotint": 1,
+                                     "$rimlight": 1, "$rimlightexponent": 4, "$rimlightboost": 2.0, "$rimmask": 1,
+                                     "$envmap": 1, "$envmapscale": 0.25, "$envmapfresnel": 1, "probe": 0},
+                     base="sphere_bands.png", normal="dimples_normal.png")
+    g.mesh("sphere", [(sphere_grid_mesh(1, 1, 2.4), mat)])
+    lights = read_lights(os.path.join(SCENES, "sphere_grid.lights"))[:4]
+    lights[1]["color"] = [0.6, 0.8, 1.8]
+    add_lights(g, lights)
+    g.ortho_camera("front", (0.0, 0.0, 60.0), (0.0, 0.0, 0.0), 1.2, 1.2, 1.0, 120.0)
+    grace = "../../shared/data/probes/grace.hdr"
+    g.write({"camera": 0,
+             "probes": [{"name": "grace", "position": [0, 0, 0], "image": grace, "scale": 1.0, "size": 32},
+                        {"name": "grace_ambient", "position": [0, 0, 0], "image": grace, "scale": 0.35, "size": 32}],
+             "ambient": [{"position": [0, 0, 0], "from_probe": 1}],
+             "hdr": {"path": "integer", "tone_map_scale": 0.8}})
+
+
+def add_lights(g, lights):
+    for i, l in enumerate(lights):
+        name = "%s_%d" % (l["type"], i)
+        if l["type"] == "directional":
+            g.light(name, "directional", l["color"], 1.0, (0.0, 0.0, 0.0), norm(l["dir"]))
+        else:
+            src = dict(zip(("constant", "linear", "quadratic"), l["atten"]))
+            if l["type"] == "spot":
+                src["exponent"] = l["exponent"]
+                tgt = [l["pos"][k] + l["dir"][k] for k in range(3)]
+                g.light(name, "spot", l["color"], 1.0, l["pos"], tgt, l["inner"], l["outer"], src)
+            else:
+                g.light(name, "point", l["color"], 1.0, l["pos"], source=src)
+
+
+def sphere_grid():
+    """The model-lighting demo and bench scene: a 5 x 3 grid of unit spheres 2.4 apart seen by an
+    orthographic camera on +Z, the six lights of scenes/sphere_grid.lights and a sky-lit ambient cube."""
+    g = Gltf("sphere_grid")
+    mat = g.material("halflambert_bands", {"shader": "VertexLitGeneric", "$halflambert": 1}, base="sphere_bands.png")
+    cols, rows, spacing = 5, 3, 2.4
+    g.mesh("sphere_grid", [(sphere_grid_mesh(cols, rows, spacing), mat)])
+    add_lights(g, read_lights(os.path.join(SCENES, "sphere_grid.lights")))
+    # xmag/ymag: the grid's half extents; the view keeps square pixels (docs/scenes.md)
+    g.ortho_camera("front", (0.0, 0.0, 60.0), (0.0, 0.0, 0.0), round(cols * spacing / 2, 6), round(rows * spacing / 2, 6),
+                   1.0, 120.0)
+    g.write({"camera": 0,
+             # sky-lit ambient cube (+X -X +Y -Y +Z -Z): blue from above, warm bounce from below
+             "ambient": [{"position": [0, 0, 0], "cube": [[0.10, 0.10, 0.12], [0.08, 0.08, 0.10],
+                                                          [0.16, 0.20, 0.30], [0.07, 0.05, 0.04],
+                                                          [0.10, 0.10, 0.11], [0.05, 0.05, 0.06]]}],
+             "hdr": {"path": "integer", "tone_map_scale": 0.6}})
+
 
 if __name__ == "__main__":
     make_textures()
     model_lighting()
     world_lighting()
     hdr_atrium()
-    print("wrote scenes/model_lighting.gltf, scenes/world_lighting.gltf, scenes/hdr_atrium.gltf")
+    sphere_grid()
+    phong_sphere()
+    hdr_scenes()
+    print("wrote scenes/model_lighting.gltf, world_lighting.gltf, hdr_atrium.gltf, sphere_grid.gltf, "
+          "phong_sphere.gltf, hdr_daylight.gltf, hdr_dark_room.gltf")

@@ -87,8 +87,8 @@ bool run_bench(const BenchOptions &opt, std::string *md, std::string *err) {
     return false;
   const ShaderFamily *lit = find_family("model_lighting");
   std::string note;
-  SphereFrame frame;
-  if (!lit || !hdr_scene_frame(hdr_daylight_scene(hdr_default_probe(), &note), w, h, &frame, err)) {
+  SceneDeferredFrame frame;
+  if (!lit || !hdr_scene_frame(kHdrDaylightGltf, w, h, &frame, &note, err)) {
     if (!lit) *err = "model_lighting is not registered";
     return false;
   }

@@ -9,25 +9,27 @@
 #include <cstdio>
 #include <cstdlib>
 #include <fstream>
+#include <functional>
 #include <sstream>
 #include <thread>
 
 #include "shaderlib/assembler.h"
 #include "budget/budget.h"
 #include "demo/family_frame.h"
-#include "demo/sphere_grid_scene.h"
+#include "demo/scene_files.h"
 #include "cli/select_args.h"
 #include "base/image_diff.h"
 #include "base/stats.h"
 #include "color/srgb.h"
 #include "io/atomic_file.h"
+#include "scene/deferred.h"
+#include "scene/scene.h"
 
 namespace {
 
 struct BenchRow {
   const char *label;
   const char *variant;
-  int max_local;
   const char *precision;  // float precision of the GLSL (mediump only matters on GLES)
   bool c_twin;            // the C twin models this row (not for mediump)
   const char *what;
@@ -54,16 +56,23 @@ struct Context {
   unsigned cores = 1;
 };
 
-// Measures every row on `scene`; ref_display holds the reference's display rgb per pixel.
-// The mediump row's rounding is measured against the row before it (its highp twin).
-bool measure_rows(const Context &cx, const SphereScene &scene, const std::vector<double> &ref_display,
+// A row's deferred frame: the G-buffer record per pixel and where the geometry is.
+struct RowFrame {
+  FamilyInputs in;
+  std::vector<uint8_t> hit;
+};
+using FrameOf = std::function<bool(const BenchRow &row, const Variant &v, RowFrame *out, std::string *err)>;
+
+// Measures every row on the frames frame_of makes; ref_display holds the reference's display rgb
+// per pixel. The mediump row's rounding is measured against the row before it (its highp twin).
+bool measure_rows(const Context &cx, const FrameOf &frame_of, const std::vector<double> &ref_display,
                   std::vector<BenchRow> *rows, std::string *err) {
   ImageF prev_gles;
   for (BenchRow &row : *rows) {
     Variant v;
     if (!find_variant(cx.decls, "model_lighting", row.variant, &v, err)) return false;
-    SphereFrame frame;
-    if (!sphere_frame(scene, cx.n, cx.n, row.max_local, &frame, err)) return false;
+    RowFrame frame;
+    if (!frame_of(row, v, &frame, err)) return false;
     Assembled fs;
     std::string e;
     if (!assemble(v.shader->fragment, Target::GLSL330, Stage::Fragment, variant_defines(v, InputMode::Production), &fs,
@@ -272,54 +281,69 @@ int cmd_bench(int argc, char **argv) {
   cx.fam = find_family("model_lighting");
   const int n = cx.n;
 
-  // ---- HL2 model lighting: the sphere grid, six lights ----
-  const SphereScene grid = default_sphere_scene();
+  // ---- HL2 model lighting: the sphere grid (scenes/sphere_grid.gltf), six lights ----
+  // The frames are the scene renderer's G-buffer of the grid, lights folded for the row's tier.
+  Scene grid;
+  if (!load_scene(kSphereGridGltf, &grid, &err)) a.fail(err);
   std::vector<BenchRow> hl2 = {
-      {"ps20", "ps20:ALBEDO_TEXTURE=1,HALF_LAMBERT=1,NUM_LIGHTS=2", 2, "highp", true,
+      {"ps20", "ps20:ALBEDO_TEXTURE=1,HALF_LAMBERT=1,NUM_LIGHTS=2", "highp", true,
        "2 local lights with per-vertex attenuation, 4 folded into the ambient cube, linear out (sRGB target)", {}},
-      {"ps2b", "ps2b:ALBEDO_TEXTURE=1,HALF_LAMBERT=1,OUTPUT_MODE=1,NUM_LIGHTS=4", 4, "highp", true,
+      {"ps2b", "ps2b:ALBEDO_TEXTURE=1,HALF_LAMBERT=1,OUTPUT_MODE=1,NUM_LIGHTS=4", "highp", true,
        "4 local lights per pixel, 2 folded, gamma 2.2 in the shader", {}},
-      {"sm3", "sm3:ALBEDO_TEXTURE=1,HALF_LAMBERT=1,OUTPUT_MODE=2", 4, "highp", true,
+      {"sm3", "sm3:ALBEDO_TEXTURE=1,HALF_LAMBERT=1,OUTPUT_MODE=2", "highp", true,
        "4 local lights in a dynamic loop, 2 folded, exact sRGB in the shader", {}},
-      {"sm3 mediump", "sm3:ALBEDO_TEXTURE=1,HALF_LAMBERT=1,OUTPUT_MODE=2", 4, "mediump", false,
+      {"sm3 mediump", "sm3:ALBEDO_TEXTURE=1,HALF_LAMBERT=1,OUTPUT_MODE=2", "mediump", false,
        "the sm3 shader at mediump on GLES 3.0 (llvmpipe computes fp16)", {}},
   };
-  SphereFrame ref_frame;
-  if (!sphere_frame(grid, n, n, 64, &ref_frame, &err)) a.fail(err);
-  std::vector<double> ref_linear, ref_display;
-  sphere_reference_linear(grid, ref_frame, &ref_linear);
-  ref_display.resize(ref_linear.size());
-  for (size_t i = 0; i < ref_linear.size(); ++i) ref_display[i] = srgb(ref_linear[i]);
-  if (!measure_rows(cx, grid, ref_display, &hl2, &err)) {
+  SceneDeferredFrame ref_frame;
+  if (!scene_deferred_frame(grid, Tier::SM3, n, n, &ref_frame, &err, false, true)) a.fail(err);
+  std::vector<double> ref_display(ref_frame.reference.size());
+  for (size_t i = 0; i < ref_display.size(); ++i) ref_display[i] = srgb(ref_frame.reference[i]);
+  const FrameOf grid_frame = [&](const BenchRow &, const Variant &v, RowFrame *f, std::string *e) {
+    SceneDeferredFrame d;
+    if (!scene_deferred_frame(grid, v.tier, n, n, &d, e)) return false;
+    f->in = std::move(d.in);
+    f->hit = std::move(d.hit);
+    return true;
+  };
+  if (!measure_rows(cx, grid_frame, ref_display, &hl2, &err)) {
     fprintf(stderr, "tiershade bench: %s\n", err.c_str());
     return 1;
   }
 
   // ---- Episode One Phong: one normal-mapped sphere, four lights (none folded) ----
   std::string note;
-  const SphereScene ball = phong_sphere_scene("../shared/data/probes/grace.hdr", &note);
+  Scene ball;
+  if (!load_scene(kPhongSphereGltf, &ball, &err)) a.fail(err);
+  note = std::string(kPhongSphereGltf) + ", envmap and ambient cube from the Grace Cathedral probe";
   const char *full = "sm3:ALBEDO_TEXTURE=1,HALF_LAMBERT=1,OUTPUT_MODE=2,PHONG=1,PHONG_EXPONENT_MAP=1,RIM_LIGHT=1,ENVMAP=1";
   std::vector<BenchRow> ep1 = {
-      {"ps20 (no Phong)", "ps20:ALBEDO_TEXTURE=1,HALF_LAMBERT=1,NUM_LIGHTS=2", 2, "highp", true,
+      {"ps20 (no Phong)", "ps20:ALBEDO_TEXTURE=1,HALF_LAMBERT=1,NUM_LIGHTS=2", "highp", true,
        "HL2 lighting: no normal map, no specular; 2 local lights, 2 folded", {}},
-      {"ps2b Phong", "ps2b:ALBEDO_TEXTURE=1,HALF_LAMBERT=1,OUTPUT_MODE=2,PHONG=1,PHONG_EXPONENT_MAP=1,NUM_LIGHTS=4", 4,
+      {"ps2b Phong", "ps2b:ALBEDO_TEXTURE=1,HALF_LAMBERT=1,OUTPUT_MODE=2,PHONG=1,PHONG_EXPONENT_MAP=1,NUM_LIGHTS=4",
        "highp", true, "normal map, exponent map, Fresnel ranges, 4 Phong lights; no rim, no envmap", {}},
-      {"ps2b full", "ps2b:ALBEDO_TEXTURE=1,HALF_LAMBERT=1,OUTPUT_MODE=2,PHONG=1,PHONG_EXPONENT_MAP=1,RIM_LIGHT=1,ENVMAP=1,NUM_LIGHTS=4",
-       4, "highp", true, "Phong + rim light + envmap, 4 lights as dynamic combos", {}},
-      {"sm3 full", full, 4, "highp", true, "the same in a dynamic loop over the light count", {}},
+      {"ps2b full", "ps2b:ALBEDO_TEXTURE=1,HALF_LAMBERT=1,OUTPUT_MODE=2,PHONG=1,PHONG_EXPONENT_MAP=1,RIM_LIGHT=1,ENVMAP=1,NUM_LIGHTS=4", "highp", true, "Phong + rim light + envmap, 4 lights as dynamic combos", {}},
+      {"sm3 full", full, "highp", true, "the same in a dynamic loop over the light count", {}},
   };
   {
     Variant v;
     if (!find_variant(cx.decls, "model_lighting", full, &v, &err)) a.fail(err);
-    SphereFrame frame;
-    if (!sphere_frame(ball, n, n, 4, &frame, &err)) a.fail(err);
+    SceneDeferredFrame frame;
+    if (!scene_deferred_frame(ball, Tier::SM3, n, n, &frame, &err, true)) a.fail(err);
     std::vector<double> dbl;
     cpu_render_frame_double(*cx.fam, v, frame.in, &dbl, static_cast<int>(cx.cores));
     ref_display.assign(static_cast<size_t>(n) * n * 3, 0.0);
     for (size_t p = 0; p < frame.hit.size(); ++p)
       for (int c = 0; c < 3; ++c) ref_display[p * 3 + c] = display(2, dbl[p * 4 + c]);
   }
-  if (!measure_rows(cx, ball, ref_display, &ep1, &err)) {
+  const FrameOf ball_frame = [&](const BenchRow &, const Variant &v, RowFrame *f, std::string *e) {
+    SceneDeferredFrame d;
+    if (!scene_deferred_frame(ball, v.tier, n, n, &d, e, true)) return false;
+    f->in = std::move(d.in);
+    f->hit = std::move(d.hit);
+    return true;
+  };
+  if (!measure_rows(cx, ball_frame, ref_display, &ep1, &err)) {
     fprintf(stderr, "tiershade bench: %s\n", err.c_str());
     return 1;
   }
@@ -343,7 +367,9 @@ int cmd_bench(int argc, char **argv) {
      << "  highp frame), the part of the error that is arithmetic precision, not approximation.\n"
      << "- **GL = C**: channels where llvmpipe and the C twin differ (0 = bit-exact frame).\n\n"
      << "## model_lighting: Half-Life 2 (sphere grid, 15 spheres, 6 lights)\n\n"
-     << "Reference: every light local (none folded), exact sRGB, double precision.\n\n"
+     << "Scene: `scenes/sphere_grid.gltf`; the frames are the scene renderer's G-buffer (its C rasteriser,\n"
+     << "`scene_deferred_frame`), the lights folded for each row's tier at the grid's centre.\n"
+     << "Reference: every light local (none folded), exact sRGB, double precision (`scene_reference_linear`).\n\n"
      << table(hl2, 2, cx.cores) << "\n![error against time](" << basename_of(svg1) << ")\n\n"
      << "The ps20 error is dominated by the four folded lights and the per-vertex attenuation; ps2b's by\n"
      << "the gamma-2.2 curve standing in for sRGB in the darks; sm3 keeps the error of the two folded lights;\n"

@@ -1,6 +1,6 @@
-// tiershade: `demo` subcommand: the lit sphere grid in each tier (ps20, ps2b, sm3),
-// rendered on OSMesa and EGL (llvmpipe) and by the C fallback, written to OUT/ as
-// PNG and EXR, with GL-vs-C difference images and a side-by-side of the tiers.
+// tiershade: `demo` subcommand: the lit sphere grid (scenes/sphere_grid.gltf) in each tier (ps20,
+// ps2b, sm3), rendered by the scene renderer on OSMesa and EGL (llvmpipe) and by its C fallback,
+// written to OUT/ as PNG and EXR, with GL-vs-C difference images and a side-by-side of the tiers.
 #include <sys/stat.h>
 
 #include <cerrno>
@@ -8,33 +8,58 @@
 #include <cstdio>
 #include <cstring>
 
-#include "demo/family_frame.h"
-#include "io/lights_file.h"
-#include "demo/sphere_grid_scene.h"
 #include "cli/select_args.h"
 #include "base/image_diff.h"
 #include "io/exr.h"
 #include "io/png.h"
 #include "color/srgb.h"
+#include "demo/scene_files.h"
+#include "families/family.h"
+#include "io/lights_file.h"
+#include "scene/cpu_renderer.h"
+#include "scene/frame.h"
+#include "scene/reference.h"
+#include "scene/scene.h"
+#include "scene/selection.h"
 
 namespace {
 
-struct DemoTier {
-  Tier tier;
-  const char *variant;
-  int max_local;
-  Encode png;  // how the variant's output becomes a display PNG
-};
-
-const DemoTier kTiers[] = {
-    {Tier::PS20, "ps20:ALBEDO_TEXTURE=1,HALF_LAMBERT=1,OUTPUT_MODE=0,NUM_LIGHTS=2", 2, Encode::SRGB},
-    {Tier::PS2B, "ps2b:ALBEDO_TEXTURE=1,HALF_LAMBERT=1,OUTPUT_MODE=1,NUM_LIGHTS=4", 4, Encode::Linear},
-    {Tier::SM3, "sm3:ALBEDO_TEXTURE=1,HALF_LAMBERT=1,OUTPUT_MODE=2", 4, Encode::Linear},
-};
+// The sphere grid (kSphereGridGltf, written by tools/make_scenes.py from scenes/sphere_grid.lights)
+// is rendered by the scene renderer in each tier.
+const Tier kTiers[] = {Tier::PS20, Tier::PS2B, Tier::SM3};
 
 bool save(const std::string &base, const ImageF &img, Encode enc, bool exr, std::string *err) {
   if (!write_png(base + ".png", img, enc, err)) return false;
   return !exr || write_exr(base + ".exr", img, err);
+}
+
+// The lit pass with an opaque background (rgb 0, alpha 1), as the pictures are written.
+ImageF opaque(const ImageF &lit) {
+  ImageF o = lit;
+  for (size_t p = 3; p < o.rgba.size(); p += 4) o.rgba[p] = 1.f;
+  return o;
+}
+
+// The double reference of the grid: every light local, from the C renderer's G-buffer at sm3.
+bool grid_reference(const Scene &s, int w, int h, ImageF *out, std::string *err) {
+  SceneSelection sel;
+  PreparedScene p;
+  if (!select_scene_variants(s, Tier::SM3, "", &sel, err) ||
+      !prepare_scene(s, sel, w, h, Api::GL33, s.hdr.tone_map_scale, &p, err))
+    return false;
+  SceneVisibility vis;
+  scene_rasterize_cpu(p, &vis);
+  std::vector<int> draw;
+  std::vector<float> slots;
+  scene_records_cpu(p, vis, &draw, &slots);
+  std::vector<double> ref;
+  if (!scene_reference_linear(s, p, draw, slots, &ref, err)) return false;
+  out->w = w;
+  out->h = h;
+  out->rgba.assign(static_cast<size_t>(w) * h * 4, 1.f);
+  for (size_t q = 0; q < static_cast<size_t>(w) * h; ++q)
+    for (int c = 0; c < 3; ++c) out->rgba[q * 4 + c] = static_cast<float>(ref[q * 3 + c]);
+  return true;
 }
 
 }  // namespace
@@ -43,11 +68,13 @@ int cmd_demo(int argc, char **argv) {
   Args a("demo", argc, argv, {"--help"}, {"-o", "--size", "--backend", "--lights"});
   if (a.flag("--help")) {
     puts("usage: tiershade demo [-o DIR] [--size WxH] [--backend osmesa|egl|all] [--lights FILE]\n"
-         "Renders the lit sphere grid (six lights, ambient cube) with the HL2 model lighting in each\n"
-         "tier: ps20 (2 local lights, the rest folded into the ambient cube, linear output for an sRGB\n"
-         "target), ps2b (4 lights, gamma 2.2 in the shader), sm3 (4 lights in a dynamic loop, exact sRGB).\n"
-         "Each tier is rendered on llvmpipe through OSMesa (GL 3.3) and EGL (GLES 2.0, GLES 3.0, GL 3.3)\n"
-         "and by the C fallback; every GL frame is compared bit for bit with the C frame.\n"
+         "Renders the lit sphere grid (scenes/sphere_grid.gltf: six lights, ambient cube, orthographic\n"
+         "camera) with the HL2 model lighting in each tier, through the scene renderer (the variants the\n"
+         "scene selects, as `tiershade render`): ps20 (2 local lights, the rest folded into the ambient\n"
+         "cube, linear output for an sRGB target), ps2b (4 lights), sm3 (4 lights in a dynamic loop);\n"
+         "ps2b and sm3 tone-map and encode sRGB in the shader. Each tier is rendered on llvmpipe through\n"
+         "OSMesa (GL 3.3) and EGL (GLES 2.0, GLES 3.0, GL 3.3) and by the C fallback; every GL frame is\n"
+         "compared bit for bit with the C twin shading GL's own G-buffer.\n"
          "Writes DIR/model_lighting_<tier>_<backend>.png/.exr, DIR/model_lighting_<tier>_diff_<backend>.png\n"
          "(black = bit-equal), DIR/model_lighting_reference.png (double precision, every light local)\n"
          "and DIR/model_lighting_tiers.png (ps20 | ps2b | sm3 | reference). Default DIR: out.\n"
@@ -70,94 +97,74 @@ int cmd_demo(int argc, char **argv) {
     fprintf(stderr, "tiershade demo: cannot create directory '%s': %s\n", dir.c_str(), strerror(errno));
     return 1;
   }
-  Selection sel;
-  if (!load_shader_decls(&sel.decls, &err)) a.fail(err);
-  const ShaderFamily *fam = find_family("model_lighting");
-  SphereScene scene = default_sphere_scene();
+  std::vector<ts_light> lights;
+  if (a.has("--lights") && !read_lights(a.get("--lights"), &lights, &err)) a.fail(err);
+  Scene scene;
+  if (!load_scene(kSphereGridGltf, &scene, &err)) a.fail(err);
   if (a.has("--lights")) {
     scene.lights.clear();
-    if (!read_lights(a.get("--lights"), &scene.lights, &err)) a.fail(err);
+    for (size_t i = 0; i < lights.size(); ++i)
+      scene.lights.push_back({a.get("--lights") + ": light " + std::to_string(i + 1), lights[i]});
   }
   int failures = 0;
   std::vector<ImageF> panels;
+  std::vector<Encode> panel_enc;
 
-  // The reference (every light local, double) only depends on the geometry.
-  SphereFrame ref_frame;
-  if (!sphere_frame(scene, w, h, 64, &ref_frame, &err)) {
-    fprintf(stderr, "tiershade demo: %s\n", err.c_str());
-    return 1;
-  }
-  std::vector<double> ref;
-  sphere_reference_linear(scene, ref_frame, &ref);
+  // The reference (every light local, double).
   ImageF ref_img;
-  ref_img.w = w;
-  ref_img.h = h;
-  ref_img.rgba.resize(static_cast<size_t>(w) * h * 4);
-  for (size_t p = 0; p < static_cast<size_t>(w) * h; ++p) {
-    for (int c = 0; c < 3; ++c) ref_img.rgba[p * 4 + c] = static_cast<float>(ref[p * 3 + c]);
-    ref_img.rgba[p * 4 + 3] = 1.f;
-  }
-  if (!save(dir + "/model_lighting_reference", ref_img, Encode::SRGB, true, &err)) {
+  if (!grid_reference(scene, w, h, &ref_img, &err) ||
+      !save(dir + "/model_lighting_reference", ref_img, Encode::SRGB, true, &err)) {
     fprintf(stderr, "tiershade demo: %s\n", err.c_str());
     return 1;
   }
 
   printf("%-5s %-16s %10s %12s %10s  %s\n", "tier", "backend", "pixels", "mismatched", "max ULP", "lights local+folded");
-  for (const DemoTier &t : kTiers) {
-    Variant v;
-    if (!find_variant(sel.decls, "model_lighting", t.variant, &v, &err)) a.fail(err);
-    SphereFrame frame;
-    if (!sphere_frame(scene, w, h, t.max_local, &frame, &err)) {
-      fprintf(stderr, "tiershade demo: %s\n", err.c_str());
+  for (const Tier tier : kTiers) {
+    SceneSelection sel;
+    if (!select_scene_variants(scene, tier, "", &sel, &err)) a.fail(err);
+    // OUTPUT_MODE 0: linear out for an sRGB target (ps20); else the shader encodes the display.
+    const Encode png = sel.variants.at(0).value("OUTPUT_MODE") == 0 ? Encode::SRGB : Encode::Linear;
+    const std::string base = dir + "/model_lighting_" + tier_name(tier);
+    SceneRenderConfig cfg;
+    cfg.w = w;
+    cfg.h = h;
+    cfg.backend = Backend::CPU;
+    SceneRenderResult cpu;
+    if (!render_scene(scene, sel, cfg, &cpu, &err) || !save(base + "_cpu", opaque(cpu.lit), png, true, &err)) {
+      fprintf(stderr, "tiershade demo: %s: %s\n", tier_name(tier), err.c_str());
       return 1;
     }
-    const std::string base = dir + "/model_lighting_" + tier_name(t.tier);
-    ImageF cpu;
-    cpu_render_frame(*fam, v, frame.in, &cpu);
-    sphere_mask(frame, &cpu);
-    if (!save(base + "_cpu", cpu, t.png, true, &err)) {
-      fprintf(stderr, "tiershade demo: %s\n", err.c_str());
-      return 1;
-    }
-    panels.push_back(cpu);
-    printf("%-5s %-16s %10d %12s %10s  %d+%d\n", tier_name(t.tier), "cpu", w * h, "-", "-", frame.lights_kept,
-           frame.lights_folded);
-    for (const auto &cfg : configs) {
-      const std::string tag = std::string(backend_name(cfg.backend)) + "_" + api_name(cfg.api);
-      auto ctx = GlContext::create(cfg.backend, cfg.api, &err);
-      if (!ctx) {
-        fprintf(stderr, "tiershade demo: %s: %s\n", tag.c_str(), err.c_str());
+    panels.push_back(opaque(cpu.lit));
+    panel_enc.push_back(png);
+    printf("%-5s %-16s %10d %12s %10s  %d+%d\n", tier_name(tier), "cpu", w * h, "-", "-", sel.draws.at(0).lights_local,
+           sel.draws.at(0).lights_folded);
+    for (const auto &c : configs) {
+      const std::string tag = std::string(backend_name(c.backend)) + "_" + api_name(c.api);
+      cfg.backend = c.backend;
+      cfg.api = c.api;
+      cfg.check = true;  // the C twin on GL's own G-buffer, compared bit for bit
+      SceneRenderResult gl;
+      if (!render_scene(scene, sel, cfg, &gl, &err)) {
+        fprintf(stderr, "tiershade demo: %s %s: %s\n", tier_name(tier), tag.c_str(), err.c_str());
         ++failures;
         continue;
       }
-      GlRenderer r(*ctx);
-      GlFrameProgram fp;
-      ImageF gl;
-      if (!gl_frame_setup(r, cfg.api, *fam, v, frame.in, &fp, &err) ||
-          !gl_frame_draw(r, fp, frame.in, &gl, nullptr, &err)) {
-        fprintf(stderr, "tiershade demo: %s %s: %s\n", t.variant, tag.c_str(), err.c_str());
-        ++failures;
-        gl_frame_release(r, &fp);
-        continue;
-      }
-      gl_frame_release(r, &fp);
-      sphere_mask(frame, &gl);
       DiffStats st;
-      const ImageF diff = diff_image(gl, cpu, &st);
-      if (!save(base + "_" + tag, gl, t.png, true, &err) ||
+      const ImageF diff = diff_image(gl.lit, gl.check_lit, &st);
+      if (!save(base + "_" + tag, opaque(gl.lit), png, true, &err) ||
           !write_png(base + "_diff_" + tag + ".png", diff, Encode::Linear, &err)) {
         fprintf(stderr, "tiershade demo: %s\n", err.c_str());
         return 1;
       }
       if (st.mismatched_pixels) ++failures;
-      printf("%-5s %-16s %10ld %12ld %10u\n", tier_name(t.tier), tag.c_str(), st.pixels, st.mismatched_pixels,
+      printf("%-5s %-16s %10ld %12ld %10u\n", tier_name(tier), tag.c_str(), st.pixels, st.mismatched_pixels,
              st.max_ulp);
     }
   }
   // Side by side: ps20 | ps2b | sm3 | reference, each as a display image.
   std::vector<ImageF> display;
   for (size_t i = 0; i < panels.size(); ++i)
-    display.push_back(kTiers[i].png == Encode::SRGB ? srgb_display(panels[i]) : panels[i]);
+    display.push_back(panel_enc[i] == Encode::SRGB ? srgb_display(panels[i]) : panels[i]);
   display.push_back(srgb_display(ref_img));
   std::vector<const ImageF *> ptrs;
   for (const auto &d : display) ptrs.push_back(&d);

@@ -13,7 +13,7 @@
 #include "offline/light_folding.h"
 #include "io/lights_file.h"
 #include "twins/model_lighting.h"
-#include "demo/sphere_grid_scene.h"
+#include "demo/scene_files.h"
 #include "cli/select_args.h"
 
 namespace {
@@ -54,7 +54,8 @@ int cmd_fold(int argc, char **argv) {
          "  point       R G B  X Y Z  C L Q\n"
          "  spot        R G B  X Y Z  DX DY DZ  EXPONENT INNER_DEG OUTER_DEG  C L Q\n"
          "  directional R G B  DX DY DZ\n"
-         "Without --lights, the demo scene's six lights are used.");
+         "Without --lights, the demo scene's six lights are used (scenes/sphere_grid.lights, run from the\n"
+         "repository root).");
     return 0;
   }
   if (!a.positional().empty()) a.fail("unexpected argument '" + a.positional()[0] + "'");
@@ -72,7 +73,7 @@ int cmd_fold(int argc, char **argv) {
   if (a.has("--lights")) {
     if (!read_lights(a.get("--lights"), &lights, &err)) a.fail(err);
   } else {
-    lights = default_sphere_scene().lights;
+    if (!read_lights(kSphereGridLights, &lights, &err)) a.fail(err);
   }
   const int max_local = max_local_lights(tier);
   const int half_lambert = a.flag("--lambert") ? 0 : 1;

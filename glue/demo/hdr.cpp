@@ -74,7 +74,7 @@ struct Scenes {
   std::vector<ShaderDecl> decls;  // the variants below point into it
   const ShaderFamily *lit = nullptr;
   Variant lit_linear, lit_display;
-  SphereFrame day, room;
+  SceneDeferredFrame day, room;
   std::string note;
 };
 
@@ -87,8 +87,9 @@ bool make_scenes(int w, int h, Scenes *s, std::string *err) {
     *err = "the model_lighting family is not registered";
     return false;
   }
-  return hdr_scene_frame(hdr_daylight_scene(hdr_default_probe(), &s->note), w, h, &s->day, err) &&
-         hdr_scene_frame(hdr_dark_room_scene(), w, h, &s->room, err);
+  std::string room_note;
+  return hdr_scene_frame(kHdrDaylightGltf, w, h, &s->day, &s->note, err) &&
+         hdr_scene_frame(kHdrDarkRoomGltf, w, h, &s->room, &room_note, err);
 }
 
 // 1. The tone-map row.

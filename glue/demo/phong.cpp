@@ -1,6 +1,6 @@
-// tiershade glue: the Episode One demo section: one normal-mapped sphere with an
-// exponent map, lit by four lights and an ambient cube (from a real light probe when
-// ../shared/data/probes/grace.hdr is readable), as the seed's "Diffuse Lighting" /
+// tiershade demo: the Episode One demo section: one normal-mapped sphere with an exponent map
+// (scenes/phong_sphere.gltf, framed by the scene renderer: glue/scene/deferred.h), lit by four
+// lights and an ambient cube from the Grace Cathedral probe, as the seed's "Diffuse Lighting" /
 // "Specular Lighting" / "High Quality Lighting" comparison: ps20 (HL2, no Phong),
 // the ps2b Phong specular alone, ps2b with Phong, and sm3 with rim light and envmap.
 // Every GL frame is compared with the C fallback.
@@ -9,28 +9,28 @@
 
 #include "conform/conform.h"
 #include "demo/family_frame.h"
-#include "demo/sphere_grid_scene.h"
 #include "base/image_diff.h"
 #include "io/exr.h"
 #include "io/png.h"
 #include "color/srgb.h"
+#include "demo/scene_files.h"
+#include "scene/deferred.h"
 
 namespace {
 
 struct Panel {
-  const char *tag, *variant;
-  int max_local;
+  const char *tag, *variant;  // the variant's tier sets the lights kept (ps20: 2, else 4)
   bool black_albedo;  // specular alone
   Encode png;
 };
 
 const Panel kPanels[] = {
-    {"ps20_diffuse", "ps20:ALBEDO_TEXTURE=1,HALF_LAMBERT=1,NUM_LIGHTS=2", 2, false, Encode::SRGB},
-    {"ps2b_specular", "ps2b:ALBEDO_TEXTURE=1,HALF_LAMBERT=1,OUTPUT_MODE=2,PHONG=1,PHONG_EXPONENT_MAP=1,NUM_LIGHTS=4", 4,
+    {"ps20_diffuse", "ps20:ALBEDO_TEXTURE=1,HALF_LAMBERT=1,NUM_LIGHTS=2", false, Encode::SRGB},
+    {"ps2b_specular", "ps2b:ALBEDO_TEXTURE=1,HALF_LAMBERT=1,OUTPUT_MODE=2,PHONG=1,PHONG_EXPONENT_MAP=1,NUM_LIGHTS=4",
      true, Encode::Linear},
-    {"ps2b_phong", "ps2b:ALBEDO_TEXTURE=1,HALF_LAMBERT=1,OUTPUT_MODE=2,PHONG=1,PHONG_EXPONENT_MAP=1,NUM_LIGHTS=4", 4,
+    {"ps2b_phong", "ps2b:ALBEDO_TEXTURE=1,HALF_LAMBERT=1,OUTPUT_MODE=2,PHONG=1,PHONG_EXPONENT_MAP=1,NUM_LIGHTS=4",
      false, Encode::Linear},
-    {"sm3_full", "sm3:ALBEDO_TEXTURE=1,HALF_LAMBERT=1,OUTPUT_MODE=2,PHONG=1,PHONG_EXPONENT_MAP=1,RIM_LIGHT=1,ENVMAP=1", 4,
+    {"sm3_full", "sm3:ALBEDO_TEXTURE=1,HALF_LAMBERT=1,OUTPUT_MODE=2,PHONG=1,PHONG_EXPONENT_MAP=1,RIM_LIGHT=1,ENVMAP=1",
      false, Encode::Linear},
 };
 
@@ -42,24 +42,24 @@ bool run(const DemoOptions &opt, std::string *err) {
   std::vector<ShaderDecl> decls;
   if (!load_shader_decls(&decls, err)) return false;
   const ShaderFamily *fam = find_family("model_lighting");
-  std::string note;
-  const SphereScene base = phong_sphere_scene("../shared/data/probes/grace.hdr", &note);
+  Scene ball;
+  if (!load_scene(kPhongSphereGltf, &ball, err)) return false;
   const int size = std::max(32, std::min(opt.w, opt.h));
-  printf("phong sphere: %s\n", note.c_str());
+  printf("phong sphere: %s\n", kPhongSphereGltf);
   std::vector<ImageF> display;
   int failures = 0;
   for (const Panel &p : kPanels) {
     Variant v;
     if (!find_variant(decls, "model_lighting", p.variant, &v, err)) return false;
-    SphereScene scene = base;
+    // The frame at the panel's tier (ps20: 2 lights local), every texture of the material real.
+    SceneDeferredFrame frame;
+    if (!scene_deferred_frame(ball, v.tier, size, size, &frame, err, true)) return false;
     if (p.black_albedo)
-      for (size_t i = 0; i < scene.textures[0].rgba.size(); ++i)
-        if (i % 4 != 3) scene.textures[0].rgba[i] = 0.f;
-    SphereFrame frame;
-    if (!sphere_frame(scene, size, size, p.max_local, &frame, err)) return false;
+      for (size_t i = 0; i < frame.in.textures[0].rgba.size(); ++i)
+        if (i % 4 != 3) frame.in.textures[0].rgba[i] = 0.f;
     ImageF cpu;
     cpu_render_frame(*fam, v, frame.in, &cpu);
-    sphere_mask(frame, &cpu);
+    scene_deferred_mask(frame, &cpu);
     const std::string file = opt.dir + "/phong_" + p.tag;
     if (!write_png(file + "_cpu.png", cpu, p.png, err) || !write_exr(file + "_cpu.exr", cpu, err)) return false;
     display.push_back(to_display(cpu, p.png));
@@ -73,14 +73,14 @@ bool run(const DemoOptions &opt, std::string *err) {
       ImageF ref = cpu;
       if (cfg.api != Api::GL33) {
         cpu_render_frame(*fam, v, in, &ref);
-        sphere_mask(frame, &ref);
+        scene_deferred_mask(frame, &ref);
       }
       GlFrameProgram fp;
       ImageF gl;
       const bool ok = gl_frame_setup(r, cfg.api, *fam, v, in, &fp, err) && gl_frame_draw(r, fp, in, &gl, nullptr, err);
       gl_frame_release(r, &fp);
       if (!ok) return false;
-      sphere_mask(frame, &gl);
+      scene_deferred_mask(frame, &gl);
       DiffStats st;
       diff_image(gl, ref, &st);
       if (st.mismatched_pixels) ++failures;

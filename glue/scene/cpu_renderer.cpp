@@ -517,3 +517,29 @@ void scene_shade_records(const PreparedScene &p, const std::vector<int> &draw, c
     }
   });
 }
+
+void scene_records_cpu(const PreparedScene &p, const SceneVisibility &vis, std::vector<int> *draw,
+                       std::vector<float> *slots, int threads) {
+  std::vector<std::vector<float>> vary(p.draws.size());
+  std::vector<float> clip;
+  for (size_t di = 0; di < p.draws.size(); ++di) vertex_stage(p, p.draws[di], &clip, &vary[di]);
+  const size_t n = static_cast<size_t>(p.w) * p.h;
+  draw->assign(vis.draw.begin(), vis.draw.end());
+  slots->assign(n * kVary, 0.f);
+  parallel_rows(p.h, threads, [&](int y) {
+    for (int x = 0; x < p.w; ++x) {
+      const size_t q = static_cast<size_t>(y) * p.w + x;
+      const int d = vis.draw[q];
+      if (d < 0) continue;
+      const uint32_t *idx = &p.draws[d].indices[static_cast<size_t>(vis.tri[q]) * 3];
+      const float b1 = vis.b1[q], b2 = vis.b2[q], b0 = 1.f - b1 - b2;
+      const float *vd = vary[d].data();
+      const float *v0 = &vd[idx[0] * kVary], *v1 = &vd[idx[1] * kVary], *v2 = &vd[idx[2] * kVary];
+      const F4 B0 = splat4(b0), B1 = splat4(b1), B2 = splat4(b2);
+      for (int k = 0; k < kPixelSlots; ++k) {
+        const F4 v = load4(v0 + k * 4) * B0 + load4(v1 + k * 4) * B1 + load4(v2 + k * 4) * B2;
+        std::memcpy(&(*slots)[q * kVary + k * 4], &v, sizeof v);
+      }
+    }
+  });
+}

@@ -32,3 +32,9 @@ void scene_shade_cpu(const PreparedScene &p, const SceneVisibility &vis, ImageF 
 // Shades GL's G-buffer (per pixel draw index and 6 slots, glue/scene/gl_renderer.h) with the C twin.
 void scene_shade_records(const PreparedScene &p, const std::vector<int> &draw, const std::vector<float> &slots,
                          ImageF *out, int threads = 0);
+
+// The C fallback's G-buffer: per pixel the draw index (-1 background) and the 6 pixel slots
+// (24 floats, every slot, interpolated as scene_shade_cpu interpolates them), the same layout
+// as SceneGl::gbuffer, for scene_shade_records and scene_reference_linear.
+void scene_records_cpu(const PreparedScene &p, const SceneVisibility &vis, std::vector<int> *draw,
+                       std::vector<float> *slots, int threads = 0);

@@ -371,6 +371,7 @@ bool SceneRenderer::frame(SceneRenderResult *out, std::string *err) {
       res.check_pixels = 0;
       for (int d : draw_of_pixel) res.check_pixels += d >= 0;
       res.check_max_ulp = st.max_ulp;
+      res.check_lit = std::move(c);
     }
   }
 

@@ -47,6 +47,7 @@ struct SceneRenderResult {
   // --check: channels where GL's frame differs from the C twin on GL's G-buffer (-1: not run).
   long check_mismatched = -1, check_pixels = 0;
   uint32_t check_max_ulp = 0;
+  ImageF check_lit;              // --check: the C twin's lit pass on GL's G-buffer (what GL is compared with)
   // --check: display channels where GL's HDR path and colour correction differ from their C twins
   // run on GL's lit frame (-1: not run).
   long check_post_mismatched = -1, check_post_channels = 0;

@@ -207,7 +207,7 @@ bool load(const std::string &path, Scene *s, Err &e) {
       p.material = static_cast<int>(s->materials.size()) - 1;
     }
   if (s->primitives.empty()) return e.fail("scene", "no triangles (a scene needs at least one mesh primitive)");
-  if (s->cameras.empty()) return e.fail("scene", "no camera (a scene needs a node with a perspective camera)");
+  if (s->cameras.empty()) return e.fail("scene", "no camera (a scene needs a node with a camera)");
   return convert_tiershade_extras(m, dir, s, e);
 }
 

@@ -317,16 +317,26 @@ bool convert_camera(Walk &w, int cam, const glm::dmat4 &world, const std::string
   const std::string place = "cameras[" + std::to_string(cam) + "]";
   if (cam < 0 || static_cast<size_t>(cam) >= w.m.cameras.size()) return w.e.fail(place, "does not exist");
   const tinygltf::Camera &c = w.m.cameras[cam];
-  if (c.type != "perspective")
-    return w.e.fail(named(place, c.name), "type " + quoted(c.type) + ": only perspective cameras are supported");
-  const tinygltf::PerspectiveCamera &p = c.perspective;
-  if (!(p.yfov > 0 && p.yfov < glm::pi<double>())) return w.e.fail(named(place, c.name) + ".perspective.yfov", "must be in (0, pi)");
-  if (!(p.znear > 0 && std::isfinite(p.znear))) return w.e.fail(named(place, c.name) + ".perspective.znear", "must be > 0");
-  if (!(p.zfar == 0 || (p.zfar > p.znear && std::isfinite(p.zfar))))
-    return w.e.fail(named(place, c.name) + ".perspective.zfar", "must be > znear (or absent)");
-  if (!(p.aspectRatio >= 0 && std::isfinite(p.aspectRatio)))
-    return w.e.fail(named(place, c.name) + ".perspective.aspectRatio", "must be > 0 (or absent)");
   SceneCamera sc;
+  if (c.type == "orthographic") {
+    if (!read_orthographic(c, named(place, c.name), &sc, w.e)) return false;
+  } else if (c.type != "perspective") {
+    return w.e.fail(named(place, c.name), "type " + quoted(c.type) + ": not perspective or orthographic");
+  } else {
+    const tinygltf::PerspectiveCamera &p = c.perspective;
+    if (!(p.yfov > 0 && p.yfov < glm::pi<double>()))
+      return w.e.fail(named(place, c.name) + ".perspective.yfov", "must be in (0, pi)");
+    if (!(p.znear > 0 && std::isfinite(p.znear)))
+      return w.e.fail(named(place, c.name) + ".perspective.znear", "must be > 0");
+    if (!(p.zfar == 0 || (p.zfar > p.znear && std::isfinite(p.zfar))))
+      return w.e.fail(named(place, c.name) + ".perspective.zfar", "must be > znear (or absent)");
+    if (!(p.aspectRatio >= 0 && std::isfinite(p.aspectRatio)))
+      return w.e.fail(named(place, c.name) + ".perspective.aspectRatio", "must be > 0 (or absent)");
+    sc.yfov = p.yfov;
+    sc.znear = p.znear;
+    sc.zfar = p.zfar;
+    sc.aspect = p.aspectRatio;
+  }
   sc.name = !c.name.empty() ? c.name : !node_name.empty() ? node_name : place;
   // The camera looks down its node's -Z with +Y up (glTF 2.0, 3.10.1), up made orthogonal.
   const glm::dmat3 m3(world);
@@ -334,10 +344,6 @@ bool convert_camera(Walk &w, int cam, const glm::dmat4 &world, const std::string
   glm::dvec3 up = m3 * glm::dvec3(0, 1, 0);
   up = unit_or_zero(up - glm::dot(up, fwd) * fwd);
   for (int k = 0; k < 3; ++k) sc.eye[k] = eye[k], sc.forward[k] = fwd[k], sc.up[k] = up[k];
-  sc.yfov = p.yfov;
-  sc.znear = p.znear;
-  sc.zfar = p.zfar;
-  sc.aspect = p.aspectRatio;
   w.s->cameras.push_back(sc);
   return true;
 }

@@ -71,5 +71,7 @@ bool convert_tiershade_extras(const tinygltf::Model &m, const std::string &scene
 // Part 4 (glue/scene/gltf_nodes.cpp): the node hierarchy of the default scene flattened to
 // world space: mesh primitives (accessors read and checked), cameras and lights.
 bool convert_nodes(const tinygltf::Model &m, Scene *s, Err &e);
+// glue/scene/camera_ortho.cpp: an orthographic camera's xmag, ymag, znear, zfar into *sc.
+bool read_orthographic(const tinygltf::Camera &c, const std::string &place, SceneCamera *sc, Err &e);
 
 }  // namespace scene_gltf

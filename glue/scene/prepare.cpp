@@ -7,6 +7,7 @@
 #include <array>
 #include <chrono>
 #include <cmath>
+#include <cstring>
 #include <map>
 
 #include <glm/glm.hpp>
@@ -16,6 +17,7 @@
 #include "bake/world_bake.h"
 #include "scene/textures.h"
 #include "twins/model_lighting.h"
+#include "scene/camera_ortho.h"
 #include "twins/world_lighting.h"
 #include "color/srgb.h"
 
@@ -231,6 +233,7 @@ bool model_draw(const Scene &s, const PreparedScene &ps, const SceneDrawChoice &
         for (int k = 0; k < 3; ++k) cube[f][k] = a.cube[f][k];
     }
   }
+  std::memcpy(d->ambient, cube, sizeof cube);
   // Lights: the tier's limit per pixel, the rest folded into the cube (docs/light_folding.md).
   std::vector<ts_light> lights;
   for (const SceneLight &l : s.lights) lights.push_back(l.light);
@@ -340,8 +343,13 @@ bool prepare_scene(const Scene &s, const SceneSelection &sel, int w, int h, Api 
   }
   const SceneCamera &cam = s.cameras[s.camera];
   // The output's aspect: a glTF aspectRatio that differs would stretch the picture.
-  const glm::dmat4 vpm = camera_matrix(cam, static_cast<double>(w) / h);
-  const double *vp = glm::value_ptr(vpm);  // column-major, as GL takes it
+  double vp[16];
+  if (cam.orthographic) {
+    ortho_view_projection(cam, static_cast<double>(w) / h, vp);
+  } else {
+    const glm::dmat4 vpm = camera_matrix(cam, static_cast<double>(w) / h);
+    std::memcpy(vp, glm::value_ptr(vpm), sizeof vp);  // column-major, as GL takes it
+  }
   for (int i = 0; i < 16; ++i) {
     ps.view_proj[i] = static_cast<float>(vp[i]);
     ps.model[i] = (i % 5 == 0) ? 1.f : 0.f;

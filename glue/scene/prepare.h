@@ -25,6 +25,8 @@ struct PreparedDraw {
                                         // model: u_albedo u_normal_map u_exponent_map u_light_warp u_envmap;
                                         // world: u_base u_normalmap u_lightmap u_envmap_mask u_envmap
   bool display_encoded = false;         // output already sRGB-encoded (model OUTPUT_MODE 2)
+  float ambient[6][3] = {};             // model: the draw's ambient cube before lights were folded
+                                        // into it (the reference shades every light locally)
 };
 
 struct PreparedScene {

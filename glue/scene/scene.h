@@ -102,6 +102,10 @@ struct SceneCamera {
   double yfov = 0.8;                 // radians
   double znear = 0.05, zfar = 1000;  // zfar 0 = infinite (glTF)
   double aspect = 0;                 // 0: the output's
+  // glTF orthographic camera: half extents xmag x ymag (the view keeps square pixels and holds
+  // both, glue/scene/camera_ortho.h); yfov and aspect are then unused.
+  bool orthographic = false;
+  double xmag = 0, ymag = 0;
 };
 
 // A cube-map probe ("probes" in the scene's extras): an equirectangular HDR image, or

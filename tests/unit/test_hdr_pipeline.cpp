@@ -40,7 +40,7 @@ struct Fixture {
   std::vector<ShaderDecl> decls;
   Variant lit_linear, lit_display;
   const ShaderFamily *lit = nullptr;
-  SphereFrame frame;
+  SceneDeferredFrame frame;
 };
 
 void run(const Fixture &fx, Backend b, Api api) {
@@ -115,9 +115,8 @@ int main() {
     return 1;
   }
   fx.lit = find_family("model_lighting");
-  const SphereScene scene = hdr_daylight_scene(hdr_default_probe(), &note);
   // 70 x 42: not a multiple of 4, so the quarter-size bloom (17 x 10) does not tile the frame exactly.
-  if (!fx.lit || !hdr_scene_frame(scene, 70, 42, &fx.frame, &err)) {
+  if (!fx.lit || !hdr_scene_frame(kHdrDaylightGltf, 70, 42, &fx.frame, &note, &err)) {
     check(false, "set-up", err);
     return 1;
   }
