@@ -13,8 +13,9 @@
 #include "families/color_correction_inputs.h"
 #include "demo/color_correction_scene.h"
 #include "color/ciede2000.h"
-#include "demo/family_frame.h"
-#include "cli/select_args.h"
+#include "conform/family_frame.h"
+#include "gl/context.h"
+#include "shaderlib/variants.h"
 #include "base/image_diff.h"
 #include "base/stats.h"
 

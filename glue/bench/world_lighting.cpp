@@ -11,11 +11,12 @@
 
 #include "shaderlib/assembler.h"
 #include "budget/budget.h"
-#include "cli/select_args.h"
+#include "gl/context.h"
+#include "shaderlib/variants.h"
 #include "demo/room_render.h"
 #include "base/image_diff.h"
 #include "base/stats.h"
-#include "color/srgb.h"
+#include "base/srgb.h"
 
 namespace {
 

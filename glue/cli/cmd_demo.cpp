@@ -12,7 +12,7 @@
 #include "base/image_diff.h"
 #include "io/exr.h"
 #include "io/png.h"
-#include "color/srgb.h"
+#include "base/srgb.h"
 #include "demo/scene_files.h"
 #include "families/family.h"
 #include "io/lights_file.h"

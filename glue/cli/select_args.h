@@ -7,10 +7,7 @@
 #include "gl/context.h"
 #include "shaderlib/variants.h"
 
-struct Selection {
-  std::vector<ShaderDecl> decls;  // owns the declarations the variants point to
-  std::vector<Variant> variants;
-};
+// Selection (a variant set with its declarations) is shaderlib/variants.h's.
 
 // Fills sel from --shader S (default all), --tier T (repeatable, default all), --variant V.
 void select_variants(const Args &a, Selection *sel);

@@ -7,7 +7,7 @@
 
 #include <glm/gtc/constants.hpp>
 
-#include "color/srgb.h"
+#include "base/srgb.h"
 
 namespace {
 

@@ -6,18 +6,10 @@
 #include <string>
 #include <vector>
 
+#include "base/lut3d.h"
 #include "gl/float_target.h"
 #include "math/ts_sampler.h"
 #include "math/ts_sampler3d.h"
-
-// A 3D LUT of edge n: n^3 RGB triples, red fastest, then green, then blue (the .cube order).
-struct Lut3D {
-  int n = 0;
-  std::vector<float> rgb;  // n * n * n * 3
-  std::string title;       // informative (the .cube TITLE, or where it came from)
-  const float *at(int r, int g, int b) const { return &rgb[3 * ((static_cast<size_t>(b) * n + g) * n + r)]; }
-  float *at(int r, int g, int b) { return &rgb[3 * ((static_cast<size_t>(b) * n + g) * n + r)]; }
-};
 
 // The identity LUT of edge n: node (r, g, b) holds (r, g, b) / (n - 1).
 Lut3D identity_lut(int n);

@@ -9,8 +9,9 @@
 
 #include "families/color_correction_inputs.h"
 #include "demo/color_correction_scene.h"
-#include "demo/family_frame.h"
-#include "cli/select_args.h"
+#include "conform/family_frame.h"
+#include "gl/context.h"
+#include "shaderlib/variants.h"
 #include "base/image_diff.h"
 #include "io/exr.h"
 #include "io/png.h"

@@ -7,7 +7,7 @@
 
 #include "color/ciede2000.h"
 #include "io/radiance_hdr.h"
-#include "color/srgb.h"
+#include "base/srgb.h"
 
 namespace {
 

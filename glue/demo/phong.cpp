@@ -8,11 +8,11 @@
 #include <cstdio>
 
 #include "conform/conform.h"
-#include "demo/family_frame.h"
+#include "conform/family_frame.h"
 #include "base/image_diff.h"
 #include "io/exr.h"
 #include "io/png.h"
-#include "color/srgb.h"
+#include "base/srgb.h"
 #include "demo/scene_files.h"
 #include "scene/deferred.h"
 

@@ -6,7 +6,7 @@
 #include <string>
 #include <vector>
 
-#include "demo/family_frame.h"
+#include "conform/family_frame.h"
 #include "demo/room_scene.h"
 
 struct WorldPass {

@@ -7,12 +7,13 @@
 #include <cmath>
 #include <cstdio>
 
-#include "cli/select_args.h"
+#include "gl/context.h"
+#include "shaderlib/variants.h"
 #include "demo/room_render.h"
 #include "base/image_diff.h"
 #include "io/exr.h"
 #include "io/png.h"
-#include "color/srgb.h"
+#include "base/srgb.h"
 
 namespace {
 

@@ -6,7 +6,7 @@
 //     bloom_downsample (4x4 box) -> bloom_blur X -> bloom_blur Y on quarter-size
 //     RGBA16F targets, then hdr_tonemap (tone-map scale, bloom combine, sRGB) into RGBA8.
 // The lit pass is a deferred frame of model_lighting (a G-buffer record + uniforms,
-// glue/demo/family_frame.h). Every storage step is mirrored in C: fp16 targets round toward zero,
+// glue/conform/family_frame.h). Every storage step is mirrored in C: fp16 targets round toward zero,
 // RGBA8 targets round to nearest (c_ref/math/hdr_formats.h), so GL and C frames are equal
 // code for code. A double-precision reference of the float path (no storage rounding)
 // measures what each path loses (glue/bench/hdr.cpp).
@@ -15,7 +15,7 @@
 #include <vector>
 
 #include "families/family.h"
-#include "demo/family_frame.h"
+#include "conform/family_frame.h"
 #include "hdr/gl_passes.h"
 
 struct HdrSettings {

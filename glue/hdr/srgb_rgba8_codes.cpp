@@ -6,7 +6,7 @@
 #include <mutex>
 
 #include "math/hdr_formats.h"
-#include "color/srgb.h"
+#include "base/srgb.h"
 
 namespace {
 

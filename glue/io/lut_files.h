@@ -15,7 +15,7 @@
 #include <string>
 #include <vector>
 
-#include "color/lut_texture.h"
+#include "base/lut3d.h"
 
 struct CubeFile {
   std::string title;

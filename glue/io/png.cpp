@@ -16,7 +16,7 @@
 #include <cstdlib>
 #include <cstring>
 
-#include "color/srgb.h"
+#include "base/srgb.h"
 #include "io/atomic_file.h"
 #include "io/io_error.h"
 

@@ -10,7 +10,7 @@
 
 // Transfer function applied to colour channels (alpha is always linear).
 //   Linear  : stored code = value             (no colour chunk written)
-//   SRGB    : IEC 61966-2-1 piecewise curve   (sRGB chunk written; color/srgb.h)
+//   SRGB    : IEC 61966-2-1 piecewise curve   (sRGB chunk written; base/srgb.h)
 //   Gamma22 : stored code = value^(1/2.2)     (gAMA 1/2.2 chunk written)
 enum class Encode { Linear, SRGB, Gamma22 };
 

@@ -12,7 +12,7 @@
 #include "color/correct_rgba8_cpu.h"
 #include "twins/color_correction.h"
 #include "families/family.h"
-#include "demo/family_frame.h"
+#include "conform/family_frame.h"
 #include "math/hdr_formats.h"
 #include "twins/hdr_post_batch.h"
 #include "hdr/paths.h"

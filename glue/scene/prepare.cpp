@@ -19,7 +19,7 @@
 #include "twins/model_lighting.h"
 #include "scene/camera_ortho.h"
 #include "twins/world_lighting.h"
-#include "color/srgb.h"
+#include "base/srgb.h"
 
 namespace {
 

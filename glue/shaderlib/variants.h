@@ -56,3 +56,9 @@ std::vector<Variant> enumerate_variants(const ShaderDecl &s, const std::vector<T
 // Finds a variant by its name() or by its index in enumerate_variants(all tiers).
 bool find_variant(const std::vector<ShaderDecl> &decls, const std::string &shader, const std::string &variant,
                   Variant *out, std::string *err);
+
+// A set of variants and the declarations they point to (owned here, so the set can be moved).
+struct Selection {
+  std::vector<ShaderDecl> decls;
+  std::vector<Variant> variants;
+};

@@ -22,7 +22,7 @@ while IFS= read -r line; do
   [ -n "$comp" ] || continue
   last=${line%|}; last=${last##*|}
   known[$comp]=1
-  allowed[$comp]=" $(printf '%s\n' "$last" | grep -o '`[a-z_]*/[a-z_]*`' | tr -d '`' | tr '\n' ' ')"
+  allowed[$comp]=" $(printf '%s\n' "$last" | grep -o '`[a-z_]*/[a-z_]*`\|`shaders`' | tr -d '`' | tr '\n' ' ')"
 done < "$DOC"
 if [ ${#known[@]} -lt 10 ]; then fail architecture_table "found ${#known[@]} components in $DOC's table"; exit 1; fi
 pass "architecture_table (${#known[@]} components)"
@@ -58,7 +58,9 @@ for f in "${files[@]}"; do
   while IFS=: read -r ln inc; do
     [ -n "$inc" ] || continue
     case $inc in */*) ;; *) continue ;; esac  # same-folder includes
-    if [ -f "glue/$inc" ] && [ "${f%%/*}" = glue ]; then to="glue/${inc%%/*}"
+    rel=$(realpath -m --relative-to=. "$(dirname "$f")/$inc")
+    if [ "${inc#../}" != "$inc" ] && [ "${rel#shaders/}" != "$rel" ] && [ -f "$rel" ]; then to=shaders
+    elif [ -f "glue/$inc" ] && [ "${f%%/*}" = glue ]; then to="glue/${inc%%/*}"
     elif [ -f "c_ref/$inc" ]; then to="c_ref/${inc%%/*}"
     elif [ -f "glue/$inc" ]; then to="glue/${inc%%/*}"
     else fail "$f:$ln" "includes \"$inc\", which is no file of glue/ or c_ref/"; violations=$((violations + 1)); continue; fi

@@ -1,5 +1,5 @@
-// tiershade tests: the small shared helpers of glue/base and glue/color/srgb.h: median()
-// (base/stats.h) and the host sRGB curve (color/srgb.h) against IEC 61966-2-1 values, the
+// tiershade tests: the small shared helpers of glue/base and glue/base/srgb.h: median()
+// (base/stats.h) and the host sRGB curve (base/srgb.h) against IEC 61966-2-1 values, the
 // float and double evaluations and the display encoding of an image.
 #include <cmath>
 #include <cstdio>
@@ -7,7 +7,7 @@
 
 #include "base/image.h"
 #include "base/stats.h"
-#include "color/srgb.h"
+#include "base/srgb.h"
 #include "unit_check.h"
 
 namespace {

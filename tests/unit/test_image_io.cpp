@@ -48,7 +48,7 @@
 #include "io/png.h"
 #include "io/radiance_hdr.h"
 #include "io/atomic_file.h"
-#include "color/srgb.h"
+#include "base/srgb.h"
 
 namespace fs = std::filesystem;
 

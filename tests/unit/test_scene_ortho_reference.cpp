@@ -26,7 +26,7 @@
 #include <vector>
 
 #include "scene/camera_ortho.h"
-#include "demo/family_frame.h"
+#include "conform/family_frame.h"
 #include "scene/cpu_renderer.h"
 #include "scene/deferred.h"
 #include "scene/prepare.h"

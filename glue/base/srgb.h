@@ -1,4 +1,4 @@
-// tiershade color: the sRGB transfer function on the host (IEC 61966-2-1), in float or double.
+// tiershade base: the sRGB transfer function on the host (IEC 61966-2-1), in float or double.
 // The shaders' curve and its bit-exact C twin are c_ref/common/common_output.h (encode) and
 // c_ref/common/common_hdr.h (decode); the 8-bit codes of the integer HDR path are
 // hdr/srgb_rgba8_codes.h, which evaluates srgb_encode<double> below.

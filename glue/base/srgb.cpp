@@ -1,5 +1,5 @@
-// tiershade color: the display encoding of a linear image (color/srgb.h).
-#include "color/srgb.h"
+// tiershade base: the display encoding of a linear image (base/srgb.h).
+#include "base/srgb.h"
 
 ImageF srgb_display(ImageF img) {
   for (size_t p = 0; p < img.rgba.size(); ++p)

@@ -1,5 +1,5 @@
 // tiershade glue: deferred GL frames and the multi-threaded C fallback (see frame.h).
-#include "demo/family_frame.h"
+#include "conform/family_frame.h"
 
 #include <algorithm>
 #include <cstring>

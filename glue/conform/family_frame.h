@@ -1,4 +1,4 @@
-// tiershade glue: whole frames of a shader family: deferred-style GL frames
+// tiershade conform: whole frames of a shader family: deferred-style GL frames
 // (per-pixel G-buffer record + production uniforms) and the C fallback renderer,
 // which shades the same frame with the bit-exact twin on every core.
 #pragma once
