@@ -30,7 +30,7 @@ LIB_OBJ := $(C_OBJ) $(filter-out $(BUILD)/obj/glue/main.o,$(CXX_OBJ))
 UNIT_SRC   := $(sort $(wildcard tests/unit/test_*.c tests/unit/test_*.cpp))
 UNIT_TESTS := $(patsubst tests/unit/%,$(BUILD)/tests/%,$(basename $(UNIT_SRC)))
 
-.PHONY: all deps demo test test-fast bench clean
+.PHONY: all deps demo test test-fast bench clean FORCE
 all: $(BUILD)/tiershade $(UNIT_TESTS)
 
 # Debian packages (see README): installed only when missing, so a second run is quick.
@@ -49,7 +49,14 @@ $(BUILD)/tools/embed_files: tools/embed_files.c
 	@mkdir -p $(dir $@)
 	$(CC) -std=c99 -O1 -Wall -Wextra -Werror -o $@ $<
 
-$(BUILD)/gen/shader_sources.cpp: $(SHADER_FILES) $(CASE_FILES) $(BUILD)/tools/embed_files
+# The list of embedded files, rewritten only when the set changes: a file added (or removed) with an
+# older time stamp than the generated sources still regenerates them.
+$(BUILD)/gen/embedded_files.list: FORCE
+	@mkdir -p $(dir $@)
+	@echo '$(SHADER_FILES) $(CASE_FILES)' | cmp -s - $@ || echo '$(SHADER_FILES) $(CASE_FILES)' > $@
+FORCE:
+
+$(BUILD)/gen/shader_sources.cpp: $(SHADER_FILES) $(CASE_FILES) $(BUILD)/gen/embedded_files.list $(BUILD)/tools/embed_files
 	@mkdir -p $(dir $@)
 	$(BUILD)/tools/embed_files $@ $(foreach f,$(SHADER_FILES),$(notdir $(f))=$(f)) $(foreach f,$(CASE_FILES),$(f)=$(f))
 
