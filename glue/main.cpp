@@ -1,4 +1,4 @@
-// tiershade: command-line front end. `tiershade --help` lists the subcommands.
+// tiershade main: command-line front end. `tiershade --help` lists the subcommands.
 #include <cstdio>
 #include <cstring>
 #include <string>
@@ -37,7 +37,7 @@ int main(int argc, char **argv) {
   } const table[] = {{"variants", cmd_variants}, {"assemble", cmd_assemble}, {"budget", cmd_budget},
                      {"conform", cmd_conform},   {"probe", cmd_probe},       {"fold", cmd_fold},
                      {"demo", cmd_demo},         {"bench", cmd_bench},       {"lut", cmd_lut},
-                     {"render", cmd_render}, {"bake", cmd_bake}};
+                     {"render", cmd_render},     {"bake", cmd_bake}};
   for (const auto &c : table)
     if (cmd == c.name) return c.fn(argc - 2, argv + 2);
   fprintf(stderr, "tiershade: unknown command '%s'\n\n%s", cmd.c_str(), kUsage);

@@ -1,4 +1,4 @@
-/* tiershade build tool: embeds text files into a C++ source as string literals.
+/* tiershade tools: embeds text files into a C++ source as string literals.
  * usage: embed_files OUT.cpp NAME=PATH...   (writes OUT.cpp.tmp then renames) */
 #include <stdio.h>
 #include <stdlib.h>
@@ -37,10 +37,14 @@ int main(int argc, char **argv) {
     fprintf(out, "  {\"%s\", \"", argv[i]);
     int c;
     while ((c = fgetc(in)) != EOF) {
-      if (c == '\n') fputs("\\n\"\n\"", out);
-      else if (c == '"' || c == '\\') fprintf(out, "\\%c", c);
-      else if (c < 32 || c > 126) fprintf(out, "\\%03o", c);
-      else fputc(c, out);
+      if (c == '\n')
+        fputs("\\n\"\n\"", out);
+      else if (c == '"' || c == '\\')
+        fprintf(out, "\\%c", c);
+      else if (c < 32 || c > 126)
+        fprintf(out, "\\%03o", c);
+      else
+        fputc(c, out);
     }
     fclose(in);
     fprintf(out, "\"},\n");

@@ -1,4 +1,4 @@
-/* c_ref/common/common_ambient_cube.h: generic twin of shaders/common_ambient_cube.glsl.
+/* tiershade common: generic twin of shaders/common_ambient_cube.glsl.
  * Fact sheet section 3: n.x^2 C[x sign] + n.y^2 C[y sign] + n.z^2 C[z sign],
  * order +X -X +Y -Y +Z -Z. No include guard (instantiated per precision). */
 

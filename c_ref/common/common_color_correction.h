@@ -1,12 +1,10 @@
-/* c_ref/common/common_color_correction.h: generic twin of shaders/common_color_correction.glsl
+/* tiershade common: generic twin of shaders/common_color_correction.glsl
  * (texel-centre addressing, fact sheet section 9; the lattice cell and the lerps of
  * shader trilinear filtering). Needs FN(cc_tex2d) and FN(cc_tex3d) defined by the
  * includer (the sampler of each precision). No include guard: included once per precision. */
 
 /* uvw = c * (N-1)/N + 0.5/N: mul, then add (GLSL a*b + c is unfused on llvmpipe). */
-static V3 FN(cc_uvw)(V3 c, V4 lut) {
-  return M(v3)(c.x * lut.x + lut.y, c.y * lut.x + lut.y, c.z * lut.x + lut.y);
-}
+static V3 FN(cc_uvw)(V3 c, V4 lut) { return M(v3)(c.x * lut.x + lut.y, c.y * lut.x + lut.y, c.z * lut.x + lut.y); }
 
 static void FN(cc_cell)(V3 c, V4 lut, V3 *i0, V3 *i1, V3 *f) {
   V3 p = M(scale3)(c, lut.z);
@@ -19,9 +17,7 @@ static V3 FN(cc_centre)(V3 i, V4 lut) {
   return M(v3)((i.x + K(0.5)) * lut.w, (i.y + K(0.5)) * lut.w, (i.z + K(0.5)) * lut.w);
 }
 
-static V3 FN(cc_lerp)(V3 a, V3 b, TS_REAL t) {
-  return M(add3)(a, M(scale3)(M(sub3)(b, a), t));
-}
+static V3 FN(cc_lerp)(V3 a, V3 b, TS_REAL t) { return M(add3)(a, M(scale3)(M(sub3)(b, a), t)); }
 
 static V3 FN(cc_atlas_hw)(const ts_tex2d *lut, V2 uv0, V2 uv1, TS_REAL fz) {
   return FN(cc_lerp)(FN(cc_tex2d)(lut, uv0.x, uv0.y), FN(cc_tex2d)(lut, uv1.x, uv1.y), fz);

@@ -1,4 +1,4 @@
-/* c_ref/common/common_envmap.h: generic twin of shaders/common_envmap.glsl (world
+/* tiershade common: generic twin of shaders/common_envmap.glsl (world
  * specular, fact sheet section 6). No include guard on purpose. */
 
 /* 2 (N.E) N - (N.N) E */

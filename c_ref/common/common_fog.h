@@ -1,4 +1,4 @@
-/* c_ref/common/common_fog.h: generic twin of shaders/common_fog.glsl (Source's pixel range
+/* tiershade common: generic twin of shaders/common_fog.glsl (Source's pixel range
  * fog, fact sheet section 7). No include guard on purpose. */
 
 static V3 FN(range_fog)(V3 c, TS_REAL depth, V4 fog_color, V4 fog_params) {

@@ -1,4 +1,4 @@
-/* c_ref/common/common_hdr.h: generic twin of shaders/common_hdr.glsl (luminance with the
+/* tiershade common: generic twin of shaders/common_hdr.glsl (luminance with the
  * weights of fact sheet section 8, the bucket test, the exact sRGB decode of fact
  * sheet section 2, the bloom shaping p^exp * dot(p, tint) of section 8).
  * No include guard (instantiated per precision, see ts_generic.h). */
@@ -11,7 +11,9 @@ static inline TS_REAL FN(srgb_decode)(TS_REAL x) {
   return x <= K(0.04045) ? x / K(12.92) : M(pow)((x + K(0.055)) / K(1.055), K(2.4));
 }
 
-static inline V3 FN(srgb_decode3)(V3 c) { return M(v3)(FN(srgb_decode)(c.x), FN(srgb_decode)(c.y), FN(srgb_decode)(c.z)); }
+static inline V3 FN(srgb_decode3)(V3 c) {
+  return M(v3)(FN(srgb_decode)(c.x), FN(srgb_decode)(c.y), FN(srgb_decode)(c.z));
+}
 
 static inline V3 FN(bloom_shape)(V3 p, V4 shape) {
   const TS_REAL d = M(dot3)(p, M(v3)(shape.x, shape.y, shape.z));

@@ -1,10 +1,8 @@
-/* c_ref/common/common_lightmap.h: generic twin of shaders/common_lightmap.glsl (lightmap
+/* tiershade common: generic twin of shaders/common_lightmap.glsl (lightmap
  * page addressing and the four texel decodes, fact sheet sections 1 and 2).
  * No include guard on purpose. */
 
-static V2 FN(lightmap_uv)(V2 uv, V2 offset, TS_REAL k) {
-  return M(v2)(uv.x + k * offset.x, uv.y + k * offset.y);
-}
+static V2 FN(lightmap_uv)(V2 uv, V2 offset, TS_REAL k) { return M(v2)(uv.x + k * offset.x, uv.y + k * offset.y); }
 
 /* (2 t)^2.2: gamma 2.2 after undoing the overbright-2 pre-division. */
 static V3 FN(lightmap_ldr_to_linear)(V3 t) {

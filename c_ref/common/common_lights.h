@@ -1,4 +1,4 @@
-/* c_ref/common/common_lights.h: generic twin of shaders/common_lights.glsl.
+/* tiershade common: generic twin of shaders/common_lights.glsl.
  * Fact sheet section 4: attenuation 1/(c + l d + q d^2); spot
  * saturate(pow(max(1e-4, (cos - spot.z) spot.w), spot.x)); half-Lambert
  * saturate(0.5 N.L + 0.5)^2. A light is 5 vec4: color, dir, pos, spot, atten.

@@ -1,12 +1,10 @@
-/* c_ref/common/common_math.h: generic twin of shaders/common_math.glsl (see ts_generic.h).
+/* tiershade common: generic twin of shaders/common_math.glsl (see ts_generic.h).
  * Included once per precision; no include guard on purpose. */
 
 /* TS_MIN_LENGTH2 = 1.0e-30: zero-length vectors normalise to 0, not NaN. Not an fp16 number:
  * 0 in fp16, where a zero vector gives NaN (shaders/common_math.glsl); the twins are float32
  * and double only, like the highp shaders they mirror. */
-static inline V3 FN(safe_normalize)(V3 v) {
-  return M(scale3)(v, M(inversesqrt)(M(max)(M(dot3)(v, v), K(1.0e-30))));
-}
+static inline V3 FN(safe_normalize)(V3 v) { return M(scale3)(v, M(inversesqrt)(M(max)(M(dot3)(v, v), K(1.0e-30)))); }
 
 static inline V3 FN(xyz)(ts_vec4f v) { return M(v3)((TS_REAL)v.x, (TS_REAL)v.y, (TS_REAL)v.z); }
 static inline V4 FN(vec4_in)(ts_vec4f v) { return M(v4)((TS_REAL)v.x, (TS_REAL)v.y, (TS_REAL)v.z, (TS_REAL)v.w); }

@@ -1,9 +1,8 @@
-/* c_ref/common/common_output.h: generic twin of shaders/common_output.glsl (FinalOutput,
+/* tiershade common: generic twin of shaders/common_output.glsl (FinalOutput,
  * fact sheet section 7; sRGB curve, section 2). No include guard. */
 
 static inline V3 FN(output_linear)(V3 c) {
-  return M(v3)(M(clamp)(c.x, K(0.0), K(65504.0)), M(clamp)(c.y, K(0.0), K(65504.0)),
-               M(clamp)(c.z, K(0.0), K(65504.0)));
+  return M(v3)(M(clamp)(c.x, K(0.0), K(65504.0)), M(clamp)(c.y, K(0.0), K(65504.0)), M(clamp)(c.z, K(0.0), K(65504.0)));
 }
 
 static inline V3 FN(output_gamma22)(V3 c) {

@@ -1,4 +1,4 @@
-/* c_ref/common/common_phong.h: generic twin of shaders/common_phong.glsl (fact sheet section 5:
+/* tiershade common: generic twin of shaders/common_phong.glsl (fact sheet section 5:
  * Fresnel ranges, Fresnel4, mix()). No include guard (instantiated per precision). */
 
 static inline TS_REAL FN(fresnel_ranges)(TS_REAL NdotV, V3 ranges) {

@@ -1,4 +1,4 @@
-/* c_ref/exposure/auto_exposure.c: the auto-exposure luminance histogram (see auto_exposure.h;
+/* tiershade exposure: the auto-exposure luminance histogram (see auto_exposure.h;
  * fact sheet section 8, "Histogram and bucket layout"). */
 #include "exposure/auto_exposure.h"
 
@@ -33,8 +33,7 @@ ae_window ae_center_window(int w, int h, double fx, double fy) {
   return win;
 }
 
-uint32_t ae_exact_count(const float *rgba, int w, int h, ae_window win, int input_encoding, float tscale,
-                        int bucket) {
+uint32_t ae_exact_count(const float *rgba, int w, int h, ae_window win, int input_encoding, float tscale, int bucket) {
   const lc_variant v = {input_encoding};
   float lo, hi;
   ae_bucket_bounds(bucket, &lo, &hi);

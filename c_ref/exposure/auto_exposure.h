@@ -1,4 +1,4 @@
-/* c_ref/exposure/auto_exposure.h: the luminance histogram of Source's auto exposure
+/* tiershade exposure: the luminance histogram of Source's auto exposure
  * (talk: "Auto Exposure": a running luminance histogram of the tone-mapped frame,
  * one bucket updated per frame, more buckets at low luminance; fact sheet section 8):
  *   - the 17-bucket layout: bucket i < 16 covers [(i/16)^1.5, ((i+1)/16)^1.5], the top
@@ -34,15 +34,14 @@ ae_window ae_center_window(int w, int h, double fx, double fy);
 /* Pixels of the window that luminance_compare (INPUT_ENCODING = input_encoding, tone-map
  * scale tscale) marks for `bucket`. rgba: 4 floats per pixel, rows bottom-up, w per row:
  * the texel values the shader reads. */
-uint32_t ae_exact_count(const float *rgba, int w, int h, ae_window win, int input_encoding, float tscale,
-                        int bucket);
+uint32_t ae_exact_count(const float *rgba, int w, int h, ae_window win, int input_encoding, float tscale, int bucket);
 
 /* The running histogram: the last known count of each bucket and the frame it counted. */
 typedef struct {
   uint32_t count[AE_BUCKETS];
   int64_t measured_frame[AE_BUCKETS]; /* -1: never measured */
-  int pending[AE_BUCKETS];            /* a measurement is in flight */
-  int64_t pending_frame[AE_BUCKETS];  /* the frame it measures */
+  int pending[AE_BUCKETS]; /* a measurement is in flight */
+  int64_t pending_frame[AE_BUCKETS]; /* the frame it measures */
 } ae_histogram;
 
 void ae_histogram_init(ae_histogram *h);

@@ -1,4 +1,4 @@
-/* c_ref/exposure/exposure_control.c: the auto-exposure controller (see exposure_control.h;
+/* tiershade exposure: the auto-exposure controller (see exposure_control.h;
  * fact sheet section 8, "Target exposure, new algorithm" and "Clamp and time-averaging"). */
 #include "exposure/exposure_control.h"
 

@@ -1,4 +1,4 @@
-/* c_ref/exposure/exposure_control.h: Source's auto-exposure controller, reading the running
+/* tiershade exposure: source's auto-exposure controller, reading the running
  * luminance histogram of c_ref/exposure/auto_exposure.h (fact sheet section 8):
  *   - target (new algorithm): the luminance L_p below which the brightest 2 % of the
  *     pixels lie, interpolated inside its bucket; scale = 0.60 / L_p, "sticky" (no
@@ -25,14 +25,14 @@ extern "C" {
 enum { AE_HISTORY = 10 };
 
 typedef struct {
-  double percent_bright;  /* mat_tonemap_percent_bright_pixels, 2.0 (%) */
-  double percent_target;  /* mat_tonemap_percent_target, 60 (%) */
-  double min_avg_lum;     /* mat_tonemap_min_avglum, 3.0 (%) */
-  double min_exposure;    /* mat_autoexposure_min, 0.5 */
-  double max_exposure;    /* mat_autoexposure_max, 2.0 */
-  double adapt_rate;      /* mat_hdr_manual_tonemap_rate, 1.0 per second */
+  double percent_bright; /* mat_tonemap_percent_bright_pixels, 2.0 (%) */
+  double percent_target; /* mat_tonemap_percent_target, 60 (%) */
+  double min_avg_lum; /* mat_tonemap_min_avglum, 3.0 (%) */
+  double min_exposure; /* mat_autoexposure_min, 0.5 */
+  double max_exposure; /* mat_autoexposure_max, 2.0 */
+  double adapt_rate; /* mat_hdr_manual_tonemap_rate, 1.0 per second */
   double accelerate_down; /* mat_accelerate_adjust_exposure_down, 3.0 */
-  double bloom_scale;     /* mat_bloomscale, 1.0 */
+  double bloom_scale; /* mat_bloomscale, 1.0 */
 } ae_settings;
 
 void ae_default_settings(ae_settings *s);
@@ -57,8 +57,8 @@ double ae_location_of_bright_fraction(const ae_histogram *h, double fraction, do
 double ae_target_scale(const ae_histogram *h, const ae_settings *s, double current_scale);
 
 typedef struct {
-  double scale;  /* the tone-map scale in use */
-  double goal;   /* the averaged, clamped goal */
+  double scale; /* the tone-map scale in use */
+  double goal; /* the averaged, clamped goal */
   double history[AE_HISTORY];
   int history_len;
   double bloom_amount;

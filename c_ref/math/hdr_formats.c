@@ -1,4 +1,4 @@
-/* c_ref/math/hdr_formats.c: storage conversions of HDR targets and textures, mirroring
+/* tiershade math: storage conversions of HDR targets and textures, mirroring
  * llvmpipe (see hdr_formats.h; measurements in docs/hdr.md). Bit manipulation only,
  * so the results do not depend on the host's F16C or rounding-mode state. */
 #include "math/hdr_formats.h"
@@ -13,7 +13,7 @@ uint16_t ts_half_from_float_rz(float x) {
   const uint16_t sign = (uint16_t)((b >> 16) & 0x8000u);
   const uint32_t a = b & 0x7fffffffu;
   if (a > 0x7f800000u) return (uint16_t)(sign | 0x7e00u | ((a >> 13) & 0x3ffu)); /* NaN, quieted */
-  if (a == 0x7f800000u) return (uint16_t)(sign | 0x7c00u);                         /* Inf */
+  if (a == 0x7f800000u) return (uint16_t)(sign | 0x7c00u); /* Inf */
   const int e = (int)(a >> 23) - 127;
   if (e >= 16) return (uint16_t)(sign | 0x7bffu); /* toward zero: every finite overflow is 65504 */
   if (e >= -14) return (uint16_t)(sign | (uint16_t)((e + 15) << 10) | (uint16_t)((a >> 13) & 0x3ffu));

@@ -1,4 +1,4 @@
-/* c_ref/math/hdr_formats.h: the storage conversions of the HDR render targets and
+/* tiershade math: the storage conversions of the HDR render targets and
  * textures, as Mesa 22.3.6 llvmpipe performs them (measured exhaustively, docs/hdr.md):
  *   - a float written to an RGBA16F target is rounded TOWARD ZERO to half
  *     (finite values >= 65504 give 65504, half denormals are kept, NaN stays NaN);
@@ -16,10 +16,10 @@ extern "C" {
 #endif
 
 uint16_t ts_half_from_float_rz(float x); /* RGBA16F render-target write */
-float ts_half_to_float(uint16_t h);      /* exact */
-float ts_quantize_half(float x);         /* ts_half_to_float(ts_half_from_float_rz(x)) */
-uint8_t ts_unorm8_from_float(float x);   /* RGBA8 render-target write */
-float ts_unorm8_to_float(uint8_t c);     /* RGBA8 texel fetch */
+float ts_half_to_float(uint16_t h); /* exact */
+float ts_quantize_half(float x); /* ts_half_to_float(ts_half_from_float_rz(x)) */
+uint8_t ts_unorm8_from_float(float x); /* RGBA8 render-target write */
+float ts_unorm8_to_float(uint8_t c); /* RGBA8 texel fetch */
 
 #ifdef __cplusplus
 }

@@ -1,5 +1,4 @@
-/* tiershade -- c_ref/math/ts_batch.c
- * The instruction-set choice of the batch twins (see ts_batch.h). */
+/* tiershade math: the instruction-set choice of the batch twins (see ts_batch.h). */
 #include "math/ts_batch.h"
 
 #include "math/ts_math.h"

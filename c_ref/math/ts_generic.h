@@ -1,4 +1,4 @@
-/* c_ref/math/ts_generic.h: write a shader twin once, instantiate it twice.
+/* tiershade math: write a shader twin once, instantiate it twice.
  * A generic twin (files named like their GLSL: common_lights.h <-> common_lights.glsl)
  * is included once with TS_SUFFIX f / TS_REAL float (the llvmpipe-exact float32
  * reference) and once with TS_SUFFIX d / TS_REAL double (the accuracy reference).

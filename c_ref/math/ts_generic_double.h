@@ -1,4 +1,4 @@
-/* c_ref/math/ts_generic_double.h: select the double (accuracy reference) instantiation. */
+/* tiershade math: select the double (accuracy reference) instantiation. */
 #undef TS_SUFFIX
 #undef TS_REAL
 #undef TS_LIT

@@ -1,4 +1,4 @@
-/* c_ref/math/ts_generic_float.h: select the float32 (llvmpipe-exact) instantiation. */
+/* tiershade math: select the float32 (llvmpipe-exact) instantiation. */
 #undef TS_SUFFIX
 #undef TS_REAL
 #undef TS_LIT

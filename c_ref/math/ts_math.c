@@ -1,5 +1,4 @@
-/* tiershade -- c_ref/math/ts_math.c
- * GLSL-like math layer: float32 llvmpipe-exact ("f") and double libm reference ("d").
+/* tiershade math: GLSL-like math layer: float32 llvmpipe-exact ("f") and double libm reference ("d").
  * The f family mirrors Mesa 22.3.6 llvmpipe: algorithms read in gallivm
  * lp_bld_arit.c (exp2, log2_safe, pow, polynomial, min/max, fract, rsqrt), NIR
  * lowering of GLSL builtins (nir_lower_alu_to_scalar for dot), and every result
@@ -24,36 +23,34 @@
 
 static int ts_fused; /* 0 until ts_math_init()/ts_math_set_fused() */
 
-void ts_math_set_ftz(void)
-{
+void ts_math_set_ftz(void) {
 #ifdef TS_HAVE_SSE
-    _mm_setcsr(_mm_getcsr() | 0x8040u); /* FTZ (bit 15) | DAZ (bit 6) */
+  _mm_setcsr(_mm_getcsr() | 0x8040u); /* FTZ (bit 15) | DAZ (bit 6) */
 #endif
 }
 
 /* llvmpipe fuses gallivm mads iff util_cpu_caps.has_fma; GALLIUM_OVERRIDE_CPU_CAPS
  * set to a pre-AVX level clears it (llvmpipe_bitexact.md: sse4.1 -> unfused,
  * avx -> still fused). */
-static int ts_detect_fma(void)
-{
-    int fma = 0;
+static int ts_detect_fma(void) {
+  int fma = 0;
 #if defined(__GNUC__) && (defined(__x86_64__) || defined(__i386__))
-    __builtin_cpu_init();
-    fma = __builtin_cpu_supports("fma") ? 1 : 0;
+  __builtin_cpu_init();
+  fma = __builtin_cpu_supports("fma") ? 1 : 0;
 #endif
-    {
-        const char *o = getenv("GALLIUM_OVERRIDE_CPU_CAPS");
-        if (o && (!strcmp(o, "nosse") || !strcmp(o, "sse") || !strcmp(o, "sse2") ||
-                  !strcmp(o, "sse3") || !strcmp(o, "ssse3") || !strcmp(o, "sse4.1")))
-            fma = 0;
-    }
-    return fma;
+  {
+    const char *o = getenv("GALLIUM_OVERRIDE_CPU_CAPS");
+    if (o &&
+        (!strcmp(o, "nosse") || !strcmp(o, "sse") || !strcmp(o, "sse2") || !strcmp(o, "sse3") || !strcmp(o, "ssse3") ||
+         !strcmp(o, "sse4.1")))
+      fma = 0;
+  }
+  return fma;
 }
 
-void ts_math_init(void)
-{
-    ts_math_set_ftz();
-    ts_fused = ts_detect_fma();
+void ts_math_init(void) {
+  ts_math_set_ftz();
+  ts_fused = ts_detect_fma();
 }
 
 void ts_math_set_fused(int on) { ts_fused = on ? 1 : 0; }
@@ -63,86 +60,87 @@ int ts_math_fused(void) { return ts_fused; }
 /* float32 bit helpers and raw gallivm/x86 primitives                        */
 /* ------------------------------------------------------------------------ */
 
-static uint32_t fbits(float f) { uint32_t u; memcpy(&u, &f, 4); return u; }
-static float bitsf(uint32_t u) { float f; memcpy(&f, &u, 4); return f; }
+static uint32_t fbits(float f) {
+  uint32_t u;
+  memcpy(&u, &f, 4);
+  return u;
+}
+static float bitsf(uint32_t u) {
+  float f;
+  memcpy(&f, &u, 4);
+  return f;
+}
 static int is_nanf(float x) { return x != x; }
 
 /* DAZ: a denormal operand is read as a zero of the same sign. Applied
  * explicitly where C code does not run through an SSE arithmetic op. */
-static float daz(float x)
-{
-    uint32_t u = fbits(x);
-    return (u & 0x7f800000u) == 0 ? bitsf(u & 0x80000000u) : x;
+static float daz(float x) {
+  uint32_t u = fbits(x);
+  return (u & 0x7f800000u) == 0 ? bitsf(u & 0x80000000u) : x;
 }
 
-float ts_madf(float a, float b, float c)
-{
-    return ts_fused ? fmaf(a, b, c) : a * b + c;
+float ts_madf(float a, float b, float c) { return ts_fused ? fmaf(a, b, c) : a * b + c; }
+
+float ts_lp_minf(float a, float b) {
+  a = daz(a);
+  b = daz(b);
+  return a < b ? a : b;
 }
 
-float ts_lp_minf(float a, float b)
-{
-    a = daz(a); b = daz(b);
-    return a < b ? a : b;
+float ts_lp_maxf(float a, float b) {
+  a = daz(a);
+  b = daz(b);
+  return a > b ? a : b;
 }
 
-float ts_lp_maxf(float a, float b)
-{
-    a = daz(a); b = daz(b);
-    return a > b ? a : b;
-}
-
-int ts_lp_itruncf(float x)
-{
-    if (!(x > -2147483904.0f && x < 2147483648.0f)) /* NaN or out of range */
-        return INT32_MIN;
-    return (int)x;
+int ts_lp_itruncf(float x) {
+  if (!(x > -2147483904.0f && x < 2147483648.0f)) /* NaN or out of range */
+    return INT32_MIN;
+  return (int)x;
 }
 
 /* SSE4.1 roundps(floor), as used by gallivm lp_build_floor: DAZ, NaN quieted. */
-static float lp_floor(float x)
-{
-    float t;
-    x = daz(x);
-    if (is_nanf(x)) return bitsf(fbits(x) | 0x00400000u);
-    if (!(fabsf(x) < 8388608.0f)) return x; /* inf, or already an integer */
-    t = (float)(int)x;                       /* exact: |x| < 2^23 */
-    if (t > x) t -= 1.0f;
-    return t == 0.0f ? copysignf(0.0f, x) : t;
+static float lp_floor(float x) {
+  float t;
+  x = daz(x);
+  if (is_nanf(x)) return bitsf(fbits(x) | 0x00400000u);
+  if (!(fabsf(x) < 8388608.0f)) return x; /* inf, or already an integer */
+  t = (float)(int)x; /* exact: |x| < 2^23 */
+  if (t > x) t -= 1.0f;
+  return t == 0.0f ? copysignf(0.0f, x) : t;
 }
 
 /* gallivm lp_build_polynomial: even/odd split, Horner in x^2, mads. */
-static float lp_poly(float x, const float *c, int n)
-{
-    float x2 = x * x, even = 0.0f, odd = 0.0f;
-    int i, have_even = 0, have_odd = 0;
-    for (i = n - 1; i >= 0; i--) {
-        if (i % 2 == 0) {
-            even = have_even ? ts_madf(x2, even, c[i]) : c[i];
-            have_even = 1;
-        } else {
-            odd = have_odd ? ts_madf(x2, odd, c[i]) : c[i];
-            have_odd = 1;
-        }
+static float lp_poly(float x, const float *c, int n) {
+  float x2 = x * x, even = 0.0f, odd = 0.0f;
+  int i, have_even = 0, have_odd = 0;
+  for (i = n - 1; i >= 0; i--) {
+    if (i % 2 == 0) {
+      even = have_even ? ts_madf(x2, even, c[i]) : c[i];
+      have_even = 1;
+    } else {
+      odd = have_odd ? ts_madf(x2, odd, c[i]) : c[i];
+      have_odd = 1;
     }
-    return have_odd ? ts_madf(odd, x, even) : even;
+  }
+  return have_odd ? ts_madf(odd, x, even) : even;
 }
 
 /* Coefficients (double in gallivm, rounded to float): llvmpipe_bitexact.md tables. */
 static const float exp2_c[6] = {
-    0x1p+0f,          /* 0x3f800000 */
-    0x1.62e4f6p-1f,   /* 0x3f31727b */
-    0x1.ebd5a8p-3f,   /* 0x3e75ead4 */
-    0x1.c95446p-5f,   /* 0x3d64aa23 */
-    0x1.26900cp-7f,   /* 0x3c134806 */
-    0x1.ec320ap-10f,  /* 0x3af61905 */
+    0x1p+0f, /* 0x3f800000 */
+    0x1.62e4f6p-1f, /* 0x3f31727b */
+    0x1.ebd5a8p-3f, /* 0x3e75ead4 */
+    0x1.c95446p-5f, /* 0x3d64aa23 */
+    0x1.26900cp-7f, /* 0x3c134806 */
+    0x1.ec320ap-10f, /* 0x3af61905 */
 };
 static const float log2_c[5] = {
-    0x1.715476p+1f,   /* 0x4038aa3b */
-    0x1.ec6ff2p-1f,   /* 0x3f7637f9 */
-    0x1.27a642p-1f,   /* 0x3f13d321 */
-    0x1.9d062cp-2f,   /* 0x3ece8316 */
-    0x1.a07ab2p-2f,   /* 0x3ed03d59 */
+    0x1.715476p+1f, /* 0x4038aa3b */
+    0x1.ec6ff2p-1f, /* 0x3f7637f9 */
+    0x1.27a642p-1f, /* 0x3f13d321 */
+    0x1.9d062cp-2f, /* 0x3ece8316 */
+    0x1.a07ab2p-2f, /* 0x3ed03d59 */
 };
 
 /* ------------------------------------------------------------------------ */
@@ -152,42 +150,39 @@ static const float log2_c[5] = {
 /* gallivm lp_build_exp2: x = minps(128,x); x = maxps(-126.99999,x) (a NaN x is
  * the second operand, so it passes); ipart = floor, fpart = x - ipart;
  * 2^ipart built in the exponent field; result = 2^ipart * P(fpart). */
-float ts_exp2f(float x)
-{
-    float fl, fr, scale;
-    int i;
-    x = ts_lp_minf(128.0f, x);
-    x = ts_lp_maxf(-126.99999f, x);
-    fl = lp_floor(x);
-    fr = x - fl;
-    i = ts_lp_itruncf(fl);
-    scale = bitsf(((uint32_t)i + 127u) << 23);
-    return scale * lp_poly(fr, exp2_c, 6);
+float ts_exp2f(float x) {
+  float fl, fr, scale;
+  int i;
+  x = ts_lp_minf(128.0f, x);
+  x = ts_lp_maxf(-126.99999f, x);
+  fl = lp_floor(x);
+  fr = x - fl;
+  i = ts_lp_itruncf(fl);
+  scale = bitsf(((uint32_t)i + 127u) << 23);
+  return scale * lp_poly(fr, exp2_c, 6);
 }
 
 /* gallivm lp_build_log2_approx(handle_edge_cases=1) ("log2_safe"). The edge
  * masks use lp_build_cmp, whose float predicates are UNORDERED, so a NaN input
  * sets all three; the selects run inf, zero, negative (last wins). */
-float ts_log2f(float x)
-{
-    uint32_t b = fbits(x);
-    float e = (float)((int)((b & 0x7f800000u) >> 23) - 127);
-    float m = bitsf((b & 0x007fffffu) | 0x3f800000u);
-    float y = (m - 1.0f) / (m + 1.0f);
-    float r = ts_madf(y, lp_poly(y * y, log2_c, 5), e);
-    float xd = daz(x);
-    if (!(xd < INFINITY)) r = INFINITY; /* UGE +inf  */
-    if (!(xd != 0.0f)) r = -INFINITY;   /* UEQ 0     */
-    if (!(xd >= 0.0f)) r = NAN;         /* ULT 0     */
-    return r;
+float ts_log2f(float x) {
+  uint32_t b = fbits(x);
+  float e = (float)((int)((b & 0x7f800000u) >> 23) - 127);
+  float m = bitsf((b & 0x007fffffu) | 0x3f800000u);
+  float y = (m - 1.0f) / (m + 1.0f);
+  float r = ts_madf(y, lp_poly(y * y, log2_c, 5), e);
+  float xd = daz(x);
+  if (!(xd < INFINITY)) r = INFINITY; /* UGE +inf  */
+  if (!(xd != 0.0f)) r = -INFINITY; /* UEQ 0     */
+  if (!(xd >= 0.0f)) r = NAN; /* ULT 0     */
+  return r;
 }
 
 /* gallivm lp_build_pow: select(x UEQ 0, 0, exp2(log2_safe(x) * y)). */
-float ts_powf(float x, float y)
-{
-    float r = ts_exp2f(ts_log2f(x) * y);
-    float xd = daz(x);
-    return (xd == 0.0f || is_nanf(xd)) ? 0.0f : r;
+float ts_powf(float x, float y) {
+  float r = ts_exp2f(ts_log2f(x) * y);
+  float xd = daz(x);
+  return (xd == 0.0f || is_nanf(xd)) ? 0.0f : r;
 }
 
 /* GLSL exp/log -> NIR fexp2(x*log2(e)) / flog2(x)*ln(2) (llvmpipe_bitexact.md). */
@@ -214,12 +209,11 @@ float ts_absf(float x) { return bitsf(fbits(x) & 0x7fffffffu); }
 /* step(edge,x) = x >= edge ? 1 : 0 (ordered compare: NaN -> 0; measured). */
 float ts_stepf(float edge, float x) { return x >= edge ? 1.0f : 0.0f; }
 /* sign: +1/-1 by comparison; +0 for +-0, denormals and NaN (measured). */
-float ts_signf(float x)
-{
-    float xd = daz(x);
-    if (xd > 0.0f) return 1.0f;
-    if (xd < 0.0f) return -1.0f;
-    return 0.0f;
+float ts_signf(float x) {
+  float xd = daz(x);
+  if (xd > 0.0f) return 1.0f;
+  if (xd < 0.0f) return -1.0f;
+  return 0.0f;
 }
 
 /* ------------------------------------------------------------------------ */
@@ -247,11 +241,26 @@ double ts_signd(double x) { return x > 0.0 ? 1.0 : (x < 0.0 ? -1.0 : 0.0); }
 /* vectors, float32                                                          */
 /* ------------------------------------------------------------------------ */
 
-ts_vec2f ts_v2f(float x, float y) { ts_vec2f v; v.x = x; v.y = y; return v; }
-ts_vec3f ts_v3f(float x, float y, float z) { ts_vec3f v; v.x = x; v.y = y; v.z = z; return v; }
-ts_vec4f ts_v4f(float x, float y, float z, float w)
-{
-    ts_vec4f v; v.x = x; v.y = y; v.z = z; v.w = w; return v;
+ts_vec2f ts_v2f(float x, float y) {
+  ts_vec2f v;
+  v.x = x;
+  v.y = y;
+  return v;
+}
+ts_vec3f ts_v3f(float x, float y, float z) {
+  ts_vec3f v;
+  v.x = x;
+  v.y = y;
+  v.z = z;
+  return v;
+}
+ts_vec4f ts_v4f(float x, float y, float z, float w) {
+  ts_vec4f v;
+  v.x = x;
+  v.y = y;
+  v.z = z;
+  v.w = w;
+  return v;
 }
 
 /* GLSL dot: NIR scalarises fdotN as a reduction from the LAST component,
@@ -259,10 +268,7 @@ ts_vec4f ts_v4f(float x, float y, float z, float w)
  * left-to-right order mismatches in ~7% of random cases). */
 float ts_dot2f(ts_vec2f a, ts_vec2f b) { return a.x * b.x + a.y * b.y; }
 float ts_dot3f(ts_vec3f a, ts_vec3f b) { return a.x * b.x + (a.y * b.y + a.z * b.z); }
-float ts_dot4f(ts_vec4f a, ts_vec4f b)
-{
-    return a.x * b.x + (a.y * b.y + (a.z * b.z + a.w * b.w));
-}
+float ts_dot4f(ts_vec4f a, ts_vec4f b) { return a.x * b.x + (a.y * b.y + (a.z * b.z + a.w * b.w)); }
 
 ts_vec3f ts_add3f(ts_vec3f a, ts_vec3f b) { return ts_v3f(a.x + b.x, a.y + b.y, a.z + b.z); }
 ts_vec3f ts_sub3f(ts_vec3f a, ts_vec3f b) { return ts_v3f(a.x - b.x, a.y - b.y, a.z - b.z); }
@@ -271,51 +277,44 @@ ts_vec3f ts_scale3f(ts_vec3f v, float s) { return ts_v3f(v.x * s, v.y * s, v.z *
 /* GLSL length(v) = sqrt(dot(v,v)); normalize(v) = v * inversesqrt(dot(v,v)). */
 float ts_length3f(ts_vec3f v) { return sqrtf(ts_dot3f(v, v)); }
 ts_vec3f ts_normalize3f(ts_vec3f v) { return ts_scale3f(v, ts_inversesqrtf(ts_dot3f(v, v))); }
-ts_vec3f ts_max3f(ts_vec3f a, ts_vec3f b)
-{
-    return ts_v3f(ts_maxf(a.x, b.x), ts_maxf(a.y, b.y), ts_maxf(a.z, b.z));
-}
-ts_vec3f ts_min3f(ts_vec3f a, ts_vec3f b)
-{
-    return ts_v3f(ts_minf(a.x, b.x), ts_minf(a.y, b.y), ts_minf(a.z, b.z));
-}
-ts_vec3f ts_saturate3f(ts_vec3f v)
-{
-    return ts_v3f(ts_saturatef(v.x), ts_saturatef(v.y), ts_saturatef(v.z));
-}
-ts_vec3f ts_pow3f(ts_vec3f a, ts_vec3f b)
-{
-    return ts_v3f(ts_powf(a.x, b.x), ts_powf(a.y, b.y), ts_powf(a.z, b.z));
-}
+ts_vec3f ts_max3f(ts_vec3f a, ts_vec3f b) { return ts_v3f(ts_maxf(a.x, b.x), ts_maxf(a.y, b.y), ts_maxf(a.z, b.z)); }
+ts_vec3f ts_min3f(ts_vec3f a, ts_vec3f b) { return ts_v3f(ts_minf(a.x, b.x), ts_minf(a.y, b.y), ts_minf(a.z, b.z)); }
+ts_vec3f ts_saturate3f(ts_vec3f v) { return ts_v3f(ts_saturatef(v.x), ts_saturatef(v.y), ts_saturatef(v.z)); }
+ts_vec3f ts_pow3f(ts_vec3f a, ts_vec3f b) { return ts_v3f(ts_powf(a.x, b.x), ts_powf(a.y, b.y), ts_powf(a.z, b.z)); }
 ts_vec3f ts_neg3f(ts_vec3f v) { return ts_v3f(-v.x, -v.y, -v.z); }
 
-ts_vec4f ts_add4f(ts_vec4f a, ts_vec4f b)
-{
-    return ts_v4f(a.x + b.x, a.y + b.y, a.z + b.z, a.w + b.w);
-}
-ts_vec4f ts_sub4f(ts_vec4f a, ts_vec4f b)
-{
-    return ts_v4f(a.x - b.x, a.y - b.y, a.z - b.z, a.w - b.w);
-}
-ts_vec4f ts_mul4f(ts_vec4f a, ts_vec4f b)
-{
-    return ts_v4f(a.x * b.x, a.y * b.y, a.z * b.z, a.w * b.w);
-}
+ts_vec4f ts_add4f(ts_vec4f a, ts_vec4f b) { return ts_v4f(a.x + b.x, a.y + b.y, a.z + b.z, a.w + b.w); }
+ts_vec4f ts_sub4f(ts_vec4f a, ts_vec4f b) { return ts_v4f(a.x - b.x, a.y - b.y, a.z - b.z, a.w - b.w); }
+ts_vec4f ts_mul4f(ts_vec4f a, ts_vec4f b) { return ts_v4f(a.x * b.x, a.y * b.y, a.z * b.z, a.w * b.w); }
 ts_vec4f ts_scale4f(ts_vec4f v, float s) { return ts_v4f(v.x * s, v.y * s, v.z * s, v.w * s); }
-ts_vec4f ts_saturate4f(ts_vec4f v)
-{
-    return ts_v4f(ts_saturatef(v.x), ts_saturatef(v.y), ts_saturatef(v.z), ts_saturatef(v.w));
+ts_vec4f ts_saturate4f(ts_vec4f v) {
+  return ts_v4f(ts_saturatef(v.x), ts_saturatef(v.y), ts_saturatef(v.z), ts_saturatef(v.w));
 }
 
 /* ------------------------------------------------------------------------ */
 /* vectors, double                                                           */
 /* ------------------------------------------------------------------------ */
 
-ts_vec2d ts_v2d(double x, double y) { ts_vec2d v; v.x = x; v.y = y; return v; }
-ts_vec3d ts_v3d(double x, double y, double z) { ts_vec3d v; v.x = x; v.y = y; v.z = z; return v; }
-ts_vec4d ts_v4d(double x, double y, double z, double w)
-{
-    ts_vec4d v; v.x = x; v.y = y; v.z = z; v.w = w; return v;
+ts_vec2d ts_v2d(double x, double y) {
+  ts_vec2d v;
+  v.x = x;
+  v.y = y;
+  return v;
+}
+ts_vec3d ts_v3d(double x, double y, double z) {
+  ts_vec3d v;
+  v.x = x;
+  v.y = y;
+  v.z = z;
+  return v;
+}
+ts_vec4d ts_v4d(double x, double y, double z, double w) {
+  ts_vec4d v;
+  v.x = x;
+  v.y = y;
+  v.z = z;
+  v.w = w;
+  return v;
 }
 double ts_dot2d(ts_vec2d a, ts_vec2d b) { return a.x * b.x + a.y * b.y; }
 double ts_dot3d(ts_vec3d a, ts_vec3d b) { return a.x * b.x + a.y * b.y + a.z * b.z; }
@@ -325,42 +324,19 @@ ts_vec3d ts_sub3d(ts_vec3d a, ts_vec3d b) { return ts_v3d(a.x - b.x, a.y - b.y, 
 ts_vec3d ts_mul3d(ts_vec3d a, ts_vec3d b) { return ts_v3d(a.x * b.x, a.y * b.y, a.z * b.z); }
 ts_vec3d ts_scale3d(ts_vec3d v, double s) { return ts_v3d(v.x * s, v.y * s, v.z * s); }
 double ts_length3d(ts_vec3d v) { return sqrt(ts_dot3d(v, v)); }
-ts_vec3d ts_normalize3d(ts_vec3d v)
-{
-    double l = sqrt(ts_dot3d(v, v));
-    return ts_v3d(v.x / l, v.y / l, v.z / l);
+ts_vec3d ts_normalize3d(ts_vec3d v) {
+  double l = sqrt(ts_dot3d(v, v));
+  return ts_v3d(v.x / l, v.y / l, v.z / l);
 }
-ts_vec3d ts_max3d(ts_vec3d a, ts_vec3d b)
-{
-    return ts_v3d(ts_maxd(a.x, b.x), ts_maxd(a.y, b.y), ts_maxd(a.z, b.z));
-}
-ts_vec3d ts_min3d(ts_vec3d a, ts_vec3d b)
-{
-    return ts_v3d(ts_mind(a.x, b.x), ts_mind(a.y, b.y), ts_mind(a.z, b.z));
-}
-ts_vec3d ts_saturate3d(ts_vec3d v)
-{
-    return ts_v3d(ts_saturated(v.x), ts_saturated(v.y), ts_saturated(v.z));
-}
-ts_vec3d ts_pow3d(ts_vec3d a, ts_vec3d b)
-{
-    return ts_v3d(pow(a.x, b.x), pow(a.y, b.y), pow(a.z, b.z));
-}
+ts_vec3d ts_max3d(ts_vec3d a, ts_vec3d b) { return ts_v3d(ts_maxd(a.x, b.x), ts_maxd(a.y, b.y), ts_maxd(a.z, b.z)); }
+ts_vec3d ts_min3d(ts_vec3d a, ts_vec3d b) { return ts_v3d(ts_mind(a.x, b.x), ts_mind(a.y, b.y), ts_mind(a.z, b.z)); }
+ts_vec3d ts_saturate3d(ts_vec3d v) { return ts_v3d(ts_saturated(v.x), ts_saturated(v.y), ts_saturated(v.z)); }
+ts_vec3d ts_pow3d(ts_vec3d a, ts_vec3d b) { return ts_v3d(pow(a.x, b.x), pow(a.y, b.y), pow(a.z, b.z)); }
 ts_vec3d ts_neg3d(ts_vec3d v) { return ts_v3d(-v.x, -v.y, -v.z); }
-ts_vec4d ts_add4d(ts_vec4d a, ts_vec4d b)
-{
-    return ts_v4d(a.x + b.x, a.y + b.y, a.z + b.z, a.w + b.w);
-}
-ts_vec4d ts_sub4d(ts_vec4d a, ts_vec4d b)
-{
-    return ts_v4d(a.x - b.x, a.y - b.y, a.z - b.z, a.w - b.w);
-}
-ts_vec4d ts_mul4d(ts_vec4d a, ts_vec4d b)
-{
-    return ts_v4d(a.x * b.x, a.y * b.y, a.z * b.z, a.w * b.w);
-}
+ts_vec4d ts_add4d(ts_vec4d a, ts_vec4d b) { return ts_v4d(a.x + b.x, a.y + b.y, a.z + b.z, a.w + b.w); }
+ts_vec4d ts_sub4d(ts_vec4d a, ts_vec4d b) { return ts_v4d(a.x - b.x, a.y - b.y, a.z - b.z, a.w - b.w); }
+ts_vec4d ts_mul4d(ts_vec4d a, ts_vec4d b) { return ts_v4d(a.x * b.x, a.y * b.y, a.z * b.z, a.w * b.w); }
 ts_vec4d ts_scale4d(ts_vec4d v, double s) { return ts_v4d(v.x * s, v.y * s, v.z * s, v.w * s); }
-ts_vec4d ts_saturate4d(ts_vec4d v)
-{
-    return ts_v4d(ts_saturated(v.x), ts_saturated(v.y), ts_saturated(v.z), ts_saturated(v.w));
+ts_vec4d ts_saturate4d(ts_vec4d v) {
+  return ts_v4d(ts_saturated(v.x), ts_saturated(v.y), ts_saturated(v.z), ts_saturated(v.w));
 }

@@ -1,5 +1,4 @@
-/* tiershade -- c_ref/math/ts_math.h
- * GLSL-like scalar/vector math in two precisions (the suffix is the LAST letter):
+/* tiershade math: GLSL-like scalar/vector math in two precisions (the suffix is the LAST letter):
  *   ...f  float32, bit-exact mirror of Mesa 22.3.6 llvmpipe (gallivm + NIR lowering)
  *   ...d  double, plain libm accuracy reference
  * Build with -std=c99 -ffp-contract=off -fno-fast-math and call ts_math_init() once
@@ -13,18 +12,30 @@
 extern "C" {
 #endif
 
-typedef struct { float x, y; } ts_vec2f;
-typedef struct { double x, y; } ts_vec2d;
-typedef struct { float x, y, z; } ts_vec3f;
-typedef struct { double x, y, z; } ts_vec3d;
-typedef struct { float x, y, z, w; } ts_vec4f;
-typedef struct { double x, y, z, w; } ts_vec4d;
+typedef struct {
+  float x, y;
+} ts_vec2f;
+typedef struct {
+  double x, y;
+} ts_vec2d;
+typedef struct {
+  float x, y, z;
+} ts_vec3f;
+typedef struct {
+  double x, y, z;
+} ts_vec3d;
+typedef struct {
+  float x, y, z, w;
+} ts_vec4f;
+typedef struct {
+  double x, y, z, w;
+} ts_vec4d;
 
 /* ---- state ---------------------------------------------------------------- */
-void ts_math_init(void);        /* FTZ|DAZ on this thread + fused-mad autodetect */
+void ts_math_init(void); /* FTZ|DAZ on this thread + fused-mad autodetect */
 void ts_math_set_fused(int on); /* process-wide override of the fused-mad choice  */
 int ts_math_fused(void);
-void ts_math_set_ftz(void);     /* MXCSR |= 0x8040 on the calling thread only     */
+void ts_math_set_ftz(void); /* MXCSR |= 0x8040 on the calling thread only     */
 
 /* gallivm lp_build_mad: a*b+c, one rounding iff fused mode (llvm.fmuladd).
  * NOT what GLSL a*b+c or fma() give (those are always unfused): use a*b+c. */

@@ -1,5 +1,4 @@
-/* tiershade -- c_ref/math/ts_sampler3d.c
- * RGBA32F 3D texture sampling, mirror of llvmpipe (Mesa 22.3.6) SoA float path.
+/* tiershade math: RGBA32F 3D texture sampling, mirror of llvmpipe (Mesa 22.3.6) SoA float path.
  * Addressing: gallivm lp_bld_sample_soa.c (lp_build_sample_wrap_nearest,
  * lp_build_sample_wrap_linear), applied per axis exactly as for 2D textures
  * (/work/shared/docs/llvmpipe_bitexact.md "Texture sampling"; c_ref/math/ts_sampler.c).
@@ -15,71 +14,65 @@
 #include <math.h>
 #include <stddef.h>
 
-static ts_vec4f texel(const ts_tex3d *t, int x, int y, int z)
-{
-    const float *p = t->texels + (((size_t)z * (size_t)t->h + (size_t)y) * (size_t)t->w + (size_t)x) * 4u;
-    return ts_v4f(p[0], p[1], p[2], p[3]);
+static ts_vec4f texel(const ts_tex3d *t, int x, int y, int z) {
+  const float *p = t->texels + (((size_t)z * (size_t)t->h + (size_t)y) * (size_t)t->w + (size_t)x) * 4u;
+  return ts_v4f(p[0], p[1], p[2], p[3]);
 }
 
 /* Never reads outside the volume: llvmpipe produces in-range indices for
  * finite coordinates; NaN/inf coordinates are clamped here. */
-static ts_vec4f fetch_safe(const ts_tex3d *t, int x, int y, int z)
-{
-    return texel(t, ts_clampi(x, 0, t->w - 1), ts_clampi(y, 0, t->h - 1), ts_clampi(z, 0, t->d - 1));
+static ts_vec4f fetch_safe(const ts_tex3d *t, int x, int y, int z) {
+  return texel(t, ts_clampi(x, 0, t->w - 1), ts_clampi(y, 0, t->h - 1), ts_clampi(z, 0, t->d - 1));
 }
 
-ts_vec4f ts_texelFetch3Df(const ts_tex3d *t, int x, int y, int z)
-{
-    if (x < 0 || y < 0 || z < 0 || x >= t->w || y >= t->h || z >= t->d) return ts_v4f(0.0f, 0.0f, 0.0f, 0.0f);
-    return texel(t, x, y, z);
+ts_vec4f ts_texelFetch3Df(const ts_tex3d *t, int x, int y, int z) {
+  if (x < 0 || y < 0 || z < 0 || x >= t->w || y >= t->h || z >= t->d) return ts_v4f(0.0f, 0.0f, 0.0f, 0.0f);
+  return texel(t, x, y, z);
 }
 
 /* ---------------------------------------------------------------------------- */
 /* float32, llvmpipe-exact                                                       */
 /* ---------------------------------------------------------------------------- */
 
-ts_vec4f ts_texture3Df(const ts_tex3d *t, ts_vec3f p)
-{
-    int x0, x1, y0, y1, z0, z1;
-    float wx, wy, wz;
-    ts_vec4f s0, s1;
-    if (t->filter == TS_FILTER_NEAREST)
-        return fetch_safe(t, ts_wrap_nearest(p.x, t->w, t->wrap_s), ts_wrap_nearest(p.y, t->h, t->wrap_t),
-                          ts_wrap_nearest(p.z, t->d, t->wrap_r));
-    ts_wrap_linear(p.x, t->w, t->wrap_s, &x0, &x1, &wx);
-    ts_wrap_linear(p.y, t->h, t->wrap_t, &y0, &y1, &wy);
-    ts_wrap_linear(p.z, t->d, t->wrap_r, &z0, &z1, &wz);
-    s0 = ts_lerp4(wy, ts_lerp4(wx, fetch_safe(t, x0, y0, z0), fetch_safe(t, x1, y0, z0)),
-               ts_lerp4(wx, fetch_safe(t, x0, y1, z0), fetch_safe(t, x1, y1, z0)));
-    s1 = ts_lerp4(wy, ts_lerp4(wx, fetch_safe(t, x0, y0, z1), fetch_safe(t, x1, y0, z1)),
-               ts_lerp4(wx, fetch_safe(t, x0, y1, z1), fetch_safe(t, x1, y1, z1)));
-    return ts_lerp4(wz, s0, s1);
+ts_vec4f ts_texture3Df(const ts_tex3d *t, ts_vec3f p) {
+  int x0, x1, y0, y1, z0, z1;
+  float wx, wy, wz;
+  ts_vec4f s0, s1;
+  if (t->filter == TS_FILTER_NEAREST)
+    return fetch_safe(t, ts_wrap_nearest(p.x, t->w, t->wrap_s), ts_wrap_nearest(p.y, t->h, t->wrap_t),
+                      ts_wrap_nearest(p.z, t->d, t->wrap_r));
+  ts_wrap_linear(p.x, t->w, t->wrap_s, &x0, &x1, &wx);
+  ts_wrap_linear(p.y, t->h, t->wrap_t, &y0, &y1, &wy);
+  ts_wrap_linear(p.z, t->d, t->wrap_r, &z0, &z1, &wz);
+  s0 = ts_lerp4(wy, ts_lerp4(wx, fetch_safe(t, x0, y0, z0), fetch_safe(t, x1, y0, z0)),
+                ts_lerp4(wx, fetch_safe(t, x0, y1, z0), fetch_safe(t, x1, y1, z0)));
+  s1 = ts_lerp4(wy, ts_lerp4(wx, fetch_safe(t, x0, y0, z1), fetch_safe(t, x1, y0, z1)),
+                ts_lerp4(wx, fetch_safe(t, x0, y1, z1), fetch_safe(t, x1, y1, z1)));
+  return ts_lerp4(wz, s0, s1);
 }
 
 /* ---------------------------------------------------------------------------- */
 /* double reference: same addressing, computed in double                         */
 /* ---------------------------------------------------------------------------- */
 
-static ts_vec4d texel_d(const ts_tex3d *t, int x, int y, int z)
-{
-    ts_vec4f p = fetch_safe(t, x, y, z);
-    return ts_v4d(p.x, p.y, p.z, p.w);
+static ts_vec4d texel_d(const ts_tex3d *t, int x, int y, int z) {
+  ts_vec4f p = fetch_safe(t, x, y, z);
+  return ts_v4d(p.x, p.y, p.z, p.w);
 }
 
-ts_vec4d ts_texture3Dd(const ts_tex3d *t, ts_vec3d p)
-{
-    int x0, x1, y0, y1, z0, z1;
-    double wx, wy, wz;
-    ts_vec4d s0, s1;
-    if (t->filter == TS_FILTER_NEAREST)
-        return texel_d(t, ts_wrap_nearest_d(p.x, t->w, t->wrap_s), ts_wrap_nearest_d(p.y, t->h, t->wrap_t),
-                       ts_wrap_nearest_d(p.z, t->d, t->wrap_r));
-    ts_wrap_linear_d(p.x, t->w, t->wrap_s, &x0, &x1, &wx);
-    ts_wrap_linear_d(p.y, t->h, t->wrap_t, &y0, &y1, &wy);
-    ts_wrap_linear_d(p.z, t->d, t->wrap_r, &z0, &z1, &wz);
-    s0 = ts_lerp4d(wy, ts_lerp4d(wx, texel_d(t, x0, y0, z0), texel_d(t, x1, y0, z0)),
-                ts_lerp4d(wx, texel_d(t, x0, y1, z0), texel_d(t, x1, y1, z0)));
-    s1 = ts_lerp4d(wy, ts_lerp4d(wx, texel_d(t, x0, y0, z1), texel_d(t, x1, y0, z1)),
-                ts_lerp4d(wx, texel_d(t, x0, y1, z1), texel_d(t, x1, y1, z1)));
-    return ts_lerp4d(wz, s0, s1);
+ts_vec4d ts_texture3Dd(const ts_tex3d *t, ts_vec3d p) {
+  int x0, x1, y0, y1, z0, z1;
+  double wx, wy, wz;
+  ts_vec4d s0, s1;
+  if (t->filter == TS_FILTER_NEAREST)
+    return texel_d(t, ts_wrap_nearest_d(p.x, t->w, t->wrap_s), ts_wrap_nearest_d(p.y, t->h, t->wrap_t),
+                   ts_wrap_nearest_d(p.z, t->d, t->wrap_r));
+  ts_wrap_linear_d(p.x, t->w, t->wrap_s, &x0, &x1, &wx);
+  ts_wrap_linear_d(p.y, t->h, t->wrap_t, &y0, &y1, &wy);
+  ts_wrap_linear_d(p.z, t->d, t->wrap_r, &z0, &z1, &wz);
+  s0 = ts_lerp4d(wy, ts_lerp4d(wx, texel_d(t, x0, y0, z0), texel_d(t, x1, y0, z0)),
+                 ts_lerp4d(wx, texel_d(t, x0, y1, z0), texel_d(t, x1, y1, z0)));
+  s1 = ts_lerp4d(wy, ts_lerp4d(wx, texel_d(t, x0, y0, z1), texel_d(t, x1, y0, z1)),
+                 ts_lerp4d(wx, texel_d(t, x0, y1, z1), texel_d(t, x1, y1, z1)));
+  return ts_lerp4d(wz, s0, s1);
 }

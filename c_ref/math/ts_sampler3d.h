@@ -1,5 +1,4 @@
-/* tiershade -- c_ref/math/ts_sampler3d.h
- * 3D (volume) texture sampling mirror of Mesa 22.3.6 llvmpipe for RGBA32F
+/* tiershade math: 3D (volume) texture sampling mirror of Mesa 22.3.6 llvmpipe for RGBA32F
  * textures, single level (no mipmaps, no LOD): texelFetch, NEAREST and LINEAR
  * (trilinear) with REPEAT or CLAMP_TO_EDGE on each axis.  "f" = bit-exact
  * float32 mirror, "d" = double reference with the same addressing rules.
@@ -21,9 +20,9 @@ extern "C" {
 /* RGBA32F, 4 floats per texel; x fastest, then y (rows), then z (slices):
  * the glTexImage3D order. Texel (x,y,z) at texels[4*((z*h + y)*w + x)]. */
 typedef struct {
-    int w, h, d;
-    const float *texels;
-    int wrap_s, wrap_t, wrap_r, filter;
+  int w, h, d;
+  const float *texels;
+  int wrap_s, wrap_t, wrap_r, filter;
 } ts_tex3d;
 
 /* Texel (x,y,z) exactly; outside the volume returns (0,0,0,0) (llvmpipe's

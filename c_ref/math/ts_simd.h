@@ -1,5 +1,4 @@
-/* tiershade -- c_ref/math/ts_simd.h
- * The llvmpipe-exact float32 math layer (c_ref/math/ts_math.c) on TSV_W lanes at once, with GCC
+/* tiershade math: the llvmpipe-exact float32 math layer (c_ref/math/ts_math.c) on TSV_W lanes at once, with GCC
  * vector extensions plus a few x86 intrinsics. Included once per instruction set by a
  * *_batch.c file (no include guard), inside a `#pragma GCC target` region, with:
  *   TSV_W      4 (SSE2) or 8 (AVX2)
@@ -40,13 +39,23 @@ typedef unsigned tsv_u4 __attribute__((vector_size(16)));
 #endif
 
 /* Vector structs are declared per width (the suffix keeps the instances apart). */
-typedef struct { VF x, y, z; } VFN(vec3);
-typedef struct { VF x, y, z, w; } VFN(vec4);
+typedef struct {
+  VF x, y, z;
+} VFN(vec3);
+typedef struct {
+  VF x, y, z, w;
+} VFN(vec4);
 #define V3v VFN(vec3)
 #define V4v VFN(vec4)
 
-TSV_INL VF VFN(splat)(float s) { VF v = {0}; return v + s; }
-TSV_INL VI VFN(spliti)(int s) { VI v = {0}; return v + s; }
+TSV_INL VF VFN(splat)(float s) {
+  VF v = {0};
+  return v + s;
+}
+TSV_INL VI VFN(spliti)(int s) {
+  VI v = {0};
+  return v + s;
+}
 TSV_INL VF VFN(asf)(VU u) { return (VF)u; }
 TSV_INL VU VFN(asu)(VF f) { return (VU)f; }
 /* m ? a : b for a lane mask m (all ones / all zeros, as vector compares give). */
@@ -116,10 +125,9 @@ TSV_INL VF VFN(poly5)(VF x, const float *c) {
   return VFN(mad)(odd, x, even);
 }
 
-static const float VFN(exp2_c)[6] = {0x1p+0f, 0x1.62e4f6p-1f, 0x1.ebd5a8p-3f,
+static const float VFN(exp2_c)[6] = {0x1p+0f,        0x1.62e4f6p-1f, 0x1.ebd5a8p-3f,
                                      0x1.c95446p-5f, 0x1.26900cp-7f, 0x1.ec320ap-10f};
-static const float VFN(log2_c)[5] = {0x1.715476p+1f, 0x1.ec6ff2p-1f, 0x1.27a642p-1f,
-                                     0x1.9d062cp-2f, 0x1.a07ab2p-2f};
+static const float VFN(log2_c)[5] = {0x1.715476p+1f, 0x1.ec6ff2p-1f, 0x1.27a642p-1f, 0x1.9d062cp-2f, 0x1.a07ab2p-2f};
 
 TSV_INL VF VFN(exp2)(VF x) {
   x = VFN(lp_min)(VFN(splat)(128.0f), x);
@@ -150,7 +158,13 @@ TSV_INL VF VFN(pow)(VF x, VF y) {
 }
 
 /* ---- 3-vectors (ts_math.c order: dot from the last component, nothing fused) ---- */
-TSV_INL V3v VFN(v3)(VF x, VF y, VF z) { V3v v; v.x = x; v.y = y; v.z = z; return v; }
+TSV_INL V3v VFN(v3)(VF x, VF y, VF z) {
+  V3v v;
+  v.x = x;
+  v.y = y;
+  v.z = z;
+  return v;
+}
 TSV_INL V3v VFN(xyz)(V4v v) { return VFN(v3)(v.x, v.y, v.z); }
 TSV_INL V3v VFN(add3)(V3v a, V3v b) { return VFN(v3)(a.x + b.x, a.y + b.y, a.z + b.z); }
 TSV_INL V3v VFN(sub3)(V3v a, V3v b) { return VFN(v3)(a.x - b.x, a.y - b.y, a.z - b.z); }
@@ -165,8 +179,10 @@ TSV_INL V3v VFN(sel3)(VI m, V3v a, V3v b) {
 }
 TSV_INL V4v VFN(sel4)(VI m, V4v a, V4v b) {
   V4v r;
-  r.x = VFN(sel)(m, a.x, b.x); r.y = VFN(sel)(m, a.y, b.y);
-  r.z = VFN(sel)(m, a.z, b.z); r.w = VFN(sel)(m, a.w, b.w);
+  r.x = VFN(sel)(m, a.x, b.x);
+  r.y = VFN(sel)(m, a.y, b.y);
+  r.z = VFN(sel)(m, a.z, b.z);
+  r.w = VFN(sel)(m, a.w, b.w);
   return r;
 }
 
@@ -192,7 +208,10 @@ TSV_INL V4v VFN(gather4)(const float *const p[TSV_W]) {
   float t[4][TSV_W];
   V4v r;
   for (int j = 0; j < TSV_W; ++j) {
-    t[0][j] = p[j][0]; t[1][j] = p[j][1]; t[2][j] = p[j][2]; t[3][j] = p[j][3];
+    t[0][j] = p[j][0];
+    t[1][j] = p[j][1];
+    t[2][j] = p[j][2];
+    t[3][j] = p[j][3];
   }
   __builtin_memcpy(&r.x, t[0], sizeof(VF));
   __builtin_memcpy(&r.y, t[1], sizeof(VF));
@@ -208,7 +227,10 @@ TSV_INL V4v VFN(rec_load)(const ts_vec4f *base, int stride, const size_t *pix) {
   const size_t s = (size_t)stride * 4u;
   V4v r;
   if (s == 0) {
-    r.x = VFN(splat)(p[0]); r.y = VFN(splat)(p[1]); r.z = VFN(splat)(p[2]); r.w = VFN(splat)(p[3]);
+    r.x = VFN(splat)(p[0]);
+    r.y = VFN(splat)(p[1]);
+    r.z = VFN(splat)(p[2]);
+    r.w = VFN(splat)(p[3]);
     return r;
   }
   const float *q[TSV_W];

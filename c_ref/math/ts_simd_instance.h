@@ -1,5 +1,4 @@
-/* tiershade -- c_ref/math/ts_simd_instance.h
- * One instance of a SIMD twin, for ts_simd_instances.h only: with TSV_W, TSV_SFX, TSV_FUSED
+/* tiershade math: one instance of a SIMD twin, for ts_simd_instances.h only: with TSV_W, TSV_SFX, TSV_FUSED
  * and TSV_AVX defined (and the instruction set's `#pragma GCC target` pushed), includes the
  * lane layer (ts_simd.h), the samplers (2D LINEAR, 3D, 2D NEAREST) and the twin (TSV_IMPL),
  * then undefines what the next instance redefines. No include guard: once per instance. */

@@ -1,5 +1,4 @@
-/* tiershade -- c_ref/math/ts_simd_instances.h
- * The three instances of a SIMD twin: AVX2+FMA (8 lanes, fused mads, as llvmpipe fuses them on
+/* tiershade math: the three instances of a SIMD twin: AVX2+FMA (8 lanes, fused mads, as llvmpipe fuses them on
  * FMA hosts), AVX2 (8 lanes, unfused) and SSE2 (4 lanes, unfused), each under
  * `#pragma GCC target` so that no build flag changes (-ffp-contract=off still holds: the only
  * fused operations are the FMA intrinsics of the fused instance). The includer defines

@@ -1,5 +1,4 @@
-/* tiershade -- c_ref/math/ts_simd_sampler.h
- * c_ref/math/ts_sampler.c on TSV_W lanes: RGBA32F 2D LINEAR (REPEAT / CLAMP_TO_EDGE, POT / NPOT)
+/* tiershade math: c_ref/math/ts_sampler.c on TSV_W lanes: RGBA32F 2D LINEAR (REPEAT / CLAMP_TO_EDGE, POT / NPOT)
  * and cube maps (CLAMP_TO_EDGE, seamless off), same addressing and lerps, bit for bit.
  * Addressing and filtering are vector code; the texel reads are one RGBA load per lane and
  * corner, transposed to SoA (ts_simd.h gather4). NEAREST filtering, which no frame of ours uses, calls the scalar sampler per lane.
@@ -84,7 +83,10 @@ static V4v VFN(texture2D)(const ts_tex2d *t, VF u, VF v) {
     float r[4][TSV_W];
     for (int j = 0; j < TSV_W; ++j) {
       const ts_vec4f s = ts_texture2Df(t, ts_v2f(u[j], v[j]));
-      r[0][j] = s.x; r[1][j] = s.y; r[2][j] = s.z; r[3][j] = s.w;
+      r[0][j] = s.x;
+      r[1][j] = s.y;
+      r[2][j] = s.z;
+      r[3][j] = s.w;
     }
     return VFN(load4)(r);
   }
@@ -99,7 +101,10 @@ static V4v VFN(textureCube)(const ts_texcube *c, V3v d) {
     float r[4][TSV_W];
     for (int j = 0; j < TSV_W; ++j) {
       const ts_vec4f s = ts_textureCubef(c, ts_v3f(d.x[j], d.y[j], d.z[j]));
-      r[0][j] = s.x; r[1][j] = s.y; r[2][j] = s.z; r[3][j] = s.w;
+      r[0][j] = s.x;
+      r[1][j] = s.y;
+      r[2][j] = s.z;
+      r[3][j] = s.w;
     }
     return VFN(load4)(r);
   }
@@ -108,7 +113,7 @@ static V4v VFN(textureCube)(const ts_texcube *c, V3v d) {
   const VF ax = VFN(asf)(bx & ~S), ay = VFN(asf)(by & ~S), az = VFN(asf)(bz & ~S);
   const VF mx = VFN(lp_max)(ax, ay);
   const VI sel_x = ~(ax <= ay); /* |x| UGT |y| */
-  const VI sel_z = ~(az < mx);  /* |z| UGE mx  */
+  const VI sel_z = ~(az < mx); /* |z| UGE mx  */
   const VF ma = VFN(sel)(sel_z, d.z, VFN(sel)(sel_x, d.x, d.y));
   const VU sg = VFN(asu)(ma) & S;
   const VU sc = (VU)VFN(seli)(sel_z, (VI)(bx ^ sg), VFN(seli)(sel_x, (VI)(bz ^ S ^ sg), (VI)bx));

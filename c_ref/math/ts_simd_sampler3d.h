@@ -1,5 +1,4 @@
-/* tiershade -- c_ref/math/ts_simd_sampler3d.h
- * c_ref/math/ts_sampler3d.c ts_texture3Df on TSV_W lanes: RGBA32F volume, LINEAR (trilinear) with
+/* tiershade math: c_ref/math/ts_sampler3d.c ts_texture3Df on TSV_W lanes: RGBA32F volume, LINEAR (trilinear) with
  * REPEAT / CLAMP_TO_EDGE per axis, bit for bit. The per-axis addressing is the 2D rule
  * (ts_simd_sampler.h wrap_linear, fetch_safe's clamp included), the lerps run x, then y, then z
  * with gallivm's mad(w, b - a, a) (fused in the FMA instance, as ts_madf). The eight corners
@@ -12,7 +11,10 @@ static V4v VFN(texture3D)(const ts_tex3d *t, VF u, VF v, VF r) {
     float o[4][TSV_W];
     for (int j = 0; j < TSV_W; ++j) {
       const ts_vec4f s = ts_texture3Df(t, ts_v3f(u[j], v[j], r[j]));
-      o[0][j] = s.x; o[1][j] = s.y; o[2][j] = s.z; o[3][j] = s.w;
+      o[0][j] = s.x;
+      o[1][j] = s.y;
+      o[2][j] = s.z;
+      o[3][j] = s.w;
     }
     return VFN(load4)(o);
   }

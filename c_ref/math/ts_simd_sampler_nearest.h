@@ -1,5 +1,4 @@
-/* tiershade -- c_ref/math/ts_simd_sampler_nearest.h
- * c_ref/math/ts_sampler.c's 2D NEAREST sampling (wrap_nearest, then fetch_safe) on TSV_W lanes, bit
+/* tiershade math: c_ref/math/ts_sampler.c's 2D NEAREST sampling (wrap_nearest, then fetch_safe) on TSV_W lanes, bit
  * for bit: REPEAT (POT: ifloor(u * len) & (len - 1); NPOT: itrunc(fract_safe(u) * len),
  * clamped) and CLAMP_TO_EDGE (itrunc(u * len), clamped). NaN and out-of-range coordinates take
  * itrunc's INT32_MIN as the scalar layer does, then the clamp. The texel reads are one RGBA load

@@ -1,4 +1,4 @@
-/* c_ref/offline/envmap_probes.c: the nearest ("best") cube-map probe of a surface (see envmap_probes.h). */
+/* tiershade offline: the nearest ("best") cube-map probe of a surface (see envmap_probes.h). */
 #include "offline/envmap_probes.h"
 
 #include <math.h>

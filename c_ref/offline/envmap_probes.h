@@ -1,4 +1,4 @@
-/* c_ref/offline/envmap_probes.h: cube-map probes in a scene (talk: "World specular ... cube
+/* tiershade offline: cube-map probes in a scene (talk: "World specular ... cube
  * maps are placed in the level, each surface uses the nearest"): each surface takes
  * the probe nearest to its centre, unless it names one explicitly (an env_cubemap
  * that lists the surface's sides overrides the choice). */

@@ -1,5 +1,4 @@
-/* tiershade -- c_ref/offline/light_folding.c
- * Light packing, incident light at a point, and folding of the lights beyond a
+/* tiershade offline: light packing, incident light at a point, and folding of the lights beyond a
  * tier's limit into the ambient cube (see light_folding.h; rule and derivation:
  * docs/light_folding.md). CPU set-up code in double, not a bit-exact twin.
  */
@@ -30,8 +29,7 @@
 #define TS_LUMA_G 0.7152
 #define TS_LUMA_B 0.0722
 
-static void set_err(char *err, size_t errlen, const char *fmt, ...)
-{
+static void set_err(char *err, size_t errlen, const char *fmt, ...) {
   va_list ap;
   if (!err || errlen == 0) return;
   va_start(ap, fmt);
@@ -39,18 +37,19 @@ static void set_err(char *err, size_t errlen, const char *fmt, ...)
   va_end(ap);
 }
 
-static const char *type_name(ts_light_type t)
-{
+static const char *type_name(ts_light_type t) {
   switch (t) {
-  case TS_LIGHT_POINT: return "point";
-  case TS_LIGHT_SPOT: return "spot";
-  case TS_LIGHT_DIRECTIONAL: return "directional";
+    case TS_LIGHT_POINT:
+      return "point";
+    case TS_LIGHT_SPOT:
+      return "spot";
+    case TS_LIGHT_DIRECTIONAL:
+      return "directional";
   }
   return "unknown";
 }
 
-static int check_finite3(const float v[3], const char *field, const char *tn, char *err, size_t errlen)
-{
+static int check_finite3(const float v[3], const char *field, const char *tn, char *err, size_t errlen) {
   for (int i = 0; i < 3; ++i) {
     if (!isfinite(v[i])) {
       set_err(err, errlen, "ts_light_pack: %s light: %s[%d] = %g is not finite", tn, field, i, (double)v[i]);
@@ -61,8 +60,7 @@ static int check_finite3(const float v[3], const char *field, const char *tn, ch
 }
 
 /* Returns 1 if valid, else 0 with a message. */
-static int validate(const ts_light *l, char *err, size_t errlen)
-{
+static int validate(const ts_light *l, char *err, size_t errlen) {
   if (!l) {
     set_err(err, errlen, "ts_light_pack: light is NULL");
     return 0;
@@ -126,8 +124,7 @@ static int validate(const ts_light *l, char *err, size_t errlen)
 /* Packing of a validated light; layout of shaders/common_lights.glsl (fact sheet
  * section 4, VertexAttenInternal: color.w = 1 directional, dir.w = 1 spot,
  * spot = (exponent, -, cos outer, 1/(cos inner - cos outer))). */
-static void pack_valid(const ts_light *l, float out[5][4])
-{
+static void pack_valid(const ts_light *l, float out[5][4]) {
   const int directional = l->type == TS_LIGHT_DIRECTIONAL;
   const int spot = l->type == TS_LIGHT_SPOT;
   for (int s = 0; s < 5; ++s)
@@ -159,8 +156,7 @@ static void pack_valid(const ts_light *l, float out[5][4])
   }
 }
 
-int ts_light_pack(const ts_light *l, float out[5][4], char *err, size_t errlen)
-{
+int ts_light_pack(const ts_light *l, float out[5][4], char *err, size_t errlen) {
   if (!out) {
     set_err(err, errlen, "ts_light_pack: out is NULL");
     return 0;
@@ -171,8 +167,7 @@ int ts_light_pack(const ts_light *l, float out[5][4], char *err, size_t errlen)
   return 1;
 }
 
-double ts_packed_light_attenuation(const float packed[5][4], const double p[3], double to_light[3])
-{
+double ts_packed_light_attenuation(const float packed[5][4], const double p[3], double to_light[3]) {
   ts_vec4d l[5];
   for (int k = 0; k < 5; ++k) l[k] = ts_v4d(packed[k][0], packed[k][1], packed[k][2], packed[k][3]);
   ts_vec3d L;
@@ -185,8 +180,7 @@ double ts_packed_light_attenuation(const float packed[5][4], const double p[3], 
   return att;
 }
 
-void ts_light_incident(const ts_light *l, const float p[3], double rgb[3], double to_light[3])
-{
+void ts_light_incident(const ts_light *l, const float p[3], double rgb[3], double to_light[3]) {
   float pk[5][4];
   for (int c = 0; c < 3; ++c) rgb[c] = to_light[c] = 0.0;
   if (!p || !validate(l, NULL, 0)) return;
@@ -198,8 +192,7 @@ void ts_light_incident(const ts_light *l, const float p[3], double rgb[3], doubl
 
 static double luminance(const double rgb[3]) { return TS_LUMA_R * rgb[0] + TS_LUMA_G * rgb[1] + TS_LUMA_B * rgb[2]; }
 
-static void add_face(float cube[6][3], int face, const double add[3])
-{
+static void add_face(float cube[6][3], int face, const double add[3]) {
   for (int c = 0; c < 3; ++c) {
     double v = (double)cube[face][c] + add[c];
     v = v > (double)FLT_MAX ? (double)FLT_MAX : (v < -(double)FLT_MAX ? -(double)FLT_MAX : v);
@@ -209,8 +202,7 @@ static void add_face(float cube[6][3], int face, const double add[3])
 
 /* Adds one light (incident rgb I, direction L) to the cube: docs/light_folding.md,
  * "Rule". */
-static void fold_one(const double I[3], const double L[3], int half_lambert, float cube[6][3])
-{
+static void fold_one(const double I[3], const double L[3], int half_lambert, float cube[6][3]) {
   double a2 = L[0] * L[0] + L[1] * L[1] + L[2] * L[2];
   double add[3];
   if (a2 >= 1.0 - 1.0e-6) {
@@ -230,8 +222,8 @@ static void fold_one(const double I[3], const double L[3], int half_lambert, flo
    * 2 I L_j^2 plus (1 - a^2) I / 4 on all six. */
   double a = ts_sqrtd(a2);
   for (int j = 0; j < 3; ++j) {
-    double w = half_lambert ? TS_FOLD_K_HALF_LAMBERT * L[j] * L[j]
-                            : (a > 0.0 ? TS_FOLD_K_LAMBERT * L[j] * L[j] / a : 0.0);
+    double w =
+        half_lambert ? TS_FOLD_K_HALF_LAMBERT * L[j] * L[j] : (a > 0.0 ? TS_FOLD_K_LAMBERT * L[j] * L[j] / a : 0.0);
     for (int c = 0; c < 3; ++c) add[c] = w * I[c];
     add_face(cube, 2 * j + (L[j] >= 0.0 ? 0 : 1), add);
   }
@@ -242,8 +234,7 @@ static void fold_one(const double I[3], const double L[3], int half_lambert, flo
 }
 
 int ts_fold_lights(const ts_light *lights, int n, int max_local, const float center[3], int half_lambert,
-                   float cube[6][3], int *kept)
-{
+                   float cube[6][3], int *kept) {
   if (!lights || n <= 0 || !center) return 0;
   if (max_local < 0) max_local = 0;
   int nkept = 0;

@@ -1,5 +1,4 @@
-/* tiershade -- c_ref/offline/light_folding.h
- * CPU set-up for model lighting: pack a local light into the 5 vec4 the shader
+/* tiershade offline: CPU set-up for model lighting: pack a local light into the 5 vec4 the shader
  * reads (shaders/common_lights.glsl), evaluate it at a point in double, and fold
  * the lights beyond a tier's limit (ps20: 2, ps2b/sm3: 4) into the ambient cube.
  * Fact sheet section 3: DrawModelInfo_t::m_vecAmbientCube holds "ambient, and
@@ -21,10 +20,10 @@ typedef enum { TS_LIGHT_POINT = 0, TS_LIGHT_SPOT = 1, TS_LIGHT_DIRECTIONAL = 2 }
 typedef struct {
   ts_light_type type;
   float color[3];
-  float dir[3];        /* unit; spot axis, or the direction a directional light travels */
+  float dir[3]; /* unit; spot axis, or the direction a directional light travels */
   float pos[3];
-  float spot_exponent, cos_inner, cos_outer;   /* spot only */
-  float atten[3];      /* constant, linear, quadratic; directional lights ignore it */
+  float spot_exponent, cos_inner, cos_outer; /* spot only */
+  float atten[3]; /* constant, linear, quadratic; directional lights ignore it */
 } ts_light;
 
 /* Packs a light into the 5 vec4 slots the shader reads, exactly as

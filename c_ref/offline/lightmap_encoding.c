@@ -1,4 +1,4 @@
-/* c_ref/offline/lightmap_encoding.c: lightmap encodings (see lightmap_encoding.h; fact sheet
+/* tiershade offline: lightmap encodings (see lightmap_encoding.h; fact sheet
  * section 2: VectorToColorRGBExp32 and TexLightToLinear in color_conversion.cpp,
  * MAX_HDR_OVERBRIGHT, the LDR gamma tables with overbright 2). Double-precision
  * arithmetic on purpose: these run offline, not in a shader. */

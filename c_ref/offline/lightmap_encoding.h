@@ -1,4 +1,4 @@
-/* c_ref/offline/lightmap_encoding.h: the offline side of the lightmap encodings (fact sheet
+/* tiershade offline: the offline side of the lightmap encodings (fact sheet
  * section 2): ColorRGBExp32 encode/decode as vrad stores it, and the quantisers that
  * give the exact values the run-time formats hold (fp16, 16-bit "4.12", LDR 8-bit
  * gamma / overbright 2). The shader decodes of the stored values are in

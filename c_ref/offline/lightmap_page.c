@@ -1,4 +1,4 @@
-/* c_ref/offline/lightmap_page.c: lightmap page packing and addressing (see lightmap_page.h). */
+/* tiershade offline: lightmap page packing and addressing (see lightmap_page.h). */
 #include "offline/lightmap_page.h"
 
 #include "offline/lightmap_encoding.h"

@@ -1,4 +1,4 @@
-/* c_ref/offline/lightmap_page.h: the engine's lightmap page layout (fact sheet section 1,
+/* tiershade offline: the engine's lightmap page layout (fact sheet section 1,
  * lightmappedgeneric_vs20.fxc): the lightmaps of a bumped face sit side by side,
  * flat first, then the ones along b0, b1, b2, and the shader finds lightmap k at
  * uv + k * offset with offset = (block width / page width, 0). Each block has a
@@ -14,14 +14,14 @@ extern "C" {
 
 typedef struct {
   int luxels_w, luxels_h; /* lightmap samples of the face, >= 2 each */
-  int bumped;             /* 1: four lightmaps (flat, b0, b1, b2); 0: the flat one only */
+  int bumped; /* 1: four lightmaps (flat, b0, b1, b2); 0: the flat one only */
 } lm_face_size;
 
 typedef struct {
-  int x, y;             /* top-left texel of the face's first block (its border included) */
+  int x, y; /* top-left texel of the face's first block (its border included) */
   int block_w, block_h; /* luxels + 2 */
-  int count;            /* 4 or 1 lightmaps */
-  float offset[2];      /* uv offset from one lightmap of the face to the next */
+  int count; /* 4 or 1 lightmaps */
+  float offset[2]; /* uv offset from one lightmap of the face to the next */
 } lm_face_place;
 
 /* Packs the faces into a page_w x page_h page. Returns 0, or -1 with a message naming

@@ -1,4 +1,4 @@
-/* c_ref/offline/rnm_bake.c: the radiosity-normal-mapping baker (see rnm_bake.h; fact sheet
+/* tiershade offline: the radiosity-normal-mapping baker (see rnm_bake.h; fact sheet
  * section 1: GetBumpNormals in bumpvects.cpp, GatherSampleStandardLightSSE and
  * GatherSampleLightSSE in lightmap.cpp). */
 #include "offline/rnm_bake.h"
@@ -29,8 +29,8 @@ ts_vec3d rnm_basis(int k) {
   return ts_v3d(-oo6, -oo2, oo3);
 }
 
-int rnm_bump_basis(ts_vec3d s_vec, ts_vec3d t_vec, ts_vec3d face_normal, ts_vec3d phong_normal,
-                   ts_vec3d bump[3], char *err, size_t errlen) {
+int rnm_bump_basis(ts_vec3d s_vec, ts_vec3d t_vec, ts_vec3d face_normal, ts_vec3d phong_normal, ts_vec3d bump[3],
+                   char *err, size_t errlen) {
   ts_vec3d n, axis0, axis1, fn;
   if (!finite3(s_vec) || !finite3(t_vec) || !unit3(face_normal, &fn) || !unit3(phong_normal, &n)) {
     snprintf(err, errlen, "rnm_bump_basis: the S and T vectors and both normals must be finite, the normals non-zero");
@@ -52,8 +52,8 @@ int rnm_bump_basis(ts_vec3d s_vec, ts_vec3d t_vec, ts_vec3d face_normal, ts_vec3
   return 0;
 }
 
-int rnm_bake_texel(ts_vec3d pos, ts_vec3d face_normal, const ts_vec3d bump[3], const rnm_light *lights,
-                   int num_lights, ts_vec3d out[4], char *err, size_t errlen) {
+int rnm_bake_texel(ts_vec3d pos, ts_vec3d face_normal, const ts_vec3d bump[3], const rnm_light *lights, int num_lights,
+                   ts_vec3d out[4], char *err, size_t errlen) {
   ts_vec3d n;
   for (int k = 0; k < 4; ++k) out[k] = ts_v3d(0, 0, 0);
   if (num_lights < 0 || (num_lights > 0 && !lights)) {
@@ -92,14 +92,16 @@ int rnm_bake_texel(ts_vec3d pos, ts_vec3d face_normal, const ts_vec3d bump[3], c
         ts_vec3d axis;
         if (!unit3(l->spot_dir, &axis) || !(l->cos_inner > l->cos_outer) || !(l->cos_inner <= 1.0) ||
             !(l->cos_outer >= -1.0) || !(l->exponent >= 0.0) || !isfinite(l->exponent)) {
-          snprintf(err, errlen, "rnm_bake_texel: light %d (spot) needs a non-zero axis, cos_inner > cos_outer "
-                   "within [-1, 1] and a finite exponent >= 0", i);
+          snprintf(err, errlen,
+                   "rnm_bake_texel: light %d (spot) needs a non-zero axis, cos_inner > cos_outer "
+                   "within [-1, 1] and a finite exponent >= 0",
+                   i);
           return -1;
         }
         const double dot2 = -dot3(L, axis);
         if (dot2 <= l->cos_outer) continue; /* outside the cone */
-        const double mult = dot2 >= l->cos_inner ? 1.0
-                                                 : pow((dot2 - l->cos_outer) / (l->cos_inner - l->cos_outer), l->exponent);
+        const double mult =
+            dot2 >= l->cos_inner ? 1.0 : pow((dot2 - l->cos_outer) / (l->cos_inner - l->cos_outer), l->exponent);
         falloff *= dot2 * mult;
       }
     }

@@ -1,4 +1,4 @@
-/* c_ref/twins/bloom_blur.c: instantiates the bloom_blur twin in float32
+/* tiershade twins: instantiates the bloom_blur twin in float32
  * (llvmpipe-exact) and double (accuracy reference). See bloom_blur_impl.h. */
 #include "twins/bloom_blur.h"
 

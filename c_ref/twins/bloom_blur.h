@@ -1,4 +1,4 @@
-/* c_ref/twins/bloom_blur.h: C twin of shaders/bloom_blur.fs, one direction of the separable
+/* tiershade twins: C twin of shaders/bloom_blur.fs, one direction of the separable
  * 13-tap Gaussian of the bloom (fact sheet section 8). One call shades one pixel from
  * its input record (shaders/bloom_blur_slots.glsl) and the source texture. */
 #ifndef TS_BLOOM_BLUR_H

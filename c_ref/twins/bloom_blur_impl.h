@@ -1,4 +1,4 @@
-/* c_ref/twins/bloom_blur_impl.h: generic body of the bloom_blur twin; mirrors
+/* tiershade twins: generic body of the bloom_blur twin; mirrors
  * shaders/bloom_blur.fs statement by statement (weights and offsets: fact sheet
  * section 8, BlurFilter). Instantiated by bloom_blur.c. */
 

@@ -1,4 +1,4 @@
-/* c_ref/twins/bloom_downsample.c: instantiates the bloom_downsample twin in float32
+/* tiershade twins: instantiates the bloom_downsample twin in float32
  * (llvmpipe-exact) and double (accuracy reference). See bloom_downsample_impl.h. */
 #include "twins/bloom_downsample.h"
 

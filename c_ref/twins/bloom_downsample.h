@@ -1,4 +1,4 @@
-/* c_ref/twins/bloom_downsample.h: C twin of shaders/bloom_downsample.fs, the quarter-size
+/* tiershade twins: C twin of shaders/bloom_downsample.fs, the quarter-size
  * bloom source (4 bilinear taps = a 4x4 box, optionally shaped p^exp * dot(p, tint)).
  * One call shades one pixel of the quarter-size target from its input record
  * (shaders/bloom_downsample_slots.glsl) and the source texture. */

@@ -1,4 +1,4 @@
-/* c_ref/twins/bloom_downsample_impl.h: generic body of the bloom_downsample twin; mirrors
+/* tiershade twins: generic body of the bloom_downsample twin; mirrors
  * shaders/bloom_downsample.fs statement by statement. Instantiated by bloom_downsample.c. */
 
 static V3 FN(bd_tap)(const bd_variant *v, const ts_tex2d *src, TS_REAL tx, TS_REAL ty, V4 size, V4 shape) {

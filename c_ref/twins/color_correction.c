@@ -1,4 +1,4 @@
-/* c_ref/twins/color_correction.c: instantiates the color_correction twin in float32
+/* tiershade twins: instantiates the color_correction twin in float32
  * (llvmpipe-exact) and double. See color_correction_impl.h. */
 #include "twins/color_correction.h"
 

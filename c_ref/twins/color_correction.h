@@ -1,4 +1,4 @@
-/* c_ref/twins/color_correction.h: C twin of shaders/color_correction.fs (Source's colour
+/* tiershade twins: C twin of shaders/color_correction.fs (Source's colour
  * correction: up to four LUTs blended with weights plus the default weight; fact
  * sheet section 9). One call corrects one pixel from its input record (the same
  * slots the shader reads in conformance mode, shaders/color_correction_slots.glsl). */
@@ -21,9 +21,9 @@ enum cc_slot {
 #undef TS_SLOT
 
 typedef struct {
-  int atlas;            /* LUT_ATLAS: 1 = 2D atlas, 0 = 3D texture */
+  int atlas; /* LUT_ATLAS: 1 = 2D atlas, 0 = 3D texture */
   int shader_trilinear; /* SHADER_TRILINEAR: 1 = 8 taps filtered in the shader */
-  int num_lookups;      /* NUM_LOOKUPS 0..4 */
+  int num_lookups; /* NUM_LOOKUPS 0..4 */
 } cc_variant;
 
 /* The LUTs as the shader sees them: u_lut0..3 (3D) and u_lut_atlas0..3 (2D atlas). */

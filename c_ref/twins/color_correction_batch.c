@@ -1,5 +1,4 @@
-/* tiershade -- c_ref/twins/color_correction_batch.c
- * Instantiates the SIMD color_correction twin (color_correction_simd_impl.h) for AVX2+FMA,
+/* tiershade twins: instantiates the SIMD color_correction twin (color_correction_simd_impl.h) for AVX2+FMA,
  * AVX2 and SSE2 (ts_simd_instances.h) and picks one per call (color_correction_batch.h);
  * the scalar twin runs where no instance applies. */
 #include "twins/color_correction_batch.h"
@@ -14,12 +13,17 @@ void color_correction_f_batch(const cc_variant *v, const cc_batch_input *in, con
   switch (ts_batch_isa()) {
 #ifdef TS_BATCH_X86
     case TS_BATCH_AVX2:
-      if (ts_math_fused()) cc_batch_avx2fma(v, in, luts, out, count);
-      else cc_batch_avx2(v, in, luts, out, count);
+      if (ts_math_fused())
+        cc_batch_avx2fma(v, in, luts, out, count);
+      else
+        cc_batch_avx2(v, in, luts, out, count);
       return;
-    case TS_BATCH_SSE2: cc_batch_sse2(v, in, luts, out, count); return;
+    case TS_BATCH_SSE2:
+      cc_batch_sse2(v, in, luts, out, count);
+      return;
 #endif
-    default: break;
+    default:
+      break;
   }
   for (int i = 0; i < count; ++i) {
     ts_vec4f rec[CC_SLOTS];

@@ -1,5 +1,4 @@
-/* tiershade -- c_ref/twins/color_correction_batch.h
- * The color_correction float32 twin for many pixels per call: the same bits as calling
+/* tiershade twins: the color_correction float32 twin for many pixels per call: the same bits as calling
  * color_correction_f() once per pixel, computed 8 (AVX2) or 4 (SSE2) pixels at a time, for
  * every variant (LUT_ATLAS 0/1, SHADER_TRILINEAR 0/1, NUM_LOOKUPS 0..4): 3D LUTs through
  * ts_simd_sampler3d.h, the atlas through ts_simd_sampler.h. The instance is chosen per call

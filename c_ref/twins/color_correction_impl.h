@@ -1,13 +1,14 @@
-/* c_ref/twins/color_correction_impl.h: generic body of the color_correction twin; mirrors
+/* tiershade twins: generic body of the color_correction twin; mirrors
  * shaders/color_correction.fs statement by statement. Instantiated by color_correction.c. */
 
 /* A record slot in the instantiation's precision (float slots, widened for double). */
 static V4 FN(cc_in)(ts_vec4f v) { return M(v4)((TS_REAL)v.x, (TS_REAL)v.y, (TS_REAL)v.z, (TS_REAL)v.w); }
 
-static V3 FN(cc_lookup)(const cc_variant *v, const cc_luts *luts, int i, V3 uvw, V2 uv0, V2 uv1, TS_REAL fz,
-                        V3 c0, V3 c1, V3 f, V4 u, V2 vv) {
+static V3 FN(cc_lookup)(const cc_variant *v, const cc_luts *luts, int i, V3 uvw, V2 uv0, V2 uv1, TS_REAL fz, V3 c0,
+                        V3 c1, V3 f, V4 u, V2 vv) {
   if (v->shader_trilinear) {
-    return v->atlas ? FN(cc_atlas_shader)(&luts->atlas[i], u, vv, f) : FN(cc_volume_shader)(&luts->volume[i], c0, c1, f);
+    return v->atlas ? FN(cc_atlas_shader)(&luts->atlas[i], u, vv, f)
+                    : FN(cc_volume_shader)(&luts->volume[i], c0, c1, f);
   }
   return v->atlas ? FN(cc_atlas_hw)(&luts->atlas[i], uv0, uv1, fz) : FN(cc_volume_hw)(&luts->volume[i], uvw);
 }

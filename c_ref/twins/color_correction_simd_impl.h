@@ -1,5 +1,4 @@
-/* tiershade -- c_ref/twins/color_correction_simd_impl.h
- * The color_correction twin (color_correction_impl.h and common_color_correction.h, float32)
+/* tiershade twins: the color_correction twin (color_correction_impl.h and common_color_correction.h, float32)
  * on TSV_W pixels at once, in SoA, statement by statement: every lane gives the scalar twin's
  * bits. The variant switches stay scalar `if`s; every record value (colour, weights, default
  * weight, LUT addressing) is per lane. Each LUT is one texture for all lanes.
@@ -15,12 +14,12 @@ TSV_INL V3v VFN(cc_t3)(const ts_tex3d *t, VF u, VF v, VF r) { return VFN(xyz)(VF
 /* The addressing of a block, computed once for all lookups (color_correction_impl.h). */
 typedef struct {
   V3v uvw, c0, c1, f;
-  VF u0x, u1x, uy, fz;   /* atlas, hardware filtering: uv0 = (u0x, uy), uv1 = (u1x, uy) */
-  VF ux, uy2, uz, uw;    /* atlas, shader filtering: u */
-  VF vx, vy;             /* atlas, shader filtering: vv */
+  VF u0x, u1x, uy, fz; /* atlas, hardware filtering: uv0 = (u0x, uy), uv1 = (u1x, uy) */
+  VF ux, uy2, uz, uw; /* atlas, shader filtering: u */
+  VF vx, vy; /* atlas, shader filtering: vv */
 } VFN(cc_addr);
 
-static V3v VFN(cc_lookup)(const cc_variant *v, const cc_luts *luts, int i, const VFN(cc_addr) *a) {
+static V3v VFN(cc_lookup)(const cc_variant *v, const cc_luts *luts, int i, const VFN(cc_addr) * a) {
   if (v->shader_trilinear) {
     if (v->atlas) {
       const ts_tex2d *t = &luts->atlas[i];
@@ -69,7 +68,8 @@ static void VFN(cc_batch)(const cc_variant *v, const cc_batch_input *in, const c
         const V3v p = VFN(scale3)(c, lut.z);
         const V3v i0 = VFN(v3)(VFN(floor)(p.x), VFN(floor)(p.y), VFN(floor)(p.z));
         a.f = VFN(sub3)(p, i0);
-        const V3v i1 = VFN(v3)(VFN(min)(i0.x + 1.0f, lut.z), VFN(min)(i0.y + 1.0f, lut.z), VFN(min)(i0.z + 1.0f, lut.z));
+        const V3v i1 =
+            VFN(v3)(VFN(min)(i0.x + 1.0f, lut.z), VFN(min)(i0.y + 1.0f, lut.z), VFN(min)(i0.z + 1.0f, lut.z));
         a.c0 = VFN(v3)((i0.x + 0.5f) * lut.w, (i0.y + 0.5f) * lut.w, (i0.z + 0.5f) * lut.w);
         a.c1 = VFN(v3)((i1.x + 0.5f) * lut.w, (i1.y + 0.5f) * lut.w, (i1.z + 0.5f) * lut.w);
         if (v->atlas) {

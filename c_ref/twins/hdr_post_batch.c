@@ -1,5 +1,4 @@
-/* tiershade -- c_ref/twins/hdr_post_batch.c
- * Instantiates the SIMD twins of the float HDR post passes (hdr_post_simd_impl.h) for
+/* tiershade twins: instantiates the SIMD twins of the float HDR post passes (hdr_post_simd_impl.h) for
  * AVX2+FMA, AVX2 and SSE2 (ts_simd_instances.h) and picks one per call (hdr_post_batch.h);
  * the scalar twins run where no instance applies. */
 #include "twins/hdr_post_batch.h"
@@ -16,20 +15,30 @@
 static int pick(void) {
   switch (ts_batch_isa()) {
 #ifdef TS_BATCH_X86
-    case TS_BATCH_AVX2: return ts_math_fused() ? 2 : 1;
-    case TS_BATCH_SSE2: return 0;
+    case TS_BATCH_AVX2:
+      return ts_math_fused() ? 2 : 1;
+    case TS_BATCH_SSE2:
+      return 0;
 #endif
-    default: return -1;
+    default:
+      return -1;
   }
 }
 
 #ifdef TS_BATCH_X86
-#define TS_DISPATCH(fn, ...)                    \
-  switch (pick()) {                             \
-    case 2: fn##_avx2fma(__VA_ARGS__); return;  \
-    case 1: fn##_avx2(__VA_ARGS__); return;     \
-    case 0: fn##_sse2(__VA_ARGS__); return;     \
-    default: break;                             \
+#define TS_DISPATCH(fn, ...)     \
+  switch (pick()) {              \
+    case 2:                      \
+      fn##_avx2fma(__VA_ARGS__); \
+      return;                    \
+    case 1:                      \
+      fn##_avx2(__VA_ARGS__);    \
+      return;                    \
+    case 0:                      \
+      fn##_sse2(__VA_ARGS__);    \
+      return;                    \
+    default:                     \
+      break;                     \
   }
 #else
 #define TS_DISPATCH(fn, ...)

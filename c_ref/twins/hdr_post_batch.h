@@ -1,5 +1,4 @@
-/* tiershade -- c_ref/twins/hdr_post_batch.h
- * The float HDR path's post passes for many pixels per call: bloom_downsample_f, bloom_blur_f
+/* tiershade twins: the float HDR path's post passes for many pixels per call: bloom_downsample_f, bloom_blur_f
  * and hdr_tonemap_f (every variant: SHAPE 0/1, DIRECTION 0/1, OUTPUT_MODE 0/1/2), and the
  * render-target conversions of c_ref/math/hdr_formats.h (fp16 store, RGBA8 store), with the same
  * bits as one scalar call per pixel / value, computed 8 (AVX2) or 4 (SSE2) at a time.

@@ -1,5 +1,4 @@
-/* tiershade -- c_ref/twins/hdr_post_simd_impl.h
- * The float HDR path's twins on TSV_W pixels at once, in SoA: bloom_downsample_impl.h,
+/* tiershade twins: the float HDR path's twins on TSV_W pixels at once, in SoA: bloom_downsample_impl.h,
  * bloom_blur_impl.h and hdr_tonemap_impl.h (float32) statement by statement, so every lane
  * gives the scalar twin's bits; plus hdr_formats.c's fp16 and RGBA8 stores on lanes.
  * Variant switches stay scalar `if`s; every record value is per lane.

@@ -1,4 +1,4 @@
-/* c_ref/twins/hdr_tonemap.c: instantiates the hdr_tonemap twin in float32
+/* tiershade twins: instantiates the hdr_tonemap twin in float32
  * (llvmpipe-exact) and double (accuracy reference). See hdr_tonemap_impl.h. */
 #include "twins/hdr_tonemap.h"
 

@@ -1,4 +1,4 @@
-/* c_ref/twins/hdr_tonemap.h: C twin of shaders/hdr_tonemap.fs, the float HDR path's last
+/* tiershade twins: C twin of shaders/hdr_tonemap.fs, the float HDR path's last
  * pass: tone-map scale, the bloom combine of floattoscreen_combine (fact sheet
  * section 7) and the output encoding. One call shades one pixel from its input
  * record (shaders/hdr_tonemap_slots.glsl) and the quarter-size bloom texture. */

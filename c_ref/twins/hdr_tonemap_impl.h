@@ -1,4 +1,4 @@
-/* c_ref/twins/hdr_tonemap_impl.h: generic body of the hdr_tonemap twin; mirrors
+/* tiershade twins: generic body of the hdr_tonemap twin; mirrors
  * shaders/hdr_tonemap.fs statement by statement. Instantiated by hdr_tonemap.c. */
 
 static V4 FN(hdr_tonemap_impl)(const ht_variant *v, const ts_vec4f rec[HT_SLOTS], const ts_tex2d *bloom_tex) {
@@ -11,8 +11,11 @@ static V4 FN(hdr_tonemap_impl)(const ht_variant *v, const ts_vec4f rec[HT_SLOTS]
   bloom = M(v3)(M(min)(bloom.x, K(1.0)), M(min)(bloom.y, K(1.0)), M(min)(bloom.z, K(1.0)));
   TS_REAL k = params.y * M(pow)(FN(luminance)(bloom), params.z);
   V3 c = M(add3)(M(scale3)(fb, params.x), M(scale3)(bloom, k));
-  if (v->output_mode == 1) c = FN(output_gamma22)(c);
-  else if (v->output_mode == 2) c = FN(output_srgb)(c);
-  else c = FN(output_linear)(c);
+  if (v->output_mode == 1)
+    c = FN(output_gamma22)(c);
+  else if (v->output_mode == 2)
+    c = FN(output_srgb)(c);
+  else
+    c = FN(output_linear)(c);
   return M(v4)(c.x, c.y, c.z, K(1.0));
 }

@@ -1,4 +1,4 @@
-/* c_ref/twins/luminance_compare.c: instantiates the luminance_compare twin in float32
+/* tiershade twins: instantiates the luminance_compare twin in float32
  * (llvmpipe-exact) and double (accuracy reference). See luminance_compare_impl.h. */
 #include "twins/luminance_compare.h"
 

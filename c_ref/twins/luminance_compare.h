@@ -1,4 +1,4 @@
-/* c_ref/twins/luminance_compare.h: C twin of shaders/luminance_compare.fs, the bucket test
+/* tiershade twins: C twin of shaders/luminance_compare.fs, the bucket test
  * of the auto-exposure histogram. One call tests one pixel from its input record
  * (shaders/luminance_compare_slots.glsl): (1,1,1,1) when the pixel is marked, and
  * (0,0,0,0), the cleared target, when the shader discards it. */

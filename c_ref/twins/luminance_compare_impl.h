@@ -1,4 +1,4 @@
-/* c_ref/twins/luminance_compare_impl.h: generic body of the luminance_compare twin; mirrors
+/* tiershade twins: generic body of the luminance_compare twin; mirrors
  * shaders/luminance_compare.fs statement by statement. Instantiated by luminance_compare.c. */
 
 static TS_REAL FN(lc_lum)(const lc_variant *v, V3 c, TS_REAL tscale) {

@@ -1,4 +1,4 @@
-/* c_ref/twins/luminance_smooth.c: instantiates the luminance_smooth twin in float32
+/* tiershade twins: instantiates the luminance_smooth twin in float32
  * (llvmpipe-exact) and double (accuracy reference). See luminance_smooth_impl.h. */
 #include "twins/luminance_smooth.h"
 
@@ -16,5 +16,9 @@
 #include "common/common_hdr.h"
 #include "twins/luminance_smooth_impl.h"
 
-ts_vec4f luminance_smooth_f(const ls_variant *v, const ts_vec4f rec[LS_SLOTS]) { return luminance_smooth_impl_f(v, rec); }
-ts_vec4d luminance_smooth_d(const ls_variant *v, const ts_vec4f rec[LS_SLOTS]) { return luminance_smooth_impl_d(v, rec); }
+ts_vec4f luminance_smooth_f(const ls_variant *v, const ts_vec4f rec[LS_SLOTS]) {
+  return luminance_smooth_impl_f(v, rec);
+}
+ts_vec4d luminance_smooth_d(const ls_variant *v, const ts_vec4f rec[LS_SLOTS]) {
+  return luminance_smooth_impl_d(v, rec);
+}

@@ -1,4 +1,4 @@
-/* c_ref/twins/luminance_smooth.h: C twin of shaders/luminance_smooth.fs, the temporal
+/* tiershade twins: C twin of shaders/luminance_smooth.fs, the temporal
  * prefilter of the auto-exposure luminance: S = S_prev + alpha (L - S_prev), with L the
  * (tone-mapped) luminance of the frame's pixel. One call shades one pixel from its input
  * record (shaders/luminance_smooth_slots.glsl). */

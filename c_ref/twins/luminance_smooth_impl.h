@@ -1,4 +1,4 @@
-/* c_ref/twins/luminance_smooth_impl.h: generic body of the luminance_smooth twin; mirrors
+/* tiershade twins: generic body of the luminance_smooth twin; mirrors
  * shaders/luminance_smooth.fs statement by statement. Instantiated by luminance_smooth.c. */
 
 static V4 FN(luminance_smooth_impl)(const ls_variant *v, const ts_vec4f rec[LS_SLOTS]) {

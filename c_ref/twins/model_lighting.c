@@ -1,4 +1,4 @@
-/* c_ref/twins/model_lighting.c: instantiates the model_lighting twin in float32
+/* tiershade twins: instantiates the model_lighting twin in float32
  * (llvmpipe-exact) and double (accuracy reference). See model_lighting_impl.h. */
 #include "twins/model_lighting.h"
 

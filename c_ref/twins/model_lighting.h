@@ -1,4 +1,4 @@
-/* c_ref/twins/model_lighting.h: C twin of shaders/model_lighting.fs (HL2 model lighting and
+/* tiershade twins: C twin of shaders/model_lighting.fs (HL2 model lighting and
  * the Episode One Phong terms).
  * One call shades one pixel from its input record (the same slots the shader
  * reads in conformance mode, shaders/model_lighting_slots.glsl). */
@@ -21,16 +21,16 @@ enum ml_slot {
 #undef TS_SLOT
 
 typedef struct {
-  int tier;           /* enum ts_tier_id */
+  int tier; /* enum ts_tier_id */
   int albedo_texture; /* ALBEDO_TEXTURE */
-  int half_lambert;   /* HALF_LAMBERT */
-  int output_mode;    /* OUTPUT_MODE: 0 linear, 1 gamma 2.2, 2 sRGB */
-  int num_lights;     /* NUM_LIGHTS (ps20, ps2b); sm3 reads the count from the record */
-  int phong;          /* PHONG (ps2b, sm3) */
-  int exponent_map;   /* PHONG_EXPONENT_MAP */
-  int rim_light;      /* RIM_LIGHT */
-  int envmap;         /* ENVMAP */
-  int light_warp;     /* LIGHT_WARP */
+  int half_lambert; /* HALF_LAMBERT */
+  int output_mode; /* OUTPUT_MODE: 0 linear, 1 gamma 2.2, 2 sRGB */
+  int num_lights; /* NUM_LIGHTS (ps20, ps2b); sm3 reads the count from the record */
+  int phong; /* PHONG (ps2b, sm3) */
+  int exponent_map; /* PHONG_EXPONENT_MAP */
+  int rim_light; /* RIM_LIGHT */
+  int envmap; /* ENVMAP */
+  int light_warp; /* LIGHT_WARP */
 } ml_variant;
 
 /* The textures a variant samples (NULL when the variant does not). */

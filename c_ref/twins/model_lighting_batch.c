@@ -1,5 +1,4 @@
-/* tiershade -- c_ref/twins/model_lighting_batch.c
- * Instantiates the SIMD model_lighting twin (model_lighting_simd_impl.h over ts_simd.h and
+/* tiershade twins: instantiates the SIMD model_lighting twin (model_lighting_simd_impl.h over ts_simd.h and
  * ts_simd_sampler.h) for AVX2+FMA (llvmpipe fuses its mads), AVX2 without FMA (it does not)
  * and SSE2 (4 lanes, unfused only) through ts_simd_instances.h, and picks one per call (see
  * model_lighting_batch.h). */
@@ -24,12 +23,18 @@ void model_lighting_f_batch(const ml_variant *v, const ml_batch_input *in, const
   switch (ts_batch_isa()) {
 #ifdef TS_BATCH_X86
     case TS_BATCH_AVX2:
-      if (ts_math_fused()) ml_batch_avx2fma(v, in, tex, out, count);
-      else ml_batch_avx2(v, in, tex, out, count);
+      if (ts_math_fused())
+        ml_batch_avx2fma(v, in, tex, out, count);
+      else
+        ml_batch_avx2(v, in, tex, out, count);
       return;
-    case TS_BATCH_SSE2: ml_batch_sse2(v, in, tex, out, count); return;
+    case TS_BATCH_SSE2:
+      ml_batch_sse2(v, in, tex, out, count);
+      return;
 #endif
-    default: batch_scalar(v, in, tex, out, count); return;
+    default:
+      batch_scalar(v, in, tex, out, count);
+      return;
   }
 }
 

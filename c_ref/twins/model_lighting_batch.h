@@ -1,5 +1,4 @@
-/* tiershade -- c_ref/twins/model_lighting_batch.h
- * The model_lighting float32 twin for many pixels per call: the same bits as calling
+/* tiershade twins: the model_lighting float32 twin for many pixels per call: the same bits as calling
  * model_lighting_f() once per pixel, computed 8 (AVX2) or 4 (SSE2) pixels at a time.
  *
  * How to use:
@@ -26,7 +25,7 @@ extern "C" {
 
 typedef struct {
   const ts_vec4f *slot[ML_SLOTS]; /* slot k of pixel i: slot[k][i * stride[k]] */
-  int stride[ML_SLOTS];           /* in ts_vec4f; 0 = one value for every pixel */
+  int stride[ML_SLOTS]; /* in ts_vec4f; 0 = one value for every pixel */
 } ml_batch_input;
 
 /* out[i] = model_lighting_f(v, record of pixel i, tex), i = 0..count-1 */

@@ -1,4 +1,4 @@
-/* c_ref/twins/model_lighting_impl.h: generic body of the model_lighting twin; mirrors
+/* tiershade twins: generic body of the model_lighting twin; mirrors
  * shaders/model_lighting.fs statement by statement. Instantiated by model_lighting.c. */
 
 static V3 FN(ml_ambient)(V3 n, const ts_vec4f rec[ML_SLOTS]) {
@@ -82,8 +82,7 @@ static V4 FN(model_lighting_impl)(const ml_variant *v, const ts_vec4f rec[ML_SLO
     if (!spec_const_zero) spec = M(scale3)(spec, spec_mask * phong.z);
     V4 tint = FN(vec4_in)(rec[ML_SLOT_PHONG_TINT]);
     V3 spec_tint = FN(xyz4)(tint);
-    if (v->exponent_map && tint.w > K(0.5))
-      spec_tint = FN(lerp3_from_one)(FN(xyz4)(base), expmap.y);
+    if (v->exponent_map && tint.w > K(0.5)) spec_tint = FN(lerp3_from_one)(FN(xyz4)(base), expmap.y);
     if (v->rim_light) {
       TS_REAL fresnel4 = FN(fresnel4)(NdotV);
       TS_REAL rim_mask = FN(lerp_from_one)(expmap.w, rim_params.z);

@@ -1,5 +1,4 @@
-/* tiershade -- c_ref/twins/model_lighting_simd_impl.h
- * The model_lighting twin (c_ref/twins/model_lighting_impl.h, float32) on TSV_W pixels at once, in
+/* tiershade twins: the model_lighting twin (c_ref/twins/model_lighting_impl.h, float32) on TSV_W pixels at once, in
  * SoA: the same statements in the same order, so every lane gives the scalar twin's bits.
  * Variant switches (combos) stay scalar `if`s; everything read from the record is per lane,
  * including what a production frame passes as uniforms (conformance records vary it per
@@ -20,9 +19,12 @@ TSV_INL V3v VFN(ml_rec3)(const ml_batch_input *in, int k, const size_t *pix) {
 static V3v VFN(ml_ambient)(V3v n, const ml_batch_input *in, const size_t *pix) {
   const V3v n2 = VFN(mul3)(n, n);
   const VF z = VFN(splat)(0.0f);
-  const V3v cx = VFN(sel3)(n.x >= z, VFN(ml_rec3)(in, ML_SLOT_AMBIENT + 0, pix), VFN(ml_rec3)(in, ML_SLOT_AMBIENT + 1, pix));
-  const V3v cy = VFN(sel3)(n.y >= z, VFN(ml_rec3)(in, ML_SLOT_AMBIENT + 2, pix), VFN(ml_rec3)(in, ML_SLOT_AMBIENT + 3, pix));
-  const V3v cz = VFN(sel3)(n.z >= z, VFN(ml_rec3)(in, ML_SLOT_AMBIENT + 4, pix), VFN(ml_rec3)(in, ML_SLOT_AMBIENT + 5, pix));
+  const V3v cx =
+      VFN(sel3)(n.x >= z, VFN(ml_rec3)(in, ML_SLOT_AMBIENT + 0, pix), VFN(ml_rec3)(in, ML_SLOT_AMBIENT + 1, pix));
+  const V3v cy =
+      VFN(sel3)(n.y >= z, VFN(ml_rec3)(in, ML_SLOT_AMBIENT + 2, pix), VFN(ml_rec3)(in, ML_SLOT_AMBIENT + 3, pix));
+  const V3v cz =
+      VFN(sel3)(n.z >= z, VFN(ml_rec3)(in, ML_SLOT_AMBIENT + 4, pix), VFN(ml_rec3)(in, ML_SLOT_AMBIENT + 5, pix));
   return VFN(add3)(VFN(add3)(VFN(scale3)(cx, n2.x), VFN(scale3)(cy, n2.y)), VFN(scale3)(cz, n2.z));
 }
 
@@ -153,8 +155,7 @@ static void VFN(ml_block)(const ml_variant *v, const ml_batch_input *in, const m
       const VF RdotL = VFN(saturate)(VFN(dot3)(R, L));
       const V3v lit = VFN(scale3)(VFN(xyz)(l[0]), VFN(saturate)(NdotL) * att);
       spec = VFN(sel3)(active, VFN(add3)(spec, VFN(scale3)(lit, VFN(pow)(RdotL, k))), spec);
-      if (v->rim_light)
-        rim = VFN(sel3)(active, VFN(add3)(rim, VFN(scale3)(lit, VFN(pow)(RdotL, rim_params.x))), rim);
+      if (v->rim_light) rim = VFN(sel3)(active, VFN(add3)(rim, VFN(scale3)(lit, VFN(pow)(RdotL, rim_params.x))), rim);
     }
   }
 
@@ -189,8 +190,8 @@ static void VFN(ml_block)(const ml_variant *v, const ml_batch_input *in, const m
         rim = VFN(scale3)(rim, rim_mask * fresnel4);
         spec = VFN(max3)(spec, rim);
       }
-      spec = VFN(add3)(spec, VFN(scale3)(VFN(ml_ambient)(V, in, pix),
-                                         rim_params.y * VFN(saturate)(rim_mask * fresnel4 * N.y)));
+      spec = VFN(add3)(
+          spec, VFN(scale3)(VFN(ml_ambient)(V, in, pix), rim_params.y * VFN(saturate)(rim_mask * fresnel4 * N.y)));
     }
     color = spec_const_zero && !v->rim_light ? spec : VFN(mul3)(spec, spec_tint);
     if (v->envmap) {
@@ -198,7 +199,8 @@ static void VFN(ml_block)(const ml_variant *v, const ml_batch_input *in, const m
       const VF env_mask = VFN(sel)(env.z > 0.5f, mask, VFN(sel)(fr_inv, 1.0f - base.w, base.w));
       const VF env_scale = env.x * VFN(lerp_from_one)(F, env.y) * env_mask;
       const V4v e = VFN(textureCube)(tex->envmap, R);
-      color = VFN(add3)(color, VFN(mul3)(VFN(scale3)(VFN(xyz)(e), env_scale), VFN(ml_rec3)(in, ML_SLOT_ENVMAP_TINT, pix)));
+      color =
+          VFN(add3)(color, VFN(mul3)(VFN(scale3)(VFN(xyz)(e), env_scale), VFN(ml_rec3)(in, ML_SLOT_ENVMAP_TINT, pix)));
     }
     const V4v si = VFN(ml_rec)(in, ML_SLOT_SELF_ILLUM, pix);
     color = VFN(add3)(color, VFN(mul3)(VFN(xyz)(base), VFN(lerp3)(diffuse, VFN(xyz)(si), base.w * si.w)));

@@ -1,4 +1,4 @@
-/* c_ref/twins/tier_id.h: the one tier enum. The twins' variant records store it
+/* tiershade twins: the one tier enum. The twins' variant records store it
  * (ml_variant.tier, wl_variant.tier); glue's enum class Tier (shaderlib/variants.h)
  * takes its values from it; the shaders see it as TS_TIER_PS20 / PS2B / SM3 defines. */
 #ifndef TS_TIER_ID_H

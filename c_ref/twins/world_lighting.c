@@ -1,4 +1,4 @@
-/* c_ref/twins/world_lighting.c: instantiates the world_lighting twin in float32
+/* tiershade twins: instantiates the world_lighting twin in float32
  * (llvmpipe-exact) and double (accuracy reference). See world_lighting_impl.h. */
 #include "twins/world_lighting.h"
 

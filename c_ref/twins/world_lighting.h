@@ -1,4 +1,4 @@
-/* c_ref/twins/world_lighting.h: C twin of shaders/world_lighting.fs (Source's world
+/* tiershade twins: C twin of shaders/world_lighting.fs (Source's world
  * shading: lightmaps, radiosity normal mapping, cube-map specular). One call
  * shades one pixel from its input record (the slots the shader reads in
  * conformance mode, shaders/world_lighting_slots.glsl) and its textures. */
@@ -25,10 +25,10 @@ enum wl_encoding { WL_LM_FLOAT = 0, WL_LM_412 = 1, WL_LM_LDR = 2, WL_LM_RGBE = 3
 enum wl_mask { WL_MASK_NONE = 0, WL_MASK_TEXTURE = 1, WL_MASK_NORMAL_ALPHA = 2, WL_MASK_INV_BASE_ALPHA = 3 };
 
 typedef struct {
-  int tier;       /* enum ts_tier_id */
-  int bumpmap;    /* BUMPMAP */
-  int encoding;   /* LIGHTMAP_ENCODING */
-  int envmap;     /* ENVMAP */
+  int tier; /* enum ts_tier_id */
+  int bumpmap; /* BUMPMAP */
+  int encoding; /* LIGHTMAP_ENCODING */
+  int envmap; /* ENVMAP */
   int envmapmask; /* ENVMAPMASK */
 } wl_variant;
 

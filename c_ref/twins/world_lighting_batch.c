@@ -1,5 +1,4 @@
-/* tiershade -- c_ref/twins/world_lighting_batch.c
- * Instantiates the SIMD world_lighting twin (world_lighting_simd_impl.h) for AVX2+FMA, AVX2 and
+/* tiershade twins: instantiates the SIMD world_lighting twin (world_lighting_simd_impl.h) for AVX2+FMA, AVX2 and
  * SSE2 (ts_simd_instances.h) and dispatches per call (world_lighting_batch.h). */
 #include "twins/world_lighting_batch.h"
 
@@ -22,12 +21,18 @@ void world_lighting_f_batch(const wl_variant *v, const wl_batch_input *in, const
   switch (ts_batch_isa()) {
 #ifdef TS_BATCH_X86
     case TS_BATCH_AVX2:
-      if (ts_math_fused()) wl_batch_avx2fma(v, in, t, out, count);
-      else wl_batch_avx2(v, in, t, out, count);
+      if (ts_math_fused())
+        wl_batch_avx2fma(v, in, t, out, count);
+      else
+        wl_batch_avx2(v, in, t, out, count);
       return;
-    case TS_BATCH_SSE2: wl_batch_sse2(v, in, t, out, count); return;
+    case TS_BATCH_SSE2:
+      wl_batch_sse2(v, in, t, out, count);
+      return;
 #endif
-    default: batch_scalar(v, in, t, out, count); return;
+    default:
+      batch_scalar(v, in, t, out, count);
+      return;
   }
 }
 

@@ -1,5 +1,4 @@
-/* tiershade -- c_ref/twins/world_lighting_batch.h
- * The world_lighting float32 twin for many pixels per call: the same bits as calling
+/* tiershade twins: the world_lighting float32 twin for many pixels per call: the same bits as calling
  * world_lighting_f() once per pixel, 8 (AVX2) or 4 (SSE2) pixels at a time (ts_batch.h).
  * Use it like model_lighting_batch.h: ts_math_init() on the thread, then
  *   wl_batch_input in;  // slot k of pixel i: in.slot[k][i * in.stride[k]]; stride 0 = shared
@@ -17,7 +16,7 @@ extern "C" {
 
 typedef struct {
   const ts_vec4f *slot[WL_SLOTS]; /* slot k of pixel i: slot[k][i * stride[k]] */
-  int stride[WL_SLOTS];           /* in ts_vec4f; 0 = one value for every pixel */
+  int stride[WL_SLOTS]; /* in ts_vec4f; 0 = one value for every pixel */
 } wl_batch_input;
 
 void world_lighting_f_batch(const wl_variant *v, const wl_batch_input *in, const wl_textures *t, ts_vec4f *out,

@@ -1,9 +1,10 @@
-/* c_ref/twins/world_lighting_impl.h: generic body of the world_lighting twin; mirrors
+/* tiershade twins: generic body of the world_lighting twin; mirrors
  * shaders/world_lighting.fs statement by statement. Instantiated by world_lighting.c. */
 
 static V3 FN(wl_lightmap)(const wl_variant *v, const ts_tex2d *lm, V2 uv, V2 offset, TS_REAL k) {
   V4 t = FN(sample2d)(lm, FN(lightmap_uv)(uv, offset, k));
-  if (v->tier == TS_TIER_ID_PS20 && v->encoding == WL_LM_LDR) return FN(lightmap_ldr_to_linear_fast)(M(v3)(t.x, t.y, t.z));
+  if (v->tier == TS_TIER_ID_PS20 && v->encoding == WL_LM_LDR)
+    return FN(lightmap_ldr_to_linear_fast)(M(v3)(t.x, t.y, t.z));
   return FN(lightmap_decode)(t, v->encoding);
 }
 
@@ -59,8 +60,8 @@ static V4 FN(world_lighting_impl)(const wl_variant *v, const ts_vec4f rec[WL_SLO
     int full = v->tier != TS_TIER_ID_SM3 || env_params.x != K(0.0) || env_params.y != K(1.0) || env_params.w != K(1.0);
     if (full) {
       spec = FN(envmap_saturation)(FN(envmap_contrast)(spec, env_params.x), env_params.y);
-      TS_REAL NdotV = v->tier == TS_TIER_ID_PS20 ? FN(cosine_between)(N, E)
-                                              : M(dot3)(FN(safe_normalize)(N), FN(safe_normalize)(E));
+      TS_REAL NdotV =
+          v->tier == TS_TIER_ID_PS20 ? FN(cosine_between)(N, E) : M(dot3)(FN(safe_normalize)(N), FN(safe_normalize)(E));
       spec = M(scale3)(spec, FN(fresnel)(NdotV, env_params.z, env_params.w));
     }
     color = M(scale3)(M(add3)(color, spec), tint_scale.w);
@@ -69,7 +70,8 @@ static V4 FN(world_lighting_impl)(const wl_variant *v, const ts_vec4f rec[WL_SLO
   }
 
   if (v->tier != TS_TIER_ID_PS20)
-    color = FN(range_fog)(color, lm_offset.z, FN(vec4_in)(rec[WL_SLOT_FOG_COLOR]), FN(vec4_in)(rec[WL_SLOT_FOG_PARAMS]));
+    color =
+        FN(range_fog)(color, lm_offset.z, FN(vec4_in)(rec[WL_SLOT_FOG_COLOR]), FN(vec4_in)(rec[WL_SLOT_FOG_PARAMS]));
   /* Not FN(final_output): Source's range fog sits between its scale and its clamp. */
   (void)FN(final_output);
   V3 c = FN(output_linear)(color);

@@ -1,5 +1,4 @@
-/* tiershade -- c_ref/twins/world_lighting_simd_impl.h
- * The world_lighting twin (c_ref/twins/world_lighting_impl.h and the common_rnm/lightmap/envmap/fog
+/* tiershade twins: the world_lighting twin (c_ref/twins/world_lighting_impl.h and the common_rnm/lightmap/envmap/fog
  * headers, float32) on TSV_W pixels at once, in SoA, statement by statement, so that every lane
  * gives the scalar twin's bits. Combos stay scalar `if`s; the per-pixel "full envmap" test on
  * the record's contrast/saturation/R0 becomes a select. Included by world_lighting_batch.c after
@@ -37,9 +36,10 @@ static V3v VFN(wl_lightmap)(const wl_variant *v, const ts_tex2d *lm, VF u, VF w,
 
 /* common_rnm.h */
 TSV_INL V3v VFN(rnm_weights)(V3v n) {
-  V3v d = VFN(v3)(n.x * WLV_SQRT_2_OVER_3 + n.z * WLV_OO_SQRT_3,
-                  VFN(dot3)(n, VFN(v3)(VFN(splat)(-WLV_OO_SQRT_6), VFN(splat)(WLV_OO_SQRT_2), VFN(splat)(WLV_OO_SQRT_3))),
-                  VFN(dot3)(n, VFN(v3)(VFN(splat)(-WLV_OO_SQRT_6), VFN(splat)(-WLV_OO_SQRT_2), VFN(splat)(WLV_OO_SQRT_3))));
+  V3v d =
+      VFN(v3)(n.x * WLV_SQRT_2_OVER_3 + n.z * WLV_OO_SQRT_3,
+              VFN(dot3)(n, VFN(v3)(VFN(splat)(-WLV_OO_SQRT_6), VFN(splat)(WLV_OO_SQRT_2), VFN(splat)(WLV_OO_SQRT_3))),
+              VFN(dot3)(n, VFN(v3)(VFN(splat)(-WLV_OO_SQRT_6), VFN(splat)(-WLV_OO_SQRT_2), VFN(splat)(WLV_OO_SQRT_3))));
   d = VFN(saturate3)(d);
   const VF e = VFN(splat)(1.0e-30f); /* TS_RNM_MIN_WEIGHT: not an fp16 number (common_rnm.glsl) */
   return VFN(add3)(VFN(mul3)(d, d), VFN(v3)(e, e, e));
@@ -73,7 +73,8 @@ TSV_INL V3v VFN(envmap_saturation)(V3v s, VF saturation) {
   return VFN(v3)(a + s.x * saturation, a + s.y * saturation, a + s.z * saturation);
 }
 TSV_INL VF VFN(cosine_between)(V3v N, V3v E) {
-  return VFN(dot3)(N, E) * VFN(inversesqrt)(VFN(max)(VFN(dot3)(N, N) * VFN(dot3)(E, E), VFN(splat)(1.0e-30f))); /* 0 in fp16 */
+  return VFN(dot3)(N, E) *
+      VFN(inversesqrt)(VFN(max)(VFN(dot3)(N, N) * VFN(dot3)(E, E), VFN(splat)(1.0e-30f))); /* 0 in fp16 */
 }
 TSV_INL VF VFN(wl_fresnel)(VF NdotV, VF one_minus_r0, VF r0) {
   const VF x = 1.0f - VFN(saturate)(NdotV);
@@ -115,7 +116,8 @@ static void VFN(wl_block)(const wl_variant *v, const wl_batch_input *in, const w
     const V4v env_params = VFN(wl_rec)(in, WL_SLOT_ENV_PARAMS, pix);
     V3v N = VFN(xyz)(VFN(wl_rec)(in, WL_SLOT_NORMAL, pix));
     if (v->bumpmap != WL_BUMP_NONE) {
-      const V3v T = VFN(xyz)(VFN(wl_rec)(in, WL_SLOT_TANGENT, pix)), B = VFN(xyz)(VFN(wl_rec)(in, WL_SLOT_BINORMAL, pix));
+      const V3v T = VFN(xyz)(VFN(wl_rec)(in, WL_SLOT_TANGENT, pix)),
+                B = VFN(xyz)(VFN(wl_rec)(in, WL_SLOT_BINORMAL, pix));
       N = VFN(add3)(VFN(add3)(VFN(scale3)(T, n.x), VFN(scale3)(B, n.y)), VFN(scale3)(N, n.z));
     }
     const V3v E = VFN(xyz)(VFN(wl_rec)(in, WL_SLOT_EYE, pix));
@@ -134,11 +136,12 @@ static void VFN(wl_block)(const wl_variant *v, const wl_batch_input *in, const w
       spec = VFN(mul3)(env, tint);
     }
     /* full = tier != sm3 || contrast != 0 || saturation != 1 || R0 != 1 (per lane, unordered) */
-    const VI full = v->tier != TS_TIER_ID_SM3 ? VFN(spliti)(-1)
-                                           : (env_params.x != 0.0f) | (env_params.y != 1.0f) | (env_params.w != 1.0f);
+    const VI full = v->tier != TS_TIER_ID_SM3
+        ? VFN(spliti)(-1)
+        : (env_params.x != 0.0f) | (env_params.y != 1.0f) | (env_params.w != 1.0f);
     V3v s2 = VFN(envmap_saturation)(VFN(envmap_contrast)(spec, env_params.x), env_params.y);
     const VF NdotV = v->tier == TS_TIER_ID_PS20 ? VFN(cosine_between)(N, E)
-                                              : VFN(dot3)(VFN(safe_normalize)(N), VFN(safe_normalize)(E));
+                                                : VFN(dot3)(VFN(safe_normalize)(N), VFN(safe_normalize)(E));
     s2 = VFN(scale3)(s2, VFN(wl_fresnel)(NdotV, env_params.z, env_params.w));
     spec = VFN(sel3)(full, s2, spec);
     color = VFN(scale3)(VFN(add3)(color, spec), tint_scale.w);

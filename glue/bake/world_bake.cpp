@@ -43,7 +43,8 @@ bool bake_world(const WorldBakeInput &s, WorldBake *out, std::string *err) {
     const lm_face_size &sz = sizes[fi];
     for (int j = 0; j < sz.luxels_h; ++j) {
       for (int i = 0; i < sz.luxels_w; ++i) {
-        const ts_vec3d p = world_face_point(f, static_cast<double>(i) / (sz.luxels_w - 1), static_cast<double>(j) / (sz.luxels_h - 1));
+        const ts_vec3d p =
+            world_face_point(f, static_cast<double>(i) / (sz.luxels_w - 1), static_cast<double>(j) / (sz.luxels_h - 1));
         ts_vec3d v4[4];
         if (rnm_bake_texel(p, n, bump, s.lights.data(), static_cast<int>(s.lights.size()), v4, msg, sizeof msg) != 0) {
           *err = std::string(f.name) + ": " + msg;
@@ -65,8 +66,8 @@ bool bake_world(const WorldBakeInput &s, WorldBake *out, std::string *err) {
   // flat lightmap value times its mean albedo, a light shows as a small bright sphere.
   out->face_probe.clear();
   for (const WorldFace &f : s.faces) {
-    const int p = env_pick_probe(world_face_point(f, 0.5, 0.5), s.probes.data(), static_cast<int>(s.probes.size()), f.probe,
-                                 msg, sizeof msg);
+    const int p = env_pick_probe(world_face_point(f, 0.5, 0.5), s.probes.data(), static_cast<int>(s.probes.size()),
+                                 f.probe, msg, sizeof msg);
     if (p < 0) {
       *err = std::string(f.name) + ": " + msg;
       return false;
@@ -92,8 +93,8 @@ bool bake_world(const WorldBakeInput &s, WorldBake *out, std::string *err) {
             const ts_vec3d n = world_face_normal(f);
             ts_vec3d bump[3], v4[4];
             rnm_bump_basis(f.u, f.v, n, n, bump, msg, sizeof msg);
-            rnm_bake_texel(world_face_point(f, a, b), n, bump, s.lights.data(), static_cast<int>(s.lights.size()), v4, msg,
-                           sizeof msg);
+            rnm_bake_texel(world_face_point(f, a, b), n, bump, s.lights.data(), static_cast<int>(s.lights.size()), v4,
+                           msg, sizeof msg);
             rad = to_glm(v4[0]) * 0.6;
           }
           for (const rnm_light &l : s.lights) {  // a light bulb of radius 0.08 (not for a sun)
@@ -129,10 +130,18 @@ TextureDesc encode_page(const WorldBakeInput &s, const WorldBake &b, int encodin
     }
     for (int c = 0; c < 3; ++c) {
       switch (encoding) {
-        case WL_LM_FLOAT: o[c] = ts_half_quantize(in[c]); break;
-        case WL_LM_412: o[c] = ts_u16_412_quantize(in[c]); break;
-        case WL_LM_LDR: o[c] = ts_ldr_quantize(in[c]); break;
-        default: o[c] = in[c]; break;  // float32, unquantised
+        case WL_LM_FLOAT:
+          o[c] = ts_half_quantize(in[c]);
+          break;
+        case WL_LM_412:
+          o[c] = ts_u16_412_quantize(in[c]);
+          break;
+        case WL_LM_LDR:
+          o[c] = ts_ldr_quantize(in[c]);
+          break;
+        default:
+          o[c] = in[c];
+          break;  // float32, unquantised
       }
     }
   }
@@ -142,10 +151,18 @@ TextureDesc encode_page(const WorldBakeInput &s, const WorldBake &b, int encodin
 void decode_texel(int encoding, const float t[4], double rgb[3]) {
   for (int c = 0; c < 3; ++c) {
     switch (encoding) {
-      case WL_LM_412: rgb[c] = 16.0 * t[c]; break;
-      case WL_LM_LDR: rgb[c] = std::pow(2.0 * t[c], 2.2); break;
-      case WL_LM_RGBE: rgb[c] = t[c] * std::ldexp(1.0, static_cast<int>(std::lround(t[3] * 255.0)) - 128); break;
-      default: rgb[c] = t[c]; break;
+      case WL_LM_412:
+        rgb[c] = 16.0 * t[c];
+        break;
+      case WL_LM_LDR:
+        rgb[c] = std::pow(2.0 * t[c], 2.2);
+        break;
+      case WL_LM_RGBE:
+        rgb[c] = t[c] * std::ldexp(1.0, static_cast<int>(std::lround(t[3] * 255.0)) - 128);
+        break;
+      default:
+        rgb[c] = t[c];
+        break;
     }
   }
 }

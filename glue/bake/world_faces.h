@@ -11,8 +11,8 @@
 struct WorldFace {
   const char *name;
   ts_vec3d origin, u, v;  // corner and unit edge directions (u = the S texture axis, v = T)
-  double su, sv;          // edge lengths
-  int probe;              // explicit cube-map probe, or -1 for the nearest
+  double su, sv;  // edge lengths
+  int probe;  // explicit cube-map probe, or -1 for the nearest
   ts_vec3d normal = {0, 0, 0};  // the front normal (the lit side), not necessarily unit; bake_world refuses zero
 };
 

@@ -1,4 +1,4 @@
-// tiershade base: ImageF, the float RGBA image that renderers, diffs and image files share,
+// tiershade base: imageF, the float RGBA image that renderers, diffs and image files share,
 // its consistency check, and the side-by-side montage of images.
 #pragma once
 #include <string>

@@ -15,12 +15,12 @@
 uint32_t ulp_distance(float a, float b);
 
 struct DiffStats {
-  long pixels = 0;                 // w * h compared
-  long mismatched_pixels = 0;      // pixels where any channel is not bit-identical
-  uint32_t max_ulp = 0;            // largest ulp_distance over all channels
-  double max_abs = 0;              // largest |a - b| over channel pairs that are both finite
+  long pixels = 0;  // w * h compared
+  long mismatched_pixels = 0;  // pixels where any channel is not bit-identical
+  uint32_t max_ulp = 0;  // largest ulp_distance over all channels
+  double max_abs = 0;  // largest |a - b| over channel pairs that are both finite
   int worst_x = -1, worst_y = -1;  // first pixel reaching max_ulp (ImageF coords, y = 0 bottom);
-                                   // -1 when the images are bit-identical
+      // -1 when the images are bit-identical
 };
 
 // False-colour visualisation of a vs b, same size, RGBA in [0,1] (write it with

@@ -8,8 +8,7 @@
 struct Lut3D {
   int n = 0;
   std::vector<float> rgb;  // n * n * n * 3
-  std::string title;       // informative (the .cube TITLE, or where it came from)
+  std::string title;  // informative (the .cube TITLE, or where it came from)
   const float *at(int r, int g, int b) const { return &rgb[3 * ((static_cast<size_t>(b) * n + g) * n + r)]; }
   float *at(int r, int g, int b) { return &rgb[3 * ((static_cast<size_t>(b) * n + g) * n + r)]; }
 };
-

@@ -1,4 +1,4 @@
-// tiershade: the colour-correction section of `tiershade bench` (docs/accuracy_cost.md):
+// tiershade bench: the colour-correction section of `tiershade bench` (docs/accuracy_cost.md):
 // for LUT edges 16, 32 and 64, hardware against shader trilinear filtering, 3D texture
 // against the ES2 atlas: the error against OpenColorIO's own CPU processor applied to the
 // frame (CIEDE2000 max and mean) and llvmpipe's time per frame (median of the runs; ratios
@@ -24,7 +24,7 @@ namespace {
 struct Row {
   int n;
   int atlas, shader;  // LUT_ATLAS, SHADER_TRILINEAR
-  bool raw8;          // the LUT quantised to 8 bits (Source .raw storage)
+  bool raw8;  // the LUT quantised to 8 bits (Source .raw storage)
   // measured
   BudgetCounts slots;
   double de_max = 0, de_mean = 0, model_max = 0, model_mean = 0, ms = 0;
@@ -33,7 +33,7 @@ struct Row {
 
 std::string variant_name(int atlas, int shader, int lookups) {
   return std::string(atlas ? "ps20" : "ps2b") + ":LUT_ATLAS=" + std::to_string(atlas) +
-         ",SHADER_TRILINEAR=" + std::to_string(shader) + ",NUM_LOOKUPS=" + std::to_string(lookups);
+      ",SHADER_TRILINEAR=" + std::to_string(shader) + ",NUM_LOOKUPS=" + std::to_string(lookups);
 }
 
 // GPU-style hardware filtering, modelled in double: the trilinear (3D) or bilinear (atlas
@@ -245,16 +245,19 @@ bool run(const BenchOptions &opt, std::string *md, std::string *err) {
     << " draws, glFinish included, the draws of all programs taken round-robin (so that load changes\n"
     << "  during the run move every row alike); **x**: ratio to the 32^3 hardware 3D row\n"
     << "  of the same run. **GL = C**: channels where llvmpipe and the C twin differ (0 = bit-exact frame).\n\n"
-    << "| LUT edge | storage | filtering | variant | slots alu+tex | dE00 max | dE00 mean | modelled 8-bit weights: max / mean | ms | x | GL = C |\n"
+    << "| LUT edge | storage | filtering | variant | slots alu+tex | dE00 max | dE00 mean | modelled 8-bit weights: "
+       "max / mean | ms | x | GL = C |\n"
     << "|---|---|---|---|---|---|---|---|---|---|---|\n";
   for (const Row &r : rows) {
-    snprintf(b, sizeof b, "| %d%s | %s | %s | `%s` | %d+%d | %.3f | %.4f | %s | %.2f | %.2f | %ld |\n", r.n,
-             r.raw8 ? " (8-bit, Source .raw)" : "", r.atlas ? "2D atlas" : "3D texture",
-             r.shader ? "shader (8 taps)" : (r.atlas ? "hardware bilinear x2 + lerp" : "hardware trilinear"),
-             variant_name(r.atlas, r.shader, 1).c_str(), r.slots.alu, r.slots.tex, r.de_max, r.de_mean,
-             r.shader ? "= measured"
-                      : (std::to_string(r.model_max).substr(0, 5) + " / " + std::to_string(r.model_mean).substr(0, 6)).c_str(),
-             r.ms, base_ms > 0 ? r.ms / base_ms : 0, r.mismatched);
+    snprintf(
+        b, sizeof b, "| %d%s | %s | %s | `%s` | %d+%d | %.3f | %.4f | %s | %.2f | %.2f | %ld |\n", r.n,
+        r.raw8 ? " (8-bit, Source .raw)" : "", r.atlas ? "2D atlas" : "3D texture",
+        r.shader ? "shader (8 taps)" : (r.atlas ? "hardware bilinear x2 + lerp" : "hardware trilinear"),
+        variant_name(r.atlas, r.shader, 1).c_str(), r.slots.alu, r.slots.tex, r.de_max, r.de_mean,
+        r.shader
+            ? "= measured"
+            : (std::to_string(r.model_max).substr(0, 5) + " / " + std::to_string(r.model_mean).substr(0, 6)).c_str(),
+        r.ms, base_ms > 0 ? r.ms / base_ms : 0, r.mismatched);
     o << b;
   }
   o << "\nThe example corrections at Source's 32^3 (hardware 3D), against OpenColorIO on the same frame:\n\n"

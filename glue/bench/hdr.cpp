@@ -1,4 +1,4 @@
-// tiershade: the `bench` section of the HDR paths (docs/accuracy_cost.md): what the
+// tiershade bench: the `bench` section of the HDR paths (docs/accuracy_cost.md): what the
 // integer path loses against the float path, measured in one run on the HDR scene
 // (glue/demo/hdr_scene.h) at tone-map scale 1:
 //   - error in 8-bit display codes against the double-precision float path (no storage
@@ -68,8 +68,7 @@ void fractions_exact(const std::vector<double> &lin, int w, int h, double tscale
         count[b] += lum >= lo && lum <= hi;
       }
     }
-  for (int b = 0; b < AE_BUCKETS; ++b)
-    out[b] = static_cast<double>(count[b]) / std::max(1L, count[AE_ALL_PIXELS]);
+  for (int b = 0; b < AE_BUCKETS; ++b) out[b] = static_cast<double>(count[b]) / std::max(1L, count[AE_ALL_PIXELS]);
 }
 
 double l1(const double a[AE_BUCKETS], const double b[AE_BUCKETS]) {
@@ -160,8 +159,7 @@ bool run_bench(const BenchOptions &opt, std::string *md, std::string *err) {
   const double bq = static_cast<double>(hdr_bloom_size(w)) * hdr_bloom_size(h);
   const double b_int = target_bytes_per_pixel(TargetFormat::RGBA8);
   const double b_float = target_bytes_per_pixel(TargetFormat::RGBA16F) +
-                         3 * target_bytes_per_pixel(TargetFormat::RGBA16F) * bq / px +
-                         target_bytes_per_pixel(TargetFormat::RGBA8);
+      3 * target_bytes_per_pixel(TargetFormat::RGBA16F) * bq / px + target_bytes_per_pixel(TargetFormat::RGBA8);
   long hdr_px = 0;
   for (size_t p = 0; p < lin.size() / 4; ++p)
     hdr_px += 0.2125 * lin[p * 4] + 0.7154 * lin[p * 4 + 1] + 0.0721 * lin[p * 4 + 2] > 1.0;
@@ -169,12 +167,12 @@ bool run_bench(const BenchOptions &opt, std::string *md, std::string *err) {
   std::ostringstream o;
   char b[512];
   o << "## HDR: the integer path against the float path, " << w << "x" << h << " frame\n\n"
-    << "Scene: the HDR scene of `tiershade demo` (glue/demo/hdr_scene.h; " << note << "), tone-map scale 1: "
-    << std::to_string(100.0 * hdr_px / px).substr(0, 4)
+    << "Scene: the HDR scene of `tiershade demo` (glue/demo/hdr_scene.h; " << note
+    << "), tone-map scale 1: " << std::to_string(100.0 * hdr_px / px).substr(0, 4)
     << " % of the pixels have a luminance above 1 before tone mapping. Integer path: model_lighting sm3 with\n"
     << "the tone-map scale and exact sRGB in the shader, into RGBA8. Float path: linear into RGBA16F, bloom\n"
-    << "(4x4 box, 13-tap Gaussian X and Y on quarter-size RGBA16F), hdr_tonemap (bloom amount "
-    << bloom_on.bloom_amount << ", exponent " << bloom_on.bloom_exponent << ") into RGBA8 (docs/hdr.md).\n\n"
+    << "(4x4 box, 13-tap Gaussian X and Y on quarter-size RGBA16F), hdr_tonemap (bloom amount " << bloom_on.bloom_amount
+    << ", exponent " << bloom_on.bloom_exponent << ") into RGBA8 (docs/hdr.md).\n\n"
     << "- **error**: |display code - 255 x reference| over every channel, against the float path evaluated in\n"
     << "  double with no storage rounding (intermediate images in float32), with bloom and without bloom.\n"
     << "- **histogram L1**: sum over the 16 ranges of |bucket fraction - exact fraction| (%), the exact\n"
@@ -188,8 +186,9 @@ bool run_bench(const BenchOptions &opt, std::string *md, std::string *err) {
   snprintf(b, sizeof b, "| integer (RGBA8) | %.2f | %.3f | %.2f%% | %.2f | %.3f | %.3f | %.1f | %.2f | 1.00 |\n",
            ei_on.max, ei_on.mean, ei_on.over1, ei_off.max, ei_off.mean, l1(h_int, h_exact), b_int, ms_int);
   o << b;
-  snprintf(b, sizeof b, "| float (RGBA16F + bloom) | %.2f | %.3f | %.2f%% | %.2f | %.3f | %.3f | %.1f | %.2f | %.2f |\n",
-           ef_on.max, ef_on.mean, ef_on.over1, ef_off.max, ef_off.mean, l1(h_float, h_exact), b_float, ms_float,
+  snprintf(b, sizeof b,
+           "| float (RGBA16F + bloom) | %.2f | %.3f | %.2f%% | %.2f | %.3f | %.3f | %.1f | %.2f | %.2f |\n", ef_on.max,
+           ef_on.mean, ef_on.over1, ef_off.max, ef_off.mean, l1(h_float, h_exact), b_float, ms_float,
            ms_int > 0 ? ms_float / ms_int : 0);
   o << b;
   o << "\nReading the table: without bloom both paths are within rounding of the reference (the integer path\n"

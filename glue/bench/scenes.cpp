@@ -1,4 +1,4 @@
-// tiershade glue: the scenes section of `tiershade bench` (docs/accuracy_cost.md): for each
+// tiershade bench: the scenes section of `tiershade bench` (docs/accuracy_cost.md): for each
 // shipped scene at 1280x720, what the variant selection saves (variants and compile time
 // against every combo of the families used), the frame time on llvmpipe per tier and HDR
 // path, the C fallback's frame time and its ratio to llvmpipe's (same run), the first frame
@@ -82,9 +82,8 @@ bool child_first_frame_once(const std::string &exe, const std::string &scene, Ti
   }
   const std::string out = std::string(dir) + "/frame";
   const std::string cmd = std::string("exec env -u MESA_SHADER_CACHE_DISABLE MESA_SHADER_CACHE_DIR='") + dir +
-                          "/cache' " + (warmup ? "" : "TIERSHADE_NO_WARMUP=1 ") + "'" + exe + "' render '" + scene +
-                          "' --tier " + tier_name(tier) + " --hdr " + hdr + " --size 1280x720 --quiet --report-memory -o '" +
-                          out + "' 2>/dev/null";
+      "/cache' " + (warmup ? "" : "TIERSHADE_NO_WARMUP=1 ") + "'" + exe + "' render '" + scene + "' --tier " +
+      tier_name(tier) + " --hdr " + hdr + " --size 1280x720 --quiet --report-memory -o '" + out + "' 2>/dev/null";
   fflush(stdout);
   const auto t0 = Clock::now();
   FILE *p = popen(cmd.c_str(), "r");
@@ -132,7 +131,7 @@ struct Row {
   int variants = 0, combos = 0;
   double compile_sel = 0, compile_all = 0;
   double first_ms = 0, first_nowarm_ms = 0;  // a fresh process, empty shader cache, warm-up on / off
-  double peak_mib = 0;                        // that process's VmHWM (warm-up on)
+  double peak_mib = 0;  // that process's VmHWM (warm-up on)
   double gl_frame = 0, gl_lit = 0;  // medians of warm frames
   double c_frame = 0, c_lit = 0;
   double uber_frame = 0, uber_lit = 0;  // llvmpipe, every feature compiled in (no selection)
@@ -204,8 +203,8 @@ bool measure(const Scene &s, Tier tier, const std::string &hdr, int runs, Row *r
   row->c_lit = median(clit);
   double nowarm_mib = 0;
   return compile_all_ms(sel, &row->compile_all, err) &&
-         child_first_frame_ms(s.path, tier, hdr, true, &row->first_ms, &row->peak_mib, err) &&
-         child_first_frame_ms(s.path, tier, hdr, false, &row->first_nowarm_ms, &nowarm_mib, err);
+      child_first_frame_ms(s.path, tier, hdr, true, &row->first_ms, &row->peak_mib, err) &&
+      child_first_frame_ms(s.path, tier, hdr, false, &row->first_nowarm_ms, &nowarm_mib, err);
 }
 
 bool run(const BenchOptions &opt, std::string *md, std::string *err) {
@@ -233,8 +232,10 @@ bool run(const BenchOptions &opt, std::string *md, std::string *err) {
   o << "## Scenes: only what the scene calls for (1280x720)\n\n"
     << "The shipped glTF scenes (docs/scenes.md) rendered by `tiershade render`'s code: EGL GLES 3.0 on llvmpipe\n"
     << "(forward draws of the selected production variants, then the HDR path and colour correction) and the\n"
-    << "C fallback (its own rasteriser and the bit-exact batched twins, " << "both cores). Medians of " << runs
-    << " warm frames (the selection's and the all-features baseline's taken in turn, then the C fallback's); **first frame**: the wall time of a fresh `tiershade render` process with an empty\n"
+    << "C fallback (its own rasteriser and the bit-exact batched twins, "
+    << "both cores). Medians of " << runs
+    << " warm frames (the selection's and the all-features baseline's taken in turn, then the C fallback's); **first "
+       "frame**: the wall time of a fresh `tiershade render` process with an empty\n"
     << "shader-cache directory, from its start to its exit (process start, scene loaded, draws prepared: lightmap\n"
     << "bake, probe cube maps; the selected variants compiled, linked and JIT-compiled by their first draw; EXR and\n"
     << "PNG written), median of 3 processes; with the shader warm-up thread (glue/scene/frame.cpp) and without it\n"
@@ -245,18 +246,19 @@ bool run(const BenchOptions &opt, std::string *md, std::string *err) {
     << "**all features**: the same scene on llvmpipe with every draw's variant having every feature compiled\n"
     << "in (what an engine without selection runs; unused features off by uniforms); **lit x saved**: its lit\n"
     << "pass over the selection's.\n\n"
-    << "| scene | tier | HDR path | variants / combos | compile ms selected / all | x saved | first frame ms (warm-up / none) | peak MiB | "
+    << "| scene | tier | HDR path | variants / combos | compile ms selected / all | x saved | first frame ms (warm-up "
+       "/ none) | peak MiB | "
        "llvmpipe frame ms | llvmpipe lit ms | all features: frame / lit ms | lit x saved | C frame ms | C lit ms | "
        "C / llvmpipe frame | C / llvmpipe lit |\n"
     << "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n";
   for (const Row &r : rows) {
     o << "| " << r.scene.substr(7) << " | " << r.tier << " | " << r.hdr << " | " << r.variants << " / " << r.combos
       << " | " << f1(r.compile_sel) << " / " << f1(r.compile_all) << " | "
-      << f1(r.compile_all / std::max(1e-3, r.compile_sel)) << " | " << f1(r.first_ms) << " / "
-      << f1(r.first_nowarm_ms) << " | " << f1(r.peak_mib) << " | " << f1(r.gl_frame)
-      << " | " << f1(r.gl_lit) << " | " << f1(r.uber_frame) << " / " << f1(r.uber_lit) << " | "
-      << f2(r.uber_lit / std::max(1e-3, r.gl_lit)) << " | " << f1(r.c_frame) << " | " << f1(r.c_lit) << " | "
-      << f2(r.c_frame / std::max(1e-3, r.gl_frame)) << " | " << f2(r.c_lit / std::max(1e-3, r.gl_lit)) << " |\n";
+      << f1(r.compile_all / std::max(1e-3, r.compile_sel)) << " | " << f1(r.first_ms) << " / " << f1(r.first_nowarm_ms)
+      << " | " << f1(r.peak_mib) << " | " << f1(r.gl_frame) << " | " << f1(r.gl_lit) << " | " << f1(r.uber_frame)
+      << " / " << f1(r.uber_lit) << " | " << f2(r.uber_lit / std::max(1e-3, r.gl_lit)) << " | " << f1(r.c_frame)
+      << " | " << f1(r.c_lit) << " | " << f2(r.c_frame / std::max(1e-3, r.gl_frame)) << " | "
+      << f2(r.c_lit / std::max(1e-3, r.gl_lit)) << " |\n";
   }
   o << "\nPeak resident memory of one `tiershade render SCENE --size 1280x720` process (the scene's default tier\n"
     << "sm3 and HDR path), its VmHWM:\n\n| scene | EGL GLES 3.0 MiB | C fallback MiB |\n|---|---|---|\n";

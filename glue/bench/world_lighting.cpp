@@ -1,4 +1,4 @@
-// tiershade glue: the world_lighting section of `tiershade bench` (docs/accuracy_cost.md):
+// tiershade bench: the world_lighting section of `tiershade bench` (docs/accuracy_cost.md):
 // what each lightmap encoding costs in error (against the float32 lightmap) and time, and
 // what each tier costs against sm3, measured in one run on the room scene (scene_world.h).
 // Not a test: nothing here passes or fails.
@@ -102,7 +102,9 @@ bool run(const BenchOptions &opt, std::string *md, std::string *err) {
   WorldFrame frame;
   const int W = opt.size, H = std::max(8, opt.size / 2);
   if (!world_frame(scene, bake, W, H, &frame, err)) return false;
-  auto variant = [&](const std::string &name, Variant *v) { return find_variant(sel.decls, "world_lighting", name, v, err); };
+  auto variant = [&](const std::string &name, Variant *v) {
+    return find_variant(sel.decls, "world_lighting", name, v, err);
+  };
   const unsigned cores = std::max(1u, std::thread::hardware_concurrency());
 
   // ---- encodings: page error, frame error (sm3, C twin = llvmpipe bits), time ----
@@ -155,7 +157,8 @@ bool run(const BenchOptions &opt, std::string *md, std::string *err) {
     world_render_cpu(frame, bake, WorldPass{&v, &page, false, false}, &img);
     r.frame = display_error(frame, img.rgba, ref32.rgba);
     ImageF gl;
-    if (!gl_time(frame, bake, WorldPass{&v, &page, false, false}, Backend::OSMesa, Api::GL33, opt.runs, &r.gl_ms, &gl, err))
+    if (!gl_time(frame, bake, WorldPass{&v, &page, false, false}, Backend::OSMesa, Api::GL33, opt.runs, &r.gl_ms, &gl,
+                 err))
       return false;
     Variant v20, v2b;
     if (!variant("ps20:BUMPMAP=1" + tail, &v20) || !variant("ps2b:BUMPMAP=1" + tail, &v2b)) return false;
@@ -240,12 +243,13 @@ bool run(const BenchOptions &opt, std::string *md, std::string *err) {
     << "format's range. **frame error**: the sm3 shading (bumped, envmap, mask texture) with that encoding against\n"
     << "the same shading from the float32 page, both computed by the C twin, which is bit-exact with llvmpipe.\n"
     << "**decode slots**: ps20 / ps2b alu+tex of the bumped envmap variant (the float row = no decode).\n\n"
-    << "| encoding | stores | page error max | page error mean | clipped | frame error max | frame error mean | >1 code | llvmpipe ms (GL 3.3) | slots ps20 | slots ps2b |\n"
+    << "| encoding | stores | page error max | page error mean | clipped | frame error max | frame error mean | >1 "
+       "code | llvmpipe ms (GL 3.3) | slots ps20 | slots ps2b |\n"
     << "|---|---|---|---|---|---|---|---|---|---|---|\n";
   for (const EncRow &r : enc) {
     snprintf(b, sizeof b, "| %s | %s | %.2e | %.2e | %.2f%% | %.2f | %.3f | %.2f%% | %.2f | %d+%d | %d+%d |\n", r.label,
-             r.stores, r.page_max, r.page_mean, r.clipped, r.frame.max, r.frame.mean, r.frame.over1, r.gl_ms, r.ps20.alu,
-             r.ps20.tex, r.ps2b.alu, r.ps2b.tex);
+             r.stores, r.page_max, r.page_mean, r.clipped, r.frame.max, r.frame.mean, r.frame.over1, r.gl_ms,
+             r.ps20.alu, r.ps20.tex, r.ps2b.alu, r.ps2b.tex);
     o << b;
   }
   o << "\n### Tiers\n\n"
@@ -256,16 +260,17 @@ bool run(const BenchOptions &opt, std::string *md, std::string *err) {
     << " thr) | vs sm3 max | vs sm3 mean | vs reference max | vs reference mean | GL = C |\n"
     << "|---|---|---|---|---|---|---|---|---|---|---|\n";
   for (const TierRow &t : tiers) {
-    snprintf(b, sizeof b, "| %s | %s | %d+%d | %.2f | %.2f | %.2f | %.2f | %.3f | %.2f | %.3f | %ld |\n", t.label, t.what,
-             t.slots.alu, t.slots.tex, t.gl_ms, t.gles_ms, t.c_ms, t.vs_sm3.max, t.vs_sm3.mean, t.vs_ref.max,
+    snprintf(b, sizeof b, "| %s | %s | %d+%d | %.2f | %.2f | %.2f | %.2f | %.3f | %.2f | %.3f | %ld |\n", t.label,
+             t.what, t.slots.alu, t.slots.tex, t.gl_ms, t.gles_ms, t.c_ms, t.vs_sm3.max, t.vs_sm3.mean, t.vs_ref.max,
              t.vs_ref.mean, t.gl_vs_c);
     o << b;
   }
-  snprintf(b, sizeof b,
-           "\nWhere ps20's difference from sm3 comes from: the pixel fog it drops accounts for a max of %.2f codes\n"
-           "(mean %.3f; sm3 with and without fog); the rest, N.V from one shared inversesqrt instead of two\n"
-           "normalisations, is rounding only: ps20 against sm3 without fog differs by a max of %.2f codes (mean %.4f).\n",
-           fog_share.max, fog_share.mean, rest.max, rest.mean);
+  snprintf(
+      b, sizeof b,
+      "\nWhere ps20's difference from sm3 comes from: the pixel fog it drops accounts for a max of %.2f codes\n"
+      "(mean %.3f; sm3 with and without fog); the rest, N.V from one shared inversesqrt instead of two\n"
+      "normalisations, is rounding only: ps20 against sm3 without fog differs by a max of %.2f codes (mean %.4f).\n",
+      fog_share.max, fog_share.mean, rest.max, rest.mean);
   o << b;
   *md = o.str();
   return true;

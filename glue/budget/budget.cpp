@@ -9,21 +9,24 @@
 #include "budget/weight_table.h"
 
 bool budget_count_fragment(const std::string &glsl330_source, BudgetCounts *out, std::string *err) {
-    std::string dummy;
-    std::string &e = err ? *err : dummy;
-    e.clear();
-    if (!out) { e = "budget_count_fragment: out is null"; return false; }
-    *out = BudgetCounts();
+  std::string dummy;
+  std::string &e = err ? *err : dummy;
+  e.clear();
+  if (!out) {
+    e = "budget_count_fragment: out is null";
+    return false;
+  }
+  *out = BudgetCounts();
 
-    std::vector<uint32_t> spirv;
-    if (!budget::glsl_to_optimized_spirv(glsl330_source, &spirv, &e)) return false;
-    budget::Module m;
-    if (!budget::read_spirv_module(spirv, &m, &e)) return false;
-    budget::Counter counter(m);
-    BudgetCounts r;
-    if (!counter.count(&r, &e)) return false;
-    *out = r;
-    return true;
+  std::vector<uint32_t> spirv;
+  if (!budget::glsl_to_optimized_spirv(glsl330_source, &spirv, &e)) return false;
+  budget::Module m;
+  if (!budget::read_spirv_module(spirv, &m, &e)) return false;
+  budget::Counter counter(m);
+  BudgetCounts r;
+  if (!counter.count(&r, &e)) return false;
+  *out = r;
+  return true;
 }
 
 std::string budget_weight_table_markdown() { return budget::weight_table_markdown(); }

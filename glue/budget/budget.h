@@ -1,6 +1,4 @@
-// ============================================================================
-// tiershade -- glue/budget/budget.h
-// Instruction-slot counter for fragment shaders in a DX9-like model.
+// tiershade budget: instruction-slot counter for fragment shaders in a DX9-like model.
 //
 // tiershade reproduces Valve Source engine shading in shader-model tiers:
 //   ps20 : the DX9 ps_2_0 budget, at most 64 arithmetic + 32 texture slots
@@ -25,7 +23,6 @@
 //
 // No files and no processes; glslang is initialised once per process, and the
 // functions may be called from several threads at once.
-// ============================================================================
 #ifndef TIERSHADE_GLUE_BUDGET_H
 #define TIERSHADE_GLUE_BUDGET_H
 
@@ -33,11 +30,11 @@
 #include <string>
 
 struct BudgetCounts {
-    int alu = 0;                     // DX9 arithmetic instruction slots
-    int tex = 0;                     // DX9 texture instruction slots (texld*, texkill)
-    int total() const { return alu + tex; }
-    std::map<std::string, int> by_op;  // slots per op name (non-zero entries only;
-                                       // their sum equals total()), for --verbose
+  int alu = 0;  // DX9 arithmetic instruction slots
+  int tex = 0;  // DX9 texture instruction slots (texld*, texkill)
+  int total() const { return alu + tex; }
+  std::map<std::string, int> by_op;  // slots per op name (non-zero entries only;
+      // their sum equals total()), for --verbose
 };
 
 // Counts one fragment shader.
@@ -48,8 +45,7 @@ struct BudgetCounts {
 // Returns false with a message in *err (e.g. "GLSL compile failed:" and the
 // glslang log, positions "0:L:" (source string 0) or "M:L:" after "#line L M"; or
 // "unbounded loop ...") on failure; *out is then left as zero counts.
-bool budget_count_fragment(const std::string &glsl330_source, BudgetCounts *out,
-                           std::string *err);
+bool budget_count_fragment(const std::string &glsl330_source, BudgetCounts *out, std::string *err);
 
 // The weight table as a markdown table (for docs and --help).
 std::string budget_weight_table_markdown();
@@ -61,7 +57,6 @@ std::string budget_weight_table_markdown();
 // all be the same shader (same source_sha1), else this fails.
 // ALU: every ALU instruction except mov and vecN (swizzle/packing moves),
 // weighted by its destination width.  tex: tex/txb/txl/txd/txf/txf_ms/tg4.
-bool budget_count_nir_text(const std::string &nir_dump, int *scalar_alu, int *tex,
-                           std::string *err);
+bool budget_count_nir_text(const std::string &nir_dump, int *scalar_alu, int *tex, std::string *err);
 
 #endif  // TIERSHADE_GLUE_BUDGET_H

@@ -1,4 +1,4 @@
-// tiershade glue: capture of Mesa's ST_DEBUG=nir dump (see nir_capture.h).
+// tiershade budget: capture of Mesa's ST_DEBUG=nir dump (see nir_capture.h).
 #include "budget/nir_capture.h"
 
 #include <fcntl.h>
@@ -34,7 +34,7 @@ constexpr off_t kTailBytes = 8192;
 
 struct Emergency {
   volatile sig_atomic_t active = 0;
-  int saved_fd = -1;    // the real stderr, dup()ed
+  int saved_fd = -1;  // the real stderr, dup()ed
   int capture_fd = -1;  // the temp file (also on fd 2 while active)
   char file[PATH_MAX] = {0};
   char dir[PATH_MAX] = {0};
@@ -80,7 +80,7 @@ void emergency_restore(const char *why) {
 
 void on_signal(int sig, siginfo_t *info, void *) {
   emergency_restore(sig == SIGINT || sig == SIGTERM || sig == SIGHUP || sig == SIGPIPE ? "terminated by a signal"
-                                                                                        : "fatal signal");
+                                                                                       : "fatal signal");
   for (int i = 0; i < kNumSignals; ++i)
     if (kSignals[i] == sig) sigaction(sig, &g_em.old[i], nullptr);
   // A hardware fault repeats when we return, now under the previous handler (e.g. the
@@ -110,8 +110,10 @@ void block_signals(bool block, sigset_t *old) {
   sigemptyset(&set);
   for (int s : kSignals)
     if (s != SIGSEGV && s != SIGBUS && s != SIGILL && s != SIGFPE) sigaddset(&set, s);
-  if (block) sigprocmask(SIG_BLOCK, &set, old);
-  else sigprocmask(SIG_SETMASK, old, nullptr);
+  if (block)
+    sigprocmask(SIG_BLOCK, &set, old);
+  else
+    sigprocmask(SIG_SETMASK, old, nullptr);
 }
 
 std::string errno_text(const std::string &what) { return what + ": " + strerror(errno); }
@@ -334,8 +336,7 @@ bool nir_count_production(GlRenderer &r, Api api, const Variant &v, NirCounts *o
   if (!has_fragment_section(nir)) {
     const char *st = getenv("ST_DEBUG");
     *err = std::string("Mesa printed no fragment NIR while linking and drawing the program (ST_DEBUG=") +
-           (st ? st : "<unset>") +
-           "); ST_DEBUG=nir must be set before the process creates its first GL context";
+        (st ? st : "<unset>") + "); ST_DEBUG=nir must be set before the process creates its first GL context";
     return false;
   }
   return budget_count_nir_text(nir, &out->alu, &out->tex, err);

@@ -1,4 +1,4 @@
-// tiershade glue: capture of the NIR that Mesa prints under ST_DEBUG=nir, for the
+// tiershade budget: capture of the NIR that Mesa prints under ST_DEBUG=nir, for the
 // `tiershade budget --nir` cross-check (docs/budget_model.md, "Cross-check against
 // Mesa's NIR").
 //
@@ -42,10 +42,10 @@ bool capture_fd2(const std::function<void()> &fn, std::string *captured, std::st
 void nir_split_stderr(const std::string &captured, std::string *nir, std::string *other);
 
 struct NirCounts {
-  int alu = 0;          // scalar NIR ALU ops of the fragment stage (budget_count_nir_text)
-  int tex = 0;          // NIR texture ops of the fragment stage
+  int alu = 0;  // scalar NIR ALU ops of the fragment stage (budget_count_nir_text)
+  int tex = 0;  // NIR texture ops of the fragment stage
   std::string printed_at;  // "link" or "draw": when Mesa printed the fragment NIR
-  size_t dump_bytes = 0;   // size of the NIR dump (all stages)
+  size_t dump_bytes = 0;  // size of the NIR dump (all stages)
 };
 
 // Builds v's production program (build_production_program for `api`, the API of r's

@@ -17,56 +17,57 @@ using Op = spv::Op;
 
 // One operand after the result id and the result type (the order of the binary).
 struct Operand {
-    Id id = 0;                    // the id operand (IdRef, IdScope, IdMemorySemantics), 0 for a literal
-    std::vector<uint32_t> words;  // the literal's words (numbers, enums, masks, strings); empty for an id
-    bool is_id() const { return id != 0; }
-    uint32_t literal() const { return words.empty() ? 0u : words[0]; }
-    bool literal_nonzero() const {
-        for (uint32_t w : words) if (w != 0) return true;
-        return false;
-    }
+  Id id = 0;  // the id operand (IdRef, IdScope, IdMemorySemantics), 0 for a literal
+  std::vector<uint32_t> words;  // the literal's words (numbers, enums, masks, strings); empty for an id
+  bool is_id() const { return id != 0; }
+  uint32_t literal() const { return words.empty() ? 0u : words[0]; }
+  bool literal_nonzero() const {
+    for (uint32_t w : words)
+      if (w != 0) return true;
+    return false;
+  }
 };
 
 struct Inst {
-    Op op = Op::OpNop;
-    Id result = 0;
-    Id type = 0;                  // result type, 0 if none
-    std::vector<Operand> args;    // operands after the result type
+  Op op = Op::OpNop;
+  Id result = 0;
+  Id type = 0;  // result type, 0 if none
+  std::vector<Operand> args;  // operands after the result type
 };
 
 struct Block {
-    Id label = 0;
-    std::vector<Inst> insts;
-    std::vector<Id> succ;
-    Id merge = 0;                 // from OpSelectionMerge / OpLoopMerge
-    Id cont = 0;                  // continue target (loop headers only)
-    bool loop_header = false;
+  Id label = 0;
+  std::vector<Inst> insts;
+  std::vector<Id> succ;
+  Id merge = 0;  // from OpSelectionMerge / OpLoopMerge
+  Id cont = 0;  // continue target (loop headers only)
+  bool loop_header = false;
 };
 
 struct Function {
-    Id id = 0;
-    std::vector<Block> blocks;
+  Id id = 0;
+  std::vector<Block> blocks;
 };
 
 struct TypeInfo {
-    enum Kind { Scalar, Vector, Matrix, Other } kind = Other;
-    int comps = 1;  // vector width, or rows for a matrix
-    int cols = 1;   // matrix columns
+  enum Kind { Scalar, Vector, Matrix, Other } kind = Other;
+  int comps = 1;  // vector width, or rows for a matrix
+  int cols = 1;  // matrix columns
 };
 
 struct ConstInfo {
-    Id type = 0;                 // type id
-    bool known = false;          // numeric values available
-    std::vector<double> values;  // flattened components
+  Id type = 0;  // type id
+  bool known = false;  // numeric values available
+  std::vector<double> values;  // flattened components
 };
 
 struct Module {
-    std::map<Id, TypeInfo> types;
-    std::map<Id, ConstInfo> consts;        // OpConstant*, OpSpecConstant*, OpUndef
-    std::map<Id, uint32_t> var_storage;    // OpVariable id -> spv::StorageClass
-    std::map<Id, std::string> ext_sets;    // OpExtInstImport id -> set name
-    std::vector<Function> functions;
-    Id fragment_entry = 0;
+  std::map<Id, TypeInfo> types;
+  std::map<Id, ConstInfo> consts;  // OpConstant*, OpSpecConstant*, OpUndef
+  std::map<Id, uint32_t> var_storage;  // OpVariable id -> spv::StorageClass
+  std::map<Id, std::string> ext_sets;  // OpExtInstImport id -> set name
+  std::vector<Function> functions;
+  Id fragment_entry = 0;
 };
 
 // Fills *m from a SPIR-V binary.  False with a message when the binary does not parse or has

@@ -15,13 +15,13 @@ namespace budget {
 enum class Unit { Free, Alu, Tex };
 
 struct Rule {
-    const char *ops;
-    bool ext;
-    Unit unit;
-    int fixed;
-    int per_comp;
-    const char *dx9;
-    const char *special;  // nullptr: plain fixed/per-component cost
+  const char *ops;
+  bool ext;
+  Unit unit;
+  int fixed;
+  int per_comp;
+  const char *dx9;
+  const char *special;  // nullptr: plain fixed/per-component cost
 };
 
 // Every row, in the order the table is printed.

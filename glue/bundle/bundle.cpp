@@ -1,4 +1,4 @@
-// tiershade glue: shader bundles for engines (see bundle.h and docs/bundles.md).
+// tiershade bundle: shader bundles for engines (see bundle.h and docs/bundles.md).
 #include "bundle/bundle.h"
 
 #include <cstdio>
@@ -29,9 +29,7 @@ std::string bundle_file_stem(const Variant &v) {
 
 namespace {
 
-Api api_for(Target t) {
-  return t == Target::ESSL100 ? Api::GLES2 : t == Target::ESSL300 ? Api::GLES3 : Api::GL33;
-}
+Api api_for(Target t) { return t == Target::ESSL100 ? Api::GLES2 : t == Target::ESSL300 ? Api::GLES3 : Api::GL33; }
 
 const char *glsl_version(Target t) {
   return t == Target::ESSL100 ? "100" : t == Target::ESSL300 ? "300 es" : "330 core";
@@ -89,7 +87,8 @@ bool bundle_variant(GlRenderer &r, Target target, const BundleEntry &e, DirWrite
       const int unit = static_cast<int>(js.size());
       js.push_back({{"name", u.name}, {"type", gl_type_glsl_name(u.type)}, {"unit", unit}});
     } else {
-      ju.push_back({{"name", u.name}, {"type", gl_type_glsl_name(u.type)}, {"array_size", u.is_array ? u.array_size : 0}});
+      ju.push_back(
+          {{"name", u.name}, {"type", gl_type_glsl_name(u.type)}, {"array_size", u.is_array ? u.array_size : 0}});
     }
   }
   j["uniforms"] = ju;

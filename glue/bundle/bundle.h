@@ -1,4 +1,4 @@
-// tiershade glue: shader bundles for engines (docs/bundles.md). Writes the production GLSL of
+// tiershade bundle: shader bundles for engines (docs/bundles.md). Writes the production GLSL of
 // a set of variants as standalone files, plus a manifest (JSON) with each variant's defines,
 // attributes, uniforms, samplers (with the texture unit the engine binds them to), outputs
 // and instruction slots, found by compiling and linking each program on llvmpipe.

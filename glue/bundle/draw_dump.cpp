@@ -1,4 +1,4 @@
-// tiershade glue: the draw dump (see draw_dump.h and docs/bundles.md).
+// tiershade bundle: the draw dump (see draw_dump.h and docs/bundles.md).
 #include "bundle/draw_dump.h"
 
 #include <cstdio>
@@ -65,9 +65,7 @@ json float_bits(const float *v, size_t n) {
   return a;
 }
 
-const char *kind_name(TexKind k) {
-  return k == TexKind::Cube ? "cube" : k == TexKind::Tex3D ? "3d" : "2d";
-}
+const char *kind_name(TexKind k) { return k == TexKind::Cube ? "cube" : k == TexKind::Tex3D ? "3d" : "2d"; }
 
 size_t texel_count(const TextureDesc &t) {
   const size_t w = static_cast<size_t>(t.w), h = static_cast<size_t>(t.h), d = static_cast<size_t>(t.d);
@@ -163,7 +161,10 @@ bool write_draw_dump(const std::string &dir, const DumpFrame &f, std::string *er
     if (d.lightmap.empty()) j["lightmap_file"] = nullptr;
     json ju = json::array();
     for (const auto &u : d.uniforms)
-      ju.push_back({{"name", u.name}, {"type", u.type}, {"array_size", u.array_size}, {"values", u.values},
+      ju.push_back({{"name", u.name},
+                    {"type", u.type},
+                    {"array_size", u.array_size},
+                    {"values", u.values},
                     {"bits", float_bits(u.values.data(), u.values.size())}});
     j["uniforms"] = ju;
     json jt = json::array();
@@ -176,8 +177,14 @@ bool write_draw_dump(const std::string &dir, const DumpFrame &f, std::string *er
         if (!w.write(name, t.rgba.data(), t.rgba.size() * 4, err)) return false;
         it = tex_files.emplace(h, name).first;
       }
-      jt.push_back({{"sampler", t.sampler}, {"kind", kind_name(t.kind)}, {"w", t.w}, {"h", t.h}, {"d", t.d},
-                    {"linear", t.linear}, {"repeat", t.repeat}, {"file", it->second}});
+      jt.push_back({{"sampler", t.sampler},
+                    {"kind", kind_name(t.kind)},
+                    {"w", t.w},
+                    {"h", t.h},
+                    {"d", t.d},
+                    {"linear", t.linear},
+                    {"repeat", t.repeat},
+                    {"file", it->second}});
     }
     j["textures"] = jt;
     draws.push_back(j);

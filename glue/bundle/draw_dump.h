@@ -1,4 +1,4 @@
-// tiershade glue: the draw dump, a neutral capture of a rendered frame that a bare GL program
+// tiershade bundle: the draw dump, a neutral capture of a rendered frame that a bare GL program
 // (tests/bundle/bare_gl_render.cpp) replays with a shader bundle and no tiershade code: per
 // draw its variant, geometry, the values of its active uniforms and its textures, plus the
 // frame tiershade rendered. Format: docs/bundles.md ("The draw dump").
@@ -13,9 +13,9 @@
 // One active non-sampler uniform as set: every array element, in element order; float, vecN
 // and matN (column-major) as their floats; int/ivecN/bool/bvecN converted to float.
 struct DumpUniform {
-  std::string name;        // base name ("u_lights", not "u_lights[0]")
-  std::string type;        // GLSL type name: "vec4", "mat4", "int", ...
-  int array_size = 0;      // 0 = not an array
+  std::string name;  // base name ("u_lights", not "u_lights[0]")
+  std::string type;  // GLSL type name: "vec4", "mat4", "int", ...
+  int array_size = 0;  // 0 = not an array
   std::vector<float> values;
 };
 
@@ -23,9 +23,9 @@ struct DumpDraw {
   std::string shader, variant;  // ShaderDecl name and Variant::name(): the manifest's "shader"/"name"
   std::vector<float> position, normal, uv, tangent;  // per vertex 3, 3, 2, 4 (tangent may be empty)
   std::vector<float> lightmap;  // per vertex 4: world_lighting's a_lightmap (may be empty)
-  std::vector<uint32_t> indices;                     // triangles
-  std::vector<DumpUniform> uniforms;                 // from dump_capture_uniforms
-  std::vector<TextureDesc> textures;                 // sampler name = TextureDesc::sampler
+  std::vector<uint32_t> indices;  // triangles
+  std::vector<DumpUniform> uniforms;  // from dump_capture_uniforms
+  std::vector<TextureDesc> textures;  // sampler name = TextureDesc::sampler
 };
 
 struct DumpFrame {

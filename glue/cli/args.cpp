@@ -1,4 +1,4 @@
-// tiershade glue: command-line parsing (see cli.h).
+// tiershade cli: command-line parsing (see cli.h).
 #include "cli/args.h"
 
 #include <algorithm>
@@ -58,8 +58,8 @@ int Args::get_int(const std::string &name, int def, int lo, int hi) const {
   errno = 0;
   const long v = std::strtol(s.c_str(), &end, 10);
   if (s.empty() || *end || errno || v < lo || v > hi)
-    fail("option " + name + " wants an integer in [" + std::to_string(lo) + ", " + std::to_string(hi) + "], got '" +
-         s + "'");
+    fail("option " + name + " wants an integer in [" + std::to_string(lo) + ", " + std::to_string(hi) + "], got '" + s +
+         "'");
   return static_cast<int>(v);
 }
 

@@ -1,4 +1,4 @@
-// tiershade glue: command-line parsing shared by the subcommands.
+// tiershade cli: command-line parsing shared by the subcommands.
 // Every bad argument gives "tiershade <cmd>: <what is wrong>" and exit status 2.
 #pragma once
 #include <map>

@@ -1,4 +1,4 @@
-// tiershade: `bake` subcommand: writes the lightmap page of a scene's LightmappedGeneric faces
+// tiershade cli: `bake` subcommand: writes the lightmap page of a scene's LightmappedGeneric faces
 // (radiosity-normal-mapped, c_ref/offline/rnm_bake.c, laid out by c_ref/offline/lightmap_page.c) as a float32
 // EXR, the page `tiershade render` bakes at load. A scene names such a page in
 // extras.tiershade.lightmaps.image to skip the bake, or to bring lightmaps baked elsewhere
@@ -15,10 +15,11 @@
 int cmd_bake(int argc, char **argv) {
   Args a("bake", argc, argv, {"--help"}, {"-o"});
   if (a.flag("--help")) {
-    puts("usage: tiershade bake SCENE.gltf -o PAGE.exr\n"
-         "Bakes the scene's lightmap page (flat and three RNM lightmaps per LightmappedGeneric face, from\n"
-         "its lights) and writes it as RGBA float32 EXR, rows as GL texture rows (row 0 at the bottom).\n"
-         "Name it in the scene's extras.tiershade.lightmaps.image to render without baking (docs/scenes.md).");
+    puts(
+        "usage: tiershade bake SCENE.gltf -o PAGE.exr\n"
+        "Bakes the scene's lightmap page (flat and three RNM lightmaps per LightmappedGeneric face, from\n"
+        "its lights) and writes it as RGBA float32 EXR, rows as GL texture rows (row 0 at the bottom).\n"
+        "Name it in the scene's extras.tiershade.lightmaps.image to render without baking (docs/scenes.md).");
     return 0;
   }
   if (a.positional().size() != 1) a.fail("expected one scene file (tiershade bake SCENE.gltf -o PAGE.exr)");

@@ -1,4 +1,4 @@
-// tiershade: `bench` subcommand: accuracy against time, measured in one run, written
+// tiershade cli: `bench` subcommand: accuracy against time, measured in one run, written
 // to docs/accuracy_cost.md (+ SVG plots). Timings are medians; comparisons are ratios
 // of numbers measured in the same run. Not a test: nothing here passes or fails.
 #include <unistd.h>
@@ -31,7 +31,7 @@ struct BenchRow {
   const char *label;
   const char *variant;
   const char *precision;  // float precision of the GLSL (mediump only matters on GLES)
-  bool c_twin;            // the C twin models this row (not for mediump)
+  bool c_twin;  // the C twin models this row (not for mediump)
   const char *what;
   // measured
   BudgetCounts slots;
@@ -82,7 +82,12 @@ bool measure_rows(const Context &cx, const FrameOf &frame_of, const std::vector<
     const int om = v.value("OUTPUT_MODE");
 
     ImageF gl_img, gles_img;
-    struct Cfg { Backend b; Api api; double *ms; ImageF *img; };
+    struct Cfg {
+      Backend b;
+      Api api;
+      double *ms;
+      ImageF *img;
+    };
     std::vector<Cfg> cfgs = {{Backend::EGL, Api::GLES3, &row.gles_ms, &gles_img}};
     if (row.c_twin) cfgs.insert(cfgs.begin(), {Backend::OSMesa, Api::GL33, &row.gl_ms, &gl_img});
     for (const Cfg &c : cfgs) {
@@ -129,14 +134,15 @@ bool measure_rows(const Context &cx, const FrameOf &frame_of, const std::vector<
       for (size_t p = 0; p < frame.hit.size(); ++p)
         if (frame.hit[p])
           for (int c = 0; c < 3; ++c)
-            row.round_max = std::max(row.round_max, 255 * std::fabs(display(om, cpu.rgba[p * 4 + c]) -
-                                                                    display(om, dbl[p * 4 + c])));
+            row.round_max = std::max(row.round_max,
+                                     255 * std::fabs(display(om, cpu.rgba[p * 4 + c]) - display(om, dbl[p * 4 + c])));
     } else if (prev_gles.rgba.size() == gles_img.rgba.size()) {
       for (size_t p = 0; p < frame.hit.size(); ++p)
         if (frame.hit[p])
           for (int c = 0; c < 3; ++c)
-            row.round_max = std::max(row.round_max, 255 * std::fabs(display(om, gles_img.rgba[p * 4 + c]) -
-                                                                    display(om, prev_gles.rgba[p * 4 + c])));
+            row.round_max = std::max(
+                row.round_max,
+                255 * std::fabs(display(om, gles_img.rgba[p * 4 + c]) - display(om, prev_gles.rgba[p * 4 + c])));
     }
     prev_gles = gles_img;
     double sum = 0;
@@ -205,8 +211,10 @@ std::string plot(const std::vector<BenchRow> &rows, int n) {
   char b[256];
   for (int i = 0; i <= 4; ++i) {
     const double x = L + (W - 20 - L) * i / 4.0, y = (H - B) - (H - B - 20) * i / 4.0;
-    snprintf(b, sizeof b, "<text x='%.0f' y='%d' text-anchor='middle'>%.1f</text><text x='%d' y='%.0f' text-anchor='end'>%.2f</text>\n",
-             x, H - B + 15, tmax * i / 4, L - 4, y + 4, emax * i / 4);
+    snprintf(
+        b, sizeof b,
+        "<text x='%.0f' y='%d' text-anchor='middle'>%.1f</text><text x='%d' y='%.0f' text-anchor='end'>%.2f</text>\n",
+        x, H - B + 15, tmax * i / 4, L - 4, y + 4, emax * i / 4);
     svg << b;
   }
   for (const BenchRow &r : rows) {
@@ -241,15 +249,16 @@ std::string basename_of(const std::string &p) {
 int cmd_bench(int argc, char **argv) {
   Args a("bench", argc, argv, {"--help"}, {"-o", "--size", "--runs", "--section"});
   if (a.flag("--help")) {
-    puts("usage: tiershade bench [-o docs/accuracy_cost.md] [--size N] [--runs K] [--section NAME]\n"
-         "--section NAME runs one registered section (e.g. scenes, world_lighting) and prints its\n"
-         "markdown without writing any file.\n"
-         "Measures, for each tier of each shader family, in one run: instruction slots, llvmpipe\n"
-         "milliseconds per N x N frame (median of K draws; OSMesa GL 3.3 and EGL GLES 3.0), the\n"
-         "cold first frame (compile + JIT, Mesa's shader cache off), the C fallback's milliseconds\n"
-         "per frame (all cores, and one), and the error against the double-precision reference of\n"
-         "the full model (every light local, exact sRGB), in 8-bit display code values.\n"
-         "Writes the markdown tables to -o and SVG plots next to it. Default N = 1024, K = 7.");
+    puts(
+        "usage: tiershade bench [-o docs/accuracy_cost.md] [--size N] [--runs K] [--section NAME]\n"
+        "--section NAME runs one registered section (e.g. scenes, world_lighting) and prints its\n"
+        "markdown without writing any file.\n"
+        "Measures, for each tier of each shader family, in one run: instruction slots, llvmpipe\n"
+        "milliseconds per N x N frame (median of K draws; OSMesa GL 3.3 and EGL GLES 3.0), the\n"
+        "cold first frame (compile + JIT, Mesa's shader cache off), the C fallback's milliseconds\n"
+        "per frame (all cores, and one), and the error against the double-precision reference of\n"
+        "the full model (every light local, exact sRGB), in 8-bit display code values.\n"
+        "Writes the markdown tables to -o and SVG plots next to it. Default N = 1024, K = 7.");
     return 0;
   }
   if (!a.positional().empty()) a.fail("unexpected argument '" + a.positional()[0] + "'");
@@ -286,14 +295,30 @@ int cmd_bench(int argc, char **argv) {
   Scene grid;
   if (!load_scene(kSphereGridGltf, &grid, &err)) a.fail(err);
   std::vector<BenchRow> hl2 = {
-      {"ps20", "ps20:ALBEDO_TEXTURE=1,HALF_LAMBERT=1,NUM_LIGHTS=2", "highp", true,
-       "2 local lights with per-vertex attenuation, 4 folded into the ambient cube, linear out (sRGB target)", {}},
-      {"ps2b", "ps2b:ALBEDO_TEXTURE=1,HALF_LAMBERT=1,OUTPUT_MODE=1,NUM_LIGHTS=4", "highp", true,
-       "4 local lights per pixel, 2 folded, gamma 2.2 in the shader", {}},
-      {"sm3", "sm3:ALBEDO_TEXTURE=1,HALF_LAMBERT=1,OUTPUT_MODE=2", "highp", true,
-       "4 local lights in a dynamic loop, 2 folded, exact sRGB in the shader", {}},
-      {"sm3 mediump", "sm3:ALBEDO_TEXTURE=1,HALF_LAMBERT=1,OUTPUT_MODE=2", "mediump", false,
-       "the sm3 shader at mediump on GLES 3.0 (llvmpipe computes fp16)", {}},
+      {"ps20",
+       "ps20:ALBEDO_TEXTURE=1,HALF_LAMBERT=1,NUM_LIGHTS=2",
+       "highp",
+       true,
+       "2 local lights with per-vertex attenuation, 4 folded into the ambient cube, linear out (sRGB target)",
+       {}},
+      {"ps2b",
+       "ps2b:ALBEDO_TEXTURE=1,HALF_LAMBERT=1,OUTPUT_MODE=1,NUM_LIGHTS=4",
+       "highp",
+       true,
+       "4 local lights per pixel, 2 folded, gamma 2.2 in the shader",
+       {}},
+      {"sm3",
+       "sm3:ALBEDO_TEXTURE=1,HALF_LAMBERT=1,OUTPUT_MODE=2",
+       "highp",
+       true,
+       "4 local lights in a dynamic loop, 2 folded, exact sRGB in the shader",
+       {}},
+      {"sm3 mediump",
+       "sm3:ALBEDO_TEXTURE=1,HALF_LAMBERT=1,OUTPUT_MODE=2",
+       "mediump",
+       false,
+       "the sm3 shader at mediump on GLES 3.0 (llvmpipe computes fp16)",
+       {}},
   };
   SceneDeferredFrame ref_frame;
   if (!scene_deferred_frame(grid, Tier::SM3, n, n, &ref_frame, &err, false, true)) a.fail(err);
@@ -316,13 +341,28 @@ int cmd_bench(int argc, char **argv) {
   Scene ball;
   if (!load_scene(kPhongSphereGltf, &ball, &err)) a.fail(err);
   note = std::string(kPhongSphereGltf) + ", envmap and ambient cube from the Grace Cathedral probe";
-  const char *full = "sm3:ALBEDO_TEXTURE=1,HALF_LAMBERT=1,OUTPUT_MODE=2,PHONG=1,PHONG_EXPONENT_MAP=1,RIM_LIGHT=1,ENVMAP=1";
+  const char *full =
+      "sm3:ALBEDO_TEXTURE=1,HALF_LAMBERT=1,OUTPUT_MODE=2,PHONG=1,PHONG_EXPONENT_MAP=1,RIM_LIGHT=1,ENVMAP=1";
   std::vector<BenchRow> ep1 = {
-      {"ps20 (no Phong)", "ps20:ALBEDO_TEXTURE=1,HALF_LAMBERT=1,NUM_LIGHTS=2", "highp", true,
-       "HL2 lighting: no normal map, no specular; 2 local lights, 2 folded", {}},
-      {"ps2b Phong", "ps2b:ALBEDO_TEXTURE=1,HALF_LAMBERT=1,OUTPUT_MODE=2,PHONG=1,PHONG_EXPONENT_MAP=1,NUM_LIGHTS=4",
-       "highp", true, "normal map, exponent map, Fresnel ranges, 4 Phong lights; no rim, no envmap", {}},
-      {"ps2b full", "ps2b:ALBEDO_TEXTURE=1,HALF_LAMBERT=1,OUTPUT_MODE=2,PHONG=1,PHONG_EXPONENT_MAP=1,RIM_LIGHT=1,ENVMAP=1,NUM_LIGHTS=4", "highp", true, "Phong + rim light + envmap, 4 lights as dynamic combos", {}},
+      {"ps20 (no Phong)",
+       "ps20:ALBEDO_TEXTURE=1,HALF_LAMBERT=1,NUM_LIGHTS=2",
+       "highp",
+       true,
+       "HL2 lighting: no normal map, no specular; 2 local lights, 2 folded",
+       {}},
+      {"ps2b Phong",
+       "ps2b:ALBEDO_TEXTURE=1,HALF_LAMBERT=1,OUTPUT_MODE=2,PHONG=1,PHONG_EXPONENT_MAP=1,NUM_LIGHTS=4",
+       "highp",
+       true,
+       "normal map, exponent map, Fresnel ranges, 4 Phong lights; no rim, no envmap",
+       {}},
+      {"ps2b full",
+       "ps2b:ALBEDO_TEXTURE=1,HALF_LAMBERT=1,OUTPUT_MODE=2,PHONG=1,PHONG_EXPONENT_MAP=1,RIM_LIGHT=1,ENVMAP=1,NUM_"
+       "LIGHTS=4",
+       "highp",
+       true,
+       "Phong + rim light + envmap, 4 lights as dynamic combos",
+       {}},
       {"sm3 full", full, "highp", true, "the same in a dynamic loop over the light count", {}},
   };
   {

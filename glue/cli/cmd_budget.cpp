@@ -1,4 +1,4 @@
-// tiershade: `budget` subcommand: instruction slots per variant in the DX9-like
+// tiershade cli: `budget` subcommand: instruction slots per variant in the DX9-like
 // model of glue/budget/ (docs/budget_model.md), checked against the tier limits:
 // ps20 = ps_2_0 (64 arithmetic + 32 texture slots), ps2b = ps_2_b (512 slots), sm3 unlimited.
 // With --nir, each variant's production program is also linked on OSMesa GL 3.3 under
@@ -16,17 +16,24 @@
 #include "budget/nir_capture.h"
 #include "cli/select_args.h"
 
-struct TierLimits { int alu, tex, total; };  // -1: no limit
+struct TierLimits {
+  int alu, tex, total;
+};  // -1: no limit
 static TierLimits limits_for(Tier t) {
   switch (t) {
-    case Tier::PS20: return {64, 32, 96};
-    case Tier::PS2B: return {-1, -1, 512};
-    case Tier::SM3: return {-1, -1, -1};
+    case Tier::PS20:
+      return {64, 32, 96};
+    case Tier::PS2B:
+      return {-1, -1, 512};
+    case Tier::SM3:
+      return {-1, -1, -1};
   }
   return {-1, -1, -1};
 }
 static std::string lim(int v) { return v < 0 ? "null" : std::to_string(v); }
-static nlohmann::ordered_json lim_json(int v) { return v < 0 ? nlohmann::ordered_json(nullptr) : nlohmann::ordered_json(v); }
+static nlohmann::ordered_json lim_json(int v) {
+  return v < 0 ? nlohmann::ordered_json(nullptr) : nlohmann::ordered_json(v);
+}
 
 // Consistency band of the NIR cross-check: Mesa's scalar NIR ALU count over the model's
 // DX9 ALU slots.  Measured on all 84 model_lighting variants (Mesa 22.3.6 llvmpipe):
@@ -37,17 +44,18 @@ static constexpr double kNirRatioHi = 5.0;
 int cmd_budget(int argc, char **argv) {
   Args a("budget", argc, argv, {"--help", "--json", "--verbose", "--nir"}, {"--shader", "--tier", "--variant"});
   if (a.flag("--help")) {
-    printf("usage: tiershade budget [--json] [--verbose] [--nir] [--shader S] [--tier T]... [--variant V]\n"
-           "Counts DX9-style instruction slots of each variant's production fragment shader\n"
-           "(GLSL 3.30 -> SPIR-V -> the spirv-opt -O passes -> weight table, in process with the\n"
-           "glslang and SPIRV-Tools libraries) and checks the tier limits:\n"
-           "ps20 <= 64 arithmetic and <= 32 texture slots, ps2b <= 512 slots. Exit status 1 when\n"
-           "a variant is over budget or fails to compile.\n"
-           "--nir also links each production program on OSMesa GL 3.3 with ST_DEBUG=nir, counts\n"
-           "the scalar ALU and texture ops of Mesa's fragment NIR (nir_alu, nir_tex; JSON also\n"
-           "nir_ratio = nir_alu / alu), and fails a variant (exit status 1) whose nir_alu / alu\n"
-           "is outside [%.1f, %.1f] (variants with alu 0 are not checked). Weight table:\n\n%s",
-           kNirRatioLo, kNirRatioHi, budget_weight_table_markdown().c_str());
+    printf(
+        "usage: tiershade budget [--json] [--verbose] [--nir] [--shader S] [--tier T]... [--variant V]\n"
+        "Counts DX9-style instruction slots of each variant's production fragment shader\n"
+        "(GLSL 3.30 -> SPIR-V -> the spirv-opt -O passes -> weight table, in process with the\n"
+        "glslang and SPIRV-Tools libraries) and checks the tier limits:\n"
+        "ps20 <= 64 arithmetic and <= 32 texture slots, ps2b <= 512 slots. Exit status 1 when\n"
+        "a variant is over budget or fails to compile.\n"
+        "--nir also links each production program on OSMesa GL 3.3 with ST_DEBUG=nir, counts\n"
+        "the scalar ALU and texture ops of Mesa's fragment NIR (nir_alu, nir_tex; JSON also\n"
+        "nir_ratio = nir_alu / alu), and fails a variant (exit status 1) whose nir_alu / alu\n"
+        "is outside [%.1f, %.1f] (variants with alu 0 are not checked). Weight table:\n\n%s",
+        kNirRatioLo, kNirRatioHi, budget_weight_table_markdown().c_str());
     return 0;
   }
   if (!a.positional().empty()) a.fail("unexpected argument '" + a.positional()[0] + "'");
@@ -75,12 +83,13 @@ int cmd_budget(int argc, char **argv) {
     Assembled fs;
     std::string err;
     BudgetCounts c;
-    bool ok = assemble(v.shader->fragment, Target::GLSL330, Stage::Fragment, variant_defines(v, InputMode::Production), &fs, &err) &&
-              budget_count_fragment(fs.text, &c, &err);
+    bool ok = assemble(v.shader->fragment, Target::GLSL330, Stage::Fragment, variant_defines(v, InputMode::Production),
+                       &fs, &err) &&
+        budget_count_fragment(fs.text, &c, &err);
     if (!ok) err = map_compile_log(err, fs);
     const TierLimits L = limits_for(v.tier);
-    const bool fits = ok && (L.alu < 0 || c.alu <= L.alu) && (L.tex < 0 || c.tex <= L.tex) &&
-                      (L.total < 0 || c.total() <= L.total);
+    const bool fits =
+        ok && (L.alu < 0 || c.alu <= L.alu) && (L.tex < 0 || c.tex <= L.tex) && (L.total < 0 || c.total() <= L.total);
     if (!fits) ++over;
     // NIR cross-check.
     NirCounts nc;
@@ -98,8 +107,8 @@ int cmd_budget(int argc, char **argv) {
         if (ratio < kNirRatioLo || ratio > kNirRatioHi) {
           nir_ok = false;
           char b[160];
-          snprintf(b, sizeof b, "inconsistent: nir_alu / alu = %d / %d = %.2f is outside [%.1f, %.1f]", nc.alu,
-                   c.alu, ratio, kNirRatioLo, kNirRatioHi);
+          snprintf(b, sizeof b, "inconsistent: nir_alu / alu = %d / %d = %.2f is outside [%.1f, %.1f]", nc.alu, c.alu,
+                   ratio, kNirRatioLo, kNirRatioHi);
           nir_err = b;
         }
       }
@@ -121,24 +130,31 @@ int cmd_budget(int argc, char **argv) {
         o["nir_alu"] = nir_counted ? nlohmann::ordered_json(nc.alu) : nlohmann::ordered_json(nullptr);
         o["nir_tex"] = nir_counted ? nlohmann::ordered_json(nc.tex) : nlohmann::ordered_json(nullptr);
         // three decimals, as documented (docs/budget_model.md)
-        o["nir_ratio"] = has_ratio ? nlohmann::ordered_json(std::round(ratio * 1000.0) / 1000.0)
-                                   : nlohmann::ordered_json(nullptr);
+        o["nir_ratio"] =
+            has_ratio ? nlohmann::ordered_json(std::round(ratio * 1000.0) / 1000.0) : nlohmann::ordered_json(nullptr);
       }
       printf("  %s%s\n", o.dump().c_str(), i + 1 < sel.variants.size() ? "," : "");
     } else {
       std::string extra;
       if (nir) {
         char b[96];
-        if (nir_counted) snprintf(b, sizeof b, "  nir_alu %4d nir_tex %2d", nc.alu, nc.tex);
-        else snprintf(b, sizeof b, "  nir_alu    ? nir_tex  ?");
+        if (nir_counted)
+          snprintf(b, sizeof b, "  nir_alu %4d nir_tex %2d", nc.alu, nc.tex);
+        else
+          snprintf(b, sizeof b, "  nir_alu    ? nir_tex  ?");
         extra = b;
-        if (has_ratio) snprintf(b, sizeof b, " ratio %4.2f", ratio);
-        else snprintf(b, sizeof b, " ratio    -");
+        if (has_ratio)
+          snprintf(b, sizeof b, " ratio %4.2f", ratio);
+        else
+          snprintf(b, sizeof b, " ratio    -");
         extra += b;
       }
       printf("%s %-15s %-60s alu %3d tex %2d total %3d  (limits alu %s tex %s total %s)%s\n",
-             !fits ? "OVER" : nir_ok ? "ok  " : "FAIL", v.shader->name.c_str(), v.name().c_str(), c.alu, c.tex,
-             c.total(), lim(L.alu).c_str(), lim(L.tex).c_str(), lim(L.total).c_str(), extra.c_str());
+             !fits        ? "OVER"
+                 : nir_ok ? "ok  "
+                          : "FAIL",
+             v.shader->name.c_str(), v.name().c_str(), c.alu, c.tex, c.total(), lim(L.alu).c_str(), lim(L.tex).c_str(),
+             lim(L.total).c_str(), extra.c_str());
       if (!ok) printf("  error: %s\n", err.c_str());
       if (!nir_ok) printf("  nir: %s\n", nir_err.c_str());
       if (a.flag("--verbose")) {
@@ -151,11 +167,14 @@ int cmd_budget(int argc, char **argv) {
     if (!ok && json) fprintf(stderr, "tiershade budget: %s: %s\n", v.name().c_str(), err.c_str());
     if (!nir_ok && json) fprintf(stderr, "tiershade budget: %s: nir: %s\n", v.name().c_str(), nir_err.c_str());
   }
-  if (json) printf("]\n");
-  else if (!nir) printf("budget: %zu variants, %d over budget or failed\n", sel.variants.size(), over);
+  if (json)
+    printf("]\n");
+  else if (!nir)
+    printf("budget: %zu variants, %d over budget or failed\n", sel.variants.size(), over);
   else
-    printf("budget: %zu variants, %d over budget or failed, %d NIR-inconsistent or NIR count failed "
-           "(band nir_alu/alu in [%.1f, %.1f])\n",
-           sel.variants.size(), over, inconsistent, kNirRatioLo, kNirRatioHi);
+    printf(
+        "budget: %zu variants, %d over budget or failed, %d NIR-inconsistent or NIR count failed "
+        "(band nir_alu/alu in [%.1f, %.1f])\n",
+        sel.variants.size(), over, inconsistent, kNirRatioLo, kNirRatioHi);
   return over || inconsistent ? 1 : 0;
 }

@@ -1,4 +1,4 @@
-// tiershade: `demo` subcommand: the lit sphere grid (scenes/sphere_grid.gltf) in each tier (ps20,
+// tiershade cli: `demo` subcommand: the lit sphere grid (scenes/sphere_grid.gltf) in each tier (ps20,
 // ps2b, sm3), rendered by the scene renderer on OSMesa and EGL (llvmpipe) and by its C fallback,
 // written to OUT/ as PNG and EXR, with GL-vs-C difference images and a side-by-side of the tiers.
 #include <sys/stat.h>
@@ -67,19 +67,20 @@ bool grid_reference(const Scene &s, int w, int h, ImageF *out, std::string *err)
 int cmd_demo(int argc, char **argv) {
   Args a("demo", argc, argv, {"--help"}, {"-o", "--size", "--backend", "--lights"});
   if (a.flag("--help")) {
-    puts("usage: tiershade demo [-o DIR] [--size WxH] [--backend osmesa|egl|all] [--lights FILE]\n"
-         "Renders the lit sphere grid (scenes/sphere_grid.gltf: six lights, ambient cube, orthographic\n"
-         "camera) with the HL2 model lighting in each tier, through the scene renderer (the variants the\n"
-         "scene selects, as `tiershade render`): ps20 (2 local lights, the rest folded into the ambient\n"
-         "cube, linear output for an sRGB target), ps2b (4 lights), sm3 (4 lights in a dynamic loop);\n"
-         "ps2b and sm3 tone-map and encode sRGB in the shader. Each tier is rendered on llvmpipe through\n"
-         "OSMesa (GL 3.3) and EGL (GLES 2.0, GLES 3.0, GL 3.3) and by the C fallback; every GL frame is\n"
-         "compared bit for bit with the C twin shading GL's own G-buffer.\n"
-         "Writes DIR/model_lighting_<tier>_<backend>.png/.exr, DIR/model_lighting_<tier>_diff_<backend>.png\n"
-         "(black = bit-equal), DIR/model_lighting_reference.png (double precision, every light local)\n"
-         "and DIR/model_lighting_tiers.png (ps20 | ps2b | sm3 | reference). Default DIR: out.\n"
-         "--lights replaces the six lights with a lights file (format: tiershade fold --help;\n"
-         "example: scenes/sphere_grid.lights).");
+    puts(
+        "usage: tiershade demo [-o DIR] [--size WxH] [--backend osmesa|egl|all] [--lights FILE]\n"
+        "Renders the lit sphere grid (scenes/sphere_grid.gltf: six lights, ambient cube, orthographic\n"
+        "camera) with the HL2 model lighting in each tier, through the scene renderer (the variants the\n"
+        "scene selects, as `tiershade render`): ps20 (2 local lights, the rest folded into the ambient\n"
+        "cube, linear output for an sRGB target), ps2b (4 lights), sm3 (4 lights in a dynamic loop);\n"
+        "ps2b and sm3 tone-map and encode sRGB in the shader. Each tier is rendered on llvmpipe through\n"
+        "OSMesa (GL 3.3) and EGL (GLES 2.0, GLES 3.0, GL 3.3) and by the C fallback; every GL frame is\n"
+        "compared bit for bit with the C twin shading GL's own G-buffer.\n"
+        "Writes DIR/model_lighting_<tier>_<backend>.png/.exr, DIR/model_lighting_<tier>_diff_<backend>.png\n"
+        "(black = bit-equal), DIR/model_lighting_reference.png (double precision, every light local)\n"
+        "and DIR/model_lighting_tiers.png (ps20 | ps2b | sm3 | reference). Default DIR: out.\n"
+        "--lights replaces the six lights with a lights file (format: tiershade fold --help;\n"
+        "example: scenes/sphere_grid.lights).");
     return 0;
   }
   if (!a.positional().empty()) a.fail("unexpected argument '" + a.positional()[0] + "'");
@@ -118,7 +119,8 @@ int cmd_demo(int argc, char **argv) {
     return 1;
   }
 
-  printf("%-5s %-16s %10s %12s %10s  %s\n", "tier", "backend", "pixels", "mismatched", "max ULP", "lights local+folded");
+  printf("%-5s %-16s %10s %12s %10s  %s\n", "tier", "backend", "pixels", "mismatched", "max ULP",
+         "lights local+folded");
   for (const Tier tier : kTiers) {
     SceneSelection sel;
     if (!select_scene_variants(scene, tier, "", &sel, &err)) a.fail(err);
@@ -172,8 +174,10 @@ int cmd_demo(int argc, char **argv) {
     fprintf(stderr, "tiershade demo: %s\n", err.c_str());
     return 1;
   }
-  printf("wrote %s/model_lighting_*.png, *.exr; side by side: %s/model_lighting_tiers.png (ps20 | ps2b | sm3 | reference)\n",
-         dir.c_str(), dir.c_str());
+  printf(
+      "wrote %s/model_lighting_*.png, *.exr; side by side: %s/model_lighting_tiers.png (ps20 | ps2b | sm3 | "
+      "reference)\n",
+      dir.c_str(), dir.c_str());
   // The other families' sections (glue/demo_*.cpp).
   DemoOptions opt;
   opt.dir = dir;

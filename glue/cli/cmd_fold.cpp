@@ -1,4 +1,4 @@
-// tiershade: `fold` subcommand: which lights a tier shades locally, the ambient cube
+// tiershade cli: `fold` subcommand: which lights a tier shades locally, the ambient cube
 // the others are folded into (c_ref/offline/light_folding.c, docs/light_folding.md), and a
 // numerical check, with the real C twin, that the folding conserves the sphere integral.
 #include <algorithm>
@@ -31,8 +31,8 @@ double sphere_integral(const ts_vec4f rec_in[ML_SLOTS], int channel, int half_la
   double sum = 0;
   for (int i = 0; i < n; ++i) {
     const double z = 1 - (2 * i + 1.0) / n, r = std::sqrt(1 - z * z), phi = i * 2.39996322972865332;
-    rec[ML_SLOT_NORMAL] = ts_v4f(static_cast<float>(r * std::cos(phi)), static_cast<float>(r * std::sin(phi)),
-                                 static_cast<float>(z), 0);
+    rec[ML_SLOT_NORMAL] =
+        ts_v4f(static_cast<float>(r * std::cos(phi)), static_cast<float>(r * std::sin(phi)), static_cast<float>(z), 0);
     const ts_vec4d c = model_lighting_d(&v, rec, nullptr);
     sum += channel == 0 ? c.x : channel == 1 ? c.y : c.z;
   }
@@ -44,18 +44,19 @@ double sphere_integral(const ts_vec4f rec_in[ML_SLOTS], int channel, int half_la
 int cmd_fold(int argc, char **argv) {
   Args a("fold", argc, argv, {"--help", "--lambert"}, {"--tier", "--lights", "--center"});
   if (a.flag("--help")) {
-    puts("usage: tiershade fold [--tier ps20|ps2b|sm3] [--lights FILE] [--center X,Y,Z] [--lambert]\n"
-         "Chooses the lights a tier shades locally (ps20: 2, ps2b and sm3: 4; the brightest at the\n"
-         "model centre) and folds the others into the ambient cube, conserving the sphere integral of\n"
-         "the half-Lambert (or, with --lambert, Lambert) shading (docs/light_folding.md). Prints the\n"
-         "kept lights, the cube, and for each folded light the integral over all normals of its\n"
-         "shading as a local light and folded, computed with the C twin.\n"
-         "Lights file lines ('#' comments):\n"
-         "  point       R G B  X Y Z  C L Q\n"
-         "  spot        R G B  X Y Z  DX DY DZ  EXPONENT INNER_DEG OUTER_DEG  C L Q\n"
-         "  directional R G B  DX DY DZ\n"
-         "Without --lights, the demo scene's six lights are used (scenes/sphere_grid.lights, run from the\n"
-         "repository root).");
+    puts(
+        "usage: tiershade fold [--tier ps20|ps2b|sm3] [--lights FILE] [--center X,Y,Z] [--lambert]\n"
+        "Chooses the lights a tier shades locally (ps20: 2, ps2b and sm3: 4; the brightest at the\n"
+        "model centre) and folds the others into the ambient cube, conserving the sphere integral of\n"
+        "the half-Lambert (or, with --lambert, Lambert) shading (docs/light_folding.md). Prints the\n"
+        "kept lights, the cube, and for each folded light the integral over all normals of its\n"
+        "shading as a local light and folded, computed with the C twin.\n"
+        "Lights file lines ('#' comments):\n"
+        "  point       R G B  X Y Z  C L Q\n"
+        "  spot        R G B  X Y Z  DX DY DZ  EXPONENT INNER_DEG OUTER_DEG  C L Q\n"
+        "  directional R G B  DX DY DZ\n"
+        "Without --lights, the demo scene's six lights are used (scenes/sphere_grid.lights, run from the\n"
+        "repository root).");
     return 0;
   }
   if (!a.positional().empty()) a.fail("unexpected argument '" + a.positional()[0] + "'");
@@ -106,15 +107,15 @@ int cmd_fold(int argc, char **argv) {
     float packed[5][4];
     char msg[256];
     ts_light_pack(&lights[i], packed, msg, sizeof msg);
-    for (int k = 0; k < 5; ++k) local[ML_SLOT_LIGHT0 + k] = ts_v4f(packed[k][0], packed[k][1], packed[k][2], packed[k][3]);
+    for (int k = 0; k < 5; ++k)
+      local[ML_SLOT_LIGHT0 + k] = ts_v4f(packed[k][0], packed[k][1], packed[k][2], packed[k][3]);
     // The light's own cube contribution: fold it alone into an empty cube.
     float c1[6][3] = {};
     int kept1 = 0;
     ts_fold_lights(&lights[i], 1, 0, center, half_lambert, c1, &kept1);
     for (int f = 0; f < 6; ++f) folded[ML_SLOT_AMBIENT + f] = ts_v4f(c1[f][0], c1[f][1], c1[f][2], 0);
     for (int ch = 0; ch < 3; ++ch) {
-      const double il = sphere_integral(local, ch, half_lambert, 1),
-                   ifo = sphere_integral(folded, ch, half_lambert, 0);
+      const double il = sphere_integral(local, ch, half_lambert, 1), ifo = sphere_integral(folded, ch, half_lambert, 0);
       const double rel = il > 0 ? std::fabs(ifo - il) / il : std::fabs(ifo);
       worst = std::max(worst, rel);
       if (ch == 0) printf("light %d: sphere integral local vs folded:", i);

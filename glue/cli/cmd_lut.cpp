@@ -1,4 +1,4 @@
-// tiershade: `lut` subcommand: colour-correction LUT files. inspect a .cube or Source
+// tiershade cli: `lut` subcommand: colour-correction LUT files. inspect a .cube or Source
 // .raw; bake a 3D LUT from an OpenColorIO transform (a LUT/CDL file, config looks, CDL
 // values); convert between .cube and .raw. Bad input files: "tiershade lut: <file>[:<line>]:
 // <problem>", exit status 2, nothing written (glue/io/lut_files.h writes atomically).
@@ -67,8 +67,8 @@ void inspect(const Args &a, const std::string &path) {
     printf("%s: .cube", path.c_str());
     if (c.size_1d) printf(", 1D table of %d entries", c.size_1d);
     if (c.size_3d) printf(", 3D table of edge %d (%d entries)", c.size_3d, c.size_3d * c.size_3d * c.size_3d);
-    printf("\n  title: \"%s\"\n  domain: [%g %g %g] .. [%g %g %g]\n", c.title.c_str(), c.domain_min[0],
-           c.domain_min[1], c.domain_min[2], c.domain_max[0], c.domain_max[1], c.domain_max[2]);
+    printf("\n  title: \"%s\"\n  domain: [%g %g %g] .. [%g %g %g]\n", c.title.c_str(), c.domain_min[0], c.domain_min[1],
+           c.domain_min[2], c.domain_max[0], c.domain_max[1], c.domain_max[2]);
     values = c.table_1d;
     values.insert(values.end(), c.table_3d.begin(), c.table_3d.end());
     Lut3D l;

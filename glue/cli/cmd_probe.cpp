@@ -1,4 +1,4 @@
-// tiershade: `probe` subcommand: one pixel of one variant, evaluated in GL and in
+// tiershade cli: `probe` subcommand: one pixel of one variant, evaluated in GL and in
 // C (float32 bit-exact twin and the double reference), printed side by side.
 #include <sys/stat.h>
 
@@ -46,16 +46,17 @@ int cmd_probe(int argc, char **argv) {
          {"--shader", "--variant", "--backend", "--api", "--set", "--input", "--grid", "--case", "--cases", "--size",
           "--seed"});
   if (a.flag("--help")) {
-    puts("usage: tiershade probe --shader S --variant V [--backend osmesa|egl] [--api gl33|gles2|gles3]\n"
-         "                       [--grid random|hard:X,Y | --case NAME] [--size N --seed K] [--cases FILE]\n"
-         "                       [--input FILE] [--set SLOT=x,y,z,w]...\n"
-         "Evaluates one pixel of a variant in GL and in C and prints both, with the ULP distance\n"
-         "and the double-precision reference. The pixel's input record starts from a conformance\n"
-         "grid pixel (--grid, same --size/--seed as `conform`), from the first pixel of the hard grid\n"
-         "that has hard case NAME (--case; the cases: tests/conform/<shader>.cases, or --cases FILE),\n"
-         "or from the first random record; then FILE (lines 'SLOT x y z w', # comments) and --set\n"
-         "override single slots (SLOT.xz for some components; the case-file syntax, docs/conformance.md).\n"
-         "Values accept nan, inf and hex floats. Slot names: see the worst-pixel report of conform.");
+    puts(
+        "usage: tiershade probe --shader S --variant V [--backend osmesa|egl] [--api gl33|gles2|gles3]\n"
+        "                       [--grid random|hard:X,Y | --case NAME] [--size N --seed K] [--cases FILE]\n"
+        "                       [--input FILE] [--set SLOT=x,y,z,w]...\n"
+        "Evaluates one pixel of a variant in GL and in C and prints both, with the ULP distance\n"
+        "and the double-precision reference. The pixel's input record starts from a conformance\n"
+        "grid pixel (--grid, same --size/--seed as `conform`), from the first pixel of the hard grid\n"
+        "that has hard case NAME (--case; the cases: tests/conform/<shader>.cases, or --cases FILE),\n"
+        "or from the first random record; then FILE (lines 'SLOT x y z w', # comments) and --set\n"
+        "override single slots (SLOT.xz for some components; the case-file syntax, docs/conformance.md).\n"
+        "Values accept nan, inf and hex floats. Slot names: see the worst-pixel report of conform.");
     return 0;
   }
   if (!a.positional().empty()) a.fail("unexpected argument '" + a.positional()[0] + "'");
@@ -75,11 +76,14 @@ int cmd_probe(int argc, char **argv) {
     const std::string g = a.get("--grid");
     const size_t colon = g.find(':');
     const std::string sname = g.substr(0, colon);
-    if (sname == "hard") set = InputSet::Hard;
-    else if (sname != "random") a.fail("--grid wants random|hard[:X,Y], got '" + g + "'");
+    if (sname == "hard")
+      set = InputSet::Hard;
+    else if (sname != "random")
+      a.fail("--grid wants random|hard[:X,Y], got '" + g + "'");
     if (colon != std::string::npos && sscanf(g.c_str() + colon + 1, "%d,%d", &gx, &gy) != 2)
       a.fail("--grid wants SET:X,Y, got '" + g + "'");
-    if (gx < 0 || gy < 0 || gx >= size || gy >= size) a.fail("--grid pixel lies outside the " + std::to_string(size) + "^2 grid");
+    if (gx < 0 || gy < 0 || gx >= size || gy >= size)
+      a.fail("--grid pixel lies outside the " + std::to_string(size) + "^2 grid");
   }
   for (const auto &file : a.all("--cases")) {
     std::string err;
@@ -103,7 +107,8 @@ int cmd_probe(int argc, char **argv) {
     if (i == grid.case_names.size()) {
       bool known = false;
       for (const auto &c : cases->cases) known = known || c.name == want;
-      if (known) a.fail("hard case '" + want + "' has no pixel in the " + std::to_string(size) + "^2 grid (raise --size)");
+      if (known)
+        a.fail("hard case '" + want + "' has no pixel in the " + std::to_string(size) + "^2 grid (raise --size)");
       a.fail("unknown hard case '" + want + "' (" + cases->file + " has " + std::to_string(cases->cases.size()) +
              " cases; `tiershade conform --list-cases --shader " + f->name + "` lists them)");
     }
@@ -120,7 +125,8 @@ int cmd_probe(int argc, char **argv) {
   if (a.has("--input")) {
     const std::string path = a.get("--input");
     struct stat st;
-    if (stat(path.c_str(), &st) != 0 || !S_ISREG(st.st_mode)) a.fail("cannot read input file '" + path + "' (not a readable regular file)");
+    if (stat(path.c_str(), &st) != 0 || !S_ISREG(st.st_mode))
+      a.fail("cannot read input file '" + path + "' (not a readable regular file)");
     std::ifstream file(path);
     if (!file) a.fail("cannot read input file '" + path + "'");
     std::string line;
@@ -135,7 +141,8 @@ int cmd_probe(int argc, char **argv) {
       while (ls >> tok) rest += (rest.empty() ? "" : " ") + tok;
       set_slot_value(a, *f, &in, &rng, path + ":" + std::to_string(lineno), name + " " + rest);
     }
-    if (file.bad()) a.fail("cannot read input file '" + path + "' (read error after line " + std::to_string(lineno) + ")");
+    if (file.bad())
+      a.fail("cannot read input file '" + path + "' (read error after line " + std::to_string(lineno) + ")");
   }
   for (const auto &s : a.all("--set")) {
     const size_t eq = s.find('=');

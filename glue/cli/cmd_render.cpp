@@ -1,4 +1,4 @@
-// tiershade: `render` subcommand: a glTF scene through the variants it needs, on llvmpipe
+// tiershade cli: `render` subcommand: a glTF scene through the variants it needs, on llvmpipe
 // (OSMesa or EGL) or the C fallback, written as EXR (the lit pass, RGBA32F) and PNG (the
 // final display frame). Prints the variants built and why, and what the selection saved.
 #include <unistd.h>
@@ -89,18 +89,19 @@ int cmd_render(int argc, char **argv) {
   Args a("render", argc, argv, {"--help", "--check", "--quiet", "--progress", "--compile-all", "--report-memory"},
          {"--tier", "--backend", "--api", "--hdr", "--size", "-o", "--threads", "--exposure-frames", "--dump-draws"});
   if (a.flag("--help")) {
-    puts("usage: tiershade render SCENE.gltf [--tier ps20|ps2b|sm3] [--backend egl|osmesa|cpu]\n"
-         "                        [--api gles3|gles2|gl33] [--hdr integer|float] [--size WxH] -o OUT\n"
-         "                        [--check] [--compile-all] [--threads N] [--progress] [--quiet]\n"
-         "                        [--dump-draws DIR]\n"
-         "Renders a glTF 2.0 scene (docs/scenes.md) with only the shader variants it needs and writes\n"
-         "OUT.exr (the lit pass, RGBA32F as the shaders wrote it) and OUT.png (the final frame).\n"
-         "Defaults: sm3, EGL surfaceless GLES 3.0 (OSMesa: GL 3.3), the scene's HDR path, 1280x720.\n"
-         "--backend cpu renders with the C fallback alone (its own rasteriser, the bit-exact twins).\n"
-         "--check: on GL, also shades GL's own G-buffer with the C twin and fails unless equal bit for bit.\n"
-         "--compile-all: also compiles every combo of the families used, to measure what the selection saved.\n"
-         "--dump-draws DIR: GL: writes the draws (geometry, uniform values, textures) and the lit frame, for\n"
-         "a bare engine to replay with a shader bundle (docs/bundles.md; tests/bundle/bare_gl_render).");
+    puts(
+        "usage: tiershade render SCENE.gltf [--tier ps20|ps2b|sm3] [--backend egl|osmesa|cpu]\n"
+        "                        [--api gles3|gles2|gl33] [--hdr integer|float] [--size WxH] -o OUT\n"
+        "                        [--check] [--compile-all] [--threads N] [--progress] [--quiet]\n"
+        "                        [--dump-draws DIR]\n"
+        "Renders a glTF 2.0 scene (docs/scenes.md) with only the shader variants it needs and writes\n"
+        "OUT.exr (the lit pass, RGBA32F as the shaders wrote it) and OUT.png (the final frame).\n"
+        "Defaults: sm3, EGL surfaceless GLES 3.0 (OSMesa: GL 3.3), the scene's HDR path, 1280x720.\n"
+        "--backend cpu renders with the C fallback alone (its own rasteriser, the bit-exact twins).\n"
+        "--check: on GL, also shades GL's own G-buffer with the C twin and fails unless equal bit for bit.\n"
+        "--compile-all: also compiles every combo of the families used, to measure what the selection saved.\n"
+        "--dump-draws DIR: GL: writes the draws (geometry, uniform values, textures) and the lit frame, for\n"
+        "a bare engine to replay with a shader bundle (docs/bundles.md; tests/bundle/bare_gl_render).");
     return 0;
   }
   if (a.positional().size() != 1) a.fail("expected one scene file (tiershade render SCENE.gltf -o OUT)");
@@ -110,7 +111,8 @@ int cmd_render(int argc, char **argv) {
   SceneRenderConfig cfg;
   if (a.has("--backend")) {
     const std::string b = a.get("--backend");
-    if (b == "cpu") cfg.backend = Backend::CPU;
+    if (b == "cpu")
+      cfg.backend = Backend::CPU;
     else if (!parse_backend(b, &cfg.backend) || cfg.backend == Backend::CPU)
       a.fail("unknown backend '" + b + "' (egl, osmesa, cpu)");
   }
@@ -126,7 +128,8 @@ int cmd_render(int argc, char **argv) {
   cfg.exposure_frames = a.get_int("--exposure-frames", cfg.exposure_frames, 1, 10000);
   cfg.check = a.flag("--check");
   if (cfg.check && cfg.backend == Backend::CPU) a.fail("--check compares GL with C: it needs a GL backend");
-  if (a.has("--dump-draws") && cfg.backend == Backend::CPU) a.fail("--dump-draws captures GL draws: it needs a GL backend");
+  if (a.has("--dump-draws") && cfg.backend == Backend::CPU)
+    a.fail("--dump-draws captures GL draws: it needs a GL backend");
   DumpFrame dump;
   std::string dump_err;
   if (a.has("--dump-draws")) {
@@ -141,7 +144,8 @@ int cmd_render(int argc, char **argv) {
       dd.lightmap = d.lightmap;
       dd.indices = d.indices;
       for (int t : d.tex) dd.textures.push_back(ps.textures.at(t));
-      if (!dump_capture_uniforms(gl, prog, &dd.uniforms, &dump_err) && dump_err.empty()) dump_err = "uniform capture failed";
+      if (!dump_capture_uniforms(gl, prog, &dd.uniforms, &dump_err) && dump_err.empty())
+        dump_err = "uniform capture failed";
       dump.draws.push_back(std::move(dd));
     };
     cfg.on_lit = [&](const ImageF &lit) { dump.rgba = lit.rgba; };
@@ -149,7 +153,9 @@ int cmd_render(int argc, char **argv) {
   const bool quiet = a.flag("--quiet");
   const bool show_progress = a.flag("--progress") || isatty(2);
   if (show_progress)
-    cfg.progress = [](const char *stage, double f) { fprintf(stderr, "\r%s: %3.0f%%%s", stage, f * 100, f >= 1 ? "\n" : ""); };
+    cfg.progress = [](const char *stage, double f) {
+      fprintf(stderr, "\r%s: %3.0f%%%s", stage, f * 100, f >= 1 ? "\n" : "");
+    };
   std::string out = a.get("-o");
   for (const char *ext : {".png", ".exr"})
     if (out.size() > 4 && out.compare(out.size() - 4, 4, ext) == 0) out.resize(out.size() - 4);
@@ -240,11 +246,12 @@ int cmd_render(int argc, char **argv) {
           fprintf(stderr, "tiershade render: all-features frame: %s\n", err.c_str());
           return 1;
         }
-        printf("all features compiled in (%zu variants): first frame %.1f ms, frame %.1f ms, lit pass %.1f ms\n"
-               "the selection (%zu variants):         first frame %.1f ms, frame %.1f ms, lit pass %.1f ms"
-               " (medians of 5; lit pass %.2fx faster)\n",
-               uber.variants.size(), uber_first, uber_frame, uber_lit, sel.variants.size(), res.frame_ms, sel_frame,
-               sel_lit, uber_lit / std::max(1e-3, sel_lit));
+        printf(
+            "all features compiled in (%zu variants): first frame %.1f ms, frame %.1f ms, lit pass %.1f ms\n"
+            "the selection (%zu variants):         first frame %.1f ms, frame %.1f ms, lit pass %.1f ms"
+            " (medians of 5; lit pass %.2fx faster)\n",
+            uber.variants.size(), uber_first, uber_frame, uber_lit, sel.variants.size(), res.frame_ms, sel_frame,
+            sel_lit, uber_lit / std::max(1e-3, sel_lit));
       } else {
         printf(" (--compile-all measures every combo and the all-features frame)\n");
       }
@@ -260,8 +267,9 @@ int cmd_render(int argc, char **argv) {
   if (cfg.check) {
     printf("check: GL frame vs the C twin on GL's G-buffer: %ld of %ld covered pixels differ (max %u ULP)\n",
            res.check_mismatched, res.check_pixels, res.check_max_ulp);
-    printf("check: HDR path and colour correction on GL vs their C twins on GL's lit frame: %ld of %ld channels differ\n",
-           res.check_post_mismatched, res.check_post_channels);
+    printf(
+        "check: HDR path and colour correction on GL vs their C twins on GL's lit frame: %ld of %ld channels differ\n",
+        res.check_post_mismatched, res.check_post_channels);
     if (res.check_mismatched != 0 || res.check_post_mismatched != 0) return 1;
   }
   return 0;

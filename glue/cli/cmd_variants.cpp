@@ -1,4 +1,4 @@
-// tiershade: `variants` and `assemble` subcommands.
+// tiershade cli: `variants` and `assemble` subcommands.
 #include <cstdio>
 
 #include <nlohmann/json.hpp>
@@ -13,20 +13,22 @@ int cmd_variants(int argc, char **argv) {
   Args a("variants", argc, argv, {"--list", "--json", "--help", "--count"},
          {"--shader", "--tier", "--variant", "--target", "-o", "--hdr"});
   if (a.flag("--help")) {
-    puts("usage: tiershade variants [--list] [--json] [--count] [--shader S] [--tier ps20|ps2b|sm3]...\n"
-         "       tiershade variants SCENE --tier T [--target essl100|essl300|glsl330] [--hdr integer|float] -o DIR\n"
-         "       tiershade variants --shader S [--variant V]... [--tier T]... [--target T] -o DIR\n"
-         "Lists every variant: tier x static combos x dynamic combos, minus the skip rules\n"
-         "declared in shaders/<shader>.variants. A variant is named TIER:NAME=V,... and can\n"
-         "also be given by its index in the full list of its shader.\n"
-         "With -o DIR it writes a shader bundle for engines (docs/bundles.md): the self-contained\n"
-         "production GLSL of the variants a scene needs (or of the variants given), and\n"
-         "DIR/manifest.json with their defines, attributes, uniforms, sampler units and slots.\n"
-         "--target defaults to essl300. An existing DIR is replaced only if it is a bundle.");
+    puts(
+        "usage: tiershade variants [--list] [--json] [--count] [--shader S] [--tier ps20|ps2b|sm3]...\n"
+        "       tiershade variants SCENE --tier T [--target essl100|essl300|glsl330] [--hdr integer|float] -o DIR\n"
+        "       tiershade variants --shader S [--variant V]... [--tier T]... [--target T] -o DIR\n"
+        "Lists every variant: tier x static combos x dynamic combos, minus the skip rules\n"
+        "declared in shaders/<shader>.variants. A variant is named TIER:NAME=V,... and can\n"
+        "also be given by its index in the full list of its shader.\n"
+        "With -o DIR it writes a shader bundle for engines (docs/bundles.md): the self-contained\n"
+        "production GLSL of the variants a scene needs (or of the variants given), and\n"
+        "DIR/manifest.json with their defines, attributes, uniforms, sampler units and slots.\n"
+        "--target defaults to essl300. An existing DIR is replaced only if it is a bundle.");
     return 0;
   }
   if (!a.positional().empty() && !a.has("-o"))
-    a.fail("unexpected argument '" + a.positional()[0] + "' (a scene bundle: tiershade variants SCENE --tier T -o DIR)");
+    a.fail("unexpected argument '" + a.positional()[0] +
+           "' (a scene bundle: tiershade variants SCENE --tier T -o DIR)");
   if (a.has("-o") || a.has("--target") || !a.positional().empty()) return cmd_variants_bundle(a);
   Selection sel;
   select_variants(a, &sel);
@@ -65,9 +67,10 @@ int cmd_variants(int argc, char **argv) {
 int cmd_assemble(int argc, char **argv) {
   Args a("assemble", argc, argv, {"--help", "--conform", "--vertex"}, {"--shader", "--variant", "--target"});
   if (a.flag("--help")) {
-    puts("usage: tiershade assemble --shader S --variant V [--target essl100|essl300|glsl330] [--vertex] [--conform]\n"
-         "Prints the self-contained GLSL of one variant: includes resolved, #version,\n"
-         "precision and the variant's #defines prepended, #line directives kept.");
+    puts(
+        "usage: tiershade assemble --shader S --variant V [--target essl100|essl300|glsl330] [--vertex] [--conform]\n"
+        "Prints the self-contained GLSL of one variant: includes resolved, #version,\n"
+        "precision and the variant's #defines prepended, #line directives kept.");
     return 0;
   }
   if (!a.has("--shader") || !a.has("--variant")) a.fail("--shader and --variant are required");
@@ -80,9 +83,10 @@ int cmd_assemble(int argc, char **argv) {
   Assembled out;
   std::string err;
   const bool vertex = a.flag("--vertex");
-  const std::string entry = vertex ? (a.flag("--conform") ? "conform_fullscreen.vs" : v.shader->vertex) : v.shader->fragment;
-  if (!assemble(entry, t, vertex ? Stage::Vertex : Stage::Fragment, variant_defines(v, a.flag("--conform") ? InputMode::Conform : InputMode::Production), &out,
-                &err)) {
+  const std::string entry =
+      vertex ? (a.flag("--conform") ? "conform_fullscreen.vs" : v.shader->vertex) : v.shader->fragment;
+  if (!assemble(entry, t, vertex ? Stage::Vertex : Stage::Fragment,
+                variant_defines(v, a.flag("--conform") ? InputMode::Conform : InputMode::Production), &out, &err)) {
     fprintf(stderr, "tiershade assemble: %s\n", err.c_str());
     return 1;
   }

@@ -1,4 +1,4 @@
-// tiershade: `variants ... -o DIR`, shader bundles for engines (glue/bundle/bundle.h, docs/bundles.md):
+// tiershade cli: `variants ... -o DIR`, shader bundles for engines (glue/bundle/bundle.h, docs/bundles.md):
 // the variants a scene needs (SCENE --tier T) or the variants given (--shader S [--variant V]...).
 #include <cstdio>
 
@@ -18,7 +18,8 @@ Target bundle_target(const Args &a) {
 
 int explicit_bundle(const Args &a, Target target) {
   if (!a.has("--shader")) a.fail("a bundle wants a SCENE or --shader S [--variant V]...");
-  if (a.flag("--list") || a.flag("--json") || a.flag("--count")) a.fail("-o DIR does not go with --list, --json or --count");
+  if (a.flag("--list") || a.flag("--json") || a.flag("--count"))
+    a.fail("-o DIR does not go with --list, --json or --count");
   Selection sel;
   std::string err;
   const auto names = a.all("--variant");
@@ -38,7 +39,8 @@ int explicit_bundle(const Args &a, Target target) {
     fprintf(stderr, "tiershade variants: %s\n", err.c_str());
     return 1;
   }
-  for (const auto &v : sel.variants) printf("%s %s -> %s\n", v.shader->name.c_str(), v.name().c_str(), bundle_file_stem(v).c_str());
+  for (const auto &v : sel.variants)
+    printf("%s %s -> %s\n", v.shader->name.c_str(), v.name().c_str(), bundle_file_stem(v).c_str());
   printf("%zu variants written to %s (%s)\n", sel.variants.size(), a.get("-o").c_str(), target_name(target));
   return 0;
 }
@@ -50,7 +52,8 @@ int scene_bundle(const Args &a, Target target) {
   Tier tier;
   if (!parse_tier(tiers[0], &tier)) a.fail("unknown tier '" + tiers[0] + "' (ps20, ps2b, sm3)");
   if (a.has("--shader") || a.has("--variant")) a.fail("--shader and --variant do not go with a SCENE");
-  if (a.flag("--list") || a.flag("--json") || a.flag("--count")) a.fail("-o DIR does not go with --list, --json or --count");
+  if (a.flag("--list") || a.flag("--json") || a.flag("--count"))
+    a.fail("-o DIR does not go with --list, --json or --count");
   Scene scene;
   SceneSelection sel;
   std::string err;

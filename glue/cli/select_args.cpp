@@ -1,4 +1,4 @@
-// tiershade glue: variant and backend selection from the command line (see selection.h).
+// tiershade cli: variant and backend selection from the command line (see selection.h).
 #include "cli/select_args.h"
 
 #include <algorithm>

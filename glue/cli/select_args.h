@@ -1,4 +1,4 @@
-// tiershade glue: --shader/--tier/--variant and --backend/--api selections shared by subcommands.
+// tiershade cli: --shader/--tier/--variant and --backend/--api selections shared by subcommands.
 #pragma once
 #include <memory>
 #include <vector>

@@ -1,4 +1,4 @@
-// tiershade glue: sRGB -> CIELAB and CIEDE2000 (see color_difference.h). Written from
+// tiershade color: sRGB -> CIELAB and CIEDE2000 (see color_difference.h). Written from
 // the published formulas; equation numbers are Sharma, Wu and Dalal (2005).
 #include "color/ciede2000.h"
 
@@ -63,21 +63,26 @@ double ciede2000(const Lab &x, const Lab &y) {
   double dh = 0.0;
   if (CC != 0.0) {
     dh = h2 - h1;
-    if (dh > 180.0) dh -= 360.0;
-    else if (dh < -180.0) dh += 360.0;
+    if (dh > 180.0)
+      dh -= 360.0;
+    else if (dh < -180.0)
+      dh += 360.0;
   }
   const double dH = 2.0 * std::sqrt(CC) * std::sin(rad(dh) / 2.0);
   // (12)-(14): means; the mean hue goes the short way round the circle.
   const double Lbar = 0.5 * (x.L + y.L), Cbarp = 0.5 * (C1p + C2p);
   double hbar = h1 + h2;
   if (CC != 0.0) {
-    if (std::fabs(h1 - h2) <= 180.0) hbar = 0.5 * (h1 + h2);
-    else if (h1 + h2 < 360.0) hbar = 0.5 * (h1 + h2 + 360.0);
-    else hbar = 0.5 * (h1 + h2 - 360.0);
+    if (std::fabs(h1 - h2) <= 180.0)
+      hbar = 0.5 * (h1 + h2);
+    else if (h1 + h2 < 360.0)
+      hbar = 0.5 * (h1 + h2 + 360.0);
+    else
+      hbar = 0.5 * (h1 + h2 - 360.0);
   }
   // (15)-(21): weighting functions and the rotation term.
   const double T = 1.0 - 0.17 * std::cos(rad(hbar - 30.0)) + 0.24 * std::cos(rad(2.0 * hbar)) +
-                   0.32 * std::cos(rad(3.0 * hbar + 6.0)) - 0.20 * std::cos(rad(4.0 * hbar - 63.0));
+      0.32 * std::cos(rad(3.0 * hbar + 6.0)) - 0.20 * std::cos(rad(4.0 * hbar - 63.0));
   const double dtheta = 30.0 * std::exp(-((hbar - 275.0) / 25.0) * ((hbar - 275.0) / 25.0));
   const double Cbarp7 = pow7(Cbarp);
   const double RC = 2.0 * std::sqrt(Cbarp7 / (Cbarp7 + pow7(25.0)));

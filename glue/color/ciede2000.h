@@ -1,4 +1,4 @@
-// tiershade glue: perceptual colour difference for the colour-correction accuracy study:
+// tiershade color: perceptual colour difference for the colour-correction accuracy study:
 // display-encoded sRGB -> CIELAB (D65) and the CIEDE2000 colour difference.
 #pragma once
 

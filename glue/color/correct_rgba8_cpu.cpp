@@ -1,4 +1,4 @@
-// tiershade glue: colour correction of an RGBA8 frame by the C twin (glue/color/correct_rgba8_cpu.h), a row at
+// tiershade color: colour correction of an RGBA8 frame by the C twin (glue/color/correct_rgba8_cpu.h), a row at
 // a time through the batch twin (c_ref/twins/color_correction_batch.h: 8 or 4 pixels per SIMD call,
 // color_correction_f's bits): the colours are the row's texels fetched as float, the other
 // slots are the shared record (stride 0).

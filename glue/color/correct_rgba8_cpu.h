@@ -1,4 +1,4 @@
-// tiershade glue: colour correction of an RGBA8 display frame by the C twin of
+// tiershade color: colour correction of an RGBA8 display frame by the C twin of
 // color_correction.fs, as the GL pass computes it: the colour is the RGBA8 texel fetched as
 // float (ts_unorm8_to_float), the result is written to an RGBA8 target (ts_unorm8_from_float).
 #pragma once

@@ -1,4 +1,4 @@
-// tiershade glue: 3D colour LUTs as GL textures and C sampler views (see lut_texture.h).
+// tiershade color: 3D colour LUTs as GL textures and C sampler views (see lut_texture.h).
 #include "color/lut_texture.h"
 
 Lut3D identity_lut(int n) {

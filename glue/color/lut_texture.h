@@ -1,4 +1,4 @@
-// tiershade glue: a 3D colour LUT as the textures color_correction samples: a 3D
+// tiershade color: a 3D colour LUT as the textures color_correction samples: a 3D
 // texture (x red, y green, z blue) or the 2D atlas of ES2/WebGL1 (the N blue slices
 // side by side: width N*N, height N, texel (r, g, b) at (b*N + r, g)), RGBA32F with
 // alpha 1; and the C sampler views of those textures (docs/color_correction.md).

@@ -1,4 +1,4 @@
-// tiershade glue: OpenColorIO transforms and LUT baking (see lut_bake.h).
+// tiershade color: openColorIO transforms and LUT baking (see lut_bake.h).
 // OCIO API facts from its headers (OpenColorIO 2.1.2): Config::CreateRaw/CreateFromFile,
 // FileTransform, LookTransform, CDLTransform, Processor::getOptimizedCPUProcessor,
 // CPUProcessor::applyRGB; every failure is an OCIO::Exception.
@@ -83,12 +83,14 @@ std::vector<std::string> split_looks(const std::string &s) {
 
 std::string TransformSpec::describe() const {
   switch (kind) {
-    case Kind::File: return "file " + file;
+    case Kind::File:
+      return "file " + file;
     case Kind::Look:
-      return "look '" + looks + "' of " + config + (src.empty() ? "" : " from " + src) + (dst.empty() ? "" : " to " + dst);
+      return "look '" + looks + "' of " + config + (src.empty() ? "" : " from " + src) +
+          (dst.empty() ? "" : " to " + dst);
     case Kind::Cdl:
-      return "ASC CDL slope " + triple(slope) + " offset " + triple(offset) + " power " + triple(power) +
-             " sat " + std::to_string(sat);
+      return "ASC CDL slope " + triple(slope) + " offset " + triple(offset) + " power " + triple(power) + " sat " +
+          std::to_string(sat);
   }
   return "?";
 }
@@ -97,9 +99,9 @@ bool ColorTransform::open(const TransformSpec &spec, std::string *err) {
   impl_.reset();
   description_ = spec.describe();
   // The file whose name goes in front of OCIO's message.
-  const std::string subject = spec.kind == TransformSpec::Kind::File   ? spec.file
-                              : spec.kind == TransformSpec::Kind::Look ? spec.config
-                                                                        : std::string("CDL values");
+  const std::string subject = spec.kind == TransformSpec::Kind::File ? spec.file
+      : spec.kind == TransformSpec::Kind::Look                       ? spec.config
+                                                                     : std::string("CDL values");
   try {
     OCIO::ConstConfigRcPtr config;
     OCIO::ConstTransformRcPtr transform;
@@ -143,7 +145,7 @@ bool ColorTransform::open(const TransformSpec &spec, std::string *err) {
         for (const std::string &cs : {src, dst}) {
           if (!config->getColorSpace(cs.c_str())) {
             *err = spec.config + ": no colour space or role '" + cs + "'" +
-                   (cs == "default" ? " (give --src and --dst)" : "");
+                (cs == "default" ? " (give --src and --dst)" : "");
             return false;
           }
         }

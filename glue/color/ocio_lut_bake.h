@@ -1,4 +1,4 @@
-// tiershade glue: colour transforms from OpenColorIO, and 3D LUTs baked from them.
+// tiershade color: colour transforms from OpenColorIO, and 3D LUTs baked from them.
 //
 // A transform is one of:
 //   * a file OpenColorIO reads (FileTransform, trilinear for 3D tables): .cube (first read
@@ -21,8 +21,8 @@
 struct TransformSpec {
   enum class Kind { File, Look, Cdl };
   Kind kind = Kind::File;
-  std::string file;                      // File
-  std::string config, looks, src, dst;   // Look (looks: "a" or "a, b"; src/dst empty: role default)
+  std::string file;  // File
+  std::string config, looks, src, dst;  // Look (looks: "a" or "a, b"; src/dst empty: role default)
   double slope[3] = {1, 1, 1}, offset[3] = {0, 0, 0}, power[3] = {1, 1, 1}, sat = 1;  // Cdl
   std::string describe() const;
 };

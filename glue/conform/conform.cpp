@@ -1,4 +1,4 @@
-// tiershade glue: per-pixel GL-vs-C conformance (see conform.h).
+// tiershade conform: per-pixel GL-vs-C conformance (see conform.h).
 #include "conform/conform.h"
 
 #include <chrono>
@@ -13,9 +13,12 @@
 
 Target target_for_api(Api a) {
   switch (a) {
-    case Api::GLES2: return Target::ESSL100;
-    case Api::GLES3: return Target::ESSL300;
-    case Api::GL33: return Target::GLSL330;
+    case Api::GLES2:
+      return Target::ESSL100;
+    case Api::GLES3:
+      return Target::ESSL300;
+    case Api::GL33:
+      return Target::GLSL330;
   }
   return Target::GLSL330;
 }
@@ -142,7 +145,8 @@ ConformResult conform_variant(const ConformRun &run, const ShaderFamily &fam, co
         if (u > res.max_ulp) res.max_ulp = u;
         const double a = std::fabs(static_cast<double>(gp[ch]) - cv[ch]);
         if (a > res.max_abs || std::isnan(a)) res.max_abs = std::isnan(a) ? INFINITY : std::fmax(res.max_abs, a);
-        if (!std::isfinite(gp[ch]) || !std::isfinite(cv[ch])) ++res.nonfinite;
+        if (!std::isfinite(gp[ch]) || !std::isfinite(cv[ch]))
+          ++res.nonfinite;
         else if (gp[ch] < lo || gp[ch] > hi || cv[ch] < lo || cv[ch] > hi) {
           ++res.out_of_range;
           if (first_bad_range < 0) first_bad_range = static_cast<long>(y) * in.w + x;
@@ -165,8 +169,8 @@ ConformResult conform_variant(const ConformRun &run, const ShaderFamily &fam, co
     std::ostringstream o;
     o << describe_pixel(fam, in, x, y);
     for (int ch = 0; ch < 4; ++ch) {
-      o << "  ch" << ch << ": GL " << fmt_float(gp[ch]) << "  C " << fmt_float(cv[ch])
-        << "  ULP " << ulp_distance(gp[ch], cv[ch]) << "\n";
+      o << "  ch" << ch << ": GL " << fmt_float(gp[ch]) << "  C " << fmt_float(cv[ch]) << "  ULP "
+        << ulp_distance(gp[ch], cv[ch]) << "\n";
     }
     res.worst = o.str();
   }

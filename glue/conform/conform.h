@@ -1,4 +1,4 @@
-// tiershade glue: per-pixel conformance of a shader variant, GL (llvmpipe) against
+// tiershade conform: per-pixel conformance of a shader variant, GL (llvmpipe) against
 // its bit-exact C twin. Tolerance: 0 ULP on every channel of every pixel
 // (docs/conformance.md); any other tolerance must be written here with its reason.
 #pragma once
@@ -14,14 +14,14 @@ constexpr unsigned kConformMaxUlp = 0;
 
 struct ConformResult {
   std::string shader, variant, tier, backend, api, set;
-  long pixels = 0, mismatches = 0;    // channel-level mismatches counted per pixel
+  long pixels = 0, mismatches = 0;  // channel-level mismatches counted per pixel
   long nonfinite = 0, out_of_range = 0;  // in GL or C output
   unsigned max_ulp = 0;
   double max_abs = 0;
   double seconds = 0;
   bool cube_maps_nearest = false;  // LINEAR cube maps sampled with NEAREST (GLES: adapt_textures_for_api)
-  std::string error;   // compile/link/draw failure
-  std::string worst;   // human report of the worst pixel (inputs, GL, C, ULP)
+  std::string error;  // compile/link/draw failure
+  std::string worst;  // human report of the worst pixel (inputs, GL, C, ULP)
   bool passed() const { return error.empty() && mismatches == 0 && nonfinite == 0 && out_of_range == 0; }
 };
 
@@ -47,8 +47,8 @@ GLuint build_production_program(GlRenderer &r, Api api, const Variant &v, std::s
 GLuint build_conform_program(GlRenderer &r, Api api, const Variant &v, std::string *err);
 
 // Renders `in` through variant `v` and compares every pixel with the C twin.
-ConformResult conform_variant(const ConformRun &run, const ShaderFamily &fam, const Variant &v,
-                              const FamilyInputs &in, InputSet set);
+ConformResult conform_variant(const ConformRun &run, const ShaderFamily &fam, const Variant &v, const FamilyInputs &in,
+                              InputSet set);
 
 std::string conform_result_json(const ConformResult &r);
 std::string describe_pixel(const ShaderFamily &fam, const FamilyInputs &in, int x, int y);

@@ -1,4 +1,4 @@
-// tiershade glue: deferred GL frames and the multi-threaded C fallback (see frame.h).
+// tiershade conform: deferred GL frames and the multi-threaded C fallback (see frame.h).
 #include "conform/family_frame.h"
 
 #include <algorithm>
@@ -66,8 +66,8 @@ void cpu_render_frame(const ShaderFamily &f, const Variant &v, const FamilyInput
   });
 }
 
-void cpu_render_frame_double(const ShaderFamily &f, const Variant &v, const FamilyInputs &in,
-                             std::vector<double> *out, int threads) {
+void cpu_render_frame_double(const ShaderFamily &f, const Variant &v, const FamilyInputs &in, std::vector<double> *out,
+                             int threads) {
   out->assign(static_cast<size_t>(in.w) * in.h * 4, 0.0);
   parallel_rows(in.h, threads, [&](int y) {
     for (int x = 0; x < in.w; ++x) {

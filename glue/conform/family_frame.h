@@ -23,5 +23,5 @@ void gl_frame_release(GlRenderer &r, GlFrameProgram *fp);
 // The C fallback: float32 twin, bit-exact with llvmpipe; `threads` workers (0 = all cores).
 void cpu_render_frame(const ShaderFamily &f, const Variant &v, const FamilyInputs &in, ImageF *out, int threads = 0);
 // The double-precision reference of the same frame (rgba, 4 doubles per pixel).
-void cpu_render_frame_double(const ShaderFamily &f, const Variant &v, const FamilyInputs &in,
-                             std::vector<double> *out, int threads = 0);
+void cpu_render_frame_double(const ShaderFamily &f, const Variant &v, const FamilyInputs &in, std::vector<double> *out,
+                             int threads = 0);

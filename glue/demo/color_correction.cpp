@@ -1,4 +1,4 @@
-// tiershade: the colour-correction section of `tiershade demo`: one frame (a tone-mapped
+// tiershade demo: the colour-correction section of `tiershade demo`: one frame (a tone-mapped
 // light probe above a colour chart) without and with two colour corrections, Source-style
 // 32^3 LUTs baked with OpenColorIO from the colourist-style .cube files of scenes/luts:
 // day for night, desaturation, and the two blended 50/50 (talk: "Color Correction").

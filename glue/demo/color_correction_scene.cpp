@@ -1,4 +1,4 @@
-// tiershade glue: frame and example corrections of the colour-correction demo and benchmark.
+// tiershade demo: frame and example corrections of the colour-correction demo and benchmark.
 #include "demo/color_correction_scene.h"
 
 #include <algorithm>
@@ -84,8 +84,11 @@ ImageF cc_frame(int w, int h, std::string *note) {
       const double fx = std::min(1.0, std::max(0.0, u - x0));
       double rgb[3];
       for (int k = 0; k < 3; ++k) {
-        auto at = [&](int xx, int yy) { return static_cast<double>(probe.rgba[(static_cast<size_t>(yy) * probe.w + xx) * 4 + k]); };
-        const double c = (at(x0, y0) * (1 - fx) + at(x1, y0) * fx) * (1 - fy) + (at(x0, y1) * (1 - fx) + at(x1, y1) * fx) * fy;
+        auto at = [&](int xx, int yy) {
+          return static_cast<double>(probe.rgba[(static_cast<size_t>(yy) * probe.w + xx) * 4 + k]);
+        };
+        const double c =
+            (at(x0, y0) * (1 - fx) + at(x1, y0) * fx) * (1 - fy) + (at(x0, y1) * (1 - fx) + at(x1, y1) * fx) * fy;
         rgb[k] = srgb_encode_clamped(c * exposure);
       }
       put(&img, x, y, rgb);

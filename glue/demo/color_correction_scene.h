@@ -1,4 +1,4 @@
-// tiershade glue: the frame and the example corrections of the colour-correction demo and
+// tiershade demo: the frame and the example corrections of the colour-correction demo and
 // benchmark (docs/color_correction.md, "Demo and benchmark").
 #pragma once
 #include <string>

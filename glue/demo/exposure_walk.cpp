@@ -1,4 +1,4 @@
-// tiershade glue: the exposure adaptation sequence (see hdr_adaptation.h).
+// tiershade demo: the exposure adaptation sequence (see hdr_adaptation.h).
 #include "demo/exposure_walk.h"
 
 #include <algorithm>

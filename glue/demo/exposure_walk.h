@@ -1,4 +1,4 @@
-// tiershade glue: the exposure adaptation sequence: the camera walks from a dark room
+// tiershade demo: the exposure adaptation sequence: the camera walks from a dark room
 // through a door into daylight while the auto exposure runs in a closed loop (integer
 // path: RGBA8 frames, the running histogram one bucket per frame, the controller of
 // c_ref/exposure/exposure_control.h with designer overrides per region). The same sequence runs
@@ -14,10 +14,10 @@
 
 struct AdaptationSpec {
   int frames = 120;
-  int door_frame = 24;       // the first frame outside
+  int door_frame = 24;  // the first frame outside
   double fps = 30.0;
   double initial_scale = 1.0;
-  double alpha = 0.0625;     // the histogram's temporal prefilter
+  double alpha = 0.0625;  // the histogram's temporal prefilter
   std::vector<ae_region> regions;  // designer overrides (camera x < 0: the room; x >= 0: outdoors)
 };
 
@@ -33,9 +33,9 @@ struct AdaptationScenes {
 };
 
 struct AdaptationFrame {
-  double scale = 0, goal = 0;        // the exposure the frame was rendered with, and the goal after it
-  ae_histogram hist;                 // the running histogram after the frame
-  std::vector<uint8_t> display;      // RGBA8 codes (kept for the frames asked for)
+  double scale = 0, goal = 0;  // the exposure the frame was rendered with, and the goal after it
+  ae_histogram hist;  // the running histogram after the frame
+  std::vector<uint8_t> display;  // RGBA8 codes (kept for the frames asked for)
 };
 
 // keep: which frames keep their RGBA8 image. The GL run also returns its histogram

@@ -1,4 +1,4 @@
-// tiershade: the `demo` section of the HDR work (docs/hdr.md):
+// tiershade demo: the `demo` section of the HDR work (docs/hdr.md):
 //   1. the HDR scene at the tone-map scales 0.05, 1 and 4 (the talk's Lost Coast row),
 //      through the integer path and the float path (with bloom), on every GL backend
 //      and in C, GL frames compared with the C frames code for code;
@@ -89,7 +89,7 @@ bool make_scenes(int w, int h, Scenes *s, std::string *err) {
   }
   std::string room_note;
   return hdr_scene_frame(kHdrDaylightGltf, w, h, &s->day, &s->note, err) &&
-         hdr_scene_frame(kHdrDarkRoomGltf, w, h, &s->room, &room_note, err);
+      hdr_scene_frame(kHdrDarkRoomGltf, w, h, &s->room, &room_note, err);
 }
 
 // 1. The tone-map row.
@@ -138,9 +138,10 @@ bool tonemap_row(const DemoOptions &opt, const Scenes &sc, int *failures, std::s
              kScales[k], tag.c_str(), df);
     }
   }
-  printf("wrote %s/hdr_tonemap_row_float.png and _integer.png (tone-map scale 0.05 | 1 | 4), hdr_float_linear.exr, "
-         "hdr_float_bloom.exr\n",
-         opt.dir.c_str());
+  printf(
+      "wrote %s/hdr_tonemap_row_float.png and _integer.png (tone-map scale 0.05 | 1 | 4), hdr_float_linear.exr, "
+      "hdr_float_bloom.exr\n",
+      opt.dir.c_str());
   return true;
 }
 
@@ -163,8 +164,8 @@ std::string adaptation_svg(const std::vector<AdaptationFrame> &fr, const Adaptat
     << "<line x1='" << L << "' y1='" << T << "' x2='" << L << "' y2='" << H - B << "' stroke='black'/>\n"
     << "<line x1='" << X(spec.door_frame) << "' y1='" << T << "' x2='" << X(spec.door_frame) << "' y2='" << H - B
     << "' stroke='#999' stroke-dasharray='4 3'/>\n<text x='" << X(spec.door_frame) + 4 << "' y='" << T + 12
-    << "'>door: daylight</text>\n<text x='" << W / 2 << "' y='" << H - 8 << "' text-anchor='middle'>frame ("
-    << spec.fps << " per second)</text>\n<text x='14' y='" << H / 2 << "' transform='rotate(-90 14 " << H / 2
+    << "'>door: daylight</text>\n<text x='" << W / 2 << "' y='" << H - 8 << "' text-anchor='middle'>frame (" << spec.fps
+    << " per second)</text>\n<text x='14' y='" << H / 2 << "' transform='rotate(-90 14 " << H / 2
     << ")' text-anchor='middle'>tone-map scale (log)</text>\n";
   for (double e = std::ceil(lo); e <= hi; e += 1) {
     char b[160];
@@ -175,7 +176,8 @@ std::string adaptation_svg(const std::vector<AdaptationFrame> &fr, const Adaptat
   for (int pass = 0; pass < 2; ++pass) {
     o << "<polyline fill='none' stroke='" << (pass ? "#cc3333" : "#3366cc") << "' stroke-width='" << (pass ? 1 : 2)
       << "' points='";
-    for (size_t i = 0; i < fr.size(); ++i) o << X(static_cast<double>(i)) << "," << Y(pass ? fr[i].goal : fr[i].scale) << " ";
+    for (size_t i = 0; i < fr.size(); ++i)
+      o << X(static_cast<double>(i)) << "," << Y(pass ? fr[i].goal : fr[i].scale) << " ";
     o << "'/>\n";
   }
   o << "<text x='" << W - R - 150 << "' y='" << T + 12 << "' fill='#3366cc'>exposure</text><text x='" << W - R - 80
@@ -244,10 +246,11 @@ bool adaptation(const DemoOptions &opt, int *failures, std::string *err) {
       settle = f + 1;
       break;
     }
-  printf("\nadaptation (%dx%d, integer path, %d frames at %g fps, door at frame %d): exposure %.3f in the room "
-         "(settled), %.3f outside, within 10%% of it from frame %d (%.2f s after the door)\n",
-         w, h, spec.frames, spec.fps, spec.door_frame, cf[spec.door_frame - 1].scale, final_scale, settle,
-         (settle - spec.door_frame) / spec.fps);
+  printf(
+      "\nadaptation (%dx%d, integer path, %d frames at %g fps, door at frame %d): exposure %.3f in the room "
+      "(settled), %.3f outside, within 10%% of it from frame %d (%.2f s after the door)\n",
+      w, h, spec.frames, spec.fps, spec.door_frame, cf[spec.door_frame - 1].scale, final_scale, settle,
+      (settle - spec.door_frame) / spec.fps);
   printf("%-16s %12s %12s %14s %10s\n", "backend", "exposures", "frames", "histogram", "late reads");
   for (const BackendApi &cfg : opt.configs) {
     const std::string tag = std::string(backend_name(cfg.backend)) + "_" + api_name(cfg.api);

@@ -8,7 +8,6 @@
 #include "demo/scene_files.h"
 #include "scene/deferred.h"
 
-
 // The scene's deferred frame at sm3 (4 local lights: none folded), every pixel lit (the wall is
 // behind the spheres); *note says where its ambient cube comes from.
 bool hdr_scene_frame(const char *gltf, int w, int h, SceneDeferredFrame *out, std::string *note, std::string *err);

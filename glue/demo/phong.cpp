@@ -34,9 +34,7 @@ const Panel kPanels[] = {
      false, Encode::Linear},
 };
 
-ImageF to_display(const ImageF &img, Encode enc) {
-  return enc == Encode::SRGB ? srgb_display(img) : img;
-}
+ImageF to_display(const ImageF &img, Encode enc) { return enc == Encode::SRGB ? srgb_display(img) : img; }
 
 bool run(const DemoOptions &opt, std::string *err) {
   std::vector<ShaderDecl> decls;
@@ -92,9 +90,10 @@ bool run(const DemoOptions &opt, std::string *err) {
   std::vector<const ImageF *> ptrs;
   for (const auto &d : display) ptrs.push_back(&d);
   if (!write_png(opt.dir + "/phong_comparison.png", hstack(ptrs, 4, 1.f), Encode::Linear, err)) return false;
-  printf("wrote %s/phong_*.png; side by side: %s/phong_comparison.png (ps20 diffuse | ps2b specular | ps2b Phong | "
-         "sm3 with rim and envmap)\n",
-         opt.dir.c_str(), opt.dir.c_str());
+  printf(
+      "wrote %s/phong_*.png; side by side: %s/phong_comparison.png (ps20 diffuse | ps2b specular | ps2b Phong | "
+      "sm3 with rim and envmap)\n",
+      opt.dir.c_str(), opt.dir.c_str());
   if (failures) {
     *err = std::to_string(failures) + " GL frames differ from the C fallback";
     return false;

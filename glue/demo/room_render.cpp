@@ -1,4 +1,4 @@
-// tiershade glue: world_lighting frames in GL and in C (see world_render.h).
+// tiershade demo: world_lighting frames in GL and in C (see world_render.h).
 #include "demo/room_render.h"
 
 namespace {

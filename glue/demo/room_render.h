@@ -1,4 +1,4 @@
-// tiershade glue: renders world_lighting frames of the room scene (scene_world.h) in GL
+// tiershade demo: renders world_lighting frames of the room scene (scene_world.h) in GL
 // (deferred passes, one per cube-map probe, composited per pixel by the probe of each
 // pixel's wall) and with the C twin (float32, bit-exact; or the double reference).
 // Shared by the demo (demo_world_lighting.cpp) and the benchmark (bench_world_lighting.cpp).

@@ -1,8 +1,7 @@
-// tiershade glue: the world_lighting room scene (see scene_world.h).
+// tiershade demo: the world_lighting room scene (see scene_world.h).
 #include "demo/room_scene.h"
 
 #include <cmath>
-
 
 namespace {
 
@@ -86,9 +85,9 @@ WorldScene default_world_scene() {
     l.atten[2] = 1.0;
     return l;
   };
-  s.lights = {point(-2.0, 2.3, -4.6, 9.0, 5.0, 2.0),   // warm, back left
-              point(2.2, 0.9, -2.0, 1.5, 3.0, 8.0),    // blue, low right
-              point(0.3, 2.6, -0.5, 3.0, 5.5, 3.0)};   // green, near the ceiling
+  s.lights = {point(-2.0, 2.3, -4.6, 9.0, 5.0, 2.0),  // warm, back left
+              point(2.2, 0.9, -2.0, 1.5, 3.0, 8.0),  // blue, low right
+              point(0.3, 2.6, -0.5, 3.0, 5.5, 3.0)};  // green, near the ceiling
   s.probes = {ts_v3d(0, 1.4, -1.0), ts_v3d(0, 1.4, -4.5)};
   s.eye = ts_v3d(0, 1.6, 3.0);
   s.target = ts_v3d(0, 1.2, -6);
@@ -119,15 +118,18 @@ bool world_frame(const WorldScene &s, const WorldBake &b, int w, int h, WorldFra
       float lm[2];
       lm_page_uv(&b.place[f], s.page_w, s.page_h, a, bb, lm);
       // Base uv: one tile per world unit along the face's S and T axes.
-      in.set_slot(x, y, WL_SLOT_UV, ts_v4f(static_cast<float>(a * face.su), static_cast<float>(bb * face.sv), lm[0], lm[1]));
+      in.set_slot(x, y, WL_SLOT_UV,
+                  ts_v4f(static_cast<float>(a * face.su), static_cast<float>(bb * face.sv), lm[0], lm[1]));
       in.set_slot(x, y, WL_SLOT_LM_OFFSET,
                   ts_v4f(b.place[f].offset[0], b.place[f].offset[1], static_cast<float>(t * dot(d, fwd)), 0));
-      in.set_slot(x, y, WL_SLOT_NORMAL, ts_v4f(static_cast<float>(n.x), static_cast<float>(n.y), static_cast<float>(n.z), 0));
+      in.set_slot(x, y, WL_SLOT_NORMAL,
+                  ts_v4f(static_cast<float>(n.x), static_cast<float>(n.y), static_cast<float>(n.z), 0));
       in.set_slot(x, y, WL_SLOT_TANGENT,
                   ts_v4f(static_cast<float>(face.u.x), static_cast<float>(face.u.y), static_cast<float>(face.u.z), 0));
       in.set_slot(x, y, WL_SLOT_BINORMAL,
                   ts_v4f(static_cast<float>(face.v.x), static_cast<float>(face.v.y), static_cast<float>(face.v.z), 0));
-      in.set_slot(x, y, WL_SLOT_EYE, ts_v4f(static_cast<float>(e.x), static_cast<float>(e.y), static_cast<float>(e.z), 0));
+      in.set_slot(x, y, WL_SLOT_EYE,
+                  ts_v4f(static_cast<float>(e.x), static_cast<float>(e.y), static_cast<float>(e.z), 0));
       out->probe[static_cast<size_t>(y) * w + x] = b.face_probe[f];
     }
   }

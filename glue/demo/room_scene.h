@@ -1,4 +1,4 @@
-// tiershade glue: the world_lighting demo and benchmark scene: a room of five
+// tiershade demo: the world_lighting demo and benchmark scene: a room of five
 // normal-mapped walls lit by three coloured point lights, baked into radiosity-
 // normal-mapped lightmaps (c_ref/offline/rnm_bake.c) on one lightmap page (c_ref/offline/lightmap_page.c),
 // with two cube-map probes rendered from the room itself; each wall takes the nearest
@@ -21,8 +21,8 @@ struct WorldScene : WorldBakeInput {
 WorldScene default_world_scene();
 
 struct WorldFrame {
-  FamilyInputs in;               // G-buffer slots + shared uniforms; textures set per pass
-  std::vector<int> probe;        // per pixel: the cube-map probe of its face, -1 = background
+  FamilyInputs in;  // G-buffer slots + shared uniforms; textures set per pass
+  std::vector<int> probe;  // per pixel: the cube-map probe of its face, -1 = background
   std::vector<TextureDesc> materials;  // u_base, u_normalmap, u_envmap_mask
 };
 bool world_frame(const WorldScene &s, const WorldBake &b, int w, int h, WorldFrame *out, std::string *err);

@@ -2,8 +2,8 @@
 // tools/make_scenes.py; docs/scenes.md), by path from the repository root, where make runs.
 #pragma once
 
-extern const char *const kSphereGridGltf;    // scenes/sphere_grid.gltf: the model-lighting grid
+extern const char *const kSphereGridGltf;  // scenes/sphere_grid.gltf: the model-lighting grid
 extern const char *const kSphereGridLights;  // scenes/sphere_grid.lights: its lights, their one source
-extern const char *const kPhongSphereGltf;   // scenes/phong_sphere.gltf: the Episode One sphere
-extern const char *const kHdrDaylightGltf;   // scenes/hdr_daylight.gltf
-extern const char *const kHdrDarkRoomGltf;   // scenes/hdr_dark_room.gltf
+extern const char *const kPhongSphereGltf;  // scenes/phong_sphere.gltf: the Episode One sphere
+extern const char *const kHdrDaylightGltf;  // scenes/hdr_daylight.gltf
+extern const char *const kHdrDarkRoomGltf;  // scenes/hdr_dark_room.gltf

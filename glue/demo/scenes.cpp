@@ -1,4 +1,4 @@
-// tiershade glue: the scenes section of `tiershade demo` (`make demo`): every shipped glTF scene
+// tiershade demo: the scenes section of `tiershade demo` (`make demo`): every shipped glTF scene
 // (scenes/*.gltf, docs/scenes.md) rendered as `tiershade render` does on the default backend
 // (EGL surfaceless GLES 3.0 on llvmpipe), checked against the C twins on GL's own inputs, and
 // by the C fallback alone; the variants each one needed and the frames are written to out/.

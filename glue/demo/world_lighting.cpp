@@ -1,4 +1,4 @@
-// tiershade glue: the world_lighting section of `tiershade demo`: the room (scene_world.h)
+// tiershade demo: the world_lighting section of `tiershade demo`: the room (scene_world.h)
 // in each tier, "lightmaps only" and the final shading (the talk's "Light Maps Only" /
 // "Final Rendered Scene" pair), on every GL backend and by the C fallback, each GL frame
 // compared bit for bit with the C frame. GLES frames sample the cube maps NEAREST (GLES
@@ -22,9 +22,12 @@ struct DemoTierW {
   const char *final_variant, *lightmap_variant;
 };
 const DemoTierW kTiers[] = {
-    {"ps20", "ps20:BUMPMAP=1,LIGHTMAP_ENCODING=1,ENVMAP=1,ENVMAPMASK=1", "ps20:BUMPMAP=1,LIGHTMAP_ENCODING=1,ENVMAP=0,ENVMAPMASK=0"},
-    {"ps2b", "ps2b:BUMPMAP=1,LIGHTMAP_ENCODING=0,ENVMAP=1,ENVMAPMASK=1", "ps2b:BUMPMAP=1,LIGHTMAP_ENCODING=0,ENVMAP=0,ENVMAPMASK=0"},
-    {"sm3", "sm3:BUMPMAP=1,LIGHTMAP_ENCODING=0,ENVMAP=1,ENVMAPMASK=1", "sm3:BUMPMAP=1,LIGHTMAP_ENCODING=0,ENVMAP=0,ENVMAPMASK=0"},
+    {"ps20", "ps20:BUMPMAP=1,LIGHTMAP_ENCODING=1,ENVMAP=1,ENVMAPMASK=1",
+     "ps20:BUMPMAP=1,LIGHTMAP_ENCODING=1,ENVMAP=0,ENVMAPMASK=0"},
+    {"ps2b", "ps2b:BUMPMAP=1,LIGHTMAP_ENCODING=0,ENVMAP=1,ENVMAPMASK=1",
+     "ps2b:BUMPMAP=1,LIGHTMAP_ENCODING=0,ENVMAP=0,ENVMAPMASK=0"},
+    {"sm3", "sm3:BUMPMAP=1,LIGHTMAP_ENCODING=0,ENVMAP=1,ENVMAPMASK=1",
+     "sm3:BUMPMAP=1,LIGHTMAP_ENCODING=0,ENVMAP=0,ENVMAPMASK=0"},
 };
 
 bool save(const std::string &base, const ImageF &img, bool exr, std::string *err) {
@@ -58,7 +61,8 @@ bool run(const DemoOptions &opt, std::string *err) {
   for (const DemoTierW &t : kTiers) {
     for (int lm_only = 0; lm_only < 2; ++lm_only) {
       Variant v;
-      if (!find_variant(sel.decls, "world_lighting", lm_only ? t.lightmap_variant : t.final_variant, &v, err)) return false;
+      if (!find_variant(sel.decls, "world_lighting", lm_only ? t.lightmap_variant : t.final_variant, &v, err))
+        return false;
       const TextureDesc page = encode_page(scene, bake, v.value("LIGHTMAP_ENCODING"));
       WorldPass pass{&v, &page, lm_only == 1, false};
       const std::string base = dir + t.tier + (lm_only ? "_lightmaps" : "");
@@ -66,7 +70,8 @@ bool run(const DemoOptions &opt, std::string *err) {
       world_render_cpu(frame, bake, pass, &cpu);
       if (!save(base + "_cpu", cpu, !lm_only, err)) return false;
       (lm_only ? lightmaps : finals).push_back(cpu);
-      printf("%-5s %-10s %-16s %10d %12s %10s\n", t.tier, lm_only ? "lightmaps" : "final", "cpu", opt.w * opt.h, "-", "-");
+      printf("%-5s %-10s %-16s %10d %12s %10s\n", t.tier, lm_only ? "lightmaps" : "final", "cpu", opt.w * opt.h, "-",
+             "-");
       for (const BackendApi &cfg : opt.configs) {
         const std::string tag = std::string(backend_name(cfg.backend)) + "_" + api_name(cfg.api);
         auto ctx = GlContext::create(cfg.backend, cfg.api, err);
@@ -91,7 +96,8 @@ bool run(const DemoOptions &opt, std::string *err) {
         }
         DiffStats st;
         const ImageF diff = diff_image(gl, *ref, &st);
-        if (!save(base + "_" + tag, gl, false, err) || !write_png(base + "_diff_" + tag + ".png", diff, Encode::Linear, err))
+        if (!save(base + "_" + tag, gl, false, err) ||
+            !write_png(base + "_diff_" + tag + ".png", diff, Encode::Linear, err))
           return false;
         if (st.mismatched_pixels) ++failures;
         printf("%-5s %-10s %-16s %10ld %12ld %10u\n", t.tier, lm_only ? "lightmaps" : "final", tag.c_str(), st.pixels,
@@ -132,10 +138,12 @@ bool run(const DemoOptions &opt, std::string *err) {
   std::vector<const ImageF *> tp, bp;
   for (const ImageF &i : top) tp.push_back(&i);
   for (const ImageF &i : bottom) bp.push_back(&i);
-  if (!write_png(dir + "tiers.png", vstack2(hstack(bp, 4, 1.f), hstack(tp, 4, 1.f), 4), Encode::Linear, err)) return false;
-  printf("wrote %sTIER[_lightmaps]_BACKEND.png, the diffs, %sreference.exr and %stiers.png\n"
-         "(top: final ps20 | ps2b | sm3 | double reference; bottom: lightmaps only, and the flat lightmap)\n",
-         dir.c_str(), dir.c_str(), dir.c_str());
+  if (!write_png(dir + "tiers.png", vstack2(hstack(bp, 4, 1.f), hstack(tp, 4, 1.f), 4), Encode::Linear, err))
+    return false;
+  printf(
+      "wrote %sTIER[_lightmaps]_BACKEND.png, the diffs, %sreference.exr and %stiers.png\n"
+      "(top: final ps20 | ps2b | sm3 | double reference; bottom: lightmaps only, and the flat lightmap)\n",
+      dir.c_str(), dir.c_str(), dir.c_str());
   if (failures) {
     *err = std::to_string(failures) + " world_lighting GL frames differ from the C frames or failed";
     return false;

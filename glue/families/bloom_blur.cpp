@@ -1,4 +1,4 @@
-// tiershade glue: the bloom_blur family (one direction of the separable bloom
+// tiershade families: the bloom_blur family (one direction of the separable bloom
 // Gaussian): input records (random and hard cases), the half-quantised source
 // texture, and the bridge to its C twin (c_ref/twins/bloom_blur.c).
 #include "twins/bloom_blur.h"
@@ -52,7 +52,8 @@ void random_pixel(Rng &r, ts_vec4f rec[BB_SLOTS]) {
 void make_inputs(InputSet set, int w, int h, uint32_t seed, FamilyInputs *out) {
   Rng r(seed);
   // The hard cases: tests/conform/bloom_blur.cases.
-  fill_record_grid("bloom_blur", set, w, h, BB_SLOTS, r, [&](ts_vec4f *rec) { random_pixel(r, rec); }, out);
+  fill_record_grid(
+      "bloom_blur", set, w, h, BB_SLOTS, r, [&](ts_vec4f *rec) { random_pixel(r, rec); }, out);
   out->textures = {hdr_test_texture(r, "u_source", kSourceW, kSourceH, true)};
 }
 
@@ -73,7 +74,6 @@ void bind_uniforms(const GlFns &gl, GLuint program, const std::vector<ts_vec4f> 
 }  // namespace
 
 const ShaderFamily kBloomBlurFamily = {
-    "bloom_blur", BB_SLOTS, slot_names(), make_inputs, eval_f, eval_d, output_range,
-    BB_PIXEL_SLOTS, bind_uniforms,
+    "bloom_blur", BB_SLOTS, slot_names(), make_inputs, eval_f, eval_d, output_range, BB_PIXEL_SLOTS, bind_uniforms,
 };
 const FamilyRegistrar kRegisterBloomBlur(&kBloomBlurFamily);

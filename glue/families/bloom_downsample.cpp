@@ -1,4 +1,4 @@
-// tiershade glue: the bloom_downsample family (the quarter-size bloom source):
+// tiershade families: the bloom_downsample family (the quarter-size bloom source):
 // input records (random and hard cases), the half-quantised source texture, and
 // the bridge to its C twin (c_ref/twins/bloom_downsample.c).
 #include "twins/bloom_downsample.h"
@@ -54,7 +54,8 @@ void random_pixel(Rng &r, ts_vec4f rec[BD_SLOTS]) {
 void make_inputs(InputSet set, int w, int h, uint32_t seed, FamilyInputs *out) {
   Rng r(seed);
   // The hard cases: tests/conform/bloom_downsample.cases.
-  fill_record_grid("bloom_downsample", set, w, h, BD_SLOTS, r, [&](ts_vec4f *rec) { random_pixel(r, rec); }, out);
+  fill_record_grid(
+      "bloom_downsample", set, w, h, BD_SLOTS, r, [&](ts_vec4f *rec) { random_pixel(r, rec); }, out);
   out->textures = {hdr_test_texture(r, "u_source", kSourceW, kSourceH, true)};
 }
 
@@ -75,7 +76,7 @@ void bind_uniforms(const GlFns &gl, GLuint program, const std::vector<ts_vec4f> 
 }  // namespace
 
 const ShaderFamily kBloomDownsampleFamily = {
-    "bloom_downsample", BD_SLOTS, slot_names(), make_inputs, eval_f, eval_d, output_range,
-    BD_PIXEL_SLOTS, bind_uniforms,
+    "bloom_downsample", BD_SLOTS,       slot_names(),  make_inputs, eval_f, eval_d,
+    output_range,       BD_PIXEL_SLOTS, bind_uniforms,
 };
 const FamilyRegistrar kRegisterBloomDownsample(&kBloomDownsampleFamily);

@@ -1,4 +1,4 @@
-// tiershade glue: the color_correction family: input records (random and hard cases),
+// tiershade families: the color_correction family: input records (random and hard cases),
 // the LUT textures, and the bridge to its C twin (c_ref/twins/color_correction.c).
 #include <cmath>
 #include <limits>
@@ -69,8 +69,8 @@ Lut3D random_lut(Rng &r, int n, bool hard) {
 
 void random_pixel(Rng &r, int n, ts_vec4f rec[CC_SLOTS]) {
   rec[CC_SLOT_COLOR] = ts_v4f(r.uniform(-0.1f, 1.1f), r.uniform(-0.1f, 1.1f), r.uniform(-0.1f, 1.1f), r.uniform(0, 1));
-  rec[CC_SLOT_WEIGHTS] = ts_v4f(r.uniform(-0.25f, 1.25f), r.uniform(-0.25f, 1.25f), r.uniform(-0.25f, 1.25f),
-                                r.uniform(-0.25f, 1.25f));
+  rec[CC_SLOT_WEIGHTS] =
+      ts_v4f(r.uniform(-0.25f, 1.25f), r.uniform(-0.25f, 1.25f), r.uniform(-0.25f, 1.25f), r.uniform(-0.25f, 1.25f));
   rec[CC_SLOT_PARAMS] = ts_v4f(r.uniform(-0.25f, 1.25f), 0, 0, 0);
   rec[CC_SLOT_LUT] = cc_lut_params(n);
 }
@@ -83,14 +83,16 @@ constexpr int kHardLutEdge = 17;
 const CaseFunctionRegistrar kCaseFunctions("color_correction",
                                            {{"lattice", {}, 1, "", [](const float *, const CaseEval &env, float *out) {
                                                const uint32_t n = kHardLutEdge;
-                                               out[0] = static_cast<float>(env.rng->next() % n) / static_cast<float>(n - 1);
+                                               out[0] =
+                                                   static_cast<float>(env.rng->next() % n) / static_cast<float>(n - 1);
                                              }}});
 
 void make_inputs(InputSet set, int w, int h, uint32_t seed, FamilyInputs *out) {
   const int n = set == InputSet::Random ? 32 : kHardLutEdge;
   Rng r(seed);
   // The hard cases: tests/conform/color_correction.cases.
-  fill_record_grid("color_correction", set, w, h, CC_SLOTS, r, [&](ts_vec4f *rec) { random_pixel(r, n, rec); }, out);
+  fill_record_grid(
+      "color_correction", set, w, h, CC_SLOTS, r, [&](ts_vec4f *rec) { random_pixel(r, n, rec); }, out);
   std::vector<Lut3D> luts;
   for (int i = 0; i < CC_MAX_LOOKUPS; ++i) luts.push_back(random_lut(r, n, set == InputSet::Hard));
   cc_set_luts(out, {&luts[0], &luts[1], &luts[2], &luts[3]}, true);
@@ -131,8 +133,7 @@ void cc_set_luts(FamilyInputs *in, const std::vector<const Lut3D *> &luts, bool 
   }
 }
 
-void cc_frame_inputs(const ImageF &frame, const float weights[4], float default_weight, int lut_n,
-                     FamilyInputs *in) {
+void cc_frame_inputs(const ImageF &frame, const float weights[4], float default_weight, int lut_n, FamilyInputs *in) {
   in->resize(frame.w, frame.h, CC_PIXEL_SLOTS);
   in->case_names.clear();
   for (int y = 0; y < frame.h; ++y)
@@ -154,6 +155,7 @@ void cc_luts_of(const FamilyInputs &in, cc_luts *out) {
 }
 
 const ShaderFamily kColorCorrectionFamily = {
-    "color_correction", CC_SLOTS, slot_names(), make_inputs, eval_f, eval_d, output_range, CC_PIXEL_SLOTS, bind_uniforms,
+    "color_correction", CC_SLOTS,       slot_names(),  make_inputs, eval_f, eval_d,
+    output_range,       CC_PIXEL_SLOTS, bind_uniforms,
 };
 const FamilyRegistrar kRegister(&kColorCorrectionFamily);

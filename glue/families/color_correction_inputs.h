@@ -1,4 +1,4 @@
-// tiershade glue: input records and LUT textures of the color_correction family, for
+// tiershade families: input records and LUT textures of the color_correction family, for
 // the demo, the benchmark and the tests (the family itself: family_color_correction.cpp).
 #pragma once
 #include <vector>
@@ -16,8 +16,7 @@ void cc_set_luts(FamilyInputs *in, const std::vector<const Lut3D *> &luts, bool 
 
 // A deferred frame: the per-pixel colour from `frame` (rows bottom-up, as ImageF), and the
 // shared weights, default weight and addressing of LUT edge lut_n.
-void cc_frame_inputs(const ImageF &frame, const float weights[4], float default_weight, int lut_n,
-                     FamilyInputs *in);
+void cc_frame_inputs(const ImageF &frame, const float weights[4], float default_weight, int lut_n, FamilyInputs *in);
 
 // The C twin's view of in->textures (as laid out by cc_set_luts).
 void cc_luts_of(const FamilyInputs &in, cc_luts *out);

@@ -1,4 +1,4 @@
-// tiershade glue: shader-family plumbing shared by every family (see family.h).
+// tiershade families: shader-family plumbing shared by every family (see family.h).
 #include "families/family.h"
 
 #include <cmath>
@@ -71,9 +71,15 @@ const ShaderFamily *find_family(const std::string &name) {
 std::vector<Define> variant_defines(const Variant &v, InputMode mode) {
   std::vector<Define> d;
   switch (v.tier) {
-    case Tier::PS20: d.push_back({"TS_TIER_PS20", "1"}); break;
-    case Tier::PS2B: d.push_back({"TS_TIER_PS2B", "1"}); break;
-    case Tier::SM3: d.push_back({"TS_TIER_SM3", "1"}); break;
+    case Tier::PS20:
+      d.push_back({"TS_TIER_PS20", "1"});
+      break;
+    case Tier::PS2B:
+      d.push_back({"TS_TIER_PS2B", "1"});
+      break;
+    case Tier::SM3:
+      d.push_back({"TS_TIER_SM3", "1"});
+      break;
   }
   for (const auto &kv : v.values) d.push_back({kv.first, std::to_string(kv.second)});
   // A combo that does not exist in this tier is defined as 0, so `#if NAME` is always valid.

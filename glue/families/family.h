@@ -1,4 +1,4 @@
-// tiershade glue: a shader family = one entry shader, its C twin, its input record
+// tiershade families: a shader family = one entry shader, its C twin, its input record
 // layout and its test-input generators. Conformance, probe, demo and bench work
 // on families through this interface.
 #pragma once

@@ -158,8 +158,10 @@ class ExprParser {
     }
     int n = 0;
     if (!parse_slot_ref(fam_, w, &e->slot, e->comps, &n)) {
-      if (std::strchr("+-.0123456789", w[0])) *err = "bad number '" + w + "'";
-      else *err = "unknown slot or value '" + w + "'; " + fam_.name + " has:" + slot_list(fam_);
+      if (std::strchr("+-.0123456789", w[0]))
+        *err = "bad number '" + w + "'";
+      else
+        *err = "unknown slot or value '" + w + "'; " + fam_.name + " has:" + slot_list(fam_);
       return false;
     }
     e->kind = CaseExpr::Ref;
@@ -184,7 +186,8 @@ class ExprParser {
     }
     if (componentwise(f)) {
       if (w.size() != 2) return bad("takes 2 arguments");
-      if (w[0] != w[1] && w[0] != 1 && w[1] != 1) return bad("argument widths " + std::to_string(w[0]) + " and " + std::to_string(w[1]) + " differ");
+      if (w[0] != w[1] && w[0] != 1 && w[1] != 1)
+        return bad("argument widths " + std::to_string(w[0]) + " and " + std::to_string(w[1]) + " differ");
       e->width = std::max(w[0], w[1]);
       return true;
     }
@@ -233,13 +236,16 @@ class ExprParser {
 
 void eval_expr(const CaseExpr &e, const CaseEval &env, const ts_vec4f *rec, float *out) {
   switch (e.kind) {
-    case CaseExpr::Number: out[0] = e.number; return;
+    case CaseExpr::Number:
+      out[0] = e.number;
+      return;
     case CaseExpr::Ref: {
       const float *s = &rec[e.slot].x;
       for (int i = 0; i < e.width; ++i) out[i] = s[e.comps[i]];
       return;
     }
-    case CaseExpr::Call: break;
+    case CaseExpr::Call:
+      break;
   }
   const std::string &f = e.fn;
   if (f == "pick") {  // draws first, then evaluates the chosen argument only
@@ -320,8 +326,8 @@ bool parse_case_assignment(const ShaderFamily &fam, const std::string &line, con
   int width = 0;
   for (const auto &v : out->values) width += v.width;
   if (width == 0 || width > n || (width < n && !(bare && prefix_ok))) {
-    *err = where + ": '" + target + "' wants " + (bare && prefix_ok ? "1 to 4" : std::to_string(n)) +
-           " values, got " + std::to_string(width);
+    *err = where + ": '" + target + "' wants " + (bare && prefix_ok ? "1 to 4" : std::to_string(n)) + " values, got " +
+        std::to_string(width);
     return false;
   }
   out->width = width;
@@ -370,7 +376,8 @@ bool parse_hard_cases(const ShaderFamily &fam, const std::string &file, const st
         out->cases.push_back(c);
         section = InCase;
       } else if (head.compare(0, 7, "repeat ") == 0 && !trim(head.substr(7)).empty()) {
-        if (repeat_line) return fail(lineno, "a second [repeat] section (the first is at line " + std::to_string(repeat_line) + ")");
+        if (repeat_line)
+          return fail(lineno, "a second [repeat] section (the first is at line " + std::to_string(repeat_line) + ")");
         repeat_line = lineno;
         out->repeat_combo = trim(head.substr(7));
         std::vector<ShaderDecl> decls;
@@ -381,7 +388,8 @@ bool parse_hard_cases(const ShaderFamily &fam, const std::string &file, const st
         if (d)
           for (const auto &c : d->combos)
             if (c.name == out->repeat_combo) combo = &c;
-        if (!combo) return fail(lineno, "shader " + std::string(fam.name) + " has no combo '" + out->repeat_combo + "'");
+        if (!combo)
+          return fail(lineno, "shader " + std::string(fam.name) + " has no combo '" + out->repeat_combo + "'");
         section = InRepeat;
       } else {
         return fail(lineno, "unknown section '" + line + "' (sections: [case NAME], [repeat COMBO])");
@@ -405,8 +413,9 @@ bool parse_hard_cases(const ShaderFamily &fam, const std::string &file, const st
       load_shader_decls(&decls, &e);
       for (const auto &c : find_decl(decls, fam.name)->combos)
         if (c.name == out->repeat_combo && (value < c.min || value > c.max))
-          return fail(lineno, out->repeat_combo + " has values " + std::to_string(c.min) + ".." + std::to_string(c.max) +
-                                  ", not " + v);
+          return fail(
+              lineno,
+              out->repeat_combo + " has values " + std::to_string(c.min) + ".." + std::to_string(c.max) + ", not " + v);
       for (const auto &r : out->repeat)
         if (r.first == value) return fail(lineno, "value " + v + " is repeated twice");
       out->repeat.push_back({static_cast<int>(value), label});
@@ -423,7 +432,8 @@ bool parse_hard_cases(const ShaderFamily &fam, const std::string &file, const st
     std::string combo;
     for (const auto &v : a.values)
       if (uses_repeat(v, &combo) && combo != out->repeat_combo)
-        return fail(lineno, "the value reads the pixel's " + combo + ": the file needs a [repeat " + combo + "] section");
+        return fail(lineno,
+                    "the value reads the pixel's " + combo + ": the file needs a [repeat " + combo + "] section");
     c.body.push_back(a);
   }
   if (repeat_line && out->repeat.empty()) return fail(repeat_line, "[repeat " + out->repeat_combo + "] lists no value");
@@ -436,8 +446,9 @@ bool parse_hard_cases(const ShaderFamily &fam, const std::string &file, const st
       for (int i = 0; i < a.width; ++i) set[static_cast<size_t>(a.slot) * 4 + a.comps[i]] = true;
     for (size_t i = 0; i < set.size(); ++i)
       if (!set[i])
-        return fail(c.line, "case '" + c.name + "' leaves " + fam.slot_names[i / 4] + "." + "xyzw"[i % 4] +
-                                " unset (set every slot, or write 'random' to keep the random record's values)");
+        return fail(c.line,
+                    "case '" + c.name + "' leaves " + fam.slot_names[i / 4] + "." + "xyzw"[i % 4] +
+                        " unset (set every slot, or write 'random' to keep the random record's values)");
   }
   return true;
 }

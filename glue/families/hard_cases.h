@@ -10,8 +10,8 @@
 
 // What a value expression of a case sees while it is evaluated.
 struct CaseEval {
-  Rng *rng = nullptr;     // uniform() and pick() draw from it (the grid's generator)
-  int repeat_value = 0;   // the pixel's value of the file's [repeat COMBO]
+  Rng *rng = nullptr;  // uniform() and pick() draw from it (the grid's generator)
+  int repeat_value = 0;  // the pixel's value of the file's [repeat COMBO]
 };
 
 // A function a family's cases may call besides the built-ins (docs/conformance.md),
@@ -21,7 +21,7 @@ struct CaseFunction {
   std::string name;
   std::vector<int> arg_widths;  // width of each argument
   int result_width = 1;
-  std::string repeat_combo;     // the combo whose [repeat] value it reads ("" = none)
+  std::string repeat_combo;  // the combo whose [repeat] value it reads ("" = none)
   std::function<void(const float *args, const CaseEval &env, float *out)> eval;
 };
 struct CaseFunctionRegistrar {
@@ -32,7 +32,7 @@ struct CaseExpr {
   enum Kind { Number, Ref, Call } kind = Number;
   float number = 0;
   int slot = -1, comps[4] = {0, 1, 2, 3};  // Ref: slot and swizzle
-  std::string fn;                          // Call: built-in or family function
+  std::string fn;  // Call: built-in or family function
   const CaseFunction *family_fn = nullptr;  // Call of a family function
   std::vector<CaseExpr> args;
   int width = 1;

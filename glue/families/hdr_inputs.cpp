@@ -1,4 +1,4 @@
-// tiershade glue: input generators shared by the HDR families (see hdr_family_util.h).
+// tiershade families: input generators shared by the HDR families (see hdr_family_util.h).
 #include "families/hdr_inputs.h"
 
 #include <cmath>
@@ -16,11 +16,16 @@ TextureDesc hdr_test_texture(Rng &r, const std::string &sampler, int w, int h, b
   for (size_t i = 0; i < t.rgba.size(); ++i) {
     float v;
     const uint32_t k = r.next() % 64;
-    if (i % 4 == 3) v = 1.f;
-    else if (k == 0) v = 0.f;
-    else if (k == 1) v = 65504.f;
-    else if (k == 2) v = 3.0e-6f;  // a half denormal
-    else v = std::exp2(r.uniform(-10.f, 6.f));
+    if (i % 4 == 3)
+      v = 1.f;
+    else if (k == 0)
+      v = 0.f;
+    else if (k == 1)
+      v = 65504.f;
+    else if (k == 2)
+      v = 3.0e-6f;  // a half denormal
+    else
+      v = std::exp2(r.uniform(-10.f, 6.f));
     t.rgba[i] = ts_quantize_half(v);
   }
   return t;
@@ -35,5 +40,6 @@ ts_vec4f random_fragment_position(Rng &r, int w, int h) {
 }
 
 ts_vec4f size_slot(int w, int h) {
-  return ts_v4f(static_cast<float>(w), static_cast<float>(h), 1.0f / static_cast<float>(w), 1.0f / static_cast<float>(h));
+  return ts_v4f(static_cast<float>(w), static_cast<float>(h), 1.0f / static_cast<float>(w),
+                1.0f / static_cast<float>(h));
 }

@@ -1,4 +1,4 @@
-// tiershade glue: input generators shared by the HDR post-processing families
+// tiershade families: input generators shared by the HDR post-processing families
 // (luminance_compare, bloom_downsample, bloom_blur, hdr_tonemap): half-quantised
 // HDR textures like the fp16 frames they read, and fragment positions.
 #pragma once

@@ -1,4 +1,4 @@
-// tiershade glue: the hdr_tonemap family (the float path's tone map and bloom
+// tiershade families: the hdr_tonemap family (the float path's tone map and bloom
 // combine): input records (random and hard cases), the half-quantised bloom
 // texture, and the bridge to its C twin (c_ref/twins/hdr_tonemap.c).
 #include "families/family.h"
@@ -57,7 +57,8 @@ void random_pixel(Rng &r, ts_vec4f rec[HT_SLOTS]) {
 void make_inputs(InputSet set, int w, int h, uint32_t seed, FamilyInputs *out) {
   Rng r(seed);
   // The hard cases: tests/conform/hdr_tonemap.cases.
-  fill_record_grid("hdr_tonemap", set, w, h, HT_SLOTS, r, [&](ts_vec4f *rec) { random_pixel(r, rec); }, out);
+  fill_record_grid(
+      "hdr_tonemap", set, w, h, HT_SLOTS, r, [&](ts_vec4f *rec) { random_pixel(r, rec); }, out);
   out->textures = {hdr_test_texture(r, "u_bloom", kBloomW, kBloomH, true)};
 }
 
@@ -78,7 +79,6 @@ void bind_uniforms(const GlFns &gl, GLuint program, const std::vector<ts_vec4f> 
 }  // namespace
 
 const ShaderFamily kHdrTonemapFamily = {
-    "hdr_tonemap", HT_SLOTS, slot_names(), make_inputs, eval_f, eval_d, output_range,
-    HT_PIXEL_SLOTS, bind_uniforms,
+    "hdr_tonemap", HT_SLOTS, slot_names(), make_inputs, eval_f, eval_d, output_range, HT_PIXEL_SLOTS, bind_uniforms,
 };
 const FamilyRegistrar kRegisterHdrTonemap(&kHdrTonemapFamily);

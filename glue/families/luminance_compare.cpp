@@ -1,4 +1,4 @@
-// tiershade glue: the luminance_compare family (the auto-exposure bucket test):
+// tiershade families: the luminance_compare family (the auto-exposure bucket test):
 // input records (random and hard cases) and the bridge to its C twin
 // (c_ref/twins/luminance_compare.c).
 #include <cmath>
@@ -58,17 +58,18 @@ void random_pixel(Rng &r, ts_vec4f rec[LC_SLOTS]) {
 
 // lum(color, scale): the luminance the twin computes for the pixel's INPUT_ENCODING (the
 // [repeat INPUT_ENCODING] of tests/conform/luminance_compare.cases), for exact bucket edges.
-const CaseFunctionRegistrar kCaseFunctions("luminance_compare",
-                                           {{"lum", {4, 1}, 1, "INPUT_ENCODING", [](const float *a, const CaseEval &env, float *out) {
-                                               const lc_variant v = {env.repeat_value};
-                                               out[0] = luminance_compare_lum_f(&v, ts_v4f(a[0], a[1], a[2], a[3]), a[4]);
-                                             }}});
+const CaseFunctionRegistrar kCaseFunctions(
+    "luminance_compare", {{"lum", {4, 1}, 1, "INPUT_ENCODING", [](const float *a, const CaseEval &env, float *out) {
+                             const lc_variant v = {env.repeat_value};
+                             out[0] = luminance_compare_lum_f(&v, ts_v4f(a[0], a[1], a[2], a[3]), a[4]);
+                           }}});
 
 void make_inputs(InputSet set, int w, int h, uint32_t seed, FamilyInputs *out) {
   out->textures.clear();
   Rng r(seed);
   // The hard cases: tests/conform/luminance_compare.cases, repeated once per INPUT_ENCODING.
-  fill_record_grid("luminance_compare", set, w, h, LC_SLOTS, r, [&](ts_vec4f *rec) { random_pixel(r, rec); }, out);
+  fill_record_grid(
+      "luminance_compare", set, w, h, LC_SLOTS, r, [&](ts_vec4f *rec) { random_pixel(r, rec); }, out);
 }
 
 // The record layout: shaders/luminance_compare_slots.glsl, the one table (slot_table.h).
@@ -88,7 +89,7 @@ void bind_uniforms(const GlFns &gl, GLuint program, const std::vector<ts_vec4f> 
 }  // namespace
 
 const ShaderFamily kLuminanceCompareFamily = {
-    "luminance_compare", LC_SLOTS, slot_names(), make_inputs, eval_f, eval_d, output_range, LC_PIXEL_SLOTS,
-    bind_uniforms,
+    "luminance_compare", LC_SLOTS,       slot_names(),  make_inputs, eval_f, eval_d,
+    output_range,        LC_PIXEL_SLOTS, bind_uniforms,
 };
 const FamilyRegistrar kRegisterLuminanceCompare(&kLuminanceCompareFamily);

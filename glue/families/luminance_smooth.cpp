@@ -1,4 +1,4 @@
-// tiershade glue: the luminance_smooth family (the temporal prefilter of the
+// tiershade families: the luminance_smooth family (the temporal prefilter of the
 // auto-exposure luminance): input records (random and hard cases) and the bridge
 // to its C twin (c_ref/twins/luminance_smooth.c).
 #include "families/family.h"
@@ -52,7 +52,8 @@ void make_inputs(InputSet set, int w, int h, uint32_t seed, FamilyInputs *out) {
   Rng r(seed);
   out->textures.clear();
   // The hard cases: tests/conform/luminance_smooth.cases.
-  fill_record_grid("luminance_smooth", set, w, h, LS_SLOTS, r, [&](ts_vec4f *rec) { random_pixel(r, rec); }, out);
+  fill_record_grid(
+      "luminance_smooth", set, w, h, LS_SLOTS, r, [&](ts_vec4f *rec) { random_pixel(r, rec); }, out);
 }
 
 // The record layout: shaders/luminance_smooth_slots.glsl, the one table (slot_table.h).
@@ -72,7 +73,7 @@ void bind_uniforms(const GlFns &gl, GLuint program, const std::vector<ts_vec4f> 
 }  // namespace
 
 const ShaderFamily kLuminanceSmoothFamily = {
-    "luminance_smooth", LS_SLOTS, slot_names(), make_inputs, eval_f, eval_d, output_range,
-    LS_PIXEL_SLOTS, bind_uniforms,
+    "luminance_smooth", LS_SLOTS,       slot_names(),  make_inputs, eval_f, eval_d,
+    output_range,       LS_PIXEL_SLOTS, bind_uniforms,
 };
 const FamilyRegistrar kRegisterLuminanceSmooth(&kLuminanceSmoothFamily);

@@ -1,4 +1,4 @@
-// tiershade glue: the model_lighting family: input records (random and hard
+// tiershade families: the model_lighting family: input records (random and hard
 // cases), and the bridge to its C twin (c_ref/twins/model_lighting.c).
 #include <cmath>
 #include <memory>
@@ -126,9 +126,9 @@ void random_pixel(Rng &r, ts_vec4f rec[ML_SLOTS]) {
   rec[ML_SLOT_RIM] = ts_v4f(r.uniform(1, 16), r.uniform(0, 4), r.uniform(0, 1), 0.f);
   rec[ML_SLOT_ENVMAP] = ts_v4f(r.uniform(0, 2), r.uniform(0, 1), (r.next() & 1) ? 1.f : 0.f, 0.f);
   rec[ML_SLOT_ENVMAP_TINT] = ts_v4f(r.uniform(0, 2), r.uniform(0, 2), r.uniform(0, 2), 0.f);
-  rec[ML_SLOT_SELF_ILLUM] = ts_v4f(r.uniform(0, 2), r.uniform(0, 2), r.uniform(0, 2), (r.next() & 1) ? r.uniform(0, 1) : 0.f);
-  for (int k = 0; k < 6; ++k)
-    rec[ML_SLOT_AMBIENT + k] = ts_v4f(r.uniform(0, 1), r.uniform(0, 1), r.uniform(0, 1), 0);
+  rec[ML_SLOT_SELF_ILLUM] =
+      ts_v4f(r.uniform(0, 2), r.uniform(0, 2), r.uniform(0, 2), (r.next() & 1) ? r.uniform(0, 1) : 0.f);
+  for (int k = 0; k < 6; ++k) rec[ML_SLOT_AMBIENT + k] = ts_v4f(r.uniform(0, 1), r.uniform(0, 1), r.uniform(0, 1), 0);
   rec[ML_SLOT_PARAMS] = ts_v4f(r.uniform(0.25f, 4.f), static_cast<float>(r.next() % 5), 0, 0);
   rec[ML_SLOT_ALBEDO] = ts_v4f(r.uniform(0, 1), r.uniform(0, 1), r.uniform(0, 1), 1);
   for (int i = 0; i < ML_MAX_LIGHTS; ++i) random_light(r, &rec[ML_SLOT_LIGHT0 + 5 * i]);
@@ -137,7 +137,8 @@ void random_pixel(Rng &r, ts_vec4f rec[ML_SLOTS]) {
 void make_inputs(InputSet set, int w, int h, uint32_t seed, FamilyInputs *out) {
   Rng r(seed);
   // The hard cases: tests/conform/model_lighting.cases.
-  fill_record_grid("model_lighting", set, w, h, ML_SLOTS, r, [&](ts_vec4f *rec) { random_pixel(r, rec); }, out);
+  fill_record_grid(
+      "model_lighting", set, w, h, ML_SLOTS, r, [&](ts_vec4f *rec) { random_pixel(r, rec); }, out);
   // Textures: RGBA32F, bilinear (RGBA8 would take llvmpipe's 8-bit fixed-point
   // filtering path: platform notes section 4). Order: enum TEX_*.
   auto tex2d = [&](const char *name, int w, int h, bool repeat) {
@@ -219,7 +220,7 @@ ml_variant ml_variant_of(const Variant &v) {
 }
 
 const ShaderFamily kModelLightingFamily = {
-    "model_lighting", ML_SLOTS, slot_names(), make_inputs, eval_f, eval_d, output_range, ML_PIXEL_SLOTS, bind_uniforms,
-    eval_row_f,
+    "model_lighting", ML_SLOTS,     slot_names(),   make_inputs,   eval_f,
+    eval_d,           output_range, ML_PIXEL_SLOTS, bind_uniforms, eval_row_f,
 };
 const FamilyRegistrar kRegister(&kModelLightingFamily);

@@ -1,4 +1,4 @@
-// tiershade glue: the model_lighting family's helpers shared by its conformance inputs
+// tiershade families: the model_lighting family's helpers shared by its conformance inputs
 // (family_model_lighting.cpp), the scene renderer and the tests.
 #pragma once
 #include "families/family.h"

@@ -10,8 +10,12 @@ std::vector<std::string> slot_names_of(const SlotRow *rows, size_t n) {
     const SlotRow &r = rows[i];
     for (int k = 0; k < r.count; ++k) {
       switch (r.naming) {
-        case SlotNaming::one: names.push_back(r.name); break;
-        case SlotNaming::cube_faces: names.push_back(std::string(r.name) + kFaces[k % 6]); break;
+        case SlotNaming::one:
+          names.push_back(r.name);
+          break;
+        case SlotNaming::cube_faces:
+          names.push_back(std::string(r.name) + kFaces[k % 6]);
+          break;
         case SlotNaming::light_parts:
           names.push_back(std::string(r.name) + std::to_string(k / 5) + "." + kLightParts[k % 5]);
           break;

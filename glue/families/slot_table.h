@@ -11,8 +11,8 @@
 
 // How a run of slots is named (the `naming` column).
 enum class SlotNaming {
-  one,          // name (a run of one slot)
-  cube_faces,   // name+x name-x name+y name-y name+z name-z
+  one,  // name (a run of one slot)
+  cube_faces,  // name+x name-x name+y name-y name+z name-z
   light_parts,  // name0.color name0.dir name0.pos name0.spot name0.atten name1.color ... (TsLight)
 };
 
@@ -65,7 +65,7 @@ std::vector<std::string> slot_names_of(const SlotRow (&rows)[N]) {
 void bind_slot_uniforms(const GlFns &gl, GLuint program, const std::vector<ts_vec4f> &shared, const SlotRow *rows,
                         size_t n, int pixel_slots);
 template <size_t N>
-void bind_slot_uniforms(const GlFns &gl, GLuint program, const std::vector<ts_vec4f> &shared,
-                        const SlotRow (&rows)[N], int pixel_slots) {
+void bind_slot_uniforms(const GlFns &gl, GLuint program, const std::vector<ts_vec4f> &shared, const SlotRow (&rows)[N],
+                        int pixel_slots) {
   bind_slot_uniforms(gl, program, shared, rows, N, pixel_slots);
 }

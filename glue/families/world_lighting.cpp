@@ -1,4 +1,4 @@
-// tiershade glue: the world_lighting family (lightmaps, radiosity normal mapping,
+// tiershade families: the world_lighting family (lightmaps, radiosity normal mapping,
 // cube-map specular): its input records (random and hard cases), its test textures,
 // and the bridge to its C twin (c_ref/twins/world_lighting.c). The texture builders are
 // shared with the demo and the benchmark through family_world_lighting.h.
@@ -93,8 +93,8 @@ ts_vec4f v4(ts_vec3f v, float w) { return ts_v4f(v.x, v.y, v.z, w); }
 // --- test textures: a regular zone that random records sample, and 2x2 blocks of
 // special texels that hard records aim at (a 2x2 block sampled at its centre gives
 // the block's value with LINEAR filtering too).
-constexpr int kTexSize = 16;                  // base, normal map, mask: 16x16, regular rows 0..7
-constexpr int kPageW = 64, kPageH = 32;        // lightmap page: regular rows 0..15
+constexpr int kTexSize = 16;  // base, normal map, mask: 16x16, regular rows 0..7
+constexpr int kPageW = 64, kPageH = 32;  // lightmap page: regular rows 0..15
 constexpr int kCubeSize = 8;
 
 void put_block(TextureDesc *t, int bx, int by, const float v[4]) {
@@ -106,13 +106,13 @@ void put_block(TextureDesc *t, int bx, int by, const float v[4]) {
 // Special lightmap blocks (x = 2 i, y = 16).
 const float kLmSpecial[][4] = {
     {65504.f, 65504.f, 65504.f, 1.f},  // 0 largest half float
-    {kInf, 1.f, 0.5f, 0.5f},           // 1 overflowed sample
-    {1e30f, 2e30f, 3e30f, 0.5f},       // 2 huge float
-    {1.f, 1.f, 1.f, 1.f},              // 3 RGBE: largest exponent (a = 255/255 -> e = 127); 4.12: 16
-    {1.f, 1.f, 1.f, 0.f},              // 4 RGBE: smallest exponent (a = 0 -> e = -128)
-    {0.f, 0.f, 0.f, 0.f},              // 5 black
-    {kNaN, 0.5f, kNaN, 0.5f},          // 6 NaN
-    {1e-40f, 2e-39f, 1e-45f, 0.5f},    // 7 denormals
+    {kInf, 1.f, 0.5f, 0.5f},  // 1 overflowed sample
+    {1e30f, 2e30f, 3e30f, 0.5f},  // 2 huge float
+    {1.f, 1.f, 1.f, 1.f},  // 3 RGBE: largest exponent (a = 255/255 -> e = 127); 4.12: 16
+    {1.f, 1.f, 1.f, 0.f},  // 4 RGBE: smallest exponent (a = 0 -> e = -128)
+    {0.f, 0.f, 0.f, 0.f},  // 5 black
+    {kNaN, 0.5f, kNaN, 0.5f},  // 6 NaN
+    {1e-40f, 2e-39f, 1e-45f, 0.5f},  // 7 denormals
     {0.5f / 255.f, 1.f / 255.f, 254.f / 255.f, 129.f / 255.f},  // 8 RGBE-like small mantissas
 };
 const int kNumLmSpecial = sizeof kLmSpecial / sizeof kLmSpecial[0];
@@ -120,11 +120,11 @@ const int kNumLmSpecial = sizeof kLmSpecial / sizeof kLmSpecial[0];
 // Special normal-map blocks (x = 2 i, y = 8).
 const float kNmSpecial[][4] = {
     {0.5f, 0.5f, 0.5f, 0.5f},  // 0 zero-length normal (2 t - 1 = 0): every RNM weight 0
-    {0.5f, 0.5f, 0.f, 1.f},    // 1 n = (0, 0, -1): every RNM weight 0
-    {kNaN, 0.5f, 1.f, kNaN},   // 2 NaN texel (and NaN mask)
+    {0.5f, 0.5f, 0.f, 1.f},  // 1 n = (0, 0, -1): every RNM weight 0
+    {kNaN, 0.5f, 1.f, kNaN},  // 2 NaN texel (and NaN mask)
     {1e30f, -1e30f, 1e30f, 1e30f},  // 3 huge texel
-    {0.5f, 0.5f, 1.f, 1.f},    // 4 n = (0, 0, 1), ssbump weights (0.5, 0.5, 1)
-    {0.f, 0.f, 0.f, 0.f},      // 5 ssbump: all weights 0 (and RNM n = (-1, -1, -1))
+    {0.5f, 0.5f, 1.f, 1.f},  // 4 n = (0, 0, 1), ssbump weights (0.5, 0.5, 1)
+    {0.f, 0.f, 0.f, 0.f},  // 5 ssbump: all weights 0 (and RNM n = (-1, -1, -1))
     {0.5f * 0.816496580927726f + 0.5f, 0.5f, 0.5f * 0.577350269189626f + 0.5f, 0.f},  // 6 n = b0
 };
 const int kNumNmSpecial = sizeof kNmSpecial / sizeof kNmSpecial[0];
@@ -213,8 +213,8 @@ namespace {
 void random_pixel(Rng &r, ts_vec4f rec[WL_SLOTS]) {
   // Base/normal/mask uv: any u (wraps), v inside the regular rows of a period.
   const float period = static_cast<float>(static_cast<int>(r.next() % 3) - 1);
-  rec[WL_SLOT_UV] = ts_v4f(r.uniform(-1, 2), period + r.uniform(0.07f, 0.43f), r.uniform(0.f, 0.6f),
-                           r.uniform(0.03f, 0.45f));
+  rec[WL_SLOT_UV] =
+      ts_v4f(r.uniform(-1, 2), period + r.uniform(0.07f, 0.43f), r.uniform(0.f, 0.6f), r.uniform(0.03f, 0.45f));
   rec[WL_SLOT_LM_OFFSET] = ts_v4f(r.uniform(0.f, 0.12f), r.uniform(-0.01f, 0.01f), r.uniform(0.f, 400.f), 0.f);
   // A random, roughly orthonormal frame, scaled like interpolated vectors are.
   const ts_vec3f n = r.unit_vector();
@@ -225,10 +225,12 @@ void random_pixel(Rng &r, ts_vec4f rec[WL_SLOTS]) {
   rec[WL_SLOT_TANGENT] = v4(ts_scale3f(t, r.uniform(0.8f, 1.2f)), 0);
   rec[WL_SLOT_BINORMAL] = v4(ts_scale3f(b, r.uniform(0.8f, 1.2f)), 0);
   rec[WL_SLOT_EYE] = v4(ts_scale3f(r.unit_vector(), r.uniform(0.1f, 50.f)), 0);
-  rec[WL_SLOT_TINT_SCALE] = ts_v4f(r.uniform(0.5f, 2.f), r.uniform(0.5f, 2.f), r.uniform(0.5f, 2.f), r.uniform(0.25f, 4.f));
+  rec[WL_SLOT_TINT_SCALE] =
+      ts_v4f(r.uniform(0.5f, 2.f), r.uniform(0.5f, 2.f), r.uniform(0.5f, 2.f), r.uniform(0.25f, 4.f));
   rec[WL_SLOT_ENV_TINT] = ts_v4f(r.uniform(0, 1), r.uniform(0, 1), r.uniform(0, 1), r.uniform(0.5f, 16.f));
   // Half of the pixels at Source's defaults (sm3's fast path), half anywhere in range.
-  if (r.next() % 2) rec[WL_SLOT_ENV_PARAMS] = ts_v4f(0, 1, 0, 1);
+  if (r.next() % 2)
+    rec[WL_SLOT_ENV_PARAMS] = ts_v4f(0, 1, 0, 1);
   else {
     const float r0 = r.uniform(0, 1);
     rec[WL_SLOT_ENV_PARAMS] = ts_v4f(r.uniform(0, 1), r.uniform(0, 1.5f), 1.f - r0, r0);
@@ -241,7 +243,8 @@ void random_pixel(Rng &r, ts_vec4f rec[WL_SLOTS]) {
 void make_inputs(InputSet set, int w, int h, uint32_t seed, FamilyInputs *out) {
   Rng r(seed);
   // The hard cases: tests/conform/world_lighting.cases (aimed at the special blocks above).
-  fill_record_grid("world_lighting", set, w, h, WL_SLOTS, r, [&](ts_vec4f *rec) { random_pixel(r, rec); }, out);
+  fill_record_grid(
+      "world_lighting", set, w, h, WL_SLOTS, r, [&](ts_vec4f *rec) { random_pixel(r, rec); }, out);
   wl_test_textures(r, &out->textures);
 }
 
@@ -262,7 +265,7 @@ void wl_bind_uniforms(const GlFns &gl, GLuint program, const std::vector<ts_vec4
 }
 
 const ShaderFamily kWorldLightingFamily = {
-    "world_lighting", WL_SLOTS, slot_names(), make_inputs, eval_f, eval_d, output_range, WL_PIXEL_SLOTS,
-    wl_bind_uniforms, eval_row_f,
+    "world_lighting", WL_SLOTS,     slot_names(),   make_inputs,      eval_f,
+    eval_d,           output_range, WL_PIXEL_SLOTS, wl_bind_uniforms, eval_row_f,
 };
 static const FamilyRegistrar kRegister(&kWorldLightingFamily);

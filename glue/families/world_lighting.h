@@ -1,4 +1,4 @@
-// tiershade glue: the world_lighting family's helpers shared by its conformance
+// tiershade families: the world_lighting family's helpers shared by its conformance
 // inputs (family_world_lighting.cpp), its demo and its benchmark.
 #pragma once
 #include <vector>

@@ -1,4 +1,4 @@
-// tiershade glue: OSMesa and EGL-surfaceless context creation and the per-backend
+// tiershade gl: OSMesa and EGL-surfaceless context creation and the per-backend
 // GL entry-point table (facts: ../shared/docs/platform_notes.md sections 2 and 3).
 #include "gl/context.h"
 #include "gl/osmesa_loader.h"
@@ -10,37 +10,51 @@
 
 const char *backend_name(Backend b) {
   switch (b) {
-    case Backend::OSMesa: return "osmesa";
-    case Backend::EGL: return "egl";
-    case Backend::CPU: return "cpu";
+    case Backend::OSMesa:
+      return "osmesa";
+    case Backend::EGL:
+      return "egl";
+    case Backend::CPU:
+      return "cpu";
   }
   return "?";
 }
 const char *api_name(Api a) {
   switch (a) {
-    case Api::GL33: return "gl33";
-    case Api::GLES2: return "gles2";
-    case Api::GLES3: return "gles3";
+    case Api::GL33:
+      return "gl33";
+    case Api::GLES2:
+      return "gles2";
+    case Api::GLES3:
+      return "gles3";
   }
   return "?";
 }
 bool parse_backend(const std::string &s, Backend *out) {
-  if (s == "osmesa") *out = Backend::OSMesa;
-  else if (s == "egl") *out = Backend::EGL;
-  else if (s == "cpu") *out = Backend::CPU;
-  else return false;
+  if (s == "osmesa")
+    *out = Backend::OSMesa;
+  else if (s == "egl")
+    *out = Backend::EGL;
+  else if (s == "cpu")
+    *out = Backend::CPU;
+  else
+    return false;
   return true;
 }
 bool parse_api(const std::string &s, Api *out) {
-  if (s == "gl33") *out = Api::GL33;
-  else if (s == "gles2") *out = Api::GLES2;
-  else if (s == "gles3") *out = Api::GLES3;
-  else return false;
+  if (s == "gl33")
+    *out = Api::GL33;
+  else if (s == "gles2")
+    *out = Api::GLES2;
+  else if (s == "gles3")
+    *out = Api::GLES3;
+  else
+    return false;
   return true;
 }
 std::vector<BackendApi> all_gl_configs() {
-  return {{Backend::OSMesa, Api::GL33}, {Backend::EGL, Api::GLES2},
-          {Backend::EGL, Api::GLES3}, {Backend::EGL, Api::GL33}};
+  return {
+      {Backend::OSMesa, Api::GL33}, {Backend::EGL, Api::GLES2}, {Backend::EGL, Api::GLES3}, {Backend::EGL, Api::GL33}};
 }
 bool config_supported(Backend b, Api a, std::string *why) {
   if (b == Backend::OSMesa && a != Api::GL33) {
@@ -58,8 +72,8 @@ std::string GlContext::renderer() const {
 
 bool GlContext::load(void *(*getproc)(const char *), std::string *err) {
   std::string missing;
-#define TS_GL_LOAD(name, type)                                         \
-  gl_.name = reinterpret_cast<type>(getproc("gl" #name));              \
+#define TS_GL_LOAD(name, type)                            \
+  gl_.name = reinterpret_cast<type>(getproc("gl" #name)); \
   if (!gl_.name) missing += " gl" #name;
   TS_GL_FUNCTIONS(TS_GL_LOAD)
 #undef TS_GL_LOAD
@@ -80,9 +94,7 @@ void *osmesa_getproc(const char *name) {
   const OsmesaApi *os = osmesa_api(nullptr);
   return os ? reinterpret_cast<void *>(os->GetProcAddress(name)) : nullptr;
 }
-void *egl_getproc(const char *name) {
-  return reinterpret_cast<void *>(eglGetProcAddress(name));
-}
+void *egl_getproc(const char *name) { return reinterpret_cast<void *>(eglGetProcAddress(name)); }
 
 class OSMesaContextImpl : public GlContext {
  public:
@@ -94,8 +106,15 @@ class OSMesaContextImpl : public GlContext {
     api_ = Api::GL33;
     os_ = osmesa_api(err);
     if (!os_) return false;
-    const int attribs[] = {OSMESA_FORMAT, OSMESA_RGBA, OSMESA_PROFILE, OSMESA_CORE_PROFILE,
-                           OSMESA_CONTEXT_MAJOR_VERSION, 3, OSMESA_CONTEXT_MINOR_VERSION, 3, 0};
+    const int attribs[] = {OSMESA_FORMAT,
+                           OSMESA_RGBA,
+                           OSMESA_PROFILE,
+                           OSMESA_CORE_PROFILE,
+                           OSMESA_CONTEXT_MAJOR_VERSION,
+                           3,
+                           OSMESA_CONTEXT_MINOR_VERSION,
+                           3,
+                           0};
     ctx_ = os_->CreateContextAttribs(attribs, nullptr);
     if (!ctx_) {
       *err = "OSMesaCreateContextAttribs failed (GL 3.3 core)";
@@ -130,8 +149,8 @@ class EglContextImpl : public GlContext {
   bool init(Api api, std::string *err) {
     backend_ = Backend::EGL;
     api_ = api;
-    auto get_platform_display = reinterpret_cast<PFNEGLGETPLATFORMDISPLAYEXTPROC>(
-        eglGetProcAddress("eglGetPlatformDisplayEXT"));
+    auto get_platform_display =
+        reinterpret_cast<PFNEGLGETPLATFORMDISPLAYEXTPROC>(eglGetProcAddress("eglGetPlatformDisplayEXT"));
     if (!get_platform_display) {
       *err = "eglGetPlatformDisplayEXT is not available";
       return false;
@@ -144,11 +163,18 @@ class EglContextImpl : public GlContext {
       return false;
     }
     const bool desktop = api == Api::GL33;
-    const EGLint renderable = desktop ? EGL_OPENGL_BIT
-                              : api == Api::GLES3 ? EGL_OPENGL_ES3_BIT
-                                                  : EGL_OPENGL_ES2_BIT;
-    const EGLint cfg_attribs[] = {EGL_SURFACE_TYPE, EGL_PBUFFER_BIT, EGL_RENDERABLE_TYPE, renderable,
-                                  EGL_RED_SIZE, 8, EGL_GREEN_SIZE, 8, EGL_BLUE_SIZE, 8, EGL_NONE};
+    const EGLint renderable = desktop ? EGL_OPENGL_BIT : api == Api::GLES3 ? EGL_OPENGL_ES3_BIT : EGL_OPENGL_ES2_BIT;
+    const EGLint cfg_attribs[] = {EGL_SURFACE_TYPE,
+                                  EGL_PBUFFER_BIT,
+                                  EGL_RENDERABLE_TYPE,
+                                  renderable,
+                                  EGL_RED_SIZE,
+                                  8,
+                                  EGL_GREEN_SIZE,
+                                  8,
+                                  EGL_BLUE_SIZE,
+                                  8,
+                                  EGL_NONE};
     EGLConfig cfg;
     EGLint n = 0;
     if (!eglChooseConfig(dpy_, cfg_attribs, &cfg, 1, &n) || n < 1) {
@@ -161,8 +187,9 @@ class EglContextImpl : public GlContext {
     }
     std::vector<EGLint> ctx_attribs;
     if (desktop) {
-      ctx_attribs = {EGL_CONTEXT_MAJOR_VERSION, 3, EGL_CONTEXT_MINOR_VERSION, 3,
-                     EGL_CONTEXT_OPENGL_PROFILE_MASK, EGL_CONTEXT_OPENGL_CORE_PROFILE_BIT, EGL_NONE};
+      ctx_attribs = {
+          EGL_CONTEXT_MAJOR_VERSION,           3,       EGL_CONTEXT_MINOR_VERSION, 3, EGL_CONTEXT_OPENGL_PROFILE_MASK,
+          EGL_CONTEXT_OPENGL_CORE_PROFILE_BIT, EGL_NONE};
     } else {
       ctx_attribs = {EGL_CONTEXT_MAJOR_VERSION, api == Api::GLES3 ? 3 : 2, EGL_NONE};
     }
@@ -177,9 +204,7 @@ class EglContextImpl : public GlContext {
     }
     return load(egl_getproc, err);
   }
-  bool make_current() override {
-    return eglMakeCurrent(dpy_, EGL_NO_SURFACE, EGL_NO_SURFACE, ctx_) == EGL_TRUE;
-  }
+  bool make_current() override { return eglMakeCurrent(dpy_, EGL_NO_SURFACE, EGL_NO_SURFACE, ctx_) == EGL_TRUE; }
 
  private:
   EGLDisplay dpy_ = EGL_NO_DISPLAY;

@@ -1,4 +1,4 @@
-// tiershade glue: headless GL contexts on Mesa's CPU rasterizer (llvmpipe).
+// tiershade gl: headless GL contexts on Mesa's CPU rasterizer (llvmpipe).
 // Two first-class backends: OSMesa (desktop GL 3.3 core) and EGL surfaceless
 // (EGL_PLATFORM_SURFACELESS_MESA) with GLES 2.0, GLES 3.0 or desktop GL 3.3.
 // OSMesa was removed from Mesa in 25.1, so EGL must stay first-class.
@@ -17,7 +17,10 @@ bool parse_backend(const std::string &s, Backend *out);
 bool parse_api(const std::string &s, Api *out);
 
 // The backend/API pairs that tiershade supports (OSMesa only does desktop GL).
-struct BackendApi { Backend backend; Api api; };
+struct BackendApi {
+  Backend backend;
+  Api api;
+};
 std::vector<BackendApi> all_gl_configs();
 bool config_supported(Backend b, Api a, std::string *why);
 

@@ -1,4 +1,4 @@
-// tiershade glue: program building and full-screen RGBA32F draws (see gl_render.h).
+// tiershade gl: program building and full-screen RGBA32F draws (see gl_render.h).
 #include "gl/float_target.h"
 
 #include <chrono>
@@ -39,7 +39,7 @@ static bool compile(const GlFns &g, GLenum type, const Assembled &src, GLuint *o
     std::string log(len > 0 ? len : 1, '\0');
     g.GetShaderInfoLog(s, static_cast<GLsizei>(log.size()), nullptr, &log[0]);
     *err = std::string(type == GL_VERTEX_SHADER ? "vertex" : "fragment") + " shader failed to compile:\n" +
-           map_compile_log(log.c_str(), src);
+        map_compile_log(log.c_str(), src);
     g.DeleteShader(s);
     return false;
   }
@@ -139,11 +139,13 @@ bool GlRenderer::ensure_target(int w, int h, std::string *err) {
   g.FramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, color_, 0);
   const GLenum status = g.CheckFramebufferStatus(GL_FRAMEBUFFER);
   if (status != GL_FRAMEBUFFER_COMPLETE) {
-    *err = "RGBA32F framebuffer incomplete (status 0x" + [&] {
-      char b[16];
-      snprintf(b, sizeof b, "%x", status);
-      return std::string(b);
-    }() + ")";
+    *err = "RGBA32F framebuffer incomplete (status 0x" +
+        [&] {
+          char b[16];
+          snprintf(b, sizeof b, "%x", status);
+          return std::string(b);
+        }() +
+        ")";
     return false;
   }
   tw_ = w;

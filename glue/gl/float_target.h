@@ -1,4 +1,4 @@
-// tiershade glue: programs, RGBA32F textures, and full-screen draws into an
+// tiershade gl: programs, RGBA32F textures, and full-screen draws into an
 // RGBA32F framebuffer with float readback, on any GlContext.
 #pragma once
 #include <map>
@@ -18,8 +18,8 @@ struct TextureDesc {
   // RGBA32F, row 0 first (GL order). Tex3D: slice after slice. Cube: faces +X -X +Y -Y +Z -Z
   // one after another, each w*w texels.
   std::vector<float> rgba;
-  bool linear = false;      // GL_LINEAR (else GL_NEAREST)
-  bool repeat = false;      // GL_REPEAT (else GL_CLAMP_TO_EDGE; cube maps always clamp, seamless off)
+  bool linear = false;  // GL_LINEAR (else GL_NEAREST)
+  bool repeat = false;  // GL_REPEAT (else GL_CLAMP_TO_EDGE; cube maps always clamp, seamless off)
 };
 
 class GlRenderer {
@@ -38,8 +38,8 @@ class GlRenderer {
   // Binds textures to units 0..n-1 and their samplers, draws one full-screen
   // triangle into a w x h RGBA32F target, and reads it back.
   // *draw_ms (optional) receives the time of the draw alone, glFinish included.
-  bool draw(GLuint program, const std::vector<std::pair<std::string, GLuint>> &textures, int w, int h,
-            ImageF *out, std::string *err, double *draw_ms = nullptr);
+  bool draw(GLuint program, const std::vector<std::pair<std::string, GLuint>> &textures, int w, int h, ImageF *out,
+            std::string *err, double *draw_ms = nullptr);
   // Binds the full-screen triangle (attribute 0 = a_corner: (-1,-1), (3,-1), (-1,3)), the one
   // every full-screen pass draws (hdr/gl_passes.h draws it too).
   void bind_fullscreen_triangle() const;

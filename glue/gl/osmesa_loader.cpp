@@ -1,4 +1,4 @@
-// tiershade glue: libOSMesa loaded at run time (glue/gl/osmesa_loader.h).
+// tiershade gl: libOSMesa loaded at run time (glue/gl/osmesa_loader.h).
 #include "gl/osmesa_loader.h"
 
 #include <dlfcn.h>

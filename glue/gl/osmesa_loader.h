@@ -1,4 +1,4 @@
-// tiershade glue: libOSMesa, loaded at run time (dlopen) the first time an OSMesa context is
+// tiershade gl: libOSMesa, loaded at run time (dlopen) the first time an OSMesa context is
 // asked for, instead of linked: linking it maps and relocates Mesa and LLVM at process start
 // (about 52 MiB resident before main), which the EGL backend, the C fallback and every command
 // without GL would pay for nothing. The EGL driver brings its own copy when EGL is used.

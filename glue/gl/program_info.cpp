@@ -1,4 +1,4 @@
-// tiershade glue: active attributes and uniforms of a program (see program_info.h).
+// tiershade gl: active attributes and uniforms of a program (see program_info.h).
 #include "gl/program_info.h"
 
 #include <algorithm>
@@ -16,8 +16,8 @@ int attribute_rank(const std::string &n) {
 
 using GetActive = void(APIENTRYP)(GLuint, GLuint, GLsizei, GLsizei *, GLint *, GLenum *, GLchar *);
 
-bool collect(const GlFns &gl, GLuint program, GLenum count_pname, GLenum maxlen_pname, GetActive get,
-             const char *what, std::vector<ProgramVar> *out, std::string *err) {
+bool collect(const GlFns &gl, GLuint program, GLenum count_pname, GLenum maxlen_pname, GetActive get, const char *what,
+             std::vector<ProgramVar> *out, std::string *err) {
   out->clear();
   GLint n = 0, maxlen = 0;
   gl.GetProgramiv(program, count_pname, &n);
@@ -38,8 +38,8 @@ bool collect(const GlFns &gl, GLuint program, GLenum count_pname, GLenum maxlen_
       v.is_array = true;
     }
     if (!*gl_type_glsl_name(type)) {
-      *err = std::string(what) + " '" + v.name + "' has a GL type tiershade does not know (" +
-             std::to_string(type) + ")";
+      *err =
+          std::string(what) + " '" + v.name + "' has a GL type tiershade does not know (" + std::to_string(type) + ")";
       return false;
     }
     out->push_back(v);
@@ -50,8 +50,8 @@ bool collect(const GlFns &gl, GLuint program, GLenum count_pname, GLenum maxlen_
 }  // namespace
 
 bool program_attributes(const GlFns &gl, GLuint program, std::vector<ProgramVar> *out, std::string *err) {
-  if (!collect(gl, program, GL_ACTIVE_ATTRIBUTES, GL_ACTIVE_ATTRIBUTE_MAX_LENGTH, gl.GetActiveAttrib, "attribute",
-               out, err))
+  if (!collect(gl, program, GL_ACTIVE_ATTRIBUTES, GL_ACTIVE_ATTRIBUTE_MAX_LENGTH, gl.GetActiveAttrib, "attribute", out,
+               err))
     return false;
   std::sort(out->begin(), out->end(), [](const ProgramVar &a, const ProgramVar &b) {
     const int ra = attribute_rank(a.name), rb = attribute_rank(b.name);
@@ -61,8 +61,7 @@ bool program_attributes(const GlFns &gl, GLuint program, std::vector<ProgramVar>
 }
 
 bool program_uniforms(const GlFns &gl, GLuint program, std::vector<ProgramVar> *out, std::string *err) {
-  if (!collect(gl, program, GL_ACTIVE_UNIFORMS, GL_ACTIVE_UNIFORM_MAX_LENGTH, gl.GetActiveUniform, "uniform", out,
-               err))
+  if (!collect(gl, program, GL_ACTIVE_UNIFORMS, GL_ACTIVE_UNIFORM_MAX_LENGTH, gl.GetActiveUniform, "uniform", out, err))
     return false;
   std::sort(out->begin(), out->end(), [](const ProgramVar &a, const ProgramVar &b) { return a.name < b.name; });
   return true;

@@ -1,4 +1,4 @@
-// tiershade glue: the active attributes and uniforms of a linked GL program, as the
+// tiershade gl: the active attributes and uniforms of a linked GL program, as the
 // driver reports them (array uniforms by their base name, "u_lights[0]" -> "u_lights").
 #pragma once
 #include <string>
@@ -7,9 +7,9 @@
 #include "gl/fns.h"
 
 struct ProgramVar {
-  std::string name;     // base name, no "[0]"
-  GLenum type = 0;      // GL_FLOAT_VEC4, GL_SAMPLER_2D, ...
-  int array_size = 1;   // elements (1 for a non-array)
+  std::string name;  // base name, no "[0]"
+  GLenum type = 0;  // GL_FLOAT_VEC4, GL_SAMPLER_2D, ...
+  int array_size = 1;  // elements (1 for a non-array)
   bool is_array = false;
 };
 

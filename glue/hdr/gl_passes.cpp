@@ -1,4 +1,4 @@
-// tiershade glue: render targets, full-screen passes and readbacks of the HDR passes
+// tiershade hdr: render targets, full-screen passes and readbacks of the HDR passes
 // (see hdr_gl.h).
 #include "hdr/gl_passes.h"
 
@@ -12,9 +12,12 @@
 
 const char *target_format_name(TargetFormat f) {
   switch (f) {
-    case TargetFormat::RGBA8: return "RGBA8";
-    case TargetFormat::RGBA16F: return "RGBA16F";
-    case TargetFormat::RGBA32F: return "RGBA32F";
+    case TargetFormat::RGBA8:
+      return "RGBA8";
+    case TargetFormat::RGBA16F:
+      return "RGBA16F";
+    case TargetFormat::RGBA32F:
+      return "RGBA32F";
   }
   return "?";
 }
@@ -36,9 +39,12 @@ bool make_target(const GlFns &g, TargetFormat f, int w, int h, GlTarget *t, std:
   t->fmt = f;
   g.GenTextures(1, &t->tex);
   g.BindTexture(GL_TEXTURE_2D, t->tex);
-  if (f == TargetFormat::RGBA8) g.TexImage2D(GL_TEXTURE_2D, 0, GL_RGBA8, w, h, 0, GL_RGBA, GL_UNSIGNED_BYTE, nullptr);
-  else if (f == TargetFormat::RGBA16F) g.TexImage2D(GL_TEXTURE_2D, 0, GL_RGBA16F, w, h, 0, GL_RGBA, GL_HALF_FLOAT, nullptr);
-  else g.TexImage2D(GL_TEXTURE_2D, 0, GL_RGBA32F, w, h, 0, GL_RGBA, GL_FLOAT, nullptr);
+  if (f == TargetFormat::RGBA8)
+    g.TexImage2D(GL_TEXTURE_2D, 0, GL_RGBA8, w, h, 0, GL_RGBA, GL_UNSIGNED_BYTE, nullptr);
+  else if (f == TargetFormat::RGBA16F)
+    g.TexImage2D(GL_TEXTURE_2D, 0, GL_RGBA16F, w, h, 0, GL_RGBA, GL_HALF_FLOAT, nullptr);
+  else
+    g.TexImage2D(GL_TEXTURE_2D, 0, GL_RGBA32F, w, h, 0, GL_RGBA, GL_FLOAT, nullptr);
   g.TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
   g.TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
   g.TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
@@ -49,7 +55,7 @@ bool make_target(const GlFns &g, TargetFormat f, int w, int h, GlTarget *t, std:
   const GLenum status = g.CheckFramebufferStatus(GL_FRAMEBUFFER);
   if (status != GL_FRAMEBUFFER_COMPLETE) {
     *err = std::string(target_format_name(f)) + " " + std::to_string(w) + "x" + std::to_string(h) +
-           " framebuffer incomplete (status " + hex(status) + ")";
+        " framebuffer incomplete (status " + hex(status) + ")";
     free_target(g, t);
     return false;
   }

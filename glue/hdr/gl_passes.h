@@ -1,4 +1,4 @@
-// tiershade glue: GL plumbing of the HDR passes: render targets (RGBA8, RGBA16F,
+// tiershade hdr: GL plumbing of the HDR passes: render targets (RGBA8, RGBA16F,
 // RGBA32F) that later passes sample, full-screen passes drawn with a family's
 // production program, readbacks, and the few GL 3.0 / GLES 3.0 entry points the
 // histogram's pixel-pack-buffer route needs beyond GlFns (resolved here from the

@@ -1,4 +1,4 @@
-// tiershade glue: the running luminance histogram of the auto exposure, measured
+// tiershade hdr: the running luminance histogram of the auto exposure, measured
 // one bucket per frame (talk: "Auto Exposure"; fact sheet section 8), on the GPU and
 // by its exact C twin.
 //
@@ -33,9 +33,9 @@ struct HistogramMeasurement {
 };
 
 struct HistogramConfig {
-  int w = 0, h = 0;            // the measured frame
-  int input_encoding = 0;      // 0 linear HDR x tone-map scale (float path), 1 sRGB-encoded RGBA8 (integer path)
-  double alpha = 0.0625;       // temporal prefilter weight of the new frame (docs/hdr.md); 1 = none, as Source
+  int w = 0, h = 0;  // the measured frame
+  int input_encoding = 0;  // 0 linear HDR x tone-map scale (float path), 1 sRGB-encoded RGBA8 (integer path)
+  double alpha = 0.0625;  // temporal prefilter weight of the new frame (docs/hdr.md); 1 = none, as Source
   double window_x = 0.9, window_y = 0.85;  // the centred window (mat_exposure_center_region_x/_y)
 };
 
@@ -87,7 +87,7 @@ class LuminanceHistogramGl {
   ae_window win_{};
   ae_histogram hist_{};
   GlTarget mask_, smooth_[2];
-  int smooth_cur_ = 0;      // index of the latest smoothed image
+  int smooth_cur_ = 0;  // index of the latest smoothed image
   bool first_done_ = false;  // the first frame starts the smoothed image (alpha 1)
   GLuint compare_prog_ = 0, smooth_prog_ = 0;
   GlSyncFns sync_;

@@ -1,4 +1,4 @@
-// tiershade glue: the exact C twin of the running luminance histogram (see
+// tiershade hdr: the exact C twin of the running luminance histogram (see
 // luminance_histogram.h): the GPU module's schedule, with every count taken from the
 // luminance_compare twin and the prefilter from the luminance_smooth twin.
 #include "math/hdr_formats.h"

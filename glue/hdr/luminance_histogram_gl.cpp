@@ -1,4 +1,4 @@
-// tiershade glue: the GPU running luminance histogram (see luminance_histogram.h):
+// tiershade hdr: the GPU running luminance histogram (see luminance_histogram.h):
 // one bucket per frame, marked by luminance_compare.fs and counted by an occlusion
 // query (GL 3.3), a fenced pixel-pack-buffer readback (GLES 3.0) or a synchronous
 // readback (GLES 2.0).
@@ -27,9 +27,12 @@ LuminanceHistogramGl::~LuminanceHistogramGl() {
 
 const char *LuminanceHistogramGl::method() const {
   switch (method_) {
-    case Method::Query: return "asynchronous occlusion query (GL_SAMPLES_PASSED)";
-    case Method::PixelPack: return "fenced pixel-pack-buffer readback, counted on the CPU";
-    case Method::SyncRead: return "synchronous readback, counted on the CPU";
+    case Method::Query:
+      return "asynchronous occlusion query (GL_SAMPLES_PASSED)";
+    case Method::PixelPack:
+      return "fenced pixel-pack-buffer readback, counted on the CPU";
+    case Method::SyncRead:
+      return "synchronous readback, counted on the CPU";
   }
   return "?";
 }
@@ -106,7 +109,8 @@ bool LuminanceHistogramGl::collect(int64_t frame, std::vector<HistogramMeasureme
       fences_[b] = nullptr;
       const size_t pixels = static_cast<size_t>(win_.w) * win_.h;
       g.BindBuffer(GL_PIXEL_PACK_BUFFER, pbos_[b]);
-      const void *p = sync_.MapBufferRange(GL_PIXEL_PACK_BUFFER, 0, static_cast<GLsizeiptr>(pixels * 4), GL_MAP_READ_BIT);
+      const void *p =
+          sync_.MapBufferRange(GL_PIXEL_PACK_BUFFER, 0, static_cast<GLsizeiptr>(pixels * 4), GL_MAP_READ_BIT);
       if (!p) {
         g.BindBuffer(GL_PIXEL_PACK_BUFFER, 0);
         *err = "glMapBufferRange of the histogram's pixel-pack buffer failed";
@@ -180,8 +184,8 @@ bool LuminanceHistogramGl::frame(GLuint frame_tex, float tscale, int64_t frame,
                            1.0f / static_cast<float>(cfg_.h)};
     run_.set_vec4(smooth_prog_, "u_params", params);
     run_.set_vec4(smooth_prog_, "u_frame_size", size);
-    if (!run_.draw(smooth_prog_, smooth_[next], {{"u_frame", frame_tex, false}, {"u_history", smooth_[smooth_cur_].tex, false}},
-                   &win_, err))
+    if (!run_.draw(smooth_prog_, smooth_[next],
+                   {{"u_frame", frame_tex, false}, {"u_history", smooth_[smooth_cur_].tex, false}}, &win_, err))
       return false;
     smooth_cur_ = next;
     first_done_ = true;

@@ -1,4 +1,4 @@
-// tiershade glue: the integer and float HDR paths on GL (see hdr_pipeline.h).
+// tiershade hdr: the integer and float HDR paths on GL (see hdr_pipeline.h).
 #include "hdr/paths.h"
 
 #include "twins/model_lighting.h"
@@ -10,7 +10,7 @@ bool hdr_lit_variant(const std::vector<ShaderDecl> &decls, int output_mode, Vari
       bool ok = true;
       for (const auto &kv : v.values) {
         const int want = kv.first == "ALBEDO_TEXTURE" || kv.first == "HALF_LAMBERT" ? 1
-                         : kv.first == "OUTPUT_MODE"                                ? output_mode
+            : kv.first == "OUTPUT_MODE"                                             ? output_mode
                                                                                     : 0;
         if (kv.second != want) ok = false;
       }
@@ -21,7 +21,7 @@ bool hdr_lit_variant(const std::vector<ShaderDecl> &decls, int output_mode, Vari
     }
   }
   *err = "no sm3 model_lighting variant with ALBEDO_TEXTURE=1, HALF_LAMBERT=1, OUTPUT_MODE=" +
-         std::to_string(output_mode) + " and every other combo 0";
+      std::to_string(output_mode) + " and every other combo 0";
   return false;
 }
 

@@ -1,4 +1,4 @@
-// tiershade glue: the two HDR paths of Source (talk: "Implemented Multiple HDR Paths";
+// tiershade hdr: the two HDR paths of Source (talk: "Implemented Multiple HDR Paths";
 // fact sheet section 7), on GL and as their exact C twins:
 //   - integer: the lit shader ends with the tone-map scale and the sRGB output
 //     (model_lighting OUTPUT_MODE 2) and writes an RGBA8 target;
@@ -20,8 +20,9 @@
 
 struct HdrSettings {
   float tone_map_scale = 1.f;
-  float bloom_amount = 0.3f;    // floatcombine's bloom amount (mat_bloomscale smoothed)
-  float bloom_exponent = 2.2f;  // floatcombine's lum(bloom)^exp (the SDK's value is not in the fact sheet; 2.2 as r_bloomtintexponent)
+  float bloom_amount = 0.3f;  // floatcombine's bloom amount (mat_bloomscale smoothed)
+  float bloom_exponent =
+      2.2f;  // floatcombine's lum(bloom)^exp (the SDK's value is not in the fact sheet; 2.2 as r_bloomtintexponent)
 };
 
 // The model_lighting variant a path uses: sm3, albedo texture, half-Lambert, no Phong,
@@ -51,8 +52,8 @@ class HdrPipelineGl {
   bool post_float(const std::vector<float> &hdr_rgba, const HdrSettings &s, std::string *err);
   bool float_frame(const std::vector<ts_vec4f> &shared, const HdrSettings &s, std::string *err);
   const GlTarget &display() const { return display_; }  // RGBA8, the last frame of either path
-  const GlTarget &hdr() const { return hdr_; }          // RGBA16F linear frame (float path)
-  const GlTarget &bloom() const { return by_; }         // RGBA16F quarter-size blurred bloom
+  const GlTarget &hdr() const { return hdr_; }  // RGBA16F linear frame (float path)
+  const GlTarget &bloom() const { return by_; }  // RGBA16F quarter-size blurred bloom
 
  private:
   bool post_chain(const HdrSettings &s, std::string *err);
@@ -71,8 +72,8 @@ class HdrPipelineGl {
 struct HdrFrameC {
   int w = 0, h = 0, bw = 0, bh = 0;
   std::vector<uint8_t> display;  // RGBA8 codes, rows bottom-up
-  std::vector<float> hdr;        // float path: the fp16 linear frame's values (rgba)
-  std::vector<float> bloom;      // float path: the quarter-size blurred bloom (rgba)
+  std::vector<float> hdr;  // float path: the fp16 linear frame's values (rgba)
+  std::vector<float> bloom;  // float path: the quarter-size blurred bloom (rgba)
 };
 // `scene` holds the G-buffer and the shared slots; the tone-map scale is set by the functions.
 void hdr_integer_frame_c(const ShaderFamily &lit, const Variant &v, const FamilyInputs &scene, float tone_map_scale,

@@ -1,4 +1,4 @@
-// tiershade glue: the C twins of the integer and float HDR paths, and the double
+// tiershade hdr: the C twins of the integer and float HDR paths, and the double
 // reference of the float path (see hdr_pipeline.h). Each pass shades a row at a time with the
 // records the GL pass would read: the fragment position (pixel centre) per pixel, the sizes
 // and parameters the GL glue passes as uniforms shared by the row. The float path runs the
@@ -18,7 +18,8 @@
 namespace {
 
 ts_vec4f size_of(int w, int h) {
-  return ts_v4f(static_cast<float>(w), static_cast<float>(h), 1.0f / static_cast<float>(w), 1.0f / static_cast<float>(h));
+  return ts_v4f(static_cast<float>(w), static_cast<float>(h), 1.0f / static_cast<float>(w),
+                1.0f / static_cast<float>(h));
 }
 
 ts_tex2d tex_of(const std::vector<float> &rgba, int w, int h, bool linear) {
@@ -43,8 +44,10 @@ void centres(int y, int w, std::vector<ts_vec4f> *pos) {
 void store_row(std::vector<float> *img, size_t i, const std::vector<ts_vec4f> &row, bool half) {
   const float *src = &row[0].x;
   float *dst = img->data() + i * 4;
-  if (half) ts_quantize_half_batch(src, dst, row.size() * 4);
-  else std::memcpy(dst, src, row.size() * sizeof(ts_vec4f));
+  if (half)
+    ts_quantize_half_batch(src, dst, row.size() * 4);
+  else
+    std::memcpy(dst, src, row.size() * sizeof(ts_vec4f));
 }
 
 // The three bloom passes of the float path; `half`: store in fp16 (GL) or float32 (reference).
@@ -112,8 +115,7 @@ void hdr_float_frame_c(const ShaderFamily &lit, const Variant &v, const FamilyIn
   hdr_post_float_c(hdr, scene.w, scene.h, s, out);
 }
 
-void hdr_post_float_c(const std::vector<float> &hdr, int w, int h, const HdrSettings &s, HdrFrameC *out,
-                      int threads) {
+void hdr_post_float_c(const std::vector<float> &hdr, int w, int h, const HdrSettings &s, HdrFrameC *out, int threads) {
   out->w = w;
   out->h = h;
   out->hdr = hdr;

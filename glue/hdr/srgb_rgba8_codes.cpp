@@ -1,4 +1,4 @@
-// tiershade glue: sRGB-encoded 8-bit codes by thresholds (glue/hdr/srgb_rgba8_codes.h).
+// tiershade hdr: sRGB-encoded 8-bit codes by thresholds (glue/hdr/srgb_rgba8_codes.h).
 #include "hdr/srgb_rgba8_codes.h"
 
 #include <cmath>
@@ -30,8 +30,10 @@ struct Thresholds {
       uint32_t lo = 0, hi = 0x7f800000u;  // code(lo) < c <= code(hi) (+Inf gives 255)
       while (hi - lo > 1) {
         const uint32_t mid = lo + (hi - lo) / 2;
-        if (srgb_code_direct(from_bits(mid)) >= c) hi = mid;
-        else lo = mid;
+        if (srgb_code_direct(from_bits(mid)) >= c)
+          hi = mid;
+        else
+          lo = mid;
       }
       first[c] = from_bits(hi);
     }

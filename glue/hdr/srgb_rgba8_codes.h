@@ -1,4 +1,4 @@
-// tiershade glue: the 8-bit code of a linear value encoded with the exact sRGB curve, as the
+// tiershade hdr: the 8-bit code of a linear value encoded with the exact sRGB curve, as the
 // integer HDR path stores linear shader outputs (ps20, world_lighting) in its RGBA8 frame:
 //   code(v) = ts_unorm8_from_float(float(srgb(double(v))))
 // computed by a binary search over the 255 code thresholds instead of a pow per channel. The

@@ -1,4 +1,4 @@
-// tiershade glue: auto exposure of a still frame (glue/hdr/still_frame_exposure.h).
+// tiershade hdr: auto exposure of a still frame (glue/hdr/still_frame_exposure.h).
 #include "hdr/still_frame_exposure.h"
 
 #include <algorithm>

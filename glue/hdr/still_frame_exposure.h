@@ -1,4 +1,4 @@
-// tiershade glue: auto exposure of a still frame. Source's running histogram (one bucket per
+// tiershade hdr: auto exposure of a still frame. Source's running histogram (one bucket per
 // frame, read AE_READ_DELAY frames later; c_ref/exposure/auto_exposure.h) and its controller
 // (c_ref/exposure/exposure_control.h) run for N frames on the same fp16 linear frame, as a camera
 // holding still would. The bucket counts are the exact counts of the luminance_compare twin
@@ -19,12 +19,12 @@ class StaticLuminance {
   uint32_t count(int bucket, float scale) const;
 
  private:
-  std::vector<float> sorted_;            // finite luminances of the window, ascending
-  std::vector<float> odd_;               // rgba of window pixels with a non-finite luminance
+  std::vector<float> sorted_;  // finite luminances of the window, ascending
+  std::vector<float> odd_;  // rgba of window pixels with a non-finite luminance
 };
 
 struct StaticExposure {
-  double scale = 1;   // the tone-map scale after the last frame
+  double scale = 1;  // the tone-map scale after the last frame
   double goal = 1;
   int frames = 0;
 };

@@ -12,8 +12,7 @@
 
 namespace fs = std::filesystem;
 
-bool DirWriter::begin(const std::string &dir, const std::string &marker, const std::string &what,
-                      std::string *err) {
+bool DirWriter::begin(const std::string &dir, const std::string &marker, const std::string &what, std::string *err) {
   std::error_code ec;
   dir_ = dir;
   while (dir_.size() > 1 && dir_.back() == '/') dir_.pop_back();

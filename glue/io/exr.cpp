@@ -1,4 +1,4 @@
-// tiershade io: OpenEXR files (io/exr.h), through the OpenEXR 3 C++ API.
+// tiershade io: openEXR files (io/exr.h), through the OpenEXR 3 C++ API.
 //   * Output goes through FileOStream (an Imf::OStream over FILE*) into an AtomicFile, so
 //     write errors are seen even when OpenEXR swallows them (it writes the line-offset table
 //     from ~OutputFile, which cannot throw).

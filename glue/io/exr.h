@@ -1,4 +1,4 @@
-// tiershade io: OpenEXR image files. Writers write atomically (io/atomic_file.h); readers and
+// tiershade io: openEXR image files. Writers write atomically (io/atomic_file.h); readers and
 // writers flip between the file's top-down rows and ImageF's bottom-up rows (base/image.h).
 // Failures fill *err (may be null) with "<function>: '<path>': <reason>"; nothing throws.
 #pragma once

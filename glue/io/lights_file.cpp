@@ -1,4 +1,4 @@
-// tiershade glue: the plain-text lights file (see lights_file.h).
+// tiershade io: the plain-text lights file (see lights_file.h).
 #include "io/lights_file.h"
 
 #include <sys/stat.h>

@@ -1,4 +1,4 @@
-// tiershade glue: the plain-text lights file (scenes/*.lights), read by `fold` and `demo`.
+// tiershade io: the plain-text lights file (scenes/*.lights), read by `fold` and `demo`.
 #pragma once
 #include <string>
 #include <vector>

@@ -1,4 +1,4 @@
-// tiershade glue: colour LUT files (see lut_io.h).
+// tiershade io: colour LUT files (see lut_io.h).
 // .cube facts: Adobe "Cube LUT Specification 1.0" (keywords TITLE, LUT_1D_SIZE 2..65536,
 // LUT_3D_SIZE 2..256, DOMAIN_MIN/MAX defaulting to 0 and 1, keywords before the table, '#'
 // comments, red fastest) and the DaVinci Resolve variant (LUT_1D_INPUT_RANGE,
@@ -103,8 +103,7 @@ bool read_cube(const std::string &path, CubeFile *out, std::string *err) {
     std::string lower = key;
     for (char &ch : lower) ch = static_cast<char>(std::tolower(static_cast<unsigned char>(ch)));
     const bool is_number = key[0] == '-' || key[0] == '+' || key[0] == '.' ||
-                           std::isdigit(static_cast<unsigned char>(key[0])) || lower.rfind("nan", 0) == 0 ||
-                           lower.rfind("inf", 0) == 0;
+        std::isdigit(static_cast<unsigned char>(key[0])) || lower.rfind("nan", 0) == 0 || lower.rfind("inf", 0) == 0;
     if (is_number) {
       if (!data_lines) {
         if (!c.size_1d && !c.size_3d) {
@@ -135,7 +134,7 @@ bool read_cube(const std::string &path, CubeFile *out, std::string *err) {
     }
     if (data_lines) {
       *err = at(path, lineno) + "keyword " + key + " after the table data (line " + std::to_string(first_data_line) +
-             "); keywords come first";
+          "); keywords come first";
       return false;
     }
     auto once = [&](bool *seen) {
@@ -215,7 +214,7 @@ bool read_cube(const std::string &path, CubeFile *out, std::string *err) {
   for (int k = 0; k < 3; ++k) {
     if (!(c.domain_min[k] < c.domain_max[k])) {
       *err = path + ": the domain is empty on channel " + "RGB"[k] + " (min " + std::to_string(c.domain_min[k]) +
-             " >= max " + std::to_string(c.domain_max[k]) + ")";
+          " >= max " + std::to_string(c.domain_max[k]) + ")";
       return false;
     }
   }
@@ -282,13 +281,14 @@ bool read_source_raw(const std::string &path, Lut3D *out, std::string *err) {
   std::string bytes;
   if (!read_all(path, &bytes, err)) return false;
   if (static_cast<long>(bytes.size()) != kSourceRawBytes) {
-    *err = path + ": " + std::to_string(bytes.size()) + " bytes; a Source colour-correction .raw is 32 x 32 x 32 RGB8 = " +
-           std::to_string(kSourceRawBytes) + " bytes";
+    *err = path + ": " + std::to_string(bytes.size()) +
+        " bytes; a Source colour-correction .raw is 32 x 32 x 32 RGB8 = " + std::to_string(kSourceRawBytes) + " bytes";
     return false;
   }
   out->n = kSourceRawEdge;
   out->rgb.resize(bytes.size());
-  for (size_t i = 0; i < bytes.size(); ++i) out->rgb[i] = static_cast<float>(static_cast<unsigned char>(bytes[i])) / 255.f;
+  for (size_t i = 0; i < bytes.size(); ++i)
+    out->rgb[i] = static_cast<float>(static_cast<unsigned char>(bytes[i])) / 255.f;
   out->title = path;
   return true;
 }
@@ -296,7 +296,7 @@ bool read_source_raw(const std::string &path, Lut3D *out, std::string *err) {
 bool write_source_raw(const std::string &path, const Lut3D &lut, std::string *err) {
   if (lut.n != kSourceRawEdge || lut.rgb.size() != static_cast<size_t>(kSourceRawBytes)) {
     *err = path + ": not written: a Source .raw holds a 32^3 LUT, this one has edge " + std::to_string(lut.n) +
-           " (bake it at --size 32)";
+        " (bake it at --size 32)";
     return false;
   }
   std::string s(lut.rgb.size(), '\0');

@@ -1,4 +1,4 @@
-// tiershade glue: colour LUT files.
+// tiershade io: colour LUT files.
 //
 //  * .cube (the format colourists export; Adobe "Cube LUT Specification 1.0", plus the
 //    DaVinci Resolve variant): read strictly, written atomically.

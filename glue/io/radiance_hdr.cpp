@@ -72,8 +72,8 @@ bool next_line(const std::vector<unsigned char> &d, size_t *pos, std::string *li
 struct Header {
   int w = 0, h = 0;
   bool top_down = true;  // -Y: the first scanline is the top row
-  size_t res_line = 0;   // offset of the resolution line
-  size_t data = 0;       // offset of the first scanline
+  size_t res_line = 0;  // offset of the resolution line
+  size_t data = 0;  // offset of the first scanline
 };
 
 bool parse_header(const std::vector<unsigned char> &d, Header *hd, std::string *why) {

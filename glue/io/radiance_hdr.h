@@ -1,4 +1,4 @@
-// tiershade io: Radiance .hdr (RGBE) light probes, decoded by stb_image's stbi_loadf after
+// tiershade io: radiance .hdr (RGBE) light probes, decoded by stb_image's stbi_loadf after
 // this reader has checked the file. Failures fill *err (may be null) with
 // "read_hdr: '<path>': <reason>"; nothing throws.
 #pragma once

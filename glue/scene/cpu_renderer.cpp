@@ -1,4 +1,4 @@
-// tiershade glue: the C fallback's scene frames (glue/scene/cpu_renderer.h): rasteriser and shading.
+// tiershade scene: the C fallback's scene frames (glue/scene/cpu_renderer.h): rasteriser and shading.
 #include "scene/cpu_renderer.h"
 
 #include <algorithm>
@@ -76,12 +76,11 @@ void make_ctx(const PreparedScene &p, std::vector<DrawCtx> *out) {
   }
 }
 
-
 // ---- vertex stage ----------------------------------------------------------------------
 
 const int kVary = 24;  // 6 slots x 4
 const int kPixelSlots = 6;  // ML_PIXEL_SLOTS == WL_PIXEL_SLOTS
-const int kChunk = 64;      // pixels per batched call of scene_shade_cpu (a multiple of 8)
+const int kChunk = 64;  // pixels per batched call of scene_shade_cpu (a multiple of 8)
 
 // The production vertex shaders' outputs (model_lighting.vs, world_lighting.vs) in float.
 void vertex_stage(const PreparedScene &p, const PreparedDraw &d, std::vector<float> *clip, std::vector<float> *vary) {
@@ -210,8 +209,10 @@ void finish_setup(ScreenTri *s) {
     s->ui[j] = -1;
     for (int k = 0; k < 3; ++k) {
       const double v = s->bary[k][j];
-      if (v == 1.0 && !std::signbit(v)) s->ui[j] = s->ui[j] < 0 ? k : 3;
-      else if (!(v == 0.0 && !std::signbit(v))) s->unit = false;
+      if (v == 1.0 && !std::signbit(v))
+        s->ui[j] = s->ui[j] < 0 ? k : 3;
+      else if (!(v == 0.0 && !std::signbit(v)))
+        s->unit = false;
     }
     if (s->ui[j] < 0 || s->ui[j] > 2) s->unit = false;
   }
@@ -261,7 +262,7 @@ void setup(const PreparedScene &p, int di, const std::vector<float> &clip, std::
       }
       if (!ok) continue;
       s.area = static_cast<__int128>(s.X[1] - s.X[0]) * (s.Y[2] - s.Y[0]) -
-               static_cast<__int128>(s.Y[1] - s.Y[0]) * (s.X[2] - s.X[0]);
+          static_cast<__int128>(s.Y[1] - s.Y[0]) * (s.X[2] - s.X[0]);
       if (s.area == 0) continue;
       if (s.area < 0) {  // both windings are drawn (no culling): make it counter-clockwise
         std::swap(s.X[1], s.X[2]);
@@ -331,9 +332,12 @@ void raster_small(const ScreenTri &s, SceneVisibility *vis, int ya, int yb) {
       const int a = (k + 1) % 3;
       C[k] = s.dx[k] * (py - s.Y[a]) - s.dy[k] * (kSub / 2 - s.X[a]);
       // covered: e > 0, or e == 0 on a top-left edge: e >= bias
-      if (A[k] > 0) lo = std::max(lo, ceil_div(s.bias[k] - C[k], A[k]));
-      else if (A[k] < 0) hi = std::min(hi, floor_div(C[k] - s.bias[k], -A[k]));
-      else if (C[k] < s.bias[k]) hi = lo - 1;
+      if (A[k] > 0)
+        lo = std::max(lo, ceil_div(s.bias[k] - C[k], A[k]));
+      else if (A[k] < 0)
+        hi = std::min(hi, floor_div(C[k] - s.bias[k], -A[k]));
+      else if (C[k] < s.bias[k])
+        hi = lo - 1;
     }
     if (lo > hi) continue;
     int64_t e0 = C[0] + A[0] * lo, e1 = C[1] + A[1] * lo, e2 = C[2] + A[2] * lo;
@@ -358,7 +362,8 @@ void raster_wide(const ScreenTri &s, SceneVisibility *vis, int ya, int yb) {
       bool in = true;
       for (int k = 0; k < 3 && in; ++k) {
         const int a = (k + 1) % 3;
-        const __int128 e = static_cast<__int128>(s.dx[k]) * (py - s.Y[a]) - static_cast<__int128>(s.dy[k]) * (px - s.X[a]);
+        const __int128 e =
+            static_cast<__int128>(s.dx[k]) * (py - s.Y[a]) - static_cast<__int128>(s.dy[k]) * (px - s.X[a]);
         in = e >= s.bias[k];
         l[k] = static_cast<double>(e) * s.inv_area;
       }
@@ -376,7 +381,7 @@ void scene_rasterize_cpu(const PreparedScene &p, SceneVisibility *vis, int threa
   // A buffer of this size is reset by the bands below; a new one is made on two threads (its
   // page faults are most of the cost), next to the vertex stage and triangle setup.
   const bool reuse = vis->draw.size() == n && vis->tri.size() == n && vis->b1.size() == n && vis->b2.size() == n &&
-                     vis->depth.size() == n;
+      vis->depth.size() == n;
   std::thread maker;
   if (!reuse) {
     maker = std::thread([vis, n] {
@@ -401,7 +406,8 @@ void scene_rasterize_cpu(const PreparedScene &p, SceneVisibility *vis, int threa
   const int bands = (p.h + kBand - 1) / kBand;
   std::vector<std::vector<int>> band_tris(static_cast<size_t>(bands));
   for (size_t i = 0; i < tris.size(); ++i)
-    for (int b = tris[i].y0 / kBand; b <= tris[i].y1 / kBand; ++b) band_tris[static_cast<size_t>(b)].push_back(static_cast<int>(i));
+    for (int b = tris[i].y0 / kBand; b <= tris[i].y1 / kBand; ++b)
+      band_tris[static_cast<size_t>(b)].push_back(static_cast<int>(i));
   parallel_rows(bands, threads, [&](int band) {
     const int ra = band * kBand, rb = std::min(p.h, ra + kBand);
     if (reuse) {
@@ -415,8 +421,10 @@ void scene_rasterize_cpu(const PreparedScene &p, SceneVisibility *vis, int threa
     for (int ti : band_tris[static_cast<size_t>(band)]) {
       const ScreenTri &s = tris[static_cast<size_t>(ti)];
       const int ya = std::max(s.y0, ra), yb = std::min(s.y1, rb - 1);
-      if (s.small) raster_small(s, vis, ya, yb);
-      else raster_wide(s, vis, ya, yb);
+      if (s.small)
+        raster_small(s, vis, ya, yb);
+      else
+        raster_wide(s, vis, ya, yb);
     }
   });
 }

@@ -1,4 +1,4 @@
-// tiershade glue: scene frames in C. The C fallback rasterises the draws itself (vertex
+// tiershade scene: scene frames in C. The C fallback rasterises the draws itself (vertex
 // stage, near-plane clipping, 8-bit sub-pixel edge functions with the top-left rule,
 // perspective-correct interpolation, depth test LESS) into a small visibility buffer (draw,
 // triangle, barycentrics), then shades each visible pixel once with the bit-exact C twin
@@ -17,7 +17,7 @@
 struct SceneVisibility {
   int w = 0, h = 0;
   std::vector<int32_t> draw, tri;  // -1: background
-  std::vector<float> b1, b2;       // perspective-correct barycentrics of vertices 1 and 2
+  std::vector<float> b1, b2;  // perspective-correct barycentrics of vertices 1 and 2
   std::vector<float> depth;
 };
 

@@ -26,7 +26,7 @@ bool scene_deferred_frame(const Scene &s, Tier tier, int w, int h, SceneDeferred
     if (d < 0 || d == only) continue;
     if (only >= 0 || p.draws[static_cast<size_t>(d)].world) {
       *err = s.path + ": a deferred frame needs one model_lighting draw on screen; " +
-             s.primitives[p.draws[static_cast<size_t>(d)].choice->primitive].where + " is another";
+          s.primitives[p.draws[static_cast<size_t>(d)].choice->primitive].where + " is another";
       return false;
     }
     only = d;

@@ -12,8 +12,8 @@
 #include "scene/scene.h"
 
 struct SceneDeferredFrame {
-  FamilyInputs in;            // model_lighting records: ML_PIXEL_SLOTS per pixel, ML_SLOTS shared
-  std::vector<uint8_t> hit;   // 1 where the draw covers the pixel
+  FamilyInputs in;  // model_lighting records: ML_PIXEL_SLOTS per pixel, ML_SLOTS shared
+  std::vector<uint8_t> hit;  // 1 where the draw covers the pixel
   int lights_local = 0, lights_folded = 0;
   std::vector<double> reference;  // with_reference: scene_reference_linear's rgb (3 per pixel)
 };

@@ -1,4 +1,4 @@
-// tiershade glue: a scene frame end to end (glue/scene/frame.h).
+// tiershade scene: a scene frame end to end (glue/scene/frame.h).
 #include "scene/frame.h"
 
 #include <atomic>
@@ -44,14 +44,13 @@ bool load_luts(const SceneHdr &sh, std::vector<Lut3D> *out, std::string *err) {
     }
     if (!out->empty() && lut.n != out->front().n) {
       *err = l.path + ": LUT edge " + std::to_string(lut.n) + " differs from the first LUT's " +
-             std::to_string(out->front().n) + " (blended LUTs share one edge)";
+          std::to_string(out->front().n) + " (blended LUTs share one edge)";
       return false;
     }
     out->push_back(std::move(lut));
   }
   return true;
 }
-
 
 }  // namespace
 
@@ -170,7 +169,7 @@ bool SceneRenderer::init(const Scene &s, const SceneSelection &sel, const SceneR
     if (!load_luts(s.hdr, &m.luts, err) || !load_shader_decls(&m.decls, err)) return false;
     const bool atlas = !m.cpu && cfg.api == Api::GLES2;
     const std::string vname = std::string("ps2b:LUT_ATLAS=") + (atlas ? "1" : "0") +
-                              ",SHADER_TRILINEAR=0,NUM_LOOKUPS=" + std::to_string(m.luts.size());
+        ",SHADER_TRILINEAR=0,NUM_LOOKUPS=" + std::to_string(m.luts.size());
     if (!find_variant(m.decls, "color_correction", vname, &m.cc_var, err)) return false;
     m.cc_family = find_family("color_correction");
   }
@@ -351,8 +350,9 @@ bool SceneRenderer::frame(SceneRenderResult *out, std::string *err) {
     if (cfg.on_draw || cfg.progress)
       capture = [&](int di, GLuint prog) {
         if (cfg.on_draw) cfg.on_draw(m.sgl->gl(), p, p.draws[di], prog);
-        if (cfg.progress) cfg.progress("GL lit pass (a variant's first draw JIT-compiles it)",
-                                       static_cast<double>(di) / p.draws.size());
+        if (cfg.progress)
+          cfg.progress("GL lit pass (a variant's first draw JIT-compiles it)",
+                       static_cast<double>(di) / p.draws.size());
       };
     const bool ok = m.sgl->frame(&res.lit, err, &res.lit_ms, capture);
     m.main_next.store(1 << 30);

@@ -1,4 +1,4 @@
-// tiershade glue: one rendered frame of a scene, end to end: the variant selection's draws
+// tiershade scene: one rendered frame of a scene, end to end: the variant selection's draws
 // (glue/scene/prepare.h), the lit pass on GL (glue/scene/gl_renderer.h) or by the C fallback
 // (glue/scene/cpu_renderer.h), then the HDR path the scene asks for: integer (the shaders' tone-map
 // scale and sRGB, RGBA8) or float (fp16 frame, auto exposure from the running histogram,
@@ -24,7 +24,7 @@ struct SceneRenderConfig {
   Backend backend = Backend::EGL;  // Backend::CPU: the C fallback alone
   Api api = Api::GLES3;
   int w = 1280, h = 720;
-  int threads = 0;     // C fallback workers (0 = all cores)
+  int threads = 0;  // C fallback workers (0 = all cores)
   bool check = false;  // GL: also shade GL's own G-buffer with the C twin and compare bit for bit
   int exposure_frames = 300;  // auto exposure: frames (at 30 fps) of the running histogram on the still frame
   // Progress of long stages: (stage, fraction done).
@@ -36,10 +36,10 @@ struct SceneRenderConfig {
 };
 
 struct SceneRenderResult {
-  ImageF lit;                    // the lit pass (RGBA32F; linear, or display-encoded by the shader)
+  ImageF lit;  // the lit pass (RGBA32F; linear, or display-encoded by the shader)
   std::vector<uint8_t> display;  // the final frame, RGBA8 codes, rows bottom-up
   int w = 0, h = 0;
-  double tone_map_scale = 1;     // the exposure the frame was tone-mapped with
+  double tone_map_scale = 1;  // the exposure the frame was tone-mapped with
   bool auto_exposure = false;
   // Times (ms): preparing draws (bake, textures), compiling the selected variants (GL), the lit
   // pass, post-processing, the whole frame (first frame: compile included).
@@ -47,7 +47,7 @@ struct SceneRenderResult {
   // --check: channels where GL's frame differs from the C twin on GL's G-buffer (-1: not run).
   long check_mismatched = -1, check_pixels = 0;
   uint32_t check_max_ulp = 0;
-  ImageF check_lit;              // --check: the C twin's lit pass on GL's G-buffer (what GL is compared with)
+  ImageF check_lit;  // --check: the C twin's lit pass on GL's G-buffer (what GL is compared with)
   // --check: display channels where GL's HDR path and colour correction differ from their C twins
   // run on GL's lit frame (-1: not run).
   long check_post_mismatched = -1, check_post_channels = 0;

@@ -1,4 +1,4 @@
-// tiershade glue: scene frames on GL (glue/scene/gl_renderer.h).
+// tiershade scene: scene frames on GL (glue/scene/gl_renderer.h).
 #include "scene/gl_renderer.h"
 
 #include <chrono>

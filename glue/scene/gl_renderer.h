@@ -1,4 +1,4 @@
-// tiershade glue: a scene frame on GL, drawn as an engine draws it: each draw's production
+// tiershade scene: a scene frame on GL, drawn as an engine draws it: each draw's production
 // program (the family's vertex and fragment shaders, glue/conform/conform.h), its uniforms and
 // textures, real geometry with a depth buffer, into an RGBA32F target. Also the G-buffer
 // passes (shaders/scene_gbuffer.fs): the same vertex shader and depth, writing the records the
@@ -22,8 +22,7 @@ class SceneGl {
   // Compiles the variants (one program per unique variant), uploads geometry and textures.
   // *compile_ms receives the time of compiling and linking the programs.
   // target_w/h > 0: a smaller colour/depth target than the frame's (shader warm-up contexts).
-  bool init(const PreparedScene &p, std::string *err, double *compile_ms = nullptr, int target_w = 0,
-            int target_h = 0);
+  bool init(const PreparedScene &p, std::string *err, double *compile_ms = nullptr, int target_w = 0, int target_h = 0);
   // Shader warm-up (another context on another thread, Mesa's shader cache on): draws the
   // draws from the last one down, each once into the small target, so that llvmpipe JIT-
   // compiles their shader variants and stores them in the cache; stops at the first draw the
@@ -54,7 +53,7 @@ class SceneGl {
   int tw_ = 0, th_ = 0;  // target size
   std::atomic<int> *progress_ = nullptr;
   std::vector<std::string> variant_names_;
-  std::vector<GLuint> programs_;           // per unique variant
+  std::vector<GLuint> programs_;  // per unique variant
   std::vector<int> prog_of_draw_;
   std::vector<GLuint> textures_;  // per PreparedScene::textures entry
   struct Buffers {

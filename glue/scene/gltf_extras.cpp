@@ -1,4 +1,4 @@
-// tiershade glue: KHR_lights_punctual lights to ts_light (checked by ts_light_pack), and the
+// tiershade scene: KHR_lights_punctual lights to ts_light (checked by ts_light_pack), and the
 // scene settings of the root `extras.tiershade` object: camera, probes, ambient samples,
 // HDR and lightmaps (docs/scenes.md). Unknown keys, wrong types and ranges are errors.
 #include <cmath>
@@ -13,16 +13,20 @@
 
 namespace scene_gltf {
 
-bool convert_light(const tinygltf::Model &m, int li, const glm::dmat4 &world, const std::string &node_place,
-                   Scene *s, Err &e) {
+bool convert_light(const tinygltf::Model &m, int li, const glm::dmat4 &world, const std::string &node_place, Scene *s,
+                   Err &e) {
   const tinygltf::Light &L = m.lights[li];
   const std::string place = named("extensions.KHR_lights_punctual.lights[" + std::to_string(li) + "]", L.name);
   ts_light l;
   memset(&l, 0, sizeof l);
-  if (L.type == "point") l.type = TS_LIGHT_POINT;
-  else if (L.type == "spot") l.type = TS_LIGHT_SPOT;
-  else if (L.type == "directional") l.type = TS_LIGHT_DIRECTIONAL;
-  else return e.fail(place + ".type", quoted(L.type) + " is not point, spot or directional");
+  if (L.type == "point")
+    l.type = TS_LIGHT_POINT;
+  else if (L.type == "spot")
+    l.type = TS_LIGHT_SPOT;
+  else if (L.type == "directional")
+    l.type = TS_LIGHT_DIRECTIONAL;
+  else
+    return e.fail(place + ".type", quoted(L.type) + " is not point, spot or directional");
   double color[3] = {1, 1, 1};
   if (!L.color.empty()) {
     if (L.color.size() != 3) return e.fail(place + ".color", "expected 3 numbers");
@@ -149,12 +153,13 @@ bool read_ambient(const tinygltf::Value &v, const std::string &place, Scene *s, 
 
 bool read_hdr_settings(const tinygltf::Value &v, const std::string &place, const std::string &dir, SceneHdr *h,
                        Err &e) {
-  if (!check_keys(v, place, {"path", "tone_map_scale", "auto_exposure", "exposure_min", "exposure_max", "bloom", "luts"},
-                  e))
+  if (!check_keys(v, place,
+                  {"path", "tone_map_scale", "auto_exposure", "exposure_min", "exposure_max", "bloom", "luts"}, e))
     return false;
   if (v.Has("path")) {
     if (!read_string(v.Get("path"), place + ".path", &h->path, e)) return false;
-    if (h->path != "integer" && h->path != "float") return e.fail(place + ".path", quoted(h->path) + " is not \"integer\" or \"float\"");
+    if (h->path != "integer" && h->path != "float")
+      return e.fail(place + ".path", quoted(h->path) + " is not \"integer\" or \"float\"");
   }
   const struct {
     const char *key;
@@ -202,8 +207,8 @@ bool read_hdr_settings(const tinygltf::Value &v, const std::string &place, const
 bool read_lightmaps(const tinygltf::Value &v, const std::string &place, const std::string &dir, SceneLightmaps *l,
                     Err &e) {
   if (!check_keys(v, place, {"luxels_per_unit", "encoding", "page", "image"}, e)) return false;
-  if (v.Has("luxels_per_unit") && !read_number(v.Get("luxels_per_unit"), place + ".luxels_per_unit", 0.01, 1024,
-                                               &l->luxels_per_unit, e))
+  if (v.Has("luxels_per_unit") &&
+      !read_number(v.Get("luxels_per_unit"), place + ".luxels_per_unit", 0.01, 1024, &l->luxels_per_unit, e))
     return false;
   if (v.Has("encoding")) {
     if (!read_string(v.Get("encoding"), place + ".encoding", &l->encoding, e)) return false;
@@ -230,20 +235,23 @@ bool read_lightmaps(const tinygltf::Value &v, const std::string &place, const st
     std::string msg;
     if (!(exr ? read_exr(path, &img, &msg) : read_hdr(path, &img, &msg))) return e.fail(ip, msg);
     if (v.Has("page") && (img.w != l->page_w || img.h != l->page_h))
-      return e.fail(ip, path + ": " + std::to_string(img.w) + " x " + std::to_string(img.h) +
-                            " texels, but \"page\" is " + std::to_string(l->page_w) + " x " +
-                            std::to_string(l->page_h));
+      return e.fail(ip,
+                    path + ": " + std::to_string(img.w) + " x " + std::to_string(img.h) + " texels, but \"page\" is " +
+                        std::to_string(l->page_w) + " x " + std::to_string(l->page_h));
     if (img.w < 16 || img.h < 16 || img.w > 8192 || img.h > 8192)
-      return e.fail(ip, path + ": " + std::to_string(img.w) + " x " + std::to_string(img.h) +
-                            " texels, a page is 16..8192 each way");
+      return e.fail(
+          ip,
+          path + ": " + std::to_string(img.w) + " x " + std::to_string(img.h) + " texels, a page is 16..8192 each way");
     for (int y = 0; y < img.h; ++y)
       for (int x = 0; x < img.w; ++x)
         for (int c = 0; c < 3; ++c) {
           const float t = img.rgba[(static_cast<size_t>(y) * img.w + x) * 4 + c];
           if (!std::isfinite(t) || t < 0)
-            return e.fail(ip, path + ": texel (" + std::to_string(x) + ", " + std::to_string(y) + ") channel " +
-                                  "RGB"[c] + " is " + (std::isfinite(t) ? std::to_string(t) : (std::isnan(t) ? std::string("NaN") : std::string("Inf"))) +
-                                  ": lightmap radiance must be finite and >= 0");
+            return e.fail(
+                ip,
+                path + ": texel (" + std::to_string(x) + ", " + std::to_string(y) + ") channel " + "RGB"[c] + " is " +
+                    (std::isfinite(t) ? std::to_string(t) : (std::isnan(t) ? std::string("NaN") : std::string("Inf"))) +
+                    ": lightmap radiance must be finite and >= 0");
         }
     for (size_t i = 3; i < img.rgba.size(); i += 4) img.rgba[i] = 1.f;
     l->page_w = img.w;
@@ -267,7 +275,8 @@ bool convert_tiershade_extras(const tinygltf::Model &m, const std::string &dir, 
     if (t.Has("probes") && !read_probes(t.Get("probes"), place + ".probes", dir, s, e)) return false;
     if (t.Has("ambient") && !read_ambient(t.Get("ambient"), place + ".ambient", s, e)) return false;
     if (t.Has("hdr") && !read_hdr_settings(t.Get("hdr"), place + ".hdr", dir, &s->hdr, e)) return false;
-    if (t.Has("lightmaps") && !read_lightmaps(t.Get("lightmaps"), place + ".lightmaps", dir, &s->lightmaps, e)) return false;
+    if (t.Has("lightmaps") && !read_lightmaps(t.Get("lightmaps"), place + ".lightmaps", dir, &s->lightmaps, e))
+      return false;
   }
   for (const SceneMaterial &mat : s->materials)
     if (mat.probe >= static_cast<int>(s->probes.size()))

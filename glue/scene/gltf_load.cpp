@@ -1,4 +1,4 @@
-// tiershade glue: load_scene (glue/scene/scene.h): a glTF 2.0 file (.gltf or .glb) read with
+// tiershade scene: load_scene (glue/scene/scene.h): a glTF 2.0 file (.gltf or .glb) read with
 // tinygltf, checked (JSON syntax and finite numbers, external files, accessors, indices), and
 // flattened to world-space triangles, cameras and lights. Accessors, meshes and node transforms:
 // gltf_nodes.cpp; materials: gltf_source_material.cpp; lights and tiershade extras: gltf_extras.cpp.
@@ -52,8 +52,10 @@ bool check_number_tokens(const std::string &s, Err &e) {
       continue;
     }
     if (in_str) {
-      if (c == '\\') ++i, ++col;
-      else if (c == '"') in_str = false;
+      if (c == '\\')
+        ++i, ++col;
+      else if (c == '"')
+        in_str = false;
       continue;
     }
     if (c == '"') {
@@ -118,8 +120,9 @@ bool precheck_json(const std::string &text, const std::string &dir, Err &e) {
       if (kind[0] == 'b' && o.contains("byteLength") && o["byteLength"].is_number()) {
         const double want = o["byteLength"].get<double>();
         if (static_cast<double>(size) != want)
-          return e.fail(place, "file " + file + " has " + std::to_string(size) + " bytes, byteLength is " +
-                                   std::to_string(static_cast<long long>(want)));
+          return e.fail(place,
+                        "file " + file + " has " + std::to_string(size) + " bytes, byteLength is " +
+                            std::to_string(static_cast<long long>(want)));
       }
     }
   }
@@ -143,8 +146,8 @@ bool convert_images(const Model &m, const std::string &path, const std::string &
     out.path = im.uri.empty() || im.uri.rfind("data:", 0) == 0 ? path + "#images[" + std::to_string(i) + "]"
                                                                : join_path(dir, url_decode(im.uri));
     const int bytes = im.bits == 16 ? 2 : 1;
-    if (im.image.empty() || im.width < 1 || im.height < 1 || (im.bits != 8 && im.bits != 16) ||
-        im.component < 1 || im.component > 4)
+    if (im.image.empty() || im.width < 1 || im.height < 1 || (im.bits != 8 && im.bits != 16) || im.component < 1 ||
+        im.component > 4)
       return e.fail(place, "no decodable PNG/JPEG pixels (" + out.path + ")");
     const size_t w = static_cast<size_t>(im.width), h = static_cast<size_t>(im.height);
     const size_t nc = static_cast<size_t>(im.component);
@@ -161,8 +164,10 @@ bool convert_images(const Model &m, const std::string &path, const std::string &
           const float v = static_cast<float>(code) * scale;
           float *px = &out.rgba[(y * w + x) * 4];
           if (nc <= 2) {  // grey (+ alpha)
-            if (c == 0) px[0] = px[1] = px[2] = v;
-            else px[3] = v;
+            if (c == 0)
+              px[0] = px[1] = px[2] = v;
+            else
+              px[3] = v;
           } else {
             px[c] = v;
           }
@@ -177,7 +182,7 @@ bool load(const std::string &path, Scene *s, Err &e) {
   if (!read_file(path, &bytes, e)) return false;
   const std::string dir = dir_of(path);
   const bool glb = (path.size() >= 4 && path.compare(path.size() - 4, 4, ".glb") == 0) ||
-                   (bytes.size() >= 4 && memcmp(bytes.data(), "glTF", 4) == 0);
+      (bytes.size() >= 4 && memcmp(bytes.data(), "glTF", 4) == 0);
   std::string json;
   if (glb) {
     if (!glb_json(bytes, &json, e)) return false;
@@ -189,10 +194,9 @@ bool load(const std::string &path, Scene *s, Err &e) {
   Model m;
   tinygltf::TinyGLTF loader;
   std::string terr, twarn;
-  const bool ok = glb ? loader.LoadBinaryFromMemory(&m, &terr, &twarn, bytes.data(),
-                                                    static_cast<unsigned>(bytes.size()), dir)
-                      : loader.LoadASCIIFromString(&m, &terr, &twarn, json.data(),
-                                                   static_cast<unsigned>(json.size()), dir);
+  const bool ok = glb
+      ? loader.LoadBinaryFromMemory(&m, &terr, &twarn, bytes.data(), static_cast<unsigned>(bytes.size()), dir)
+      : loader.LoadASCIIFromString(&m, &terr, &twarn, json.data(), static_cast<unsigned>(json.size()), dir);
   if (!ok) return e.fail("glTF", trim_tinygltf(terr.empty() ? "tinygltf could not load the file" : terr));
   s->path = path;
   if (!convert_images(m, path, dir, s, e) || !convert_materials(m, s, e) || !convert_nodes(m, s, e)) return false;

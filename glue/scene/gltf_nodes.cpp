@@ -1,4 +1,4 @@
-// tiershade glue: the glTF loader's geometry (glue/scene/gltf_load.cpp reads the file): accessors,
+// tiershade scene: the glTF loader's geometry (glue/scene/gltf_load.cpp reads the file): accessors,
 // node transforms (GLM, double), and meshes, cameras and lights flattened to world space.
 #include <cstdint>
 #include <cstring>
@@ -21,45 +21,65 @@ using tinygltf::Model;
 
 const char *type_name(int t) {
   switch (t) {
-    case TINYGLTF_TYPE_SCALAR: return "SCALAR";
-    case TINYGLTF_TYPE_VEC2: return "VEC2";
-    case TINYGLTF_TYPE_VEC3: return "VEC3";
-    case TINYGLTF_TYPE_VEC4: return "VEC4";
-    case TINYGLTF_TYPE_MAT2: return "MAT2";
-    case TINYGLTF_TYPE_MAT3: return "MAT3";
-    case TINYGLTF_TYPE_MAT4: return "MAT4";
+    case TINYGLTF_TYPE_SCALAR:
+      return "SCALAR";
+    case TINYGLTF_TYPE_VEC2:
+      return "VEC2";
+    case TINYGLTF_TYPE_VEC3:
+      return "VEC3";
+    case TINYGLTF_TYPE_VEC4:
+      return "VEC4";
+    case TINYGLTF_TYPE_MAT2:
+      return "MAT2";
+    case TINYGLTF_TYPE_MAT3:
+      return "MAT3";
+    case TINYGLTF_TYPE_MAT4:
+      return "MAT4";
   }
   return "unknown";
 }
 
 const char *comp_name(int c) {
   switch (c) {
-    case TINYGLTF_COMPONENT_TYPE_BYTE: return "BYTE";
-    case TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE: return "UNSIGNED_BYTE";
-    case TINYGLTF_COMPONENT_TYPE_SHORT: return "SHORT";
-    case TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT: return "UNSIGNED_SHORT";
-    case TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT: return "UNSIGNED_INT";
-    case TINYGLTF_COMPONENT_TYPE_FLOAT: return "FLOAT";
+    case TINYGLTF_COMPONENT_TYPE_BYTE:
+      return "BYTE";
+    case TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE:
+      return "UNSIGNED_BYTE";
+    case TINYGLTF_COMPONENT_TYPE_SHORT:
+      return "SHORT";
+    case TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT:
+      return "UNSIGNED_SHORT";
+    case TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT:
+      return "UNSIGNED_INT";
+    case TINYGLTF_COMPONENT_TYPE_FLOAT:
+      return "FLOAT";
   }
   return "unknown";
 }
 
 int comp_size(int c) {
   switch (c) {
-    case TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE: return 1;
-    case TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT: return 2;
+    case TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE:
+      return 1;
+    case TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT:
+      return 2;
     case TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT:
-    case TINYGLTF_COMPONENT_TYPE_FLOAT: return 4;
+    case TINYGLTF_COMPONENT_TYPE_FLOAT:
+      return 4;
   }
   return 0;
 }
 
 int type_count(int t) {
   switch (t) {
-    case TINYGLTF_TYPE_SCALAR: return 1;
-    case TINYGLTF_TYPE_VEC2: return 2;
-    case TINYGLTF_TYPE_VEC3: return 3;
-    case TINYGLTF_TYPE_VEC4: return 4;
+    case TINYGLTF_TYPE_SCALAR:
+      return 1;
+    case TINYGLTF_TYPE_VEC2:
+      return 2;
+    case TINYGLTF_TYPE_VEC3:
+      return 3;
+    case TINYGLTF_TYPE_VEC4:
+      return 4;
   }
   return 0;
 }
@@ -72,8 +92,8 @@ struct AccessorUse {
 };
 
 // Reads accessor `a` as doubles (normalized integers decoded), every bound checked.
-bool read_accessor(const Model &m, int a, const std::string &place, const AccessorUse &use,
-                   std::vector<double> *out, size_t *count, Err &e) {
+bool read_accessor(const Model &m, int a, const std::string &place, const AccessorUse &use, std::vector<double> *out,
+                   size_t *count, Err &e) {
   const std::string an = "accessor " + std::to_string(a);
   if (a < 0 || static_cast<size_t>(a) >= m.accessors.size())
     return e.fail(place, an + " does not exist (" + std::to_string(m.accessors.size()) + " accessors)");
@@ -87,8 +107,9 @@ bool read_accessor(const Model &m, int a, const std::string &place, const Access
     want += std::string(want.empty() ? "" : " or ") + comp_name(c);
   }
   if (!comp_ok)
-    return e.fail(place, an + " has componentType " + std::to_string(acc.componentType) + " (" +
-                             comp_name(acc.componentType) + "), expected " + want);
+    return e.fail(place,
+                  an + " has componentType " + std::to_string(acc.componentType) + " (" + comp_name(acc.componentType) +
+                      "), expected " + want);
   const bool is_float = acc.componentType == TINYGLTF_COMPONENT_TYPE_FLOAT;
   if (!is_float && use.normalized_ints && !acc.normalized)
     return e.fail(place, an + " has integer components that are not normalized");
@@ -109,37 +130,44 @@ bool read_accessor(const Model &m, int a, const std::string &place, const Access
     return e.fail(vn, "buffer " + std::to_string(bv.buffer) + " does not exist");
   const std::vector<unsigned char> &buf = m.buffers[bv.buffer].data;
   if (bv.byteOffset > buf.size() || bv.byteLength > buf.size() - bv.byteOffset)
-    return e.fail(vn, "byteOffset " + std::to_string(bv.byteOffset) + " + byteLength " +
-                          std::to_string(bv.byteLength) + " exceeds buffers[" + std::to_string(bv.buffer) + "] (" +
-                          std::to_string(buf.size()) + " bytes)");
+    return e.fail(vn,
+                  "byteOffset " + std::to_string(bv.byteOffset) + " + byteLength " + std::to_string(bv.byteLength) +
+                      " exceeds buffers[" + std::to_string(bv.buffer) + "] (" + std::to_string(buf.size()) + " bytes)");
   size_t stride = elem;
   if (bv.byteStride != 0) {
     if (bv.byteStride < elem || bv.byteStride > 252 || bv.byteStride % 4 != 0)
-      return e.fail(vn, "byteStride " + std::to_string(bv.byteStride) + " is invalid for " + an + " (element " +
-                            std::to_string(elem) + " bytes; 4..252, a multiple of 4)");
+      return e.fail(vn,
+                    "byteStride " + std::to_string(bv.byteStride) + " is invalid for " + an + " (element " +
+                        std::to_string(elem) + " bytes; 4..252, a multiple of 4)");
     stride = bv.byteStride;
   }
   if (n == 0) return true;
   const size_t need = acc.byteOffset + (n - 1) * stride + elem;
   if (acc.byteOffset > bv.byteLength || need > bv.byteLength)
-    return e.fail(place, an + " (byteOffset " + std::to_string(acc.byteOffset) + ", " + std::to_string(n) +
-                             " x " + std::to_string(stride) + " bytes) needs " + std::to_string(need) + " bytes, " +
-                             vn + " has " + std::to_string(bv.byteLength));
+    return e.fail(place,
+                  an + " (byteOffset " + std::to_string(acc.byteOffset) + ", " + std::to_string(n) + " x " +
+                      std::to_string(stride) + " bytes) needs " + std::to_string(need) + " bytes, " + vn + " has " +
+                      std::to_string(bv.byteLength));
   const unsigned char *base = buf.data() + bv.byteOffset + acc.byteOffset;
   for (size_t i = 0; i < n; ++i)
     for (size_t c = 0; c < nc; ++c) {
       const unsigned char *p = base + i * stride + c * cs;
       double v = 0;
       switch (acc.componentType) {
-        case TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE: v = p[0]; break;
-        case TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT: v = p[0] | p[1] << 8; break;
-        case TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT: v = le32(p); break;
+        case TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE:
+          v = p[0];
+          break;
+        case TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT:
+          v = p[0] | p[1] << 8;
+          break;
+        case TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT:
+          v = le32(p);
+          break;
         case TINYGLTF_COMPONENT_TYPE_FLOAT: {
           uint32_t u = le32(p);
           float f;
           memcpy(&f, &u, 4);
-          if (!std::isfinite(f))
-            return e.fail(place, an + " element " + std::to_string(i) + " is not finite");
+          if (!std::isfinite(f)) return e.fail(place, an + " element " + std::to_string(i) + " is not finite");
           v = f;
           break;
         }
@@ -210,8 +238,8 @@ bool convert_primitive(Walk &w, int mesh, int pi, const glm::dmat4 &world, int i
   if (attr("POSITION") < 0) return w.e.fail(place + ".attributes", "no POSITION");
   std::vector<double> pos, nrm, uv, tan, idx;
   size_t nv = 0, n2 = 0;
-  if (!read_accessor(w.m, attr("POSITION"), place + ".attributes.POSITION", {TINYGLTF_TYPE_VEC3, {F}, false}, &pos,
-                     &nv, w.e))
+  if (!read_accessor(w.m, attr("POSITION"), place + ".attributes.POSITION", {TINYGLTF_TYPE_VEC3, {F}, false}, &pos, &nv,
+                     w.e))
     return false;
   if (nv == 0) return w.e.fail(place + ".attributes.POSITION", "no vertices");
   struct Opt {
@@ -226,26 +254,27 @@ bool convert_primitive(Walk &w, int mesh, int pi, const glm::dmat4 &world, int i
     const std::string ap = place + ".attributes." + o.name;
     if (!read_accessor(w.m, attr(o.name), ap, o.use, o.out, &n2, w.e)) return false;
     if (n2 != nv)
-      return w.e.fail(ap, "accessor " + std::to_string(attr(o.name)) + " has " + std::to_string(n2) +
-                              " elements, POSITION has " + std::to_string(nv));
+      return w.e.fail(ap,
+                      "accessor " + std::to_string(attr(o.name)) + " has " + std::to_string(n2) +
+                          " elements, POSITION has " + std::to_string(nv));
   }
   std::vector<uint32_t> tri;
   if (p.indices >= 0) {
     size_t ni = 0;
-    if (!read_accessor(w.m, p.indices, place + ".indices", {TINYGLTF_TYPE_SCALAR, {UB, US, UI}, false}, &idx, &ni,
-                       w.e))
+    if (!read_accessor(w.m, p.indices, place + ".indices", {TINYGLTF_TYPE_SCALAR, {UB, US, UI}, false}, &idx, &ni, w.e))
       return false;
     if (ni % 3 != 0) return w.e.fail(place + ".indices", std::to_string(ni) + " indices is not a multiple of 3");
     tri.resize(ni);
     for (size_t i = 0; i < ni; ++i) {
       if (idx[i] >= static_cast<double>(nv))
-        return w.e.fail(place + ".indices", "index " + std::to_string(static_cast<long long>(idx[i])) +
-                                                " at position " + std::to_string(i) + " is out of range (" +
-                                                std::to_string(nv) + " vertices)");
+        return w.e.fail(place + ".indices",
+                        "index " + std::to_string(static_cast<long long>(idx[i])) + " at position " +
+                            std::to_string(i) + " is out of range (" + std::to_string(nv) + " vertices)");
       tri[i] = static_cast<uint32_t>(idx[i]);
     }
   } else {
-    if (nv % 3 != 0) return w.e.fail(place, "non-indexed with " + std::to_string(nv) + " vertices (not a multiple of 3)");
+    if (nv % 3 != 0)
+      return w.e.fail(place, "non-indexed with " + std::to_string(nv) + " vertices (not a multiple of 3)");
     tri.resize(nv);
     for (size_t i = 0; i < nv; ++i) tri[i] = static_cast<uint32_t>(i);
   }
@@ -256,7 +285,8 @@ bool convert_primitive(Walk &w, int mesh, int pi, const glm::dmat4 &world, int i
   // Linear part, its inverse transpose (for normals) and the handedness.
   const glm::dmat3 m3(world);
   const double det = glm::determinant(m3);
-  if (!(std::fabs(det) > 1e-18)) return w.e.fail(place + " (node " + quoted(node_name) + ")", "the node transform is singular");
+  if (!(std::fabs(det) > 1e-18))
+    return w.e.fail(place + " (node " + quoted(node_name) + ")", "the node transform is singular");
   const glm::dmat3 it = glm::inverseTranspose(m3);
   if (det < 0)  // a mirroring transform flips the winding: keep the front faces in front
     for (size_t t = 0; t + 2 < tri.size(); t += 3) std::swap(tri[t + 1], tri[t + 2]);
@@ -292,7 +322,8 @@ bool convert_primitive(Walk &w, int mesh, int pi, const glm::dmat4 &world, int i
       q = unit_or_zero(it * glm::dvec3(nrm[v * 3], nrm[v * 3 + 1], nrm[v * 3 + 2]));
       for (int k = 0; k < 3; ++k) out.normal[i * 3 + k] = static_cast<float>(q[k]);
     }
-    if (!uv.empty()) out.uv[i * 2] = static_cast<float>(uv[v * 2]), out.uv[i * 2 + 1] = static_cast<float>(uv[v * 2 + 1]);
+    if (!uv.empty())
+      out.uv[i * 2] = static_cast<float>(uv[v * 2]), out.uv[i * 2 + 1] = static_cast<float>(uv[v * 2 + 1]);
     if (!tan.empty()) {
       q = unit_or_zero(m3 * glm::dvec3(tan[v * 4], tan[v * 4 + 1], tan[v * 4 + 2]));
       for (int k = 0; k < 3; ++k) out.tangent[i * 4 + k] = static_cast<float>(q[k]);
@@ -396,7 +427,8 @@ bool convert_nodes(const Model &m, Scene *s, Err &e) {
   std::vector<int> roots;
   if (!m.scenes.empty()) {
     int si = m.defaultScene >= 0 ? m.defaultScene : 0;
-    if (static_cast<size_t>(si) >= m.scenes.size()) return e.fail("scene", "scene " + std::to_string(si) + " does not exist");
+    if (static_cast<size_t>(si) >= m.scenes.size())
+      return e.fail("scene", "scene " + std::to_string(si) + " does not exist");
     roots = m.scenes[si].nodes;
   } else {  // no scenes: every node that is nobody's child
     std::vector<int> child(m.nodes.size(), 0);

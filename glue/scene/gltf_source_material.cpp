@@ -1,4 +1,4 @@
-// tiershade glue: glTF materials to SceneMaterial: the pbr base colour and normal map, and
+// tiershade scene: glTF materials to SceneMaterial: the pbr base colour and normal map, and
 // the Source shader and $-keys of `extras.source` (docs/scenes.md lists them), each checked
 // for its type, range and shader, and the combos the variant files forbid.
 #include "scene/gltf_util.h"
@@ -19,8 +19,9 @@ struct Slot {
 
 bool texture_ref(const tinygltf::Model &m, int index, const std::string &place, SceneTextureRef *out, Err &e) {
   if (index < 0 || static_cast<size_t>(index) >= m.textures.size())
-    return e.fail(place, "texture " + std::to_string(index) + " does not exist (" + std::to_string(m.textures.size()) +
-                             " textures)");
+    return e.fail(
+        place,
+        "texture " + std::to_string(index) + " does not exist (" + std::to_string(m.textures.size()) + " textures)");
   const tinygltf::Texture &t = m.textures[index];
   const std::string tp = "textures[" + std::to_string(index) + "]";
   if (t.source < 0 || static_cast<size_t>(t.source) >= m.images.size())
@@ -47,9 +48,12 @@ bool read_source(const tinygltf::Model &m, const tinygltf::Value &src, const std
   if (src.Has("shader")) {
     std::string name;
     if (!read_string(src.Get("shader"), place + ".shader", &name, e)) return false;
-    if (name == "VertexLitGeneric") shader = MODEL;
-    else if (name == "LightmappedGeneric") shader = WORLD;
-    else return e.fail(place + ".shader", quoted(name) + " is not \"VertexLitGeneric\" or \"LightmappedGeneric\"");
+    if (name == "VertexLitGeneric")
+      shader = MODEL;
+    else if (name == "LightmappedGeneric")
+      shader = WORLD;
+    else
+      return e.fail(place + ".shader", quoted(name) + " is not \"VertexLitGeneric\" or \"LightmappedGeneric\"");
   }
   mat->shader = shader == MODEL ? SceneShader::Model : SceneShader::World;
   bool mask_alpha_normal = false, mask_alpha_base = false;
@@ -145,16 +149,18 @@ bool read_source(const tinygltf::Model &m, const tinygltf::Value &src, const std
       return e.fail(place, "\"$ssbump\" needs a normalTexture (the ssbump map)");
     const int masks = (mat->envmap_mask_texture.image >= 0) + mask_alpha_normal + mask_alpha_base;
     if (masks > 1)
-      return e.fail(place, "\"$envmapmask\", \"$normalmapalphaenvmapmask\" and \"$basealphaenvmapmask\" exclude each other");
+      return e.fail(place,
+                    "\"$envmapmask\", \"$normalmapalphaenvmapmask\" and \"$basealphaenvmapmask\" exclude each other");
     if (masks && !mat->envmap) return e.fail(place, "an envmap mask needs \"$envmap\": 1");
     if (mask_alpha_normal && mat->normal_texture.image < 0)
       return e.fail(place, "\"$normalmapalphaenvmapmask\" needs a normalTexture");
     mat->envmap_mask = mat->envmap_mask_texture.image >= 0 ? SceneEnvMask::Texture
-                       : mask_alpha_normal                 ? SceneEnvMask::NormalAlpha
-                       : mask_alpha_base                   ? SceneEnvMask::InvBaseAlpha
+        : mask_alpha_normal                                ? SceneEnvMask::NormalAlpha
+        : mask_alpha_base                                  ? SceneEnvMask::InvBaseAlpha
                                                            : SceneEnvMask::None;
   }
-  if (mat->probe >= 0 && !mat->envmap) return e.fail(place + ".probe", "names the envmap's probe: needs \"$envmap\": 1");
+  if (mat->probe >= 0 && !mat->envmap)
+    return e.fail(place + ".probe", "names the envmap's probe: needs \"$envmap\": 1");
   return true;
 }
 
@@ -167,10 +173,12 @@ bool convert_materials(const tinygltf::Model &m, Scene *s, Err &e) {
     mat.name = g.name;
     mat.where = named("materials[" + std::to_string(i) + "]", g.name);
     const auto &pbr = g.pbrMetallicRoughness;
-    if (pbr.baseColorFactor.size() != 4) return e.fail(mat.where + ".pbrMetallicRoughness.baseColorFactor", "expected 4 numbers");
+    if (pbr.baseColorFactor.size() != 4)
+      return e.fail(mat.where + ".pbrMetallicRoughness.baseColorFactor", "expected 4 numbers");
     for (int k = 0; k < 4; ++k) {
       const double c = pbr.baseColorFactor[k];
-      if (!(c >= 0 && c <= 1)) return e.fail(mat.where + ".pbrMetallicRoughness.baseColorFactor", "values must be in [0, 1]");
+      if (!(c >= 0 && c <= 1))
+        return e.fail(mat.where + ".pbrMetallicRoughness.baseColorFactor", "values must be in [0, 1]");
       mat.base_color[k] = static_cast<float>(c);
     }
     if (pbr.baseColorTexture.index >= 0) {

@@ -1,4 +1,4 @@
-// tiershade glue: helpers of the glTF scene loader: typed reads of extras values with
+// tiershade scene: helpers of the glTF scene loader: typed reads of extras values with
 // their places in messages, key checks, and small path helpers (glue/scene/gltf_util.h).
 #include "scene/gltf_util.h"
 
@@ -62,7 +62,8 @@ bool read_bool(const tinygltf::Value &v, const std::string &place, bool *out, Er
     *out = v.GetNumberAsDouble() == 1;
     return true;
   }
-  return e.fail(place, "expected true/false or 0/1, got " + (v.IsNumber() ? num(v.GetNumberAsDouble()) : value_kind(v)));
+  return e.fail(place,
+                "expected true/false or 0/1, got " + (v.IsNumber() ? num(v.GetNumberAsDouble()) : value_kind(v)));
 }
 
 bool read_string(const tinygltf::Value &v, const std::string &place, std::string *out, Err &e) {
@@ -73,8 +74,9 @@ bool read_string(const tinygltf::Value &v, const std::string &place, std::string
 
 bool read_vec(const tinygltf::Value &v, const std::string &place, int n, double lo, double hi, double *out, Err &e) {
   if (!v.IsArray() || v.ArrayLen() != static_cast<size_t>(n))
-    return e.fail(place, "expected an array of " + std::to_string(n) + " numbers, got " +
-                             (v.IsArray() ? "an array of " + std::to_string(v.ArrayLen()) : value_kind(v)));
+    return e.fail(place,
+                  "expected an array of " + std::to_string(n) + " numbers, got " +
+                      (v.IsArray() ? "an array of " + std::to_string(v.ArrayLen()) : value_kind(v)));
   for (int i = 0; i < n; ++i)
     if (!read_number(v.Get(i), place + "[" + std::to_string(i) + "]", lo, hi, &out[i], e)) return false;
   return true;

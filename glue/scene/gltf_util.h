@@ -1,4 +1,4 @@
-// tiershade glue: internal helpers of the glTF scene loader (glue/scene/gltf_load*.cpp): the error
+// tiershade scene: internal helpers of the glTF scene loader (glue/scene/gltf_load*.cpp): the error
 // sink that prefixes the scene file, and typed reads of tinygltf::Value extras with places.
 // Not a public interface: glue/scene/scene.h is.
 #pragma once
@@ -64,8 +64,8 @@ bool convert_materials(const tinygltf::Model &m, Scene *s, Err &e);
 
 // Part 3 (glue/scene/gltf_extras.cpp): a KHR_lights_punctual light placed by a node's world
 // matrix, and the root extras.tiershade settings (cameras are already in s).
-bool convert_light(const tinygltf::Model &m, int light, const glm::dmat4 &world, const std::string &place,
-                   Scene *s, Err &e);
+bool convert_light(const tinygltf::Model &m, int light, const glm::dmat4 &world, const std::string &place, Scene *s,
+                   Err &e);
 bool convert_tiershade_extras(const tinygltf::Model &m, const std::string &scene_dir, Scene *s, Err &e);
 
 // Part 4 (glue/scene/gltf_nodes.cpp): the node hierarchy of the default scene flattened to

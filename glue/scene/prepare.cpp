@@ -1,4 +1,4 @@
-// tiershade glue: prepares a scene's draws (glue/scene/prepare.h): camera, per-draw shared
+// tiershade scene: prepares a scene's draws (glue/scene/prepare.h): camera, per-draw shared
 // slots and textures, the world bake (glue/bake/world_bake.h) and the probe cube maps, all
 // limited to what the selected variants use. Host geometry in double with GLM.
 #include "scene/prepare.h"
@@ -42,9 +42,7 @@ glm::dmat4 camera_matrix(const SceneCamera &c, double aspect) {
   return proj * view;
 }
 
-float srgb_to_linear(float c) {
-  return static_cast<float>(srgb_decode<double>(c));
-}
+float srgb_to_linear(float c) { return static_cast<float>(srgb_decode<double>(c)); }
 
 TextureDesc black_cube() {
   TextureDesc t;
@@ -103,14 +101,14 @@ struct TexturePool {
 };
 std::string key_of(const char *sampler, const SceneTextureRef &r, bool srgb, const float *factor) {
   std::string k = std::string(sampler) + "|" + std::to_string(r.image) + "|" + (r.linear ? "L" : "N") +
-                  (r.repeat ? "R" : "C") + (srgb ? "s" : "l");
+      (r.repeat ? "R" : "C") + (srgb ? "s" : "l");
   if (factor)
     for (int c = 0; c < 4; ++c) k += "|" + std::to_string(factor[c]);
   return k;
 }
 std::string key_solid(const char *sampler, float r, float g, float b, float a) {
   return std::string(sampler) + "|solid|" + std::to_string(r) + "," + std::to_string(g) + "," + std::to_string(b) +
-         "," + std::to_string(a);
+      "," + std::to_string(a);
 }
 
 // Probe cube maps and irradiance (ambient) cubes, made on first use.
@@ -143,7 +141,7 @@ struct Probes {
         }
       } else {
         *err = s.path + ": probes[" + std::to_string(p) + "] (\"" + pr.name +
-               "\") has no image and the scene has no world geometry to render it from";
+            "\") has no image and the scene has no world geometry to render it from";
         return false;
       }
       for (float &v : c.rgba) v *= pr.scale;
@@ -241,8 +239,9 @@ bool model_draw(const Scene &s, const PreparedScene &ps, const SceneDrawChoice &
   std::vector<int> kept(lights.size() + 1);
   const float cf[3] = {static_cast<float>(center[0]), static_cast<float>(center[1]), static_cast<float>(center[2])};
   const int half = v.value("HALF_LAMBERT");
-  const int nk = lights.empty() ? 0 : ts_fold_lights(lights.data(), static_cast<int>(lights.size()), max_local, cf, half,
-                                                      cube, kept.data());
+  const int nk = lights.empty()
+      ? 0
+      : ts_fold_lights(lights.data(), static_cast<int>(lights.size()), max_local, cf, half, cube, kept.data());
   for (int f = 0; f < 6; ++f) d->shared[ML_SLOT_AMBIENT + f] = v4(cube[f][0], cube[f][1], cube[f][2], 0);
   d->shared[ML_SLOT_PARAMS] = v4(ps.tone_map_scale, static_cast<float>(nk), 0, 0);
   d->shared[ML_SLOT_ALBEDO] = v4(m.base_color[0], m.base_color[1], m.base_color[2], m.base_color[3]);
@@ -262,34 +261,45 @@ bool model_draw(const Scene &s, const PreparedScene &ps, const SceneDrawChoice &
   d->shared[ML_SLOT_PHONG] = v4(m.phong_exponent, m.phong_exponent_factor, boost, m.base_alpha_phong_mask ? 1.f : 0.f);
   const float *fr = m.phong_fresnel_ranges;
   d->shared[ML_SLOT_FRESNEL] = v4((fr[1] - fr[0]) * 2, fr[1], (fr[2] - fr[1]) * 2, m.invert_phong_mask ? 1.f : 0.f);
-  d->shared[ML_SLOT_PHONG_TINT] = v4(m.phong_tint[0], m.phong_tint[1], m.phong_tint[2], m.phong_albedo_tint ? 1.f : 0.f);
+  d->shared[ML_SLOT_PHONG_TINT] =
+      v4(m.phong_tint[0], m.phong_tint[1], m.phong_tint[2], m.phong_albedo_tint ? 1.f : 0.f);
   // Features the material does not use contribute nothing (they are compiled in only in the
   // all-features baseline): rim boost 0, envmap scale 0.
   d->shared[ML_SLOT_RIM] = v4(m.rim_exponent, m.rim_light ? m.rim_boost : 0.f, m.rim_mask, 0);
   d->shared[ML_SLOT_ENVMAP] = v4(m.envmap ? m.envmap_scale : 0.f, m.envmap_fresnel, 0, 0);
   d->shared[ML_SLOT_ENVMAP_TINT] = v4(m.envmap_tint[0], m.envmap_tint[1], m.envmap_tint[2], 0);
-  d->shared[ML_SLOT_SELF_ILLUM] = v4(m.self_illum_tint[0], m.self_illum_tint[1], m.self_illum_tint[2], m.self_illum ? 1.f : 0.f);
+  d->shared[ML_SLOT_SELF_ILLUM] =
+      v4(m.self_illum_tint[0], m.self_illum_tint[1], m.self_illum_tint[2], m.self_illum ? 1.f : 0.f);
   // Textures: only what the variant samples is real; the others are 1x1 placeholders.
   d->tex.clear();
   if (v.value("ALBEDO_TEXTURE")) {
     if (m.base_texture.image >= 0)
-      d->tex.push_back(pool->get(key_of("u_albedo", m.base_texture, true, m.base_color), [&] { return image_texture(s, m.base_texture, "u_albedo", true, m.base_color); }));
+      d->tex.push_back(pool->get(key_of("u_albedo", m.base_texture, true, m.base_color),
+                                 [&] { return image_texture(s, m.base_texture, "u_albedo", true, m.base_color); }));
     else
-      d->tex.push_back(pool->get(key_solid("u_albedo", m.base_color[0], m.base_color[1], m.base_color[2], m.base_color[3]), [&] { return solid("u_albedo", m.base_color[0], m.base_color[1], m.base_color[2], m.base_color[3]); }));
+      d->tex.push_back(pool->get(
+          key_solid("u_albedo", m.base_color[0], m.base_color[1], m.base_color[2], m.base_color[3]),
+          [&] { return solid("u_albedo", m.base_color[0], m.base_color[1], m.base_color[2], m.base_color[3]); }));
   } else {
     d->tex.push_back(pool->get(key_solid("u_albedo", 1, 1, 1, 1), [&] { return solid("u_albedo", 1, 1, 1, 1); }));
   }
   const bool phong = v.value("PHONG") != 0;
   if (phong && m.normal_texture.image >= 0)
-    d->tex.push_back(pool->get(key_of("u_normal_map", m.normal_texture, false, nullptr), [&] { return image_texture(s, m.normal_texture, "u_normal_map", false, nullptr); }));
+    d->tex.push_back(pool->get(key_of("u_normal_map", m.normal_texture, false, nullptr),
+                               [&] { return image_texture(s, m.normal_texture, "u_normal_map", false, nullptr); }));
   else
-    d->tex.push_back(pool->get(key_solid("u_normal_map", 0.5f, 0.5f, 1.f, 1.f), [&] { return solid("u_normal_map", 0.5f, 0.5f, 1.f, 1.f); }));
+    d->tex.push_back(pool->get(key_solid("u_normal_map", 0.5f, 0.5f, 1.f, 1.f),
+                               [&] { return solid("u_normal_map", 0.5f, 0.5f, 1.f, 1.f); }));
   if (v.value("PHONG_EXPONENT_MAP") && m.phong_exponent_texture.image >= 0)
-    d->tex.push_back(pool->get(key_of("u_exponent_map", m.phong_exponent_texture, false, nullptr), [&] { return image_texture(s, m.phong_exponent_texture, "u_exponent_map", false, nullptr); }));
+    d->tex.push_back(pool->get(key_of("u_exponent_map", m.phong_exponent_texture, false, nullptr), [&] {
+      return image_texture(s, m.phong_exponent_texture, "u_exponent_map", false, nullptr);
+    }));
   else
-    d->tex.push_back(pool->get(key_solid("u_exponent_map", 1, 1, 1, 1), [&] { return solid("u_exponent_map", 1, 1, 1, 1); }));
+    d->tex.push_back(
+        pool->get(key_solid("u_exponent_map", 1, 1, 1, 1), [&] { return solid("u_exponent_map", 1, 1, 1, 1); }));
   if (v.value("LIGHT_WARP") && m.light_warp_texture.image >= 0)
-    d->tex.push_back(pool->get(key_of("u_light_warp", m.light_warp_texture, false, nullptr), [&] { return image_texture(s, m.light_warp_texture, "u_light_warp", false, nullptr); }));
+    d->tex.push_back(pool->get(key_of("u_light_warp", m.light_warp_texture, false, nullptr),
+                               [&] { return image_texture(s, m.light_warp_texture, "u_light_warp", false, nullptr); }));
   else
     d->tex.push_back(pool->get("u_light_warp|identity", [&] {
       // An identity ramp (value = u), for a LIGHT_WARP variant whose material has no ramp.
@@ -482,24 +492,33 @@ bool prepare_scene(const Scene &s, const SceneSelection &sel, int w, int h, Api 
     const float lm_scale = v.value("BUMPMAP") ? 1.7320508f : 1.f;
     d.shared[WL_SLOT_TINT_SCALE] = v4(lm_scale, lm_scale, lm_scale, ps.tone_map_scale);
     const float mk = c.mask_constant ? c.mask_value : 1.f;
-    d.shared[WL_SLOT_ENV_TINT] = v4(m.envmap_tint[0] * mk, m.envmap_tint[1] * mk, m.envmap_tint[2] * mk,
-                                    m.envmap ? m.envmap_scale : 0.f);
-    d.shared[WL_SLOT_ENV_PARAMS] = v4(m.envmap_contrast, m.envmap_saturation, 1.f - m.fresnel_reflection, m.fresnel_reflection);
+    d.shared[WL_SLOT_ENV_TINT] =
+        v4(m.envmap_tint[0] * mk, m.envmap_tint[1] * mk, m.envmap_tint[2] * mk, m.envmap ? m.envmap_scale : 0.f);
+    d.shared[WL_SLOT_ENV_PARAMS] =
+        v4(m.envmap_contrast, m.envmap_saturation, 1.f - m.fresnel_reflection, m.fresnel_reflection);
     d.shared[WL_SLOT_FOG_COLOR] = v4(0, 0, 0, 0);  // no fog
     d.shared[WL_SLOT_FOG_PARAMS] = v4(0, 0, 0, 0);
     if (m.base_texture.image >= 0)
-      d.tex.push_back(pool.get(key_of("u_base", m.base_texture, true, m.base_color), [&] { return image_texture(s, m.base_texture, "u_base", true, m.base_color); }));
+      d.tex.push_back(pool.get(key_of("u_base", m.base_texture, true, m.base_color),
+                               [&] { return image_texture(s, m.base_texture, "u_base", true, m.base_color); }));
     else
-      d.tex.push_back(pool.get(key_solid("u_base", m.base_color[0], m.base_color[1], m.base_color[2], m.base_color[3]), [&] { return solid("u_base", m.base_color[0], m.base_color[1], m.base_color[2], m.base_color[3]); }));
+      d.tex.push_back(pool.get(
+          key_solid("u_base", m.base_color[0], m.base_color[1], m.base_color[2], m.base_color[3]),
+          [&] { return solid("u_base", m.base_color[0], m.base_color[1], m.base_color[2], m.base_color[3]); }));
     if (v.value("BUMPMAP") && m.normal_texture.image >= 0)
-      d.tex.push_back(pool.get(key_of("u_normalmap", m.normal_texture, false, nullptr), [&] { return image_texture(s, m.normal_texture, "u_normalmap", false, nullptr); }));
+      d.tex.push_back(pool.get(key_of("u_normalmap", m.normal_texture, false, nullptr),
+                               [&] { return image_texture(s, m.normal_texture, "u_normalmap", false, nullptr); }));
     else
-      d.tex.push_back(pool.get(key_solid("u_normalmap", 0.5f, 0.5f, 1.f, 1.f), [&] { return solid("u_normalmap", 0.5f, 0.5f, 1.f, 1.f); }));
+      d.tex.push_back(pool.get(key_solid("u_normalmap", 0.5f, 0.5f, 1.f, 1.f),
+                               [&] { return solid("u_normalmap", 0.5f, 0.5f, 1.f, 1.f); }));
     d.tex.push_back(pool.get("u_lightmap|" + std::to_string(enc), [&] { return page; }));
     if (v.value("ENVMAPMASK") == 1 && m.envmap_mask_texture.image >= 0)
-      d.tex.push_back(pool.get(key_of("u_envmap_mask", m.envmap_mask_texture, false, nullptr), [&] { return image_texture(s, m.envmap_mask_texture, "u_envmap_mask", false, nullptr); }));
+      d.tex.push_back(pool.get(key_of("u_envmap_mask", m.envmap_mask_texture, false, nullptr), [&] {
+        return image_texture(s, m.envmap_mask_texture, "u_envmap_mask", false, nullptr);
+      }));
     else
-      d.tex.push_back(pool.get(key_solid("u_envmap_mask", 1, 1, 1, 1), [&] { return solid("u_envmap_mask", 1, 1, 1, 1); }));
+      d.tex.push_back(
+          pool.get(key_solid("u_envmap_mask", 1, 1, 1, 1), [&] { return solid("u_envmap_mask", 1, 1, 1, 1); }));
     int pi = -1;
     if (v.value("ENVMAP") && !s.probes.empty()) {
       const glm::dvec3 mid = d3(f.origin) + t * (f.su / 2) + b * (f.sv / 2);

@@ -1,4 +1,4 @@
-// tiershade glue: everything a frame of a scene needs, derived once from the scene and its
+// tiershade scene: everything a frame of a scene needs, derived once from the scene and its
 // variant selection (glue/scene/selection.h): the camera matrices; per draw its vertex arrays,
 // the shared slots (= the production uniforms) and the textures its variant samples; the
 // world's baked lightmap page and probe cube maps. Only what the selection uses is made:
@@ -16,23 +16,23 @@
 struct PreparedDraw {
   const SceneDrawChoice *choice = nullptr;
   const Variant *variant = nullptr;
-  bool world = false;                   // world_lighting, else model_lighting
+  bool world = false;  // world_lighting, else model_lighting
   std::vector<float> position, normal, uv, tangent;  // 3, 3, 2, 4 per vertex (tangent: 0,0,0,1 when absent)
-  std::vector<float> lightmap;          // world: 4 per vertex (lightmap uv, offset to the next lightmap)
+  std::vector<float> lightmap;  // world: 4 per vertex (lightmap uv, offset to the next lightmap)
   std::vector<uint32_t> indices;
-  std::vector<ts_vec4f> shared;         // the family's full record with the shared slots set
-  std::vector<int> tex;                 // indices into PreparedScene::textures, in sampler order:
-                                        // model: u_albedo u_normal_map u_exponent_map u_light_warp u_envmap;
-                                        // world: u_base u_normalmap u_lightmap u_envmap_mask u_envmap
-  bool display_encoded = false;         // output already sRGB-encoded (model OUTPUT_MODE 2)
-  float ambient[6][3] = {};             // model: the draw's ambient cube before lights were folded
-                                        // into it (the reference shades every light locally)
+  std::vector<ts_vec4f> shared;  // the family's full record with the shared slots set
+  std::vector<int> tex;  // indices into PreparedScene::textures, in sampler order:
+      // model: u_albedo u_normal_map u_exponent_map u_light_warp u_envmap;
+      // world: u_base u_normalmap u_lightmap u_envmap_mask u_envmap
+  bool display_encoded = false;  // output already sRGB-encoded (model OUTPUT_MODE 2)
+  float ambient[6][3] = {};  // model: the draw's ambient cube before lights were folded
+      // into it (the reference shades every light locally)
 };
 
 struct PreparedScene {
   int w = 0, h = 0;
   float view_proj[16];  // column-major, float as uploaded
-  float model[16];      // identity: primitives are in world space
+  float model[16];  // identity: primitives are in world space
   float eye[3];
   std::vector<PreparedDraw> draws;
   std::vector<TextureDesc> textures;  // every texture once, shared by the draws that sample it

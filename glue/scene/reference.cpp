@@ -11,8 +11,7 @@
 #include "twins/model_lighting.h"
 
 bool scene_reference_linear(const Scene &s, const PreparedScene &p, const std::vector<int> &draw,
-                            const std::vector<float> &slots, std::vector<double> *rgb, std::string *err,
-                            int threads) {
+                            const std::vector<float> &slots, std::vector<double> *rgb, std::string *err, int threads) {
   const size_t n = static_cast<size_t>(p.w) * p.h;
   if (draw.size() != n || slots.size() != n * 24) {
     *err = s.path + ": reference: the G-buffer is not " + std::to_string(p.w) + "x" + std::to_string(p.h);
@@ -21,7 +20,7 @@ bool scene_reference_linear(const Scene &s, const PreparedScene &p, const std::v
   for (size_t q = 0; q < n; ++q)
     if (draw[q] >= 0 && p.draws.at(static_cast<size_t>(draw[q])).world) {
       *err = s.path + ": reference: " + s.primitives[p.draws[draw[q]].choice->primitive].where +
-             " is a world (lightmapped) draw; the reference covers model draws only";
+          " is a world (lightmapped) draw; the reference covers model draws only";
       return false;
     }
   // The scene's lights packed once, in groups of ML_MAX_LIGHTS.
@@ -71,8 +70,8 @@ bool scene_reference_linear(const Scene &s, const PreparedScene &p, const std::v
       for (int first = 0; first < std::max(nl, 1); first += static_cast<int>(ML_MAX_LIGHTS)) {
         const int count = std::min(static_cast<int>(ML_MAX_LIGHTS), nl - first);
         for (int f = 0; f < 6; ++f)
-          rec[ML_SLOT_AMBIENT + f] = first == 0 ? ts_v4f(d.ambient[f][0], d.ambient[f][1], d.ambient[f][2], 0)
-                                                : ts_v4f(0, 0, 0, 0);
+          rec[ML_SLOT_AMBIENT + f] =
+              first == 0 ? ts_v4f(d.ambient[f][0], d.ambient[f][1], d.ambient[f][2], 0) : ts_v4f(0, 0, 0, 0);
         rec[ML_SLOT_PARAMS] = ts_v4f(p.tone_map_scale, static_cast<float>(std::max(count, 0)), 0, 0);
         for (int i = 0; i < count; ++i)
           for (int k = 0; k < 5; ++k) rec[ML_SLOT_LIGHT0 + 5 * i + k] = packed[first + i][k];

@@ -1,4 +1,4 @@
-// tiershade glue: a scene as tiershade renders it, loaded from glTF 2.0 (glue/scene/gltf_load.cpp;
+// tiershade scene: a scene as tiershade renders it, loaded from glTF 2.0 (glue/scene/gltf_load.cpp;
 // the format, the Source material keys and the tiershade extras are in docs/scenes.md).
 // Everything is in world space after node transforms; the renderer (glue/scene/prepare.cpp, frame.cpp)
 // derives the variants and CPU work from what this structure uses, nothing more.
@@ -26,7 +26,7 @@ struct SceneTextureRef {
 // Which Source shader a material stands for ("shader" in the material's extras).
 enum class SceneShader {
   Model,  // VertexLitGeneric: model lighting (ambient cube, local lights, Phong ...)
-  World   // LightmappedGeneric: lightmaps (RNM / ssbump / flat), world specular
+  World  // LightmappedGeneric: lightmaps (RNM / ssbump / flat), world specular
 };
 
 // World envmap mask sources (world_lighting ENVMAPMASK values).
@@ -37,51 +37,51 @@ struct SceneMaterial {
   std::string where;  // "materials[i]" (with name) for messages
   SceneShader shader = SceneShader::Model;
   float base_color[4] = {1, 1, 1, 1};  // pbrMetallicRoughness.baseColorFactor (linear)
-  SceneTextureRef base_texture;        // baseColorTexture (sRGB-encoded colour, alpha linear)
-  SceneTextureRef normal_texture;      // normalTexture (tangent space; world: $bumpmap, ssbump if `ssbump`)
+  SceneTextureRef base_texture;  // baseColorTexture (sRGB-encoded colour, alpha linear)
+  SceneTextureRef normal_texture;  // normalTexture (tangent space; world: $bumpmap, ssbump if `ssbump`)
   // --- Model ($-keys of VertexLitGeneric, docs/scenes.md) ---
-  bool half_lambert = true;            // $halflambert (Phong materials force it, as Source's skin shader)
-  bool phong = false;                  // $phong
-  float phong_exponent = 20.f;         // $phongexponent (used without an exponent texture)
+  bool half_lambert = true;  // $halflambert (Phong materials force it, as Source's skin shader)
+  bool phong = false;  // $phong
+  float phong_exponent = 20.f;  // $phongexponent (used without an exponent texture)
   SceneTextureRef phong_exponent_texture;  // $phongexponenttexture (r exponent, g albedo-tint mask, a rim mask)
-  float phong_exponent_factor = 149.f;     // $phongexponentfactor: k = 1 + factor * r
-  float phong_boost = 1.f;             // $phongboost
+  float phong_exponent_factor = 149.f;  // $phongexponentfactor: k = 1 + factor * r
+  float phong_boost = 1.f;  // $phongboost
   float phong_fresnel_ranges[3] = {0.15f, 0.5f, 1.f};  // $phongfresnelranges
-  float phong_tint[3] = {1, 1, 1};     // $phongtint
-  bool phong_albedo_tint = false;      // $phongalbedotint
+  float phong_tint[3] = {1, 1, 1};  // $phongtint
+  bool phong_albedo_tint = false;  // $phongalbedotint
   bool base_alpha_phong_mask = false;  // $basemapalphaphongmask (else the normal map's alpha)
-  bool invert_phong_mask = false;      // $invertphongmask
-  bool rim_light = false;              // $rimlight
-  float rim_exponent = 4.f;            // $rimlightexponent
-  float rim_boost = 1.f;               // $rimlightboost
-  float rim_mask = 0.f;                // $rimmask (0..1: how much the exponent map's alpha masks rim)
+  bool invert_phong_mask = false;  // $invertphongmask
+  bool rim_light = false;  // $rimlight
+  float rim_exponent = 4.f;  // $rimlightexponent
+  float rim_boost = 1.f;  // $rimlightboost
+  float rim_mask = 0.f;  // $rimmask (0..1: how much the exponent map's alpha masks rim)
   SceneTextureRef light_warp_texture;  // $lightwarptexture (1D ramp, read along u)
-  bool envmap = false;                 // $envmap (the nearest probe's cube map, or `probe`)
-  float envmap_scale = 1.f;            // model: envmap scale; world: ENV_MAP_SCALE
-  float envmap_tint[3] = {1, 1, 1};    // $envmaptint
-  float envmap_fresnel = 0.f;          // $envmapfresnel (model)
+  bool envmap = false;  // $envmap (the nearest probe's cube map, or `probe`)
+  float envmap_scale = 1.f;  // model: envmap scale; world: ENV_MAP_SCALE
+  float envmap_tint[3] = {1, 1, 1};  // $envmaptint
+  float envmap_fresnel = 0.f;  // $envmapfresnel (model)
   float self_illum_tint[3] = {1, 1, 1};  // $selfillumtint
-  bool self_illum = false;             // $selfillum (mask = base alpha)
+  bool self_illum = false;  // $selfillum (mask = base alpha)
   // --- World ($-keys of LightmappedGeneric) ---
-  bool ssbump = false;                 // $ssbump: normal_texture holds self-shadowed bump weights
+  bool ssbump = false;  // $ssbump: normal_texture holds self-shadowed bump weights
   SceneEnvMask envmap_mask = SceneEnvMask::None;  // $envmapmask / $normalmapalphaenvmapmask / $basealphaenvmapmask
-  SceneTextureRef envmap_mask_texture; // $envmapmask
-  float envmap_contrast = 0.f;         // $envmapcontrast
-  float envmap_saturation = 1.f;       // $envmapsaturation
-  float fresnel_reflection = 1.f;      // $fresnelreflection (R0 = this; 1 = no Fresnel)
-  int probe = -1;                      // "probe": explicit probe index, -1 = the nearest
+  SceneTextureRef envmap_mask_texture;  // $envmapmask
+  float envmap_contrast = 0.f;  // $envmapcontrast
+  float envmap_saturation = 1.f;  // $envmapsaturation
+  float fresnel_reflection = 1.f;  // $fresnelreflection (R0 = this; 1 = no Fresnel)
+  int probe = -1;  // "probe": explicit probe index, -1 = the nearest
 };
 
 // One glTF primitive in world space (node transform applied), triangles only.
 struct ScenePrimitive {
-  int material = -1;            // index into Scene::materials (glTF default material -> a plain Model material)
-  int instance = -1;            // the node instance it came from (index into Scene::instances)
+  int material = -1;  // index into Scene::materials (glTF default material -> a plain Model material)
+  int instance = -1;  // the node instance it came from (index into Scene::instances)
   std::vector<float> position;  // 3 per vertex (world)
-  std::vector<float> normal;    // 3 per vertex (world; the mesh's, or flat face normals if absent)
-  std::vector<float> uv;        // 2 per vertex (TEXCOORD_0; zeros if absent)
-  std::vector<float> tangent;   // 4 per vertex (world xyz, w handedness) or empty if absent
+  std::vector<float> normal;  // 3 per vertex (world; the mesh's, or flat face normals if absent)
+  std::vector<float> uv;  // 2 per vertex (TEXCOORD_0; zeros if absent)
+  std::vector<float> tangent;  // 4 per vertex (world xyz, w handedness) or empty if absent
   std::vector<uint32_t> indices;  // 3 per triangle
-  std::string where;            // "meshes[i].primitives[j]" (node name) for messages
+  std::string where;  // "meshes[i].primitives[j]" (node name) for messages
 };
 
 // A node instance: the primitives of one mesh under one node.
@@ -93,15 +93,15 @@ struct SceneInstance {
 
 struct SceneLight {
   std::string name;  // KHR_lights_punctual light name or "lights[i]"
-  ts_light light;    // world space; colour = glTF colour x intensity
+  ts_light light;  // world space; colour = glTF colour x intensity
 };
 
 struct SceneCamera {
   std::string name;
   double eye[3], forward[3], up[3];  // world space, unit forward/up
-  double yfov = 0.8;                 // radians
+  double yfov = 0.8;  // radians
   double znear = 0.05, zfar = 1000;  // zfar 0 = infinite (glTF)
-  double aspect = 0;                 // 0: the output's
+  double aspect = 0;  // 0: the output's
   // glTF orthographic camera: half extents xmag x ymag (the view keeps square pixels and holds
   // both, glue/scene/camera_ortho.h); yfov and aspect are then unused.
   bool orthographic = false;
@@ -113,9 +113,9 @@ struct SceneCamera {
 struct SceneProbe {
   std::string name;
   double position[3];
-  int image = -1;     // index into images (.hdr/.exr equirect), -1 = from the world
+  int image = -1;  // index into images (.hdr/.exr equirect), -1 = from the world
   float scale = 1.f;  // radiance multiplier
-  int size = 64;      // cube face edge
+  int size = 64;  // cube face edge
 };
 
 // An ambient-cube sample of the irradiance volume ("ambient" in the scene's extras):
@@ -134,11 +134,11 @@ struct SceneLut {
 // HDR settings ("hdr" in the scene's extras).
 struct SceneHdr {
   std::string path = "integer";  // "integer" | "float" (default of --hdr)
-  float tone_map_scale = 1.f;    // fixed scale (auto exposure off)
+  float tone_map_scale = 1.f;  // fixed scale (auto exposure off)
   bool auto_exposure = false;
   float exposure_min = 0.5f, exposure_max = 2.f;  // scale clamp
-  float bloom_amount = 0.f;      // float path only
-  std::vector<SceneLut> luts;    // colour correction after tone mapping (0..4)
+  float bloom_amount = 0.f;  // float path only
+  std::vector<SceneLut> luts;  // colour correction after tone mapping (0..4)
 };
 
 // Lightmap settings ("lightmaps" in the scene's extras), used by World materials.

@@ -1,4 +1,4 @@
-// tiershade glue: derives the variants a scene needs (glue/scene/selection.h): per primitive the
+// tiershade scene: derives the variants a scene needs (glue/scene/selection.h): per primitive the
 // combo values its material, the scene's lights and probes and the tier call for, each with
 // the reason, then the unique variants. Combo meanings: shaders/model_lighting.variants and
 // shaders/world_lighting.variants; Source key meanings: docs/scenes.md.
@@ -64,9 +64,11 @@ void model_choice(const Scene &s, const ScenePrimitive &p, const SceneMaterial &
   const bool has_probe = !s.probes.empty();
   const bool textured = m.base_texture.image >= 0;
   if (phong)
-    w->set("ALBEDO_TEXTURE", 1, textured ? "base colour texture" : "Phong needs a texture: a 1x1 one of the base colour");
+    w->set("ALBEDO_TEXTURE", 1,
+           textured ? "base colour texture" : "Phong needs a texture: a 1x1 one of the base colour");
   else
-    w->set("ALBEDO_TEXTURE", textured ? 1 : 0, textured ? "base colour texture" : "no base colour texture: constant colour");
+    w->set("ALBEDO_TEXTURE", textured ? 1 : 0,
+           textured ? "base colour texture" : "no base colour texture: constant colour");
   if (phong)
     w->set("HALF_LAMBERT", 1, "Phong forces half-Lambert (as Source's skin shader)");
   else
@@ -84,15 +86,18 @@ void model_choice(const Scene &s, const ScenePrimitive &p, const SceneMaterial &
   w->set("OUTPUT_MODE", out_mode, out_why);
   if (sm2b) {
     w->set("PHONG", phong ? 1 : 0,
-           m.phong ? "$phong"
-                   : (phong_for_self_illum ? "$selfillum lives in the Phong path: Phong with $phongboost 0" : "no $phong"));
+           m.phong
+               ? "$phong"
+               : (phong_for_self_illum ? "$selfillum lives in the Phong path: Phong with $phongboost 0" : "no $phong"));
     if (phong) {
-      w->set("PHONG_EXPONENT_MAP", m.phong_exponent_texture.image >= 0 ? 1 : 0,
-             m.phong_exponent_texture.image >= 0 ? "$phongexponenttexture" : "constant $phongexponent: no exponent fetch");
+      w->set(
+          "PHONG_EXPONENT_MAP", m.phong_exponent_texture.image >= 0 ? 1 : 0,
+          m.phong_exponent_texture.image >= 0 ? "$phongexponenttexture" : "constant $phongexponent: no exponent fetch");
       w->set("RIM_LIGHT", m.rim_light ? 1 : 0, m.rim_light ? "$rimlight" : "no $rimlight");
       const bool env = m.envmap && has_probe;
-      w->set("ENVMAP", env ? 1 : 0,
-             env ? "$envmap with a probe" : (m.envmap ? "$envmap but the scene has no probe: no cube map" : "no $envmap"));
+      w->set(
+          "ENVMAP", env ? 1 : 0,
+          env ? "$envmap with a probe" : (m.envmap ? "$envmap but the scene has no probe: no cube map" : "no $envmap"));
       w->set("LIGHT_WARP", m.light_warp_texture.image >= 0 ? 1 : 0,
              m.light_warp_texture.image >= 0 ? "$lightwarptexture" : "no $lightwarptexture");
       if (env) c->probe = 0;  // resolved to the nearest probe by the renderer (scene_render.cpp)
@@ -110,8 +115,8 @@ void model_choice(const Scene &s, const ScenePrimitive &p, const SceneMaterial &
   if (tier == Tier::SM3)
     c->why.push_back("light count " + std::to_string(local) + " as a uniform (sm3 loops)" + fold);
   else
-    w->set("NUM_LIGHTS", local, std::to_string(n) + " scene lights, tier limit " +
-                                   std::to_string(max_local_lights(tier)) + fold);
+    w->set("NUM_LIGHTS", local,
+           std::to_string(n) + " scene lights, tier limit " + std::to_string(max_local_lights(tier)) + fold);
   (void)p;
 }
 
@@ -132,7 +137,8 @@ void world_choice(const Scene &s, const SceneMaterial &m, Wanted *w, SceneDrawCh
   std::string why = "no envmap mask";
   if (env) {
     switch (m.envmap_mask) {
-      case SceneEnvMask::None: break;
+      case SceneEnvMask::None:
+        break;
       case SceneEnvMask::Texture: {
         float v = 1.f;
         const int im = m.envmap_mask_texture.image;
@@ -230,7 +236,7 @@ bool select_scene_variants(const Scene &s, Tier tier, const std::string &hdr_pat
       std::string vals;
       for (const auto &kv : w.values) vals += (vals.empty() ? "" : ",") + kv.first + "=" + std::to_string(kv.second);
       *err = p.where + " (material " + m.where + "): no " + d->name + " variant " + tier_name(tier) + ":" + vals +
-             " (excluded by the skip rules of " + d->file + ")";
+          " (excluded by the skip rules of " + d->file + ")";
       return false;
     }
     c.variant = v;

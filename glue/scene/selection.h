@@ -1,4 +1,4 @@
-// tiershade glue: "simulate only what the scene calls for". From a loaded scene and a tier,
+// tiershade scene: "simulate only what the scene calls for". From a loaded scene and a tier,
 // derives per draw (one glTF primitive) the shader family and the combo values it needs, with
 // the reason for each choice, and the deduplicated set of variants to build. A term the scene
 // does not use is never compiled and never evaluated by the C fallback: no normal map -> no
@@ -13,14 +13,14 @@
 
 // One draw: a primitive, its variant and why.
 struct SceneDrawChoice {
-  int primitive = -1;            // index into Scene::primitives
-  std::string family;            // "model_lighting" | "world_lighting"
+  int primitive = -1;  // index into Scene::primitives
+  std::string family;  // "model_lighting" | "world_lighting"
   const Variant *variant = nullptr;  // points into SceneSelection::variants
   std::vector<std::string> why;  // "ENVMAP=0: material has no $envmap", ...
   int lights_local = 0, lights_folded = 0;  // model draws: lights shaded per pixel / folded
-  int probe = -1;                // the probe whose cube map the draw samples (-1: none)
-  bool mask_constant = false;    // world: $envmapmask texture is constant -> folded into the tint
-  float mask_value = 1.f;        //   (its value)
+  int probe = -1;  // the probe whose cube map the draw samples (-1: none)
+  bool mask_constant = false;  // world: $envmapmask texture is constant -> folded into the tint
+  float mask_value = 1.f;  //   (its value)
 };
 
 struct SceneSelection {
@@ -28,7 +28,7 @@ struct SceneSelection {
   std::vector<Variant> variants;  // the unique variants the scene needs (stable order)
   std::vector<std::vector<std::string>> variant_why;  // per variant: the draws using it and their reasons
   std::vector<SceneDrawChoice> draws;  // one per primitive, in Scene::primitives order
-  int all_combos = 0;             // every variant of the families used, for this tier (the saving's baseline)
+  int all_combos = 0;  // every variant of the families used, for this tier (the saving's baseline)
   std::vector<const Variant *> all_variants;  // that baseline set (points into decls-derived storage)
   std::vector<Variant> all_storage;
   // The HDR path the scene runs ("integer" | "float") and its output encoding.

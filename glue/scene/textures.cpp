@@ -1,4 +1,4 @@
-// tiershade glue: procedural demo textures and probe-derived cube maps (see scene_textures.h).
+// tiershade scene: procedural demo textures and probe-derived cube maps (see scene_textures.h).
 #include "scene/textures.h"
 
 #include <algorithm>
@@ -38,7 +38,7 @@ TextureDesc make_bump_normal_map(const char *sampler, int n) {
       const double r = std::sqrt(fu * fu + fv * fv);
       double gx = 0, gy = 0;
       if (r < 0.4 && r > 1e-9) {
-        const double dh = -0.9 * std::sin(r / 0.4 * glm::pi<double>()) ;  // slope of the dimple
+        const double dh = -0.9 * std::sin(r / 0.4 * glm::pi<double>());  // slope of the dimple
         gx = dh * fu / r;
         gy = dh * fv / r;
       }
@@ -59,10 +59,11 @@ TextureDesc make_exponent_map(const char *sampler, int n) {
   for (int y = 0; y < n; ++y) {
     for (int x = 0; x < n; ++x) {
       float *p = &t.rgba[(static_cast<size_t>(y) * n + x) * 4];
-      p[0] = static_cast<float>(0.05 + 0.6 * (0.5 + 0.5 * std::cos(2 * glm::pi<double>() * y / n * 2)));  // exponent 8..97
-      p[1] = static_cast<float>(x) / n;                                                     // albedo-tint mask
+      p[0] =
+          static_cast<float>(0.05 + 0.6 * (0.5 + 0.5 * std::cos(2 * glm::pi<double>() * y / n * 2)));  // exponent 8..97
+      p[1] = static_cast<float>(x) / n;  // albedo-tint mask
       p[2] = 0.f;
-      p[3] = 1.f;                                                                            // rim mask
+      p[3] = 1.f;  // rim mask
     }
   }
   return t;

@@ -1,4 +1,4 @@
-// tiershade glue: GLSL source assembler (see assembler.h).
+// tiershade shaderlib: GLSL source assembler (see assembler.h).
 // The language differences between targets live in shaders/ts_portability.glsl; this file
 // writes only #version and the defines that select the target, stage and precision.
 #include "shaderlib/assembler.h"
@@ -13,17 +13,24 @@
 
 const char *target_name(Target t) {
   switch (t) {
-    case Target::ESSL100: return "essl100";
-    case Target::ESSL300: return "essl300";
-    case Target::GLSL330: return "glsl330";
+    case Target::ESSL100:
+      return "essl100";
+    case Target::ESSL300:
+      return "essl300";
+    case Target::GLSL330:
+      return "glsl330";
   }
   return "?";
 }
 bool parse_target(const std::string &s, Target *out) {
-  if (s == "essl100") *out = Target::ESSL100;
-  else if (s == "essl300") *out = Target::ESSL300;
-  else if (s == "glsl330") *out = Target::GLSL330;
-  else return false;
+  if (s == "essl100")
+    *out = Target::ESSL100;
+  else if (s == "essl300")
+    *out = Target::ESSL300;
+  else if (s == "glsl330")
+    *out = Target::GLSL330;
+  else
+    return false;
   return true;
 }
 
@@ -58,9 +65,15 @@ namespace {
 std::string selection_defines(Target t, Stage s, const std::string &prec) {
   std::string o;
   switch (t) {
-    case Target::ESSL100: o += "#define TS_ESSL100 1\n"; break;
-    case Target::ESSL300: o += "#define TS_ESSL300 1\n"; break;
-    case Target::GLSL330: o += "#define TS_GLSL330 1\n"; break;
+    case Target::ESSL100:
+      o += "#define TS_ESSL100 1\n";
+      break;
+    case Target::ESSL300:
+      o += "#define TS_ESSL300 1\n";
+      break;
+    case Target::GLSL330:
+      o += "#define TS_GLSL330 1\n";
+      break;
   }
   o += s == Stage::Vertex ? "#define TS_VERTEX 1\n" : "#define TS_FRAGMENT 1\n";
   o += "#define TS_FLOAT_PRECISION " + prec + "\n";
@@ -94,8 +107,8 @@ bool is_extension_directive(const std::string &line) {
 // version) wants them before any non-preprocessor token, so assemble() puts them right after
 // #version, ahead of the portability header's precision statements; a blank line keeps their
 // place.
-bool expand(const std::string &name, int depth, std::vector<std::string> &stack, Assembled *out,
-            std::ostringstream &o, std::string *err, const std::string &from, std::string *extensions) {
+bool expand(const std::string &name, int depth, std::vector<std::string> &stack, Assembled *out, std::ostringstream &o,
+            std::string *err, const std::string &from, std::string *extensions) {
   if (depth > 16) {
     *err = from + ": includes nested deeper than 16 levels";
     return false;
@@ -127,8 +140,7 @@ bool expand(const std::string &name, int depth, std::vector<std::string> &stack,
     ++lineno;
     std::string child;
     if (parse_include(line, &child)) {
-      if (!expand(child, depth + 1, stack, out, o, err, "shaders/" + name + ":" + std::to_string(lineno),
-                  extensions))
+      if (!expand(child, depth + 1, stack, out, o, err, "shaders/" + name + ":" + std::to_string(lineno), extensions))
         return false;
       o << "#line " << (lineno + 1) << " " << id << "\n";
     } else if (depth == 0 && is_extension_directive(line)) {
@@ -146,16 +158,16 @@ bool expand(const std::string &name, int depth, std::vector<std::string> &stack,
 
 const char *const kPortabilityHeader = "ts_portability.glsl";
 
-bool assemble(const std::string &entry, Target target, Stage stage, const std::vector<Define> &defines,
-              Assembled *out, std::string *err, const std::string &float_precision) {
+bool assemble(const std::string &entry, Target target, Stage stage, const std::vector<Define> &defines, Assembled *out,
+              std::string *err, const std::string &float_precision) {
   *out = Assembled();
   if (float_precision != "highp" && float_precision != "mediump" && float_precision != "lowp") {
     *err = "unknown float precision '" + float_precision + "'";
     return false;
   }
-  const char *version = target == Target::ESSL100   ? "#version 100\n"
-                        : target == Target::ESSL300 ? "#version 300 es\n"
-                                                    : "#version 330 core\n";
+  const char *version = target == Target::ESSL100 ? "#version 100\n"
+      : target == Target::ESSL300                 ? "#version 300 es\n"
+                                                  : "#version 330 core\n";
   std::ostringstream o;
   o << selection_defines(target, stage, float_precision);
   for (const auto &d : defines) o << "#define " << d.name << " " << d.value << "\n";

@@ -1,4 +1,4 @@
-// tiershade glue: the GLSL source assembler.
+// tiershade shaderlib: the GLSL source assembler.
 // Resolves #include "file" from the shader library and writes, in order: the target's
 // #version, the entry file's #extension lines, the defines that select target, stage and
 // float precision (TS_ESSL100|TS_ESSL300|TS_GLSL330, TS_VERTEX|TS_FRAGMENT,
@@ -17,7 +17,10 @@ enum class Stage { Vertex, Fragment };
 const char *target_name(Target t);
 bool parse_target(const std::string &s, Target *out);
 
-struct Define { std::string name; std::string value; };
+struct Define {
+  std::string name;
+  std::string value;
+};
 
 // The shim header every assembled shader starts with ("ts_portability.glsl").
 extern const char *const kPortabilityHeader;
@@ -33,8 +36,8 @@ std::vector<std::string> shader_library_files();
 
 // float_precision: "highp" (always, where results are compared with C) or "mediump"
 // (accuracy studies: llvmpipe computes mediump in fp16 on GLES).
-bool assemble(const std::string &entry, Target target, Stage stage, const std::vector<Define> &defines,
-              Assembled *out, std::string *err, const std::string &float_precision = "highp");
+bool assemble(const std::string &entry, Target target, Stage stage, const std::vector<Define> &defines, Assembled *out,
+              std::string *err, const std::string &float_precision = "highp");
 
 // Rewrites a Mesa/glslang info log so that "N:L(C)" prefixes name the original file and line.
 std::string map_compile_log(const std::string &log, const Assembled &a);

@@ -1,4 +1,4 @@
-// tiershade glue: variant declarations, skip rules and enumeration (see variants.h).
+// tiershade shaderlib: variant declarations, skip rules and enumeration (see variants.h).
 #include "shaderlib/variants.h"
 
 #include <algorithm>
@@ -9,17 +9,24 @@
 
 const char *tier_name(Tier t) {
   switch (t) {
-    case Tier::PS20: return "ps20";
-    case Tier::PS2B: return "ps2b";
-    case Tier::SM3: return "sm3";
+    case Tier::PS20:
+      return "ps20";
+    case Tier::PS2B:
+      return "ps2b";
+    case Tier::SM3:
+      return "sm3";
   }
   return "?";
 }
 bool parse_tier(const std::string &s, Tier *out) {
-  if (s == "ps20") *out = Tier::PS20;
-  else if (s == "ps2b") *out = Tier::PS2B;
-  else if (s == "sm3") *out = Tier::SM3;
-  else return false;
+  if (s == "ps20")
+    *out = Tier::PS20;
+  else if (s == "ps2b")
+    *out = Tier::PS2B;
+  else if (s == "sm3")
+    *out = Tier::SM3;
+  else
+    return false;
   return true;
 }
 std::vector<Tier> all_tiers() { return {Tier::PS20, Tier::PS2B, Tier::SM3}; }
@@ -130,13 +137,26 @@ struct Parser {
     if (!add(v)) return false;
     for (;;) {
       int r;
-      if (eat("==")) { if (!add(&r)) return false; *v = *v == r; }
-      else if (eat("!=")) { if (!add(&r)) return false; *v = *v != r; }
-      else if (eat("<=")) { if (!add(&r)) return false; *v = *v <= r; }
-      else if (eat(">=")) { if (!add(&r)) return false; *v = *v >= r; }
-      else if (eat("<")) { if (!add(&r)) return false; *v = *v < r; }
-      else if (eat(">")) { if (!add(&r)) return false; *v = *v > r; }
-      else return true;
+      if (eat("==")) {
+        if (!add(&r)) return false;
+        *v = *v == r;
+      } else if (eat("!=")) {
+        if (!add(&r)) return false;
+        *v = *v != r;
+      } else if (eat("<=")) {
+        if (!add(&r)) return false;
+        *v = *v <= r;
+      } else if (eat(">=")) {
+        if (!add(&r)) return false;
+        *v = *v >= r;
+      } else if (eat("<")) {
+        if (!add(&r)) return false;
+        *v = *v < r;
+      } else if (eat(">")) {
+        if (!add(&r)) return false;
+        *v = *v > r;
+      } else
+        return true;
     }
   }
   bool andd(int *v) {
@@ -163,9 +183,7 @@ struct Parser {
   }
 };
 
-bool tier_in(Tier t, const std::vector<Tier> &v) {
-  return v.empty() || std::find(v.begin(), v.end(), t) != v.end();
-}
+bool tier_in(Tier t, const std::vector<Tier> &v) { return v.empty() || std::find(v.begin(), v.end(), t) != v.end(); }
 }  // namespace
 
 bool eval_expr(const std::string &expr, const std::map<std::string, int> &vars, int *out, std::string *err) {
@@ -352,8 +370,16 @@ bool find_variant(const std::vector<ShaderDecl> &decls, const std::string &shade
       bool ok = true;
       while (std::getline(in, kv, ',')) {
         const size_t eq = kv.find('=');
-        if (eq == std::string::npos) { ok = false; break; }
-        try { given[kv.substr(0, eq)] = std::stoi(kv.substr(eq + 1)); } catch (...) { ok = false; break; }
+        if (eq == std::string::npos) {
+          ok = false;
+          break;
+        }
+        try {
+          given[kv.substr(0, eq)] = std::stoi(kv.substr(eq + 1));
+        } catch (...) {
+          ok = false;
+          break;
+        }
       }
       for (size_t i = 0; ok && i < vars.size(); ++i) {
         if (vars[i].tier != tier) continue;
@@ -375,7 +401,7 @@ bool find_variant(const std::vector<ShaderDecl> &decls, const std::string &shade
       }
     }
     *err = "shader '" + shader + "' has no variant '" + variant + "' (see: tiershade variants --list --shader " +
-           shader + ")";
+        shader + ")";
     return false;
   }
   *err = "no shader named '" + shader + "'";

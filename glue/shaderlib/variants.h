@@ -1,4 +1,4 @@
-// tiershade glue: shader variants = tier x static combos x dynamic combos, minus skip rules.
+// tiershade shaderlib: shader variants = tier x static combos x dynamic combos, minus skip rules.
 // Each shader declares its combos in shaders/<shader>.variants (format: docs/tiers.md).
 #pragma once
 #include <map>

@@ -1,4 +1,4 @@
-// tests/bundle/bare_gl_render.cpp: a bare GL "engine" that knows nothing of tiershade. It loads
+// tiershade tests: a bare GL "engine" that knows nothing of tiershade. It loads
 // a shader bundle (manifest.json + .vert/.frag, docs/bundles.md) and a draw dump (draws.json +
 // binary arrays), replays the draws on an EGL surfaceless context of its own, and compares its
 // RGBA32F frame with the dump's frame.f32 bit for bit.
@@ -30,36 +30,47 @@ struct Error : std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 
-#define BARE_GL(X)                                                                                       \
-  X(PFNGLGETSTRINGPROC, GetString) X(PFNGLGETERRORPROC, GetError) X(PFNGLCREATESHADERPROC, CreateShader)  \
-  X(PFNGLSHADERSOURCEPROC, ShaderSource) X(PFNGLCOMPILESHADERPROC, CompileShader)                          \
-  X(PFNGLGETSHADERIVPROC, GetShaderiv) X(PFNGLGETSHADERINFOLOGPROC, GetShaderInfoLog)                      \
-  X(PFNGLCREATEPROGRAMPROC, CreateProgram) X(PFNGLATTACHSHADERPROC, AttachShader)                          \
-  X(PFNGLBINDATTRIBLOCATIONPROC, BindAttribLocation) X(PFNGLLINKPROGRAMPROC, LinkProgram)                  \
-  X(PFNGLGETPROGRAMIVPROC, GetProgramiv) X(PFNGLGETPROGRAMINFOLOGPROC, GetProgramInfoLog)                  \
-  X(PFNGLUSEPROGRAMPROC, UseProgram) X(PFNGLGETUNIFORMLOCATIONPROC, GetUniformLocation)                    \
-  X(PFNGLUNIFORM1FVPROC, Uniform1fv) X(PFNGLUNIFORM2FVPROC, Uniform2fv) X(PFNGLUNIFORM3FVPROC, Uniform3fv) \
-  X(PFNGLUNIFORM4FVPROC, Uniform4fv) X(PFNGLUNIFORM1IVPROC, Uniform1iv) X(PFNGLUNIFORM2IVPROC, Uniform2iv) \
-  X(PFNGLUNIFORM3IVPROC, Uniform3iv) X(PFNGLUNIFORM4IVPROC, Uniform4iv) X(PFNGLUNIFORM1IPROC, Uniform1i)   \
-  X(PFNGLUNIFORMMATRIX2FVPROC, UniformMatrix2fv) X(PFNGLUNIFORMMATRIX3FVPROC, UniformMatrix3fv)            \
-  X(PFNGLUNIFORMMATRIX4FVPROC, UniformMatrix4fv) X(PFNGLGENTEXTURESPROC, GenTextures)                      \
-  X(PFNGLBINDTEXTUREPROC, BindTexture) X(PFNGLACTIVETEXTUREPROC, ActiveTexture)                            \
-  X(PFNGLTEXIMAGE2DPROC, TexImage2D) X(PFNGLTEXIMAGE3DPROC, TexImage3D)                                    \
-  X(PFNGLTEXPARAMETERIPROC, TexParameteri) X(PFNGLPIXELSTOREIPROC, PixelStorei)                            \
-  X(PFNGLGENFRAMEBUFFERSPROC, GenFramebuffers) X(PFNGLBINDFRAMEBUFFERPROC, BindFramebuffer)                \
-  X(PFNGLFRAMEBUFFERTEXTURE2DPROC, FramebufferTexture2D)                                                   \
-  X(PFNGLCHECKFRAMEBUFFERSTATUSPROC, CheckFramebufferStatus)                                               \
-  X(PFNGLGENRENDERBUFFERSPROC, GenRenderbuffers) X(PFNGLBINDRENDERBUFFERPROC, BindRenderbuffer)            \
-  X(PFNGLRENDERBUFFERSTORAGEPROC, RenderbufferStorage)                                                     \
-  X(PFNGLFRAMEBUFFERRENDERBUFFERPROC, FramebufferRenderbuffer) X(PFNGLGENBUFFERSPROC, GenBuffers)          \
-  X(PFNGLBINDBUFFERPROC, BindBuffer) X(PFNGLBUFFERDATAPROC, BufferData)                                    \
-  X(PFNGLDELETEBUFFERSPROC, DeleteBuffers) X(PFNGLVERTEXATTRIBPOINTERPROC, VertexAttribPointer)            \
-  X(PFNGLENABLEVERTEXATTRIBARRAYPROC, EnableVertexAttribArray)                                             \
-  X(PFNGLDISABLEVERTEXATTRIBARRAYPROC, DisableVertexAttribArray)                                           \
-  X(PFNGLGENVERTEXARRAYSPROC, GenVertexArrays) X(PFNGLBINDVERTEXARRAYPROC, BindVertexArray)                \
-  X(PFNGLVIEWPORTPROC, Viewport) X(PFNGLENABLEPROC, Enable) X(PFNGLDISABLEPROC, Disable)                   \
-  X(PFNGLDEPTHFUNCPROC, DepthFunc) X(PFNGLCLEARCOLORPROC, ClearColor) X(PFNGLCLEARPROC, Clear)             \
-  X(PFNGLDRAWELEMENTSPROC, DrawElements) X(PFNGLREADPIXELSPROC, ReadPixels) X(PFNGLFINISHPROC, Finish)
+#define BARE_GL(X)                                                                                                     \
+  X(PFNGLGETSTRINGPROC, GetString)                                                                                     \
+  X(PFNGLGETERRORPROC, GetError) X(PFNGLCREATESHADERPROC, CreateShader) X(PFNGLSHADERSOURCEPROC, ShaderSource) X(      \
+      PFNGLCOMPILESHADERPROC,                                                                                          \
+      CompileShader) X(PFNGLGETSHADERIVPROC, GetShaderiv) X(PFNGLGETSHADERINFOLOGPROC,                                 \
+                                                            GetShaderInfoLog) X(PFNGLCREATEPROGRAMPROC, CreateProgram) \
+      X(PFNGLATTACHSHADERPROC, AttachShader) X(PFNGLBINDATTRIBLOCATIONPROC, BindAttribLocation) X(                     \
+          PFNGLLINKPROGRAMPROC, LinkProgram) X(PFNGLGETPROGRAMIVPROC,                                                  \
+                                               GetProgramiv) X(PFNGLGETPROGRAMINFOLOGPROC,                             \
+                                                               GetProgramInfoLog) X(PFNGLUSEPROGRAMPROC, UseProgram)   \
+          X(PFNGLGETUNIFORMLOCATIONPROC, GetUniformLocation) X(PFNGLUNIFORM1FVPROC, Uniform1fv) X(                     \
+              PFNGLUNIFORM2FVPROC, Uniform2fv) X(PFNGLUNIFORM3FVPROC, Uniform3fv) X(PFNGLUNIFORM4FVPROC, Uniform4fv)   \
+              X(PFNGLUNIFORM1IVPROC, Uniform1iv) X(PFNGLUNIFORM2IVPROC, Uniform2iv) X(                                 \
+                  PFNGLUNIFORM3IVPROC, Uniform3iv) X(PFNGLUNIFORM4IVPROC, Uniform4iv) X(PFNGLUNIFORM1IPROC, Uniform1i) \
+                  X(PFNGLUNIFORMMATRIX2FVPROC, UniformMatrix2fv) X(PFNGLUNIFORMMATRIX3FVPROC, UniformMatrix3fv) X(     \
+                      PFNGLUNIFORMMATRIX4FVPROC, UniformMatrix4fv) X(PFNGLGENTEXTURESPROC, GenTextures)                \
+                      X(PFNGLBINDTEXTUREPROC, BindTexture) X(PFNGLACTIVETEXTUREPROC, ActiveTexture) X(                 \
+                          PFNGLTEXIMAGE2DPROC, TexImage2D) X(PFNGLTEXIMAGE3DPROC, TexImage3D)                          \
+                          X(PFNGLTEXPARAMETERIPROC, TexParameteri) X(PFNGLPIXELSTOREIPROC, PixelStorei) X(             \
+                              PFNGLGENFRAMEBUFFERSPROC, GenFramebuffers) X(PFNGLBINDFRAMEBUFFERPROC, BindFramebuffer)  \
+                              X(PFNGLFRAMEBUFFERTEXTURE2DPROC, FramebufferTexture2D) X(                                \
+                                  PFNGLCHECKFRAMEBUFFERSTATUSPROC, CheckFramebufferStatus)                             \
+                                  X(PFNGLGENRENDERBUFFERSPROC, GenRenderbuffers) X(                                    \
+                                      PFNGLBINDRENDERBUFFERPROC, BindRenderbuffer) X(PFNGLRENDERBUFFERSTORAGEPROC,     \
+                                                                                     RenderbufferStorage)              \
+                                      X(PFNGLFRAMEBUFFERRENDERBUFFERPROC, FramebufferRenderbuffer) X(                  \
+                                          PFNGLGENBUFFERSPROC, GenBuffers) X(PFNGLBINDBUFFERPROC, BindBuffer)          \
+                                          X(PFNGLBUFFERDATAPROC, BufferData) X(PFNGLDELETEBUFFERSPROC, DeleteBuffers)  \
+                                              X(PFNGLVERTEXATTRIBPOINTERPROC, VertexAttribPointer)                     \
+                                                  X(PFNGLENABLEVERTEXATTRIBARRAYPROC, EnableVertexAttribArray) X(      \
+                                                      PFNGLDISABLEVERTEXATTRIBARRAYPROC, DisableVertexAttribArray)     \
+                                                      X(PFNGLGENVERTEXARRAYSPROC, GenVertexArrays)                     \
+                                                          X(PFNGLBINDVERTEXARRAYPROC, BindVertexArray) X(              \
+                                                              PFNGLVIEWPORTPROC, Viewport) X(PFNGLENABLEPROC, Enable)  \
+                                                              X(PFNGLDISABLEPROC, Disable)                             \
+                                                                  X(PFNGLDEPTHFUNCPROC, DepthFunc)                     \
+                                                                      X(PFNGLCLEARCOLORPROC, ClearColor)               \
+                                                                          X(PFNGLCLEARPROC, Clear)                     \
+                                                                              X(PFNGLDRAWELEMENTSPROC, DrawElements)   \
+                                                                                  X(PFNGLREADPIXELSPROC, ReadPixels)   \
+                                                                                      X(PFNGLFINISHPROC, Finish)
 
 struct Gl {
 #define BARE_DECL(type, name) type name = nullptr;
@@ -150,7 +161,7 @@ class EglContext {
     if (!eglBindAPI(api == Api::GL33 ? EGL_OPENGL_API : EGL_OPENGL_ES_API)) throw Error("EGL: eglBindAPI failed");
     std::vector<EGLint> a;
     if (api == Api::GL33)
-      a = {EGL_CONTEXT_MAJOR_VERSION, 3, EGL_CONTEXT_MINOR_VERSION, 3, EGL_CONTEXT_OPENGL_PROFILE_MASK,
+      a = {EGL_CONTEXT_MAJOR_VERSION,           3,       EGL_CONTEXT_MINOR_VERSION, 3, EGL_CONTEXT_OPENGL_PROFILE_MASK,
            EGL_CONTEXT_OPENGL_CORE_PROFILE_BIT, EGL_NONE};
     else
       a = {EGL_CONTEXT_MAJOR_VERSION, api == Api::GLES3 ? 3 : 2, EGL_NONE};
@@ -158,8 +169,8 @@ class EglContext {
     if (ctx_ == EGL_NO_CONTEXT) throw Error("EGL: eglCreateContext failed");
     if (!eglMakeCurrent(dpy_, EGL_NO_SURFACE, EGL_NO_SURFACE, ctx_)) throw Error("EGL: eglMakeCurrent failed");
     std::string missing;
-#define BARE_LOAD(type, name)                                                  \
-  gl->name = reinterpret_cast<type>(eglGetProcAddress("gl" #name));            \
+#define BARE_LOAD(type, name)                                       \
+  gl->name = reinterpret_cast<type>(eglGetProcAddress("gl" #name)); \
   if (!gl->name) missing += " gl" #name;
     BARE_GL(BARE_LOAD)
 #undef BARE_LOAD
@@ -196,7 +207,7 @@ GLuint compile(const Gl &gl, GLenum type, const std::string &path) {
 // One bundle variant, linked with its attributes at locations 0..n-1 in manifest order.
 struct Program {
   GLuint id = 0;
-  json entry;                        // the manifest's variant object
+  json entry;  // the manifest's variant object
   std::vector<std::string> attributes;
 };
 
@@ -234,10 +245,9 @@ void set_uniform(const Gl &gl, GLuint prog, const json &u, const std::string &wh
     const uint32_t b = bits[i].get<uint32_t>();
     memcpy(&f[i], &b, 4);
   }
-  static const std::map<std::string, int> kComps = {{"float", 1}, {"vec2", 2}, {"vec3", 3}, {"vec4", 4},
-                                                    {"mat2", 4},  {"mat3", 9}, {"mat4", 16}, {"int", 1},
-                                                    {"ivec2", 2}, {"ivec3", 3}, {"ivec4", 4}, {"bool", 1},
-                                                    {"bvec2", 2}, {"bvec3", 3}, {"bvec4", 4}};
+  static const std::map<std::string, int> kComps = {
+      {"float", 1}, {"vec2", 2},  {"vec3", 3},  {"vec4", 4}, {"mat2", 4},  {"mat3", 9},  {"mat4", 16}, {"int", 1},
+      {"ivec2", 2}, {"ivec3", 3}, {"ivec4", 4}, {"bool", 1}, {"bvec2", 2}, {"bvec3", 3}, {"bvec4", 4}};
   auto it = kComps.find(type);
   if (it == kComps.end()) throw Error(where + ": unknown uniform type " + type);
   const GLsizei count = static_cast<GLsizei>(array_size > 0 ? array_size : 1);
@@ -245,21 +255,32 @@ void set_uniform(const Gl &gl, GLuint prog, const json &u, const std::string &wh
   const GLint loc = gl.GetUniformLocation(prog, name.c_str());
   if (loc < 0) throw Error(where + ": the program has no uniform " + name);
   const float *v = f.data();
-  if (type == "float") gl.Uniform1fv(loc, count, v);
-  else if (type == "vec2") gl.Uniform2fv(loc, count, v);
-  else if (type == "vec3") gl.Uniform3fv(loc, count, v);
-  else if (type == "vec4") gl.Uniform4fv(loc, count, v);
-  else if (type == "mat2") gl.UniformMatrix2fv(loc, count, GL_FALSE, v);
-  else if (type == "mat3") gl.UniformMatrix3fv(loc, count, GL_FALSE, v);
-  else if (type == "mat4") gl.UniformMatrix4fv(loc, count, GL_FALSE, v);
+  if (type == "float")
+    gl.Uniform1fv(loc, count, v);
+  else if (type == "vec2")
+    gl.Uniform2fv(loc, count, v);
+  else if (type == "vec3")
+    gl.Uniform3fv(loc, count, v);
+  else if (type == "vec4")
+    gl.Uniform4fv(loc, count, v);
+  else if (type == "mat2")
+    gl.UniformMatrix2fv(loc, count, GL_FALSE, v);
+  else if (type == "mat3")
+    gl.UniformMatrix3fv(loc, count, GL_FALSE, v);
+  else if (type == "mat4")
+    gl.UniformMatrix4fv(loc, count, GL_FALSE, v);
   else {
     std::vector<GLint> iv(f.size());
     for (size_t i = 0; i < f.size(); ++i) iv[i] = static_cast<GLint>(f[i]);
     const int c = it->second;
-    if (c == 1) gl.Uniform1iv(loc, count, iv.data());
-    else if (c == 2) gl.Uniform2iv(loc, count, iv.data());
-    else if (c == 3) gl.Uniform3iv(loc, count, iv.data());
-    else gl.Uniform4iv(loc, count, iv.data());
+    if (c == 1)
+      gl.Uniform1iv(loc, count, iv.data());
+    else if (c == 2)
+      gl.Uniform2iv(loc, count, iv.data());
+    else if (c == 3)
+      gl.Uniform3iv(loc, count, iv.data());
+    else
+      gl.Uniform4iv(loc, count, iv.data());
   }
 }
 
@@ -270,8 +291,8 @@ GLuint upload_texture(const Gl &gl, Api api, const std::string &dump, const json
   if (kind != "cube" && kind != "3d" && kind != "2d") throw Error(where + ".kind: unknown \"" + kind + "\"");
   if (kind == "cube" && w != h) throw Error(where + ": cube faces are not square");
   const size_t texels = kind == "cube" ? static_cast<size_t>(w) * w * 6
-                        : kind == "3d"  ? static_cast<size_t>(w) * h * d
-                                        : static_cast<size_t>(w) * h;
+      : kind == "3d"                   ? static_cast<size_t>(w) * h * d
+                                       : static_cast<size_t>(w) * h;
   const auto rgba = read_array<float>(file_in(dump, str(t, "file", where), where, false), texels * 4);
   GLuint id = 0;
   gl.GenTextures(1, &id);
@@ -326,9 +347,10 @@ long run(const Options &o, int *w_out, int *h_out, size_t *draws_out) {
     memcpy(&clear[i], &b, 4);
   }
   const std::string depth = str(dump, "depth_format", dpath);
-  if (depth != "DEPTH_COMPONENT24" && depth != "DEPTH_COMPONENT32F") throw Error(dpath + ": unknown depth_format " + depth);
-  const auto expected = read_array<float>(file_in(o.dump, str(dump, "frame_file", dpath), dpath, false),
-                                          static_cast<size_t>(w) * h * 4);
+  if (depth != "DEPTH_COMPONENT24" && depth != "DEPTH_COMPONENT32F")
+    throw Error(dpath + ": unknown depth_format " + depth);
+  const auto expected =
+      read_array<float>(file_in(o.dump, str(dump, "frame_file", dpath), dpath, false), static_cast<size_t>(w) * h * 4);
   const json &draws = arr(dump, "draws", dpath);
 
   Gl gl;
@@ -346,7 +368,8 @@ long run(const Options &o, int *w_out, int *h_out, size_t *draws_out) {
   gl.TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
   gl.GenRenderbuffers(1, &depth_rb);
   gl.BindRenderbuffer(GL_RENDERBUFFER, depth_rb);
-  gl.RenderbufferStorage(GL_RENDERBUFFER, depth == "DEPTH_COMPONENT24" ? GL_DEPTH_COMPONENT24 : GL_DEPTH_COMPONENT32F, w, h);
+  gl.RenderbufferStorage(GL_RENDERBUFFER, depth == "DEPTH_COMPONENT24" ? GL_DEPTH_COMPONENT24 : GL_DEPTH_COMPONENT32F,
+                         w, h);
   gl.GenFramebuffers(1, &fbo);
   gl.BindFramebuffer(GL_FRAMEBUFFER, fbo);
   gl.FramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, color, 0);
@@ -382,7 +405,9 @@ long run(const Options &o, int *w_out, int *h_out, size_t *draws_out) {
     const json &du = arr(d, "uniforms", where);
     std::map<std::string, const json *> given;
     for (size_t k = 0; k < du.size(); ++k) given[str(du[k], "name", where)] = &du[k];
-    if (given.size() != mu.size()) throw Error(where + ": sets " + std::to_string(given.size()) + " uniforms, the manifest lists " + std::to_string(mu.size()));
+    if (given.size() != mu.size())
+      throw Error(where + ": sets " + std::to_string(given.size()) + " uniforms, the manifest lists " +
+                  std::to_string(mu.size()));
     for (size_t k = 0; k < mu.size(); ++k) {
       const std::string name = str(mu[k], "name", mpath);
       auto g = given.find(name);
@@ -413,9 +438,12 @@ long run(const Options &o, int *w_out, int *h_out, size_t *draws_out) {
     std::vector<GLuint> buffers;
     for (size_t k = 0; k < p.attributes.size(); ++k) {
       const std::string &a = p.attributes[k];
-      const char *key_file = a == "a_position" ? "position_file" : a == "a_normal" ? "normal_file"
-                             : a == "a_uv" ? "uv_file" : a == "a_tangent" ? "tangent_file"
-                             : a == "a_lightmap" ? "lightmap_file" : nullptr;
+      const char *key_file = a == "a_position" ? "position_file"
+          : a == "a_normal"                    ? "normal_file"
+          : a == "a_uv"                        ? "uv_file"
+          : a == "a_tangent"                   ? "tangent_file"
+          : a == "a_lightmap"                  ? "lightmap_file"
+                                               : nullptr;
       const int comps = a == "a_uv" ? 2 : a == "a_tangent" || a == "a_lightmap" ? 4 : 3;
       if (!key_file) throw Error(where + ": the dump has no data for attribute " + a);
       if (!field(d, key_file, where).is_string()) throw Error(where + ": no " + key_file + " for attribute " + a);
@@ -476,7 +504,10 @@ int main(int argc, char **argv) {
     if ((a == "--bundle" || a == "--dump" || a == "--api") && i + 1 < argc) {
       (a == "--bundle" ? o.bundle : a == "--dump" ? o.dump : api) = argv[++i];
     } else {
-      fprintf(stderr, "bare_gl_render: unexpected argument '%s'\nusage: bare_gl_render --bundle DIR --dump DIR --api gles2|gles3|gl33\n", a.c_str());
+      fprintf(stderr,
+              "bare_gl_render: unexpected argument '%s'\nusage: bare_gl_render --bundle DIR --dump DIR --api "
+              "gles2|gles3|gl33\n",
+              a.c_str());
       return 2;
     }
   }
@@ -484,9 +515,12 @@ int main(int argc, char **argv) {
     fprintf(stderr, "usage: bare_gl_render --bundle DIR --dump DIR --api gles2|gles3|gl33\n");
     return 2;
   }
-  if (api == "gles2") o.api = Api::GLES2;
-  else if (api == "gles3") o.api = Api::GLES3;
-  else if (api == "gl33") o.api = Api::GL33;
+  if (api == "gles2")
+    o.api = Api::GLES2;
+  else if (api == "gles3")
+    o.api = Api::GLES3;
+  else if (api == "gl33")
+    o.api = Api::GL33;
   else {
     fprintf(stderr, "bare_gl_render: unknown --api '%s' (gles2, gles3, gl33)\n", api.c_str());
     return 2;

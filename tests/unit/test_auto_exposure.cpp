@@ -1,7 +1,4 @@
-// ============================================================================
-// tiershade — tests/unit/test_auto_exposure.cpp
-//
-// Unit tests of the auto-exposure histogram and controller (c_ref/exposure/auto_exposure.*,
+// tiershade tests: unit tests of the auto-exposure histogram and controller (c_ref/exposure/auto_exposure.*,
 // c_ref/exposure/exposure_control.*), in C only (the GPU counts are checked against these
 // exact counts by test_luminance_histogram):
 //   * the 17-bucket layout, the centred window, the running-histogram schedule;
@@ -11,7 +8,6 @@
 //     no oscillation on a flickering one, faster adaptation downward;
 //   * designer overrides per region.
 // Prints "PASS name" / "FAIL name: detail"; exits 1 if anything failed.
-// ============================================================================
 #include <cmath>
 #include <cstdio>
 #include <string>
@@ -25,7 +21,6 @@
 #include "unit_check.h"
 
 namespace {
-
 
 std::string fmt(const char *f, double a, double b = 0, double c = 0) {
   char buf[256];
@@ -245,7 +240,8 @@ void test_static_convergence(double alpha, const std::string &label) {
     full.measured_frame[b] = 0;
   }
   const double t = ae_target_scale(&full, &set, st.scale);
-  check(std::fabs(t / st.scale - 1.0) < 0.001, "controller (" + label + "): the converged exposure meets its own target",
+  check(std::fabs(t / st.scale - 1.0) < 0.001,
+        "controller (" + label + "): the converged exposure meets its own target",
         fmt("target / scale = %g", t / st.scale));
   // Also from far away on both sides (16x too dark, 16x too bright). Tolerance: the sticky rule
   // accepts any exposure that puts the 2 % point in the bucket holding 0.60, [(11/16)^1.5,
@@ -254,8 +250,9 @@ void test_static_convergence(double alpha, const std::string &label) {
   const auto lo = run_loop(same, 1500, set, st.scale / 16, alpha);
   const auto hi = run_loop(same, 1500, set, st.scale * 16, alpha);
   check(std::fabs(std::log2(lo.back() / st.scale)) < band && std::fabs(std::log2(hi.back() / st.scale)) < band,
-        "controller (" + label + "): reaches the same exposure from 4 stops below and above (within the 0.19-stop "
-        "sticky band)",
+        "controller (" + label +
+            "): reaches the same exposure from 4 stops below and above (within the 0.19-stop "
+            "sticky band)",
         fmt("from below %g, from above %g, reference %g", lo.back(), hi.back(), st.scale));
 }
 
@@ -286,14 +283,16 @@ void test_flicker() {
   // Tolerance: over the last 30 s the exposure must stay within 1/3 stop peak-to-peak (the
   // step of a camera's exposure dial, below which a slow drift is not seen as pumping)
   // while the scene swings by 2 stops: the controller passes on at most 1/6 of the flicker.
-  check(w < 1.0 / 3, "controller (prefilter 1/16): no oscillation on a scene flickering 2 stops, any period of 1 to "
-                     "12 frames (< 1/3 stop peak-to-peak)",
+  check(w < 1.0 / 3,
+        "controller (prefilter 1/16): no oscillation on a scene flickering 2 stops, any period of 1 to "
+        "12 frames (< 1/3 stop peak-to-peak)",
         fmt("worst %g stops at a period of %g frames", w, period));
   // The same test on Source's histogram of the current frame (no prefilter) fails: sampling
   // each bucket once every 17 frames aliases a flicker near that period into a slow drift.
   int p1 = 0;
   const double w1 = worst_flicker(1.0, &p1);
-  check(w1 > 2 * w && w1 > 0.5, "controller: the flicker check discriminates: without the prefilter the exposure drifts",
+  check(w1 > 2 * w && w1 > 0.5,
+        "controller: the flicker check discriminates: without the prefilter the exposure drifts",
         fmt("worst %g stops at a period of %g frames", w1, p1));
   printf("# flicker: worst peak-to-peak %.3f stops (period %d) with the prefilter, %.3f (period %d) without\n", w,
          period, w1, p1);
@@ -314,8 +313,9 @@ void test_faster_down() {
   const int down = half_way(0.25), up = half_way(4.0);
   // mat_accelerate_adjust_exposure_down 3: each frame covers 3x the fraction of the log distance
   // downward, so the half-way times are ln 2 / -ln(1 - k) for k = 1/30 and 1/10: 21 and 7 frames.
-  check(down == 7 && up == 21, "controller: adapts 3x faster downward (half way in " + std::to_string(down) +
-                                   " frames down, " + std::to_string(up) + " up, at 30 frames per second)");
+  check(down == 7 && up == 21,
+        "controller: adapts 3x faster downward (half way in " + std::to_string(down) + " frames down, " +
+            std::to_string(up) + " up, at 30 frames per second)");
 }
 
 void test_regions() {
@@ -323,7 +323,7 @@ void test_regions() {
   ae_default_settings(&def);
   const ae_region regions[2] = {
       {{-10, -10, -10}, {0, 10, 10}, 1.0, 16.0, -1.0},  // a dark room: allow up to 16
-      {{0, -10, -10}, {10, 10, 10}, 0.05, 1.0, 0.5},     // outdoors
+      {{0, -10, -10}, {10, 10, 10}, 0.05, 1.0, 0.5},  // outdoors
   };
   const double in_room[3] = {-5, 0, 0}, outside[3] = {5, 0, 0}, nowhere[3] = {50, 0, 0};
   ae_settings_at(&def, regions, 2, in_room, &out);

@@ -41,8 +41,8 @@ void faces() {
   // A floor high above everything, its normals up: the front is +y wherever any room would be.
   quad(10, 1, &pos, &nrm, &tan, &idx);
   bool ok = world_face_from_quad(pos, nrm, tan, idx, "up", -1, &f, lo);
-  check(ok && near(world_face_normal(f), 0, 1, 0), "a face's front is its winding normal where the vertex normals agree",
-        vec(world_face_normal(f)));
+  check(ok && near(world_face_normal(f), 0, 1, 0),
+        "a face's front is its winding normal where the vertex normals agree", vec(world_face_normal(f)));
   check(ok && std::fabs(f.su - 2) < 1e-12 && std::fabs(f.sv - 3) < 1e-12, "the face spans the quad (2 x 3)",
         std::to_string(f.su) + " x " + std::to_string(f.sv));
   const ts_vec3d far = world_face_point(f, 1, 1), first = world_face_point(f, 0, 0);
@@ -58,7 +58,8 @@ void faces() {
   std::vector<WorldFace> one = {f};
   double t = 0, a = 0, b = 0;
   const int below = world_cast(one, ts_v3d(2, -5, -2), ts_v3d(0, 1, 0), &t, &a, &b);
-  check(below == 0 && std::fabs(t - 5) < 1e-12, "a ray towards the front hits at the plane", "hit " + std::to_string(below) + " t " + std::to_string(t));
+  check(below == 0 && std::fabs(t - 5) < 1e-12, "a ray towards the front hits at the plane",
+        "hit " + std::to_string(below) + " t " + std::to_string(t));
   const int above = world_cast(one, ts_v3d(2, 5, -2), ts_v3d(0, -1, 0), &t, &a, &b);
   check(above == -1 && t == 1e30, "a ray from behind misses", "hit " + std::to_string(above));
   // A degenerate quad (every corner the same, no normal) is refused.
@@ -87,13 +88,15 @@ void pool() {
     bool once = true, mod = true;
     const int n = parallel_workers(h, threads);
     for (int y = 0; y < h; ++y) once = once && seen[y] == 1, mod = mod && worker[y] == y % n;
-    check(once && mod && n == threads, "parallel_rows_by_worker: every row once, row y on worker y mod " + std::to_string(n));
+    check(once && mod && n == threads,
+          "parallel_rows_by_worker: every row once, row y on worker y mod " + std::to_string(n));
   }
   check(parallel_workers(2, 8) == 2 && parallel_workers(0, 4) == 1, "parallel_workers: no more workers than rows");
 }
 
 void cube() {
-  const glm::dvec3 px = cube_face_direction(0, 0, 0), ny = cube_face_direction(3, 0, 0), c = cube_face_direction(4, 1, 1);
+  const glm::dvec3 px = cube_face_direction(0, 0, 0), ny = cube_face_direction(3, 0, 0),
+                   c = cube_face_direction(4, 1, 1);
   check(px == glm::dvec3(1, 0, 0) && ny == glm::dvec3(0, -1, 0), "cube face centres: +X, -Y");
   check(std::fabs(glm::length(c) - 1) < 1e-15 && c.x > 0 && c.y < 0 && c.z > 0,
         "+Z face corner (sc, tc) = (1, 1) is (x, -y) and unit length (GL table 8.19)");

@@ -28,8 +28,7 @@ void test_srgb() {
   check(srgb_encode(0.0) == 0 && std::fabs(srgb_encode(1.0) - 1) < 1e-15 && std::fabs(srgb_decode(1.0) - 1) < 1e-15,
         "srgb.end_points");
   // 0.5 encodes to 0.735357 and 0.5 decodes to 0.214041 (the curve's usual check values).
-  check(std::fabs(srgb_encode(0.5) - 0.7353569830524495) < 1e-12, "srgb.encode_half",
-        std::to_string(srgb_encode(0.5)));
+  check(std::fabs(srgb_encode(0.5) - 0.7353569830524495) < 1e-12, "srgb.encode_half", std::to_string(srgb_encode(0.5)));
   check(std::fabs(srgb_decode(0.5) - 0.21404114048223255) < 1e-12, "srgb.decode_half",
         std::to_string(srgb_decode(0.5)));
   double worst = 0;
@@ -53,7 +52,8 @@ void test_srgb() {
   img.rgba = {0.5f, 0.f, 2.f, 0.25f, -1.f, 1.f, NAN, 0.75f};
   const ImageF d = srgb_display(img);
   check(d.w == 2 && d.h == 1 && d.rgba[0] == srgb_encode(0.5f) && d.rgba[1] == 0 && d.rgba[2] == srgb_encode(1.f) &&
-            d.rgba[3] == 0.25f && d.rgba[4] == 0 && d.rgba[5] == srgb_encode(1.f) && d.rgba[6] == 0 && d.rgba[7] == 0.75f,
+            d.rgba[3] == 0.25f && d.rgba[4] == 0 && d.rgba[5] == srgb_encode(1.f) && d.rgba[6] == 0 &&
+            d.rgba[7] == 0.75f,
         "srgb.display_image_alpha_kept");
 }
 

@@ -1,4 +1,4 @@
-// tests/unit/test_bundle.cpp: shader bundles end to end without a scene. For each API it writes
+// tiershade tests: shader bundles end to end without a scene. For each API it writes
 // a bundle of three variants (model_lighting ps20 with per-vertex lights, sm3 Phong with every
 // texture and the tangent frame, the last sm3 world_lighting variant), renders two overlapping
 // spheres per variant through tiershade's production programs into RGBA32F + depth, writes
@@ -100,8 +100,22 @@ bool render(GlContext &ctx, const std::vector<Variant> &vars, DumpFrame *f, std:
         objects.push_back(r.upload_texture(d.textures.back()));
         g.Uniform1i(loc, unit++);
       } else if (u.type == GL_FLOAT_MAT4) {
-        const float m[16] = {u.name == "u_model" ? 1.f : 0.5f, 0, 0, 0, 0, u.name == "u_model" ? 1.f : 0.8f, 0, 0,
-                             0, 0, u.name == "u_model" ? 1.f : -0.25f, 0, 0, 0, 0, 1};
+        const float m[16] = {u.name == "u_model" ? 1.f : 0.5f,
+                             0,
+                             0,
+                             0,
+                             0,
+                             u.name == "u_model" ? 1.f : 0.8f,
+                             0,
+                             0,
+                             0,
+                             0,
+                             u.name == "u_model" ? 1.f : -0.25f,
+                             0,
+                             0,
+                             0,
+                             0,
+                             1};
         g.UniformMatrix4fv(loc, 1, GL_FALSE, m);
       } else if (u.type == GL_FLOAT_VEC4) {
         std::vector<float> x;
@@ -116,9 +130,11 @@ bool render(GlContext &ctx, const std::vector<Variant> &vars, DumpFrame *f, std:
     g.ActiveTexture(GL_TEXTURE0);
     if (!dump_capture_uniforms(g, p, &d.uniforms, err)) return false;
     for (size_t k = 0; k < attrs.size(); ++k) {
-      const std::vector<float> &a = attrs[k].name == "a_position" ? d.position : attrs[k].name == "a_normal" ? d.normal
-                                    : attrs[k].name == "a_uv"     ? d.uv : attrs[k].name == "a_tangent" ? d.tangent
-                                                                                                        : d.lightmap;
+      const std::vector<float> &a = attrs[k].name == "a_position" ? d.position
+          : attrs[k].name == "a_normal"                           ? d.normal
+          : attrs[k].name == "a_uv"                               ? d.uv
+          : attrs[k].name == "a_tangent"                          ? d.tangent
+                                                                  : d.lightmap;
       GLuint b = 0;
       g.GenBuffers(1, &b);
       g.BindBuffer(GL_ARRAY_BUFFER, b);
@@ -130,7 +146,8 @@ bool render(GlContext &ctx, const std::vector<Variant> &vars, DumpFrame *f, std:
     GLuint ib = 0;
     g.GenBuffers(1, &ib);
     g.BindBuffer(GL_ELEMENT_ARRAY_BUFFER, ib);
-    g.BufferData(GL_ELEMENT_ARRAY_BUFFER, static_cast<GLsizeiptr>(d.indices.size() * 4), d.indices.data(), GL_STATIC_DRAW);
+    g.BufferData(GL_ELEMENT_ARRAY_BUFFER, static_cast<GLsizeiptr>(d.indices.size() * 4), d.indices.data(),
+                 GL_STATIC_DRAW);
     g.DrawElements(GL_TRIANGLES, static_cast<GLsizei>(d.indices.size()), GL_UNSIGNED_INT, nullptr);
     r.delete_program(p);
   }
@@ -178,17 +195,20 @@ int main(int, char **argv) {
     return 1;
   }
   std::vector<Variant> vars(2);
-  bool ok = find_variant(decls, "model_lighting", "ps20:ALBEDO_TEXTURE=1,HALF_LAMBERT=1,OUTPUT_MODE=0,NUM_LIGHTS=2", &vars[0], &err) &&
-            find_variant(decls, "model_lighting",
-                         "sm3:ALBEDO_TEXTURE=1,HALF_LAMBERT=1,OUTPUT_MODE=2,PHONG=1,PHONG_EXPONENT_MAP=1,RIM_LIGHT=1,"
-                         "ENVMAP=1,LIGHT_WARP=1",
-                         &vars[1], &err);
+  bool ok = find_variant(decls, "model_lighting", "ps20:ALBEDO_TEXTURE=1,HALF_LAMBERT=1,OUTPUT_MODE=0,NUM_LIGHTS=2",
+                         &vars[0], &err) &&
+      find_variant(decls, "model_lighting",
+                   "sm3:ALBEDO_TEXTURE=1,HALF_LAMBERT=1,OUTPUT_MODE=2,PHONG=1,PHONG_EXPONENT_MAP=1,RIM_LIGHT=1,"
+                   "ENVMAP=1,LIGHT_WARP=1",
+                   &vars[1], &err);
   for (const auto &d : decls)
     if (d.name == "world_lighting") vars.push_back(enumerate_variants(d, {Tier::SM3}, &err).back());
   check(ok && vars.size() == 3, "setup: three variants", err);
   if (!ok || vars.size() != 3) return 1;
-  const struct { Api api; Target target; } kRuns[] = {
-      {Api::GLES2, Target::ESSL100}, {Api::GLES3, Target::ESSL300}, {Api::GL33, Target::GLSL330}};
+  const struct {
+    Api api;
+    Target target;
+  } kRuns[] = {{Api::GLES2, Target::ESSL100}, {Api::GLES3, Target::ESSL300}, {Api::GL33, Target::GLSL330}};
   for (const auto &run : kRuns) {
     const std::string api = api_name(run.api);
     const std::string b = tmp + "/bundle_" + api, d = tmp + "/dump_" + api;

@@ -1,7 +1,4 @@
-// ============================================================================
-// tiershade — tests/unit/test_color_correction.cpp
-//
-// Unit tests of the colour-correction glue (docs/color_correction.md):
+// tiershade tests: unit tests of the colour-correction glue (docs/color_correction.md):
 //   * .cube reading (glue/io/lut_files.h): good files (comments, CRLF, TITLE, DOMAIN, Resolve's
 //     1D shaper + 3D form) and bad files, each with its exact "file:line: problem" message;
 //   * writers: .cube round trip bit for bit, atomic writes (a failed write leaves no file,
@@ -13,7 +10,6 @@
 //     Table 1, and sRGB -> CIELAB anchors.
 // Run from the repository root (tests/run_tests.sh does): it reads scenes/luts/.
 // Usage: build/tests/test_color_correction   Prints PASS/FAIL lines; exit 1 on failure.
-// ============================================================================
 #include <dirent.h>
 #include <unistd.h>
 
@@ -65,15 +61,16 @@ const char kTable2[] =
 void test_cube_good() {
   CubeFile c;
   std::string err;
-  const std::string p = write_text("good.cube",
-                                   "# a comment\r\n"
-                                   "TITLE \"Good \"\"one\"\r\n"
-                                   "\r\n"
-                                   "  # indented comment\r\n"
-                                   "LUT_3D_SIZE 2\r\n"
-                                   "DOMAIN_MIN 0 0 0\r\n"
-                                   "DOMAIN_MAX 1 1 1\r\n"
-                                   "0 0 0\r\n1e-1 0 0\r\n0 1 0\r\n1 1 0\r\n0 0 1\r\n1 0 1\r\n0 1 1\r\n 1.0  1.0\t1.0 \r\n");
+  const std::string p =
+      write_text("good.cube",
+                 "# a comment\r\n"
+                 "TITLE \"Good \"\"one\"\r\n"
+                 "\r\n"
+                 "  # indented comment\r\n"
+                 "LUT_3D_SIZE 2\r\n"
+                 "DOMAIN_MIN 0 0 0\r\n"
+                 "DOMAIN_MAX 1 1 1\r\n"
+                 "0 0 0\r\n1e-1 0 0\r\n0 1 0\r\n1 1 0\r\n0 0 1\r\n1 0 1\r\n0 1 1\r\n 1.0  1.0\t1.0 \r\n");
   const bool ok = read_cube(p, &c, &err);
   check(ok, "cube.good.read", err);
   check(ok && c.size_3d == 2 && c.size_1d == 0 && c.table_3d.size() == 24, "cube.good.sizes");
@@ -85,7 +82,8 @@ void test_cube_good() {
 
   const std::string r = write_text("resolve.cube",
                                    "LUT_1D_SIZE 2\nLUT_3D_SIZE 2\nLUT_3D_INPUT_RANGE -0.5 1.5\n"
-                                   "0 0 0\n1 1 1\n" + std::string(kTable2));
+                                   "0 0 0\n1 1 1\n" +
+                                       std::string(kTable2));
   check(read_cube(r, &c, &err) && c.size_1d == 2 && c.size_3d == 2 && c.domain_min[1] == -0.5f &&
             c.domain_max[2] == 1.5f && c.table_1d.size() == 6 && c.table_3d.size() == 24,
         "cube.good.resolve_1d_shaper_plus_3d", err);
@@ -156,7 +154,8 @@ void test_cube_bad() {
   const std::string nul = write_text("nul.cube", std::string("LUT_3D_SIZE 2\n0 0\0 0\n", 21));
   CubeFile c;
   std::string err;
-  check(!read_cube(nul, &c, &err) && err == nul + ":2: binary data (a NUL byte) in a text file", "cube.bad.nul_byte", err);
+  check(!read_cube(nul, &c, &err) && err == nul + ":2: binary data (a NUL byte) in a text file", "cube.bad.nul_byte",
+        err);
   const std::string missing = g_dir + "/missing.cube";
   check(!read_cube(missing, &c, &err) && err == missing + ": cannot open (No such file or directory)",
         "cube.bad.missing_file", err);
@@ -174,9 +173,9 @@ Lut3D ramp_lut(int n, float scale) {
 void test_writers() {
   std::string err;
   Lut3D l = ramp_lut(5, 0.7f);
-  l.rgb[4] = 0.1f;                  // not exactly representable in decimal
-  l.rgb[5] = 1.17549435e-38f;       // FLT_MIN
-  l.rgb[6] = -3.40282347e38f;       // -FLT_MAX
+  l.rgb[4] = 0.1f;  // not exactly representable in decimal
+  l.rgb[5] = 1.17549435e-38f;  // FLT_MIN
+  l.rgb[6] = -3.40282347e38f;  // -FLT_MAX
   const std::string p = g_dir + "/out.cube";
   check(write_cube(p, l, &err), "write_cube.ok", err);
   CubeFile c;
@@ -202,9 +201,9 @@ void test_writers() {
             err == q + ": not written: the title holds a double quote or a line break",
         "write_cube.rejects_quote_in_title", err);
   const std::string nodir = g_dir + "/no/such/dir/x.cube";
-  check(!write_cube(nodir, l, &err) && err == nodir + ": cannot write (No such file or directory)" &&
-            temporaries() == 0,
-        "write_cube.unwritable_directory", err);
+  check(
+      !write_cube(nodir, l, &err) && err == nodir + ": cannot write (No such file or directory)" && temporaries() == 0,
+      "write_cube.unwritable_directory", err);
 
   // Source .raw: 8-bit codes survive a round trip exactly.
   Lut3D r = identity_lut(kSourceRawEdge);
@@ -244,8 +243,9 @@ void test_writers() {
         "raw.write_rejects_other_edges", err);
   Lut3D any;
   const std::string png = write_text("x.png", "not a lut");
-  check(!read_lut_file(png, &any, &err) && err == png + ": unknown LUT file type (tiershade reads .cube and Source .raw)",
-        "read_lut_file.unknown_extension", err);
+  check(
+      !read_lut_file(png, &any, &err) && err == png + ": unknown LUT file type (tiershade reads .cube and Source .raw)",
+      "read_lut_file.unknown_extension", err);
   check(read_lut_file(rp, &any, &err) && any.n == 32 && read_lut_file(p, &any, &err) && any.n == 5,
         "read_lut_file.by_extension", err);
 }
@@ -282,8 +282,8 @@ void lut_lookup(const Lut3D &l, const float in[3], float out[3]) {
   const TextureDesc v = lut_volume_texture(l, "u", true);
   const ts_tex3d t = tex3d_of(v);
   const double n = l.n;
-  const ts_vec4d s = ts_texture3Dd(&t, ts_v3d(in[0] * (n - 1) / n + 0.5 / n, in[1] * (n - 1) / n + 0.5 / n,
-                                              in[2] * (n - 1) / n + 0.5 / n));
+  const ts_vec4d s = ts_texture3Dd(
+      &t, ts_v3d(in[0] * (n - 1) / n + 0.5 / n, in[1] * (n - 1) / n + 0.5 / n, in[2] * (n - 1) / n + 0.5 / n));
   out[0] = static_cast<float>(s.x);
   out[1] = static_cast<float>(s.y);
   out[2] = static_cast<float>(s.z);
@@ -397,8 +397,8 @@ void test_bake() {
   nolook.src = "xyz";
   check(!x.open(nolook, &err) && err == "scenes/luts/looks.ocio: no colour space or role 'xyz'",
         "bake.error.unknown_colour_space", err);
-  const std::string badcfg =
-      write_text("bad.ocio", "ocio_profile_version: 2\nroles:\n  default: a\ncolorspaces:\n  - !<ColorSpace>\n    name: [\n");
+  const std::string badcfg = write_text(
+      "bad.ocio", "ocio_profile_version: 2\nroles:\n  default: a\ncolorspaces:\n  - !<ColorSpace>\n    name: [\n");
   TransformSpec bl = look;
   bl.config = badcfg;
   check(!x.open(bl, &err) && err.rfind(badcfg + ": OpenColorIO: ", 0) == 0, "bake.error.bad_config_names_file", err);
@@ -408,7 +408,8 @@ void test_bake() {
   check(!x.open(badcdl, &err) && err.rfind("CDL values: slope must be >= 0, power > 0", 0) == 0,
         "bake.error.cdl_power_zero", err);
   Lut3D none;
-  check(!bake_lut(t, 1, &none, &err) && err == "bake: the LUT edge must be in [2, 256], got 1", "bake.error.edge_1", err);
+  check(!bake_lut(t, 1, &none, &err) && err == "bake: the LUT edge must be in [2, 256], got 1", "bake.error.edge_1",
+        err);
 }
 
 // ---- CIEDE2000 -----------------------------------------------------------------------------
@@ -460,7 +461,7 @@ void test_ciede2000() {
       ++ok;
     } else if (first.empty()) {
       first = "pair " + std::to_string(i + 1) + ": " + std::to_string(d1) + " / " + std::to_string(d2) + " vs " +
-              std::to_string(kPairs[i][6]);
+          std::to_string(kPairs[i][6]);
     }
   }
   check(ok == 34, "ciede2000.sharma_2005_table1_34_pairs_both_orders", std::to_string(ok) + "/34; " + first);
@@ -469,8 +470,9 @@ void test_ciede2000() {
   // primaries' published values (53.24, 80.09, 67.20), (87.73, -86.18, 83.18), (32.30, 79.19,
   // -107.86); 0.006 = the references' rounding to 2 decimals (0.005) and the matrix's 7th digit.
   const Lab w = srgb_to_lab(1, 1, 1), k = srgb_to_lab(0, 0, 0);
-  check(std::fabs(w.L - 100) < 1e-9 && std::fabs(w.a) < 1e-9 && std::fabs(w.b) < 1e-9 && k.L == 0 && k.a == 0 && k.b == 0,
-        "srgb_to_lab.white_and_black");
+  check(
+      std::fabs(w.L - 100) < 1e-9 && std::fabs(w.a) < 1e-9 && std::fabs(w.b) < 1e-9 && k.L == 0 && k.a == 0 && k.b == 0,
+      "srgb_to_lab.white_and_black");
   const Lab r = srgb_to_lab(1, 0, 0), g = srgb_to_lab(0, 1, 0), b = srgb_to_lab(0, 0, 1);
   auto near = [](const Lab &x, double L, double a, double bb) {
     return std::fabs(x.L - L) <= 0.006 && std::fabs(x.a - a) <= 0.006 && std::fabs(x.b - bb) <= 0.006;

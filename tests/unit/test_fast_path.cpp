@@ -1,7 +1,4 @@
-// ============================================================================
-// tiershade -- tests/unit/test_fast_path.cpp
-//
-// The C fallback's fast path (c_ref/twins/model_lighting_batch.c: the model_lighting twin on 8 or
+// tiershade tests: the C fallback's fast path (c_ref/twins/model_lighting_batch.c: the model_lighting twin on 8 or
 // 4 pixels at once) against the scalar twin (model_lighting_f), bit for bit (no tolerance,
 // NaN not excepted): every model_lighting variant (276), on the family's Random and Hard
 // input grids (64x64, make_inputs) and on a deferred-style grid (6 per-pixel slots, the
@@ -15,7 +12,6 @@
 //
 // Usage: build/tests/test_fast_path   Prints PASS/FAIL lines and "N passed, N failed";
 // exit 1 on failure.
-// ============================================================================
 #include <cstdio>
 #include <algorithm>
 #include <cstring>
@@ -36,7 +32,6 @@ std::string show(const ts_vec4f &c) {
   snprintf(b, sizeof b, "(%a, %a, %a, %a)", c.x, c.y, c.z, c.w);
   return b;
 }
-
 
 // A deferred-style copy of a grid: the first `pixel` slots per pixel, the rest shared
 // (taken from pixel (0, 0)), as sphere frames and the scene renderer pass them.
@@ -65,7 +60,9 @@ struct Tally {
     if (ok) return;
     if (bad++ == 0) first = where + ": fast " + show(got) + ", scalar " + show(want);
   }
-  std::string detail() const { return std::to_string(bad) + " of " + std::to_string(pixels) + " pixels differ; first " + first; }
+  std::string detail() const {
+    return std::to_string(bad) + " of " + std::to_string(pixels) + " pixels differ; first " + first;
+  }
 };
 
 // eval_row_f against eval_f for every variant of `fam` on `in`, in the current fused mode, for each
@@ -94,8 +91,8 @@ void check_family_rows(const ShaderFamily &fam, const std::vector<Variant> &vari
     }
     check(t.bad == 0,
           std::string(fam.name) + " " + isa.name + (fused ? " fused " : " unfused ") + grid +
-              ": eval_row_f = eval_f, all " + std::to_string(variants.size()) + " variants (" + std::to_string(t.pixels) +
-              " pixels)",
+              ": eval_row_f = eval_f, all " + std::to_string(variants.size()) + " variants (" +
+              std::to_string(t.pixels) + " pixels)",
           t.detail());
   }
   ts_batch_force_isa(-1);
@@ -179,7 +176,8 @@ int main() {
           all.resize(static_cast<size_t>(total) * ML_SLOTS);
           for (int y = 0; y < in.h; ++y)
             for (int x = 0; x < in.w; ++x)
-              for (int k = 0; k < ML_SLOTS; ++k) all[(static_cast<size_t>(y) * in.w + x) * ML_SLOTS + k] = in.slot(x, y, k);
+              for (int k = 0; k < ML_SLOTS; ++k)
+                all[(static_cast<size_t>(y) * in.w + x) * ML_SLOTS + k] = in.slot(x, y, k);
         }
         const ml_variant m = ml_variant_of(v);
         for (int i = 0; i < 2; ++i) {
@@ -192,8 +190,8 @@ int main() {
             fam->eval_row_f(v, in, x0, y, count, got.data());
             for (int p = 0; p < count; ++p) {
               const ts_vec4f &w = want[static_cast<size_t>(y) * in.w + x0 + p];
-              rows[i].add(same_bits(got[p], w), v.name() + " pixel (" + std::to_string(x0 + p) + "," + std::to_string(y) + ")",
-                          got[p], w);
+              rows[i].add(same_bits(got[p], w),
+                          v.name() + " pixel (" + std::to_string(x0 + p) + "," + std::to_string(y) + ")", got[p], w);
             }
           }
           // The C API on whole records, in chunks of 1..13 pixels (every tail length).

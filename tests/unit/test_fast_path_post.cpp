@@ -1,7 +1,4 @@
-// ============================================================================
-// tiershade -- tests/unit/test_fast_path_post.cpp
-//
-// The post-processing fast path against the scalar twins, bit for bit (no tolerance, NaN not
+// tiershade tests: the post-processing fast path against the scalar twins, bit for bit (no tolerance, NaN not
 // excepted):
 //   * c_ref/twins/hdr_post_batch.c: bloom_downsample (SHAPE 0/1), bloom_blur (DIRECTION 0/1),
 //     hdr_tonemap (OUTPUT_MODE 0/1/2) against bloom_downsample_f / bloom_blur_f / hdr_tonemap_f;
@@ -22,7 +19,6 @@
 //
 // Usage: build/tests/test_fast_path_post   Prints PASS/FAIL lines and "N passed, N failed";
 // exit 1 on failure.
-// ============================================================================
 #include <cmath>
 #include <cstdint>
 #include <cstdio>
@@ -70,17 +66,29 @@ float bits_f(uint32_t u) {
 
 // Hard values: NaN of both signs and payloads, infinities, the fp16 edge, huge, denormals.
 float hard(PostRng &r) {
-  static const float k[] = {0.f, -0.f, 1.f, -1.f, 0.5f, 65504.f, 65520.f, 70000.f, 1e30f, -1e30f, 3e38f,
-                            1e-40f, -1e-40f, 1.17549435e-38f, 5.9604645e-8f, 2.9802322e-8f, 1e-8f, 0.0031308f,
-                            0.04045f, 1.f - 5.9604645e-8f, 2.f, 255.f};
+  static const float k[] = {0.f,           -0.f,
+                            1.f,           -1.f,
+                            0.5f,          65504.f,
+                            65520.f,       70000.f,
+                            1e30f,         -1e30f,
+                            3e38f,         1e-40f,
+                            -1e-40f,       1.17549435e-38f,
+                            5.9604645e-8f, 2.9802322e-8f,
+                            1e-8f,         0.0031308f,
+                            0.04045f,      1.f - 5.9604645e-8f,
+                            2.f,           255.f};
   const uint32_t n = sizeof k / sizeof k[0] + 4;
   const uint32_t i = r.next() % n;
   if (i < sizeof k / sizeof k[0]) return k[i];
   switch (i - sizeof k / sizeof k[0]) {
-    case 0: return std::numeric_limits<float>::quiet_NaN();
-    case 1: return bits_f(0xffc01234u);
-    case 2: return std::numeric_limits<float>::infinity();
-    default: return -std::numeric_limits<float>::infinity();
+    case 0:
+      return std::numeric_limits<float>::quiet_NaN();
+    case 1:
+      return bits_f(0xffc01234u);
+    case 2:
+      return std::numeric_limits<float>::infinity();
+    default:
+      return -std::numeric_limits<float>::infinity();
   }
 }
 
@@ -89,7 +97,8 @@ float maybe_hard(PostRng &r, float v, int percent) { return r.chance(percent) ? 
 struct Tex2 {
   std::vector<float> texels;
   ts_tex2d t;
-  Tex2(PostRng &r, int w, int h, int wrap, int filter, int hard_percent, float hi) : texels(static_cast<size_t>(w) * h * 4) {
+  Tex2(PostRng &r, int w, int h, int wrap, int filter, int hard_percent, float hi)
+      : texels(static_cast<size_t>(w) * h * 4) {
     for (float &v : texels) v = maybe_hard(r, r.uni(0.f, hi), hard_percent);
     t.w = w;
     t.h = h;
@@ -115,8 +124,8 @@ bool have_isa(int level) {
 // A batch family: slots S, the first P per pixel. In: {slot[S], stride[S]}.
 // scalar(rec) -> ts_vec4f; batch(const In *, out, count).
 template <class In, int S, class Scalar, class Batch>
-void run_family(const std::string &name, int pixel_slots, const std::vector<ts_vec4f> &recs, Scalar scalar,
-                Batch batch, const char *mode) {
+void run_family(const std::string &name, int pixel_slots, const std::vector<ts_vec4f> &recs, Scalar scalar, Batch batch,
+                const char *mode) {
   const int total = static_cast<int>(recs.size() / S);
   for (int layout = 0; layout < 2; ++layout) {
     std::vector<ts_vec4f> want(static_cast<size_t>(total));
@@ -302,8 +311,11 @@ void test_color_correction(const char *mode) {
             snprintf(name, sizeof name, "color_correction LUT_ATLAS=%d SHADER_TRILINEAR=%d NUM_LOOKUPS=%d [%s%s]",
                      atlas, tri, num, lc.name, hp ? ", hard records" : "");
             run_family<cc_batch_input, CC_SLOTS>(
-                name, CC_PIXEL_SLOTS, recs, [&](const ts_vec4f *rec) { return color_correction_f(&v, rec, &luts.views); },
-                [&](const cc_batch_input *in, ts_vec4f *o, int c) { color_correction_f_batch(&v, in, &luts.views, o, c); },
+                name, CC_PIXEL_SLOTS, recs,
+                [&](const ts_vec4f *rec) { return color_correction_f(&v, rec, &luts.views); },
+                [&](const cc_batch_input *in, ts_vec4f *o, int c) {
+                  color_correction_f_batch(&v, in, &luts.views, o, c);
+                },
                 mode);
           }
     }
@@ -432,7 +444,8 @@ int main() {
     bloom_blur_f_batch(&v, &in, &tex.t, got.data(), 512);
     ts_math_set_fused(0);
     long differ = 0;
-    for (int i = 0; i < 512; ++i) differ += !same_bits(got[i], bloom_blur_f(&v, &rb[static_cast<size_t>(i) * BB_SLOTS], &tex.t));
+    for (int i = 0; i < 512; ++i)
+      differ += !same_bits(got[i], bloom_blur_f(&v, &rb[static_cast<size_t>(i) * BB_SLOTS], &tex.t));
     ts_math_set_fused(host_fma);
     check(differ > 0, "the check discriminates: fused fast path vs unfused scalar twin differ",
           std::to_string(differ) + " pixels differ");

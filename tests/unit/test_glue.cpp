@@ -1,7 +1,4 @@
-// ============================================================================
-// tiershade — tests/unit/test_glue.cpp
-//
-// Unit tests for the glue: the GLSL assembler (glue/shaderlib/assembler.*), compile-log
+// tiershade tests: unit tests for the glue: the GLSL assembler (glue/shaderlib/assembler.*), compile-log
 // mapping on real Mesa llvmpipe contexts (glue/gl/context.*, glue/gl/float_target.*),
 // both GL backends in one process, and the variant system (glue/shaderlib/variants.*).
 //
@@ -12,7 +9,6 @@
 // private mkdtemp() directory that TIERSHADE_SHADER_DIR points at; the variable
 // is unset afterwards so the variant checks use the embedded library, and the
 // directory is removed at the end.
-// ============================================================================
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -88,14 +84,17 @@ void test_targets_and_prelude() {
         "assembler.parse_target_rejects_unknown");
 
   write_shader("plain.fs", "// plain entry\nvoid main() {}\n");
-  struct Case { Target t; const char *first; const char *target_define; };
+  struct Case {
+    Target t;
+    const char *first;
+    const char *target_define;
+  };
   const Case cases[] = {{Target::ESSL100, "#version 100", "#define TS_ESSL100 1\n"},
                         {Target::ESSL300, "#version 300 es", "#define TS_ESSL300 1\n"},
                         {Target::GLSL330, "#version 330 core", "#define TS_GLSL330 1\n"}};
   for (const auto &c : cases) {
     for (Stage st : {Stage::Vertex, Stage::Fragment}) {
-      const std::string tag =
-          std::string(target_name(c.t)) + (st == Stage::Vertex ? "_vertex" : "_fragment");
+      const std::string tag = std::string(target_name(c.t)) + (st == Stage::Vertex ? "_vertex" : "_fragment");
       Assembled a;
       std::string err;
       const bool ok = assemble("plain.fs", c.t, st, {}, &a, &err);
@@ -110,7 +109,8 @@ void test_targets_and_prelude() {
       for (const auto &o : cases) targets += contains(a.text, o.target_define) ? 1 : 0;
       check(contains(a.text, c.target_define) && targets == 1, "assembler.prelude_" + tag + "_one_target_define",
             std::to_string(targets) + " target defines");
-      const bool vertex = contains(a.text, "#define TS_VERTEX 1\n"), fragment = contains(a.text, "#define TS_FRAGMENT 1\n");
+      const bool vertex = contains(a.text, "#define TS_VERTEX 1\n"),
+                 fragment = contains(a.text, "#define TS_FRAGMENT 1\n");
       check(vertex == (st == Stage::Vertex) && fragment == (st == Stage::Fragment),
             "assembler.prelude_" + tag + "_stage_define");
       check(contains(a.text, "#define TS_FLOAT_PRECISION highp\n"), "assembler.prelude_" + tag + "_highp_float");
@@ -165,7 +165,8 @@ void test_defines() {
   for (const auto &d : defs) {
     const std::string line = "\n#define " + d.name + " " + d.value + "\n";
     const size_t p = a.text.find(line);
-    check(p != std::string::npos, "assembler.define_" + d.name + "_present", "no line " + quote(line.substr(1, line.size() - 2)));
+    check(p != std::string::npos, "assembler.define_" + d.name + "_present",
+          "no line " + quote(line.substr(1, line.size() - 2)));
     if (p == std::string::npos || p < last || p > entry) ordered = false;
     last = p;
   }
@@ -181,7 +182,8 @@ void test_precision_option() {
   bool ok = assemble("plain.fs", Target::ESSL300, Stage::Fragment, {}, &a, &err, "mediump");
   check(ok && contains(a.text, "#define TS_FLOAT_PRECISION mediump\n") &&
             !contains(a.text, "#define TS_FLOAT_PRECISION highp") &&
-            contains(a.text, "precision TS_FLOAT_PRECISION float;\n") && contains(a.text, "precision highp sampler2D;\n"),
+            contains(a.text, "precision TS_FLOAT_PRECISION float;\n") &&
+            contains(a.text, "precision highp sampler2D;\n"),
         "assembler.mediump_float_keeps_highp_samplers", err);
   ok = assemble("plain.fs", Target::ESSL100, Stage::Fragment, {}, &a, &err);
   check(ok && contains(a.text, "#define TS_FLOAT_PRECISION highp\n"), "assembler.default_precision_highp", err);
@@ -298,8 +300,7 @@ void test_include_errors() {
   err.clear();
   ok = assemble("deep1.glsl", Target::GLSL330, Stage::Fragment, {}, &a, &err);
   check(!ok && contains(err, "deeper"), "assembler.depth_17_rejected", ok ? "assembled" : "message: " + err);
-  check(!ok && contains(err, "shaders/deep17.glsl:2"), "assembler.depth_error_names_file_and_line",
-        "message: " + err);
+  check(!ok && contains(err, "shaders/deep17.glsl:2"), "assembler.depth_error_names_file_and_line", "message: " + err);
 }
 
 void test_map_compile_log() {
@@ -307,10 +308,8 @@ void test_map_compile_log() {
   a.files = {"shaders/entry.fs", "shaders/lib.glsl"};
   const std::string mesa = "0:5(12): error: `foo' undeclared\n1:17(3): error: type mismatch\n";
   const std::string m = map_compile_log(mesa, a);
-  check(contains(m, "shaders/entry.fs:5:") && contains(m, "`foo' undeclared"), "map_log.mesa_string_0",
-        "mapped: " + m);
-  check(contains(m, "shaders/lib.glsl:17:") && contains(m, "type mismatch"), "map_log.mesa_string_1",
-        "mapped: " + m);
+  check(contains(m, "shaders/entry.fs:5:") && contains(m, "`foo' undeclared"), "map_log.mesa_string_0", "mapped: " + m);
+  check(contains(m, "shaders/lib.glsl:17:") && contains(m, "type mismatch"), "map_log.mesa_string_1", "mapped: " + m);
   check(!contains(m, "0:5(") && !contains(m, "1:17("), "map_log.mesa_prefix_replaced", "mapped: " + m);
   check(split_lines(m).size() == 2, "map_log.line_count_kept", "mapped: " + m);
 
@@ -443,7 +442,7 @@ void test_portability_macros(Backend b, Api api) {
   Assembled pair[2];
   std::string err;
   const bool assembled = assemble("t_port.vs", target_of(api), Stage::Vertex, {}, &pair[0], &err) &&
-                         assemble("t_port.fs", target_of(api), Stage::Fragment, {}, &pair[1], &err);
+      assemble("t_port.fs", target_of(api), Stage::Fragment, {}, &pair[1], &err);
   const GLuint p = assembled ? c.r->build_program(pair[0], pair[1], &err) : 0;
   check(p != 0, "portability." + tag + "_builds", err);
   if (!p) {
@@ -479,7 +478,7 @@ void test_portability_macros(Backend b, Api api) {
       if (img.rgba[i] != want[i % 4]) {
         all = false;
         detail = "value " + std::to_string(i) + " is " + std::to_string(img.rgba[i]) + ", want " +
-                 std::to_string(want[i % 4]);
+            std::to_string(want[i % 4]);
       }
     check(all, "portability." + tag + "_pixels", detail);
   }
@@ -496,20 +495,19 @@ void test_compile_error_mapping(Backend b, Api api) {
   Assembled vs, fs;
   std::string err;
   bool ok = assemble("t_quad.vs", t, Stage::Vertex, {}, &vs, &err) &&
-            assemble("t_err_entry.fs", t, Stage::Fragment, {}, &fs, &err);
+      assemble("t_err_entry.fs", t, Stage::Fragment, {}, &fs, &err);
   check(ok, "gl." + tag + "_assemble_broken", err);
   if (ok) {
     err.clear();
     const GLuint p = c.r->build_program(vs, fs, &err);
     check(p == 0, "gl." + tag + "_broken_shader_rejected");
     if (p) c.r->delete_program(p);
-    check(contains(err, "shaders/t_err_lib.glsl:4:"), "gl." + tag + "_error_maps_to_included_file_line",
-          "log: " + err);
+    check(contains(err, "shaders/t_err_lib.glsl:4:"), "gl." + tag + "_error_maps_to_included_file_line", "log: " + err);
     check(contains(err, "fragment"), "gl." + tag + "_error_names_stage", "log: " + err);
   }
   err.clear();
   ok = assemble("t_quad.vs", t, Stage::Vertex, {}, &vs, &err) &&
-       assemble("t_err_after.fs", t, Stage::Fragment, {}, &fs, &err);
+      assemble("t_err_after.fs", t, Stage::Fragment, {}, &fs, &err);
   if (ok) {
     const GLuint p = c.r->build_program(vs, fs, &err);
     if (p) c.r->delete_program(p);
@@ -608,8 +606,8 @@ void test_backends_in_one_process() {
     release(o);
   }
   std::string err;
-  check(!GlContext::create(Backend::OSMesa, Api::GLES2, &err) && contains(err, "gl33"),
-        "backends.osmesa_gles2_refused", "message: " + err);
+  check(!GlContext::create(Backend::OSMesa, Api::GLES2, &err) && contains(err, "gl33"), "backends.osmesa_gles2_refused",
+        "message: " + err);
   err.clear();
   check(!GlContext::create(Backend::CPU, Api::GL33, &err) && !err.empty(), "backends.cpu_has_no_context",
         "message: " + err);
@@ -696,8 +694,7 @@ const char *kSmallDecl =
     "static   S 0..1\n"
     "dynamic  D 0..2        # innermost\n";
 
-void decl_err(const std::string &name, const std::string &text, const std::string &where,
-              const std::string &what) {
+void decl_err(const std::string &name, const std::string &text, const std::string &where, const std::string &what) {
   ShaderDecl d;
   std::string err;
   const bool ok = parse_shader_decl("shaders/t.variants", text, &d, &err);
@@ -733,12 +730,12 @@ void test_parse_decl() {
   decl_err("unknown_tier_tiers_line", head + "tiers ps20 ps30\n", "shaders/t.variants:4:", "ps30");
   decl_err("unknown_tier_combo", head + "static A 0..1\ndynamic B 0..2 ps20 sm4\n", "shaders/t.variants:5:", "sm4");
   decl_err("unknown_tier_skip", head + "static A 0..1\nskip ps21: A == 1\n", "shaders/t.variants:5:", "ps21");
-  decl_err("duplicate_combo", head + "static A 0..1\nstatic B 0..1\ndynamic A 0..3\n", "shaders/t.variants:6:",
-           "'A'");
+  decl_err("duplicate_combo", head + "static A 0..1\nstatic B 0..1\ndynamic A 0..3\n", "shaders/t.variants:6:", "'A'");
   decl_err("skip_bad_expression", head + "static A 0..1\nskip ps20: A == \n", "shaders/t.variants:5:", "skip");
-  decl_err("skip_unknown_combo", head + "static A 0..1\nskip ps2b: A == 1 && NOPE > 0\n", "shaders/t.variants:5:",
-           "NOPE");
-  decl_err("skip_trailing_garbage", head + "static A 0..1\nskip sm3: A == 1 1\n", "shaders/t.variants:5:", "unexpected");
+  decl_err("skip_unknown_combo", head + "static A 0..1\nskip ps2b: A == 1 && NOPE > 0\n",
+           "shaders/t.variants:5:", "NOPE");
+  decl_err("skip_trailing_garbage", head + "static A 0..1\nskip sm3: A == 1 1\n",
+           "shaders/t.variants:5:", "unexpected");
   decl_err("skip_no_colon", head + "static A 0..1\nskip ps20 A == 1\n", "shaders/t.variants:5:", "skip");
   // "skip: EXPR" (no tiers, colon right after the key) is the all-tier form of "skip [tiers]: EXPR".
   {
@@ -808,9 +805,9 @@ void test_enumerate() {
       detail = "variant " + std::to_string(i) + " is " + v[i].name() + ", want " + want_ps20[i];
     }
   check(order, "enum.small_order_dynamic_innermost", detail);
-  check(v.size() == 18 && v[6].name() == "ps2b:S=0,D=0" && v[12].name() == "sm3:S=0,D=0" &&
-            v[17].name() == "sm3:S=1,D=2",
-        "enum.small_tier_outermost", v.size() == 18 ? v[6].name() + " " + v[12].name() : "");
+  check(
+      v.size() == 18 && v[6].name() == "ps2b:S=0,D=0" && v[12].name() == "sm3:S=0,D=0" && v[17].name() == "sm3:S=1,D=2",
+      "enum.small_tier_outermost", v.size() == 18 ? v[6].name() + " " + v[12].name() : "");
   check(v.size() == 18 && v[4].tier == Tier::PS20 && v[4].value("S") == 1 && v[4].value("D") == 1 &&
             v[4].value("NOPE", 7) == 7 && v[4].shader == &d,
         "enum.variant_value_and_fallback");
@@ -821,8 +818,8 @@ void test_enumerate() {
         std::to_string(v.size()) + " variants");
 
   // A dynamic combo declared before a static one is still innermost.
-  v = enumerate_text(
-      "shader m\nfragment m.fs\nvertex m.vs\ntiers ps20\ndynamic D 0..1\nstatic S 0..2\n", &d, all_tiers(), &err);
+  v = enumerate_text("shader m\nfragment m.fs\nvertex m.vs\ntiers ps20\ndynamic D 0..1\nstatic S 0..2\n", &d,
+                     all_tiers(), &err);
   bool dyn_inner = v.size() == 6;
   for (size_t i = 0; dyn_inner && i < v.size(); ++i)
     if (v[i].value("S") != static_cast<int>(i / 2) || v[i].value("D") != static_cast<int>(i % 2)) dyn_inner = false;
@@ -868,8 +865,7 @@ void test_enumerate() {
 
   // No combos at all: one variant per tier.
   v = enumerate_text("shader n\nfragment n.fs\nvertex n.vs\n", &d, all_tiers(), &err);
-  check(v.size() == 3 && v[0].name() == "ps20:", "enum.no_combos_one_per_tier",
-        v.empty() ? "none" : v[0].name());
+  check(v.size() == 3 && v[0].name() == "ps20:", "enum.no_combos_one_per_tier", v.empty() ? "none" : v[0].name());
 }
 
 void test_model_lighting() {
@@ -929,7 +925,8 @@ void test_model_lighting() {
   Variant v;
   err.clear();
   const std::string name =
-      "ps2b:ALBEDO_TEXTURE=1,HALF_LAMBERT=0,OUTPUT_MODE=2,PHONG=0,PHONG_EXPONENT_MAP=0,RIM_LIGHT=0,ENVMAP=0,LIGHT_WARP=0,"
+      "ps2b:ALBEDO_TEXTURE=1,HALF_LAMBERT=0,OUTPUT_MODE=2,PHONG=0,PHONG_EXPONENT_MAP=0,RIM_LIGHT=0,ENVMAP=0,LIGHT_WARP="
+      "0,"
       "NUM_LIGHTS=4";
   bool f = find_variant(decls, "model_lighting", name, &v, &err);
   check(f && v.name() == name && v.tier == Tier::PS2B && v.value("OUTPUT_MODE") == 2 && v.value("NUM_LIGHTS") == 4,
@@ -941,8 +938,7 @@ void test_model_lighting() {
   f = find_variant(decls, "model_lighting", "ps2b:ALBEDO_TEXTURE=1,NO_SUCH_COMBO=1", &v, &err);
   check(!f && contains(err, "no variant"), "find_variant.short_name_unknown_combo", "message: " + err);
   f = find_variant(decls, "model_lighting", "12", &v, &err);
-  check(f && v.name() == all.at(12).name() && v.tier == Tier::PS2B, "find_variant.by_index_12",
-        f ? v.name() : err);
+  check(f && v.name() == all.at(12).name() && v.tier == Tier::PS2B, "find_variant.by_index_12", f ? v.name() : err);
   f = find_variant(decls, "model_lighting", "0", &v, &err);
   check(f && v.name() == all.at(0).name(), "find_variant.by_index_0", f ? v.name() : err);
   f = find_variant(decls, "model_lighting", "275", &v, &err);
@@ -956,7 +952,8 @@ void test_model_lighting() {
   check(!f && contains(err, "no variant 'ps20:ALBEDO_TEXTURE=7'"), "find_variant.unknown_name_message",
         "message: " + err);
   err.clear();
-  f = find_variant(decls, "model_lighting", "ps20:ALBEDO_TEXTURE=0,HALF_LAMBERT=0,OUTPUT_MODE=1,NUM_LIGHTS=0", &v, &err);
+  f = find_variant(decls, "model_lighting", "ps20:ALBEDO_TEXTURE=0,HALF_LAMBERT=0,OUTPUT_MODE=1,NUM_LIGHTS=0", &v,
+                   &err);
   check(!f && !err.empty(), "find_variant.skipped_variant_not_found", "message: " + err);
   err.clear();
   f = find_variant(decls, "no_such_shader", "0", &v, &err);

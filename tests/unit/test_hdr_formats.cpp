@@ -1,7 +1,4 @@
-// ============================================================================
-// tiershade — tests/unit/test_hdr_formats.cpp
-//
-// The storage conversions of c_ref/math/hdr_formats.c against llvmpipe, on every
+// tiershade tests: the storage conversions of c_ref/math/hdr_formats.c against llvmpipe, on every
 // backend/API pair: a pass-through shader writes chosen floats into an RGBA8 and an
 // RGBA16F target, and an RGBA8 texture is fetched as float. The values are the hard
 // ones: every RGBA8 rounding boundary (k + 1/2) / 255 and its neighbours within 8 ULP,
@@ -10,7 +7,6 @@
 // (docs/hdr.md records the exhaustive one-time measurement these cases come from.)
 // No tolerance: codes and half bits must be equal; NaN compares as a class.
 // Prints "PASS name" / "FAIL name: detail"; exits 1 if anything failed.
-// ============================================================================
 #include <cmath>
 #include <cstdio>
 #include <cstring>
@@ -23,7 +19,6 @@
 #include "unit_check.h"
 
 namespace {
-
 
 float from_bits(uint32_t b) {
   float f;
@@ -79,17 +74,19 @@ void run(Backend b, Api api, const std::vector<float> &vals) {
   std::copy(vals.begin(), vals.end(), t.rgba.begin());
   const GLuint in = r.upload_texture(t);
   Assembled vs, fs;
-  const std::string head = api == Api::GLES2   ? "#version 100\nprecision highp float;\nprecision highp sampler2D;\n"
-                           : api == Api::GLES3 ? "#version 300 es\nprecision highp float;\nprecision highp sampler2D;\n"
-                                               : "#version 330 core\n";
+  const std::string head = api == Api::GLES2 ? "#version 100\nprecision highp float;\nprecision highp sampler2D;\n"
+      : api == Api::GLES3                    ? "#version 300 es\nprecision highp float;\nprecision highp sampler2D;\n"
+                                             : "#version 330 core\n";
   if (api == Api::GLES2) {
     vs.text = head + "attribute vec2 a_corner; void main() { gl_Position = vec4(a_corner, 0.0, 1.0); }\n";
-    fs.text = head + "uniform sampler2D u_in; uniform vec2 u_size;\n"
-                     "void main() { gl_FragColor = texture2D(u_in, gl_FragCoord.xy / u_size); }\n";
+    fs.text = head +
+        "uniform sampler2D u_in; uniform vec2 u_size;\n"
+        "void main() { gl_FragColor = texture2D(u_in, gl_FragCoord.xy / u_size); }\n";
   } else {
     vs.text = head + "in vec2 a_corner; void main() { gl_Position = vec4(a_corner, 0.0, 1.0); }\n";
-    fs.text = head + "uniform sampler2D u_in; uniform vec2 u_size; out vec4 o;\n"
-                     "void main() { o = texelFetch(u_in, ivec2(gl_FragCoord.xy), 0); }\n";
+    fs.text = head +
+        "uniform sampler2D u_in; uniform vec2 u_size; out vec4 o;\n"
+        "void main() { o = texelFetch(u_in, ivec2(gl_FragCoord.xy), 0); }\n";
   }
   const GLuint prog = r.build_program(vs, fs, &err);
   if (!prog) {
@@ -102,9 +99,11 @@ void run(Backend b, Api api, const std::vector<float> &vals) {
   GlTarget t8, t16;
   std::vector<uint8_t> got8;
   std::vector<float> got16;
-  if (!make_target(g, TargetFormat::RGBA8, W, H, &t8, &err) || !make_target(g, TargetFormat::RGBA16F, W, H, &t16, &err) ||
-      !run.draw(prog, t8, {{"u_in", in, false}}, nullptr, &err) || !run.draw(prog, t16, {{"u_in", in, false}}, nullptr, &err) ||
-      !read_rgba8(g, t8, &got8, &err) || !read_float(g, t16, &got16, &err)) {
+  if (!make_target(g, TargetFormat::RGBA8, W, H, &t8, &err) ||
+      !make_target(g, TargetFormat::RGBA16F, W, H, &t16, &err) ||
+      !run.draw(prog, t8, {{"u_in", in, false}}, nullptr, &err) ||
+      !run.draw(prog, t16, {{"u_in", in, false}}, nullptr, &err) || !read_rgba8(g, t8, &got8, &err) ||
+      !read_float(g, t16, &got16, &err)) {
     check(false, "formats " + name, err);
     return;
   }
@@ -119,11 +118,13 @@ void run(Backend b, Api api, const std::vector<float> &vals) {
     if (!same && bad16++ == 0)
       why16 = "value " + std::to_string(vals[i]) + ": GL " + std::to_string(got16[i]) + ", C " + std::to_string(want16);
   }
-  check(bad8 == 0, "formats " + name + ": RGBA8 target writes round(saturate(x) * 255) like the C (" +
-                       std::to_string(vals.size()) + " values)",
+  check(bad8 == 0,
+        "formats " + name + ": RGBA8 target writes round(saturate(x) * 255) like the C (" +
+            std::to_string(vals.size()) + " values)",
         std::to_string(bad8) + " differ; first " + why8);
-  check(bad16 == 0, "formats " + name + ": RGBA16F target writes round toward zero like the C (" +
-                        std::to_string(vals.size()) + " values)",
+  check(bad16 == 0,
+        "formats " + name + ": RGBA16F target writes round toward zero like the C (" + std::to_string(vals.size()) +
+            " values)",
         std::to_string(bad16) + " differ; first " + why16);
   // The cases must tell toward-zero from round-to-nearest: count the values whose upper half
   // neighbour is nearer than the half they are truncated to.
@@ -144,8 +145,8 @@ void run(Backend b, Api api, const std::vector<float> &vals) {
   std::vector<float> fetched;
   g.UseProgram(prog);
   g.Uniform2f(g.GetUniformLocation(prog, "u_size"), 256.f, 1.f);
-  if (!make_target(g, TargetFormat::RGBA32F, 256, 1, &tf, &err) || !run.draw(prog, tf, {{"u_in", tex8, false}}, nullptr, &err) ||
-      !read_float(g, tf, &fetched, &err)) {
+  if (!make_target(g, TargetFormat::RGBA32F, 256, 1, &tf, &err) ||
+      !run.draw(prog, tf, {{"u_in", tex8, false}}, nullptr, &err) || !read_float(g, tf, &fetched, &err)) {
     check(false, "formats " + name + ": RGBA8 fetch", err);
     return;
   }
@@ -183,7 +184,8 @@ int main() {
   check(trunc_differs == 130, "formats: the RGBA8 cases include every float where truncating rounding differs",
         std::to_string(trunc_differs));
   bool exact = true;
-  for (uint32_t h = 0; h < 0x7c00; ++h) exact = exact && ts_half_from_float_rz(ts_half_to_float(static_cast<uint16_t>(h))) == h;
+  for (uint32_t h = 0; h < 0x7c00; ++h)
+    exact = exact && ts_half_from_float_rz(ts_half_to_float(static_cast<uint16_t>(h))) == h;
   check(exact, "formats: every finite half survives half -> float -> half");
   return g_failed ? 1 : 0;
 }

@@ -1,7 +1,4 @@
-// ============================================================================
-// tiershade — tests/unit/test_hdr_pipeline.cpp
-//
-// The two HDR paths (glue/hdr/paths*.cpp) on every backend/API pair against their
+// tiershade tests: the two HDR paths (glue/hdr/paths*.cpp) on every backend/API pair against their
 // C twins, on the HDR demo scene (glue/demo/hdr_scene.h): the integer path's RGBA8 frame,
 // and the float path's RGBA16F linear frame, quarter-size RGBA16F bloom and RGBA8
 // result must equal the C frames code for code and bit for bit. This checks what the
@@ -9,7 +6,6 @@
 // rounding), fragment positions from gl_FragCoord, texelFetch (NEAREST sampling on
 // GLES 2.0) and the bilinear sampling of RGBA16F textures. No tolerance.
 // Prints "PASS name" / "FAIL name: detail"; exits 1 if anything failed.
-// ============================================================================
 #include <cstdio>
 #include <cstring>
 #include <string>
@@ -21,7 +17,6 @@
 
 namespace {
 
-
 template <class T>
 std::string first_difference(const std::vector<T> &a, const std::vector<T> &b, int w) {
   if (a.size() != b.size()) return "sizes " + std::to_string(a.size()) + " and " + std::to_string(b.size());
@@ -32,8 +27,8 @@ std::string first_difference(const std::vector<T> &a, const std::vector<T> &b, i
   if (!n) return "";
   const size_t p = first / 4;
   return std::to_string(n) + " values differ, first at pixel (" + std::to_string(p % w) + ", " + std::to_string(p / w) +
-         ") channel " + std::to_string(first % 4) + ": GL " + std::to_string(static_cast<double>(a[first])) + ", C " +
-         std::to_string(static_cast<double>(b[first]));
+      ") channel " + std::to_string(first % 4) + ": GL " + std::to_string(static_cast<double>(a[first])) + ", C " +
+      std::to_string(static_cast<double>(b[first]));
 }
 
 struct Fixture {

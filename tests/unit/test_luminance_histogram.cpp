@@ -1,7 +1,4 @@
-// ============================================================================
-// tiershade — tests/unit/test_luminance_histogram.cpp
-//
-// The GPU luminance histogram (glue/hdr/luminance_histogram_gl.cpp) against its exact C
+// tiershade tests: the GPU luminance histogram (glue/hdr/luminance_histogram_gl.cpp) against its exact C
 // twin (glue/hdr/luminance_histogram_cpu.cpp), on every backend/API pair: OSMesa GL 3.3
 // and EGL GL 3.3 (occlusion queries), EGL GLES 3.0 (fenced pixel-pack buffers), EGL
 // GLES 2.0 (synchronous readback). For the float path (an RGBA16F frame x tone-map
@@ -10,7 +7,6 @@
 // every measurement the GPU returns (bucket, frame counted, count) must equal the
 // exact count, in the same frames. No tolerance: counts are integers.
 // Prints "PASS name" / "FAIL name: detail"; exits 1 if anything failed.
-// ============================================================================
 #include <cmath>
 #include <cstdio>
 #include <string>
@@ -22,7 +18,6 @@
 #include "unit_check.h"
 
 namespace {
-
 
 const int W = 61, H = 37;  // odd sizes: the window margins round
 
@@ -62,8 +57,8 @@ void make_frame(int f, bool srgb8, std::vector<uint16_t> *halves, std::vector<ui
 }
 
 void run(Backend b, Api api, int encoding, double alpha) {
-  const std::string name = std::string(backend_name(b)) + "/" + api_name(api) + (encoding ? " integer path" : " float path") +
-                           (alpha < 1 ? ", prefilter 1/16" : ", no prefilter");
+  const std::string name = std::string(backend_name(b)) + "/" + api_name(api) +
+      (encoding ? " integer path" : " float path") + (alpha < 1 ? ", prefilter 1/16" : ", no prefilter");
   std::string err;
   auto ctx = GlContext::create(b, api, &err);
   if (!ctx) {
@@ -101,20 +96,22 @@ void run(Backend b, Api api, int encoding, double alpha) {
     cpu.frame(texels.data(), tscale, f, &want);
   }
   bool same = got.size() == want.size();
-  std::string why = same ? "" : std::to_string(got.size()) + " GPU measurements, " + std::to_string(want.size()) + " exact";
+  std::string why =
+      same ? "" : std::to_string(got.size()) + " GPU measurements, " + std::to_string(want.size()) + " exact";
   long nonzero = 0, distinct = 0;
   for (size_t i = 0; same && i < got.size(); ++i) {
     if (got[i].bucket != want[i].bucket || got[i].frame != want[i].frame || got[i].count != want[i].count) {
       same = false;
       why = "bucket " + std::to_string(want[i].bucket) + " of frame " + std::to_string(want[i].frame) + ": GPU " +
-            std::to_string(got[i].count) + " (bucket " + std::to_string(got[i].bucket) + ", frame " +
-            std::to_string(got[i].frame) + "), exact " + std::to_string(want[i].count);
+          std::to_string(got[i].count) + " (bucket " + std::to_string(got[i].bucket) + ", frame " +
+          std::to_string(got[i].frame) + "), exact " + std::to_string(want[i].count);
     }
     if (got[i].count) ++nonzero;
     if (i && got[i].count != got[i - 1].count) ++distinct;
   }
-  check(same, "histogram " + name + ": every GPU bucket count equals the exact count (" + std::to_string(got.size()) +
-                  " measurements, " + gpu.method() + ", " + std::to_string(gpu.late_reads()) + " reads waited)",
+  check(same,
+        "histogram " + name + ": every GPU bucket count equals the exact count (" + std::to_string(got.size()) +
+            " measurements, " + gpu.method() + ", " + std::to_string(gpu.late_reads()) + " reads waited)",
         why);
   // Guard against a test that cannot fail: the frames must fill many buckets differently.
   check(nonzero > static_cast<long>(got.size()) / 2 && distinct > static_cast<long>(got.size()) / 2,

@@ -1,7 +1,4 @@
-// ============================================================================
-// tiershade — tests/unit/test_sampler3d.cpp
-//
-// The probe behind c_ref/math/ts_sampler3d.c, kept as a regression test: llvmpipe's
+// tiershade tests: the probe behind c_ref/math/ts_sampler3d.c, kept as a regression test: llvmpipe's
 // 3D (volume) texture sampling of RGBA32F textures against the C twin, bit for
 // bit (0 ULP; NaN compared as a class, docs/c_math_layer.md "NaN payloads").
 // Coordinates come from an RGBA32F record read with texelFetch, so nothing is
@@ -19,7 +16,6 @@
 // cases, so a 0 above is a measurement, not a tautology.
 //
 // Usage: build/tests/test_sampler3d   Prints PASS/FAIL lines; exit 1 on failure.
-// ============================================================================
 #include <cmath>
 #include <cstdio>
 #include <cstring>
@@ -94,8 +90,9 @@ std::vector<ts_vec3f> coords_centres(uint32_t seed, int w, int h, int d) {
 }
 std::vector<ts_vec3f> coords_special(uint32_t seed) {
   const float nan = std::numeric_limits<float>::quiet_NaN(), inf = std::numeric_limits<float>::infinity();
-  const float sp[] = {nan, inf, -inf, 0.f, -0.f, 1e-39f, -1e-39f, 1e-30f, -1e-30f, 1e4f, -1e4f, 1e30f,
-                      1.f, 0.99999994f, 1.0000001f, 0.5f, 2.f, -1.f, 3.0000002f, 0.49999997f, 0.50000006f};
+  const float sp[] = {nan,        inf,     -inf, 0.f,   -0.f,       1e-39f,      -1e-39f,
+                      1e-30f,     -1e-30f, 1e4f, -1e4f, 1e30f,      1.f,         0.99999994f,
+                      1.0000001f, 0.5f,    2.f,  -1.f,  3.0000002f, 0.49999997f, 0.50000006f};
   const int n = sizeof sp / sizeof sp[0];
   Rng r(seed);
   std::vector<ts_vec3f> c(kW * kH);
@@ -150,7 +147,7 @@ bool render(Gl &g, const TextureDesc &vol, const std::vector<ts_vec3f> &coords, 
     fs.text = std::string("#version 100\n") + kFragment100;
   } else {
     fs.text = std::string(g.api == Api::GLES3 ? "#version 300 es\nprecision highp float;\n" : "#version 330 core\n") +
-              (fetch ? "#define FETCH 1\n" : "") + kFragment330;
+        (fetch ? "#define FETCH 1\n" : "") + kFragment330;
   }
   fs.files = {"test_sampler3d"};
   const GLuint prog = g.r->build_program(vs, fs, err);
@@ -171,7 +168,7 @@ bool render(Gl &g, const TextureDesc &vol, const std::vector<ts_vec3f> &coords, 
   const GLint sl = gl.GetUniformLocation(prog, "u_size");
   if (sl >= 0) gl.Uniform2f(sl, static_cast<float>(kW), static_cast<float>(kH));
   std::vector<std::pair<std::string, GLuint>> texs = {{"ts_coords", g.r->upload_texture(ct)},
-                                                       {"u_vol", g.r->upload_texture(vol)}};
+                                                      {"u_vol", g.r->upload_texture(vol)}};
   const bool ok = g.r->draw(prog, texs, kW, kH, out, err);
   for (auto &x : texs) g.r->delete_texture(x.second);
   g.r->delete_program(prog);
@@ -218,8 +215,8 @@ long mismatches(const ImageF &img, const std::vector<ts_vec3f> &coords, Fn twin,
       if (!same(img.rgba[i * 4 + ch], cv[ch])) {
         if (!bad && first) {
           char b[256];
-          snprintf(b, sizeof b, "coord (%.9g, %.9g, %.9g) ch%d: GL %.9g C %.9g", coords[i].x, coords[i].y,
-                   coords[i].z, ch, img.rgba[i * 4 + ch], cv[ch]);
+          snprintf(b, sizeof b, "coord (%.9g, %.9g, %.9g) ch%d: GL %.9g C %.9g", coords[i].x, coords[i].y, coords[i].z,
+                   ch, img.rgba[i * 4 + ch], cv[ch]);
           *first = b;
         }
         ++bad;
@@ -234,8 +231,10 @@ long mismatches(const ImageF &img, const std::vector<ts_vec3f> &coords, Fn twin,
 int main() {
   ts_math_init();
   std::vector<Gl> gls;
-  const struct { Backend b; Api a; } cfgs[] = {{Backend::OSMesa, Api::GL33}, {Backend::EGL, Api::GLES3},
-                                               {Backend::EGL, Api::GLES2}};
+  const struct {
+    Backend b;
+    Api a;
+  } cfgs[] = {{Backend::OSMesa, Api::GL33}, {Backend::EGL, Api::GLES3}, {Backend::EGL, Api::GLES2}};
   for (const auto &c : cfgs) {
     std::string err;
     Gl g;
@@ -295,12 +294,16 @@ int main() {
         continue;
       }
       std::string first;
-      const long bad = mismatches(img, cs.coords, [&](ts_vec3f p) { return ts_texture3Df(&t, p); }, &first);
-      check(bad == 0, name, std::to_string(bad) + " of " + std::to_string(cs.coords.size() * 4) + " channels differ; " + first);
+      const long bad = mismatches(
+          img, cs.coords, [&](ts_vec3f p) { return ts_texture3Df(&t, p); }, &first);
+      check(bad == 0, name,
+            std::to_string(bad) + " of " + std::to_string(cs.coords.size() * 4) + " channels differ; " + first);
       if (cs.linear && !cs.repeat && g.api != Api::GLES2 && cs.name.find("specials") == std::string::npos) {
-        z_first_total += mismatches(img, cs.coords, [&](ts_vec3f p) { return texture3d_z_first(&t, p); }, nullptr);
+        z_first_total += mismatches(
+            img, cs.coords, [&](ts_vec3f p) { return texture3d_z_first(&t, p); }, nullptr);
         ts_math_set_fused(!ts_math_fused());
-        wrong_fused_total += mismatches(img, cs.coords, [&](ts_vec3f p) { return ts_texture3Df(&t, p); }, nullptr);
+        wrong_fused_total += mismatches(
+            img, cs.coords, [&](ts_vec3f p) { return ts_texture3Df(&t, p); }, nullptr);
         ts_math_init();  // back to the detected mode
       }
     }
@@ -317,17 +320,22 @@ int main() {
     Rng r(77);
     std::vector<ts_vec3f> ic(kW * kH);
     for (auto &p : ic)
-      p = ts_v3f(static_cast<float>(static_cast<int>(r.next() % 23) - 3), static_cast<float>(static_cast<int>(r.next() % 15) - 3),
+      p = ts_v3f(static_cast<float>(static_cast<int>(r.next() % 23) - 3),
+                 static_cast<float>(static_cast<int>(r.next() % 15) - 3),
                  static_cast<float>(static_cast<int>(r.next() % 11) - 3));
     ImageF img;
     std::string err, first;
     if (!render(g, vol, ic, true, &img, &err)) {
       check(false, "sampler3d." + g.tag + ".texelFetch", err);
     } else {
-      const long bad = mismatches(img, ic, [&](ts_vec3f p) {
-        return ts_texelFetch3Df(&t, static_cast<int>(p.x), static_cast<int>(p.y), static_cast<int>(p.z));
-      }, &first);
-      check(bad == 0, "sampler3d." + g.tag + ".texelFetch in and out of range", std::to_string(bad) + " differ; " + first);
+      const long bad = mismatches(
+          img, ic,
+          [&](ts_vec3f p) {
+            return ts_texelFetch3Df(&t, static_cast<int>(p.x), static_cast<int>(p.y), static_cast<int>(p.z));
+          },
+          &first);
+      check(bad == 0, "sampler3d." + g.tag + ".texelFetch in and out of range",
+            std::to_string(bad) + " differ; " + first);
     }
   }
   // The probe must be able to tell the candidates apart.

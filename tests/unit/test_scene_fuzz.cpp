@@ -1,7 +1,4 @@
-// ============================================================================
-// tiershade -- tests/unit/test_scene_fuzz.cpp
-//
-// Mutated scenes never crash (run under AddressSanitizer and UndefinedBehaviorSanitizer by
+// tiershade tests: mutated scenes never crash (run under AddressSanitizer and UndefinedBehaviorSanitizer by
 // `make test`): the shipped glTF scenes, with their numbers, strings and lines changed by a
 // fixed-seed generator (a number becomes -1, 0, 1e9, 4294967296, 0.5, NaN-free extremes, a
 // string, null, an array...; a string becomes another; a line is dropped, doubled or swapped;
@@ -13,7 +10,6 @@
 // later stages fail with a message too, and a frame that renders holds no NaN or Inf in its
 // lit pass. The counts of each outcome are printed as INFO lines.
 // Prints "PASS name" / "FAIL name: detail"; ends with "N passed, N failed".
-// ============================================================================
 #include <unistd.h>
 
 #include <algorithm>
@@ -66,8 +62,9 @@ Tokens scan(const std::string &s) {
       i = j + 1;
     } else if (s[i] == '-' || (s[i] >= '0' && s[i] <= '9')) {
       size_t j = i + 1;
-      while (j < s.size() && (std::isdigit(static_cast<unsigned char>(s[j])) || s[j] == '.' || s[j] == 'e' ||
-                              s[j] == 'E' || s[j] == '+' || s[j] == '-'))
+      while (j < s.size() &&
+             (std::isdigit(static_cast<unsigned char>(s[j])) || s[j] == '.' || s[j] == 'e' || s[j] == 'E' ||
+              s[j] == '+' || s[j] == '-'))
         ++j;
       t.numbers.push_back({i, j});
       i = j;
@@ -97,13 +94,26 @@ std::string join_lines(const std::vector<std::string> &v) {
 }
 
 std::string mutate(const std::string &src, Rng &r) {
-  static const char *const kNumbers[] = {"-1", "0", "1", "2", "3", "7", "-0.0", "0.5", "1e9", "-1e9", "1e38", "1e-38",
-                                         "4294967296", "2147483648", "65536", "255", "\"x\"", "null", "[]", "{}",
-                                         "true", "[1,2]", "1e308"};
-  static const char *const kStrings[] = {"\"\"", "\"x\"", "\"VertexLitGeneric\"", "\"LightmappedGeneric\"",
-                                         "\"textures/none.png\"", "\"../../../../etc/passwd\"", "\"spot\"",
-                                         "\"directional\"", "\"float\"", "\"integer\"", "\"rgbe\"", "\"ldr\"", "3",
-                                         "null", "\"VEC3\"", "\"SCALAR\"", "\"MAT4\""};
+  static const char *const kNumbers[] = {"-1",    "0",    "1",    "2",     "3",          "7",          "-0.0",  "0.5",
+                                         "1e9",   "-1e9", "1e38", "1e-38", "4294967296", "2147483648", "65536", "255",
+                                         "\"x\"", "null", "[]",   "{}",    "true",       "[1,2]",      "1e308"};
+  static const char *const kStrings[] = {"\"\"",
+                                         "\"x\"",
+                                         "\"VertexLitGeneric\"",
+                                         "\"LightmappedGeneric\"",
+                                         "\"textures/none.png\"",
+                                         "\"../../../../etc/passwd\"",
+                                         "\"spot\"",
+                                         "\"directional\"",
+                                         "\"float\"",
+                                         "\"integer\"",
+                                         "\"rgbe\"",
+                                         "\"ldr\"",
+                                         "3",
+                                         "null",
+                                         "\"VEC3\"",
+                                         "\"SCALAR\"",
+                                         "\"MAT4\""};
   std::string s = src;
   const Tokens t = scan(s);
   const uint32_t kind = r.next() % 10;
@@ -118,9 +128,12 @@ std::string mutate(const std::string &src, Rng &r) {
   std::vector<std::string> lines = split_lines(s);
   if (lines.size() < 3) return s;
   const size_t a = r.next() % lines.size(), b = r.next() % lines.size();
-  if (kind == 7) lines.erase(lines.begin() + static_cast<long>(a));
-  else if (kind == 8) lines.insert(lines.begin() + static_cast<long>(a), lines[a]);
-  else std::swap(lines[a], lines[b]);
+  if (kind == 7)
+    lines.erase(lines.begin() + static_cast<long>(a));
+  else if (kind == 8)
+    lines.insert(lines.begin() + static_cast<long>(a), lines[a]);
+  else
+    std::swap(lines[a], lines[b]);
   return join_lines(lines);
 }
 
@@ -145,7 +158,7 @@ std::string mutate_buffer(std::string b, Rng &r) {
 
 struct Outcome {
   int load_fail = 0, select_fail = 0, prepare_fail = 0, rendered = 0;
-  int lit_nonfinite = 0;       // rendered, with a NaN or Inf in the lit frame
+  int lit_nonfinite = 0;  // rendered, with a NaN or Inf in the lit frame
   std::string prepare_example;  // the first message of a preparation failure
   std::string nonfinite_example;
 };
@@ -244,12 +257,14 @@ void fuzz_scene(const std::string &dir, const char *name, int count, uint32_t se
     unlink(path.c_str());
     if (!bin_path.empty()) unlink(bin_path.c_str());
   }
-  printf("INFO %s: %d mutants: %d refused at load, %d by the selection, %d at preparation, %d rendered "
-         "(%d with a non-finite lit value)\n", label.c_str(), count, o.load_fail, o.select_fail, o.prepare_fail, o.rendered,
-         o.lit_nonfinite);
+  printf(
+      "INFO %s: %d mutants: %d refused at load, %d by the selection, %d at preparation, %d rendered "
+      "(%d with a non-finite lit value)\n",
+      label.c_str(), count, o.load_fail, o.select_fail, o.prepare_fail, o.rendered, o.lit_nonfinite);
   if (!o.prepare_example.empty()) printf("INFO   e.g. %s\n", o.prepare_example.c_str());
-  check(bad.empty(), label + ": " + std::to_string(count) +
-                         " mutants load or fail with a message naming the file, none crashes", bad);
+  check(bad.empty(),
+        label + ": " + std::to_string(count) + " mutants load or fail with a message naming the file, none crashes",
+        bad);
   check(o.lit_nonfinite == 0, label + ": no NaN or Inf in the lit frame of a mutant that renders",
         std::to_string(o.lit_nonfinite) + " frames, first " + o.nonfinite_example);
   check(o.rendered > 0 && o.load_fail > 0, label + ": the mutants reach both outcomes (the test exercises both)",
@@ -292,8 +307,10 @@ int main(int argc, char **argv) {
       page.w = ps.lightmap_w;
       page.h = ps.lightmap_h;
       page.rgba = ps.lightmap_page;
-      if (write_exr(dir + "/page.exr", page, &err)) fuzz_scene(dir, "world_lighting.gltf", count / 2, seed * 3 + 4, "page.exr");
-      else check(false, "write the baked page", err);
+      if (write_exr(dir + "/page.exr", page, &err))
+        fuzz_scene(dir, "world_lighting.gltf", count / 2, seed * 3 + 4, "page.exr");
+      else
+        check(false, "write the baked page", err);
     } else {
       check(false, "bake world_lighting's page", err);
     }

@@ -1,7 +1,4 @@
-// ============================================================================
-// tiershade — tests/unit/test_scene_gltf.cpp
-//
-// Unit tests for the glTF scene loader (glue/scene/gltf_load*.cpp, glue/scene/scene.h).
+// tiershade tests: unit tests for the glTF scene loader (glue/scene/gltf_load*.cpp, glue/scene/scene.h).
 //
 // Usage: build/tests/test_scene_gltf   (from the repo root: it reads scenes/)
 //   Prints "PASS name" or "FAIL name: detail" per check; exits 1 if any failed.
@@ -12,7 +9,6 @@
 // table of broken scenes written to a private mkdtemp() directory, each of
 // which must fail with the file name and the place in the message and leave
 // the output scene untouched.
-// ============================================================================
 #include <unistd.h>
 
 #include <cmath>
@@ -102,12 +98,14 @@ void test_model_lighting() {
         "model_lighting: 2 point, 2 spot, 2 directional lights");
   std::string why;
   check(well_formed(s, &why), "model_lighting: unit normals/tangents, indices in range", why);
-  for (const SceneMaterial &m : s.materials) check(m.shader == SceneShader::Model, "model_lighting: " + m.name + " is VertexLitGeneric");
+  for (const SceneMaterial &m : s.materials)
+    check(m.shader == SceneShader::Model, "model_lighting: " + m.name + " is VertexLitGeneric");
   const ScenePrimitive *p = prim_of(s, "plain_sphere");  // north pole of a r=0.6 sphere at x=-3
   check(p && near(p->position[0], -3) && near(p->position[1], 0.6) && near(p->position[2], 0),
         "model_lighting: first vertex of plain_sphere in world space",
         p ? std::to_string(p->position[0]) + "," + std::to_string(p->position[1]) : "no primitive");
-  check(p && p->uv.size() == p->position.size() / 3 * 2 && !p->tangent.empty(), "model_lighting: uvs and tangents read");
+  check(p && p->uv.size() == p->position.size() / 3 * 2 && !p->tangent.empty(),
+        "model_lighting: uvs and tangents read");
   const ScenePrimitive *t = prim_of(s, "metal_torus");
   bool inside = t != nullptr;
   for (size_t i = 0; t && i < t->position.size(); i += 3) {  // scale 1.1: |p - centre| <= 1.1 * 0.77
@@ -142,12 +140,14 @@ void test_model_lighting() {
     const ts_light &l = spot->light;
     const double d = std::sqrt(17.0);
     check(l.type == TS_LIGHT_SPOT && near(l.color[0], 15) && near(l.color[2], 14.25) && near(l.pos[1], 4) &&
-              near(l.pos[2], 1) && near(l.dir[1], -4 / d) && near(l.dir[2], -1 / d) && near(l.cos_outer, std::cos(0.5)) &&
-              near(l.cos_inner, std::cos(0.3)) && near(l.spot_exponent, 2) && near(l.atten[2], 1) && l.atten[0] == 0,
+              near(l.pos[2], 1) && near(l.dir[1], -4 / d) && near(l.dir[2], -1 / d) &&
+              near(l.cos_outer, std::cos(0.5)) && near(l.cos_inner, std::cos(0.3)) && near(l.spot_exponent, 2) &&
+              near(l.atten[2], 1) && l.atten[0] == 0,
           "model_lighting: spot light converted");
     const double n = 1.5;  // |(1, -1, -0.5)|
-    check(sun->light.type == TS_LIGHT_DIRECTIONAL && near(sun->light.dir[0], 1 / n) && near(sun->light.dir[1], -1 / n) &&
-              sun->light.atten[0] == 1 && sun->light.atten[2] == 0 && near(sun->light.color[0], 0.6),
+    check(sun->light.type == TS_LIGHT_DIRECTIONAL && near(sun->light.dir[0], 1 / n) &&
+              near(sun->light.dir[1], -1 / n) && sun->light.atten[0] == 1 && sun->light.atten[2] == 0 &&
+              near(sun->light.color[0], 0.6),
           "model_lighting: directional light (direction = node -Z, atten 1,0,0)");
     check(key->light.type == TS_LIGHT_POINT && near(key->light.pos[0], -2.5) && near(key->light.color[1], 9),
           "model_lighting: point light colour x intensity");
@@ -169,7 +169,8 @@ void test_model_lighting() {
   check(s.ambient.size() == 2 && s.ambient[0].from_probe == 0 && s.ambient[1].from_probe == -1 &&
             near(s.ambient[1].cube[0][0], 0.2f) && near(s.ambient[1].position[0], 4),
         "model_lighting: ambient samples");
-  check(s.hdr.path == "integer" && s.hdr.luts.empty() && s.path == "scenes/model_lighting.gltf", "model_lighting: hdr settings");
+  check(s.hdr.path == "integer" && s.hdr.luts.empty() && s.path == "scenes/model_lighting.gltf",
+        "model_lighting: hdr settings");
 }
 
 void test_world_lighting() {
@@ -210,7 +211,8 @@ void test_world_lighting() {
     for (size_t i = 0; i < im.rgba.size(); ++i) constant = constant && im.rgba[i] == (i % 4 == 3 ? 1.f : 128 / 255.f);
   }
   check(constant, "world_lighting: constant-valued mask texture");
-  check(s.probes[0].image == -1 && s.probes[1].image == -1 && s.probes[1].size == 32, "world_lighting: probes from the world");
+  check(s.probes[0].image == -1 && s.probes[1].image == -1 && s.probes[1].size == 32,
+        "world_lighting: probes from the world");
   check(near(s.lightmaps.luxels_per_unit, 8) && s.lightmaps.encoding == "rgbe" && s.lightmaps.page_w == 512 &&
             s.lightmaps.page_h == 256,
         "world_lighting: lightmap settings");
@@ -231,7 +233,8 @@ void test_hdr_atrium() {
             near(s.hdr.luts[1].weight, 0.2f),
         "hdr_atrium: float path, auto exposure, bloom, two LUTs");
   const SceneLight *sun = light(s, "sun_lamp");
-  check(sun && near(sun->light.color[0], 200) && near(sun->light.color[1], 184, 1e-3), "hdr_atrium: 200-intensity lamp");
+  check(sun && near(sun->light.color[0], 200) && near(sun->light.color[1], 184, 1e-3),
+        "hdr_atrium: 200-intensity lamp");
   const SceneMaterial *panel = material(s, "light_panel");
   check(panel && panel->self_illum && near(panel->self_illum_tint[0], 24), "hdr_atrium: bright self-illuminated panel");
   check(s.probes.size() == 1 && near(s.probes[0].scale, 4) && s.probes[0].image >= 0 &&
@@ -282,7 +285,8 @@ const std::string kBase =
     "\"materials\":[{\"name\":\"mat\",\"extras\":{\"source\":{\"shader\":\"VertexLitGeneric\"}}}],"
     "\"accessors\":[{\"bufferView\":0,\"componentType\":5126,\"count\":3,\"type\":\"VEC3\"},"
     "{\"bufferView\":1,\"componentType\":5123,\"count\":3,\"type\":\"SCALAR\"}],"
-    "\"bufferViews\":[{\"buffer\":0,\"byteOffset\":0,\"byteLength\":36},{\"buffer\":0,\"byteOffset\":36,\"byteLength\":6}],"
+    "\"bufferViews\":[{\"buffer\":0,\"byteOffset\":0,\"byteLength\":36},{\"buffer\":0,\"byteOffset\":36,\"byteLength\":"
+    "6}],"
     "\"buffers\":[{\"uri\":\"tri.bin\",\"byteLength\":44}]}";
 
 std::string edit(std::string s, const std::string &from, const std::string &to) {
@@ -309,8 +313,9 @@ void test_good_minimal() {
   check(ok && s.materials.size() == 2 && s.primitives[0].material == 1 && s.materials[1].shader == SceneShader::Model,
         "minimal: primitive without material gets a default material", err);
   // Data URI buffer.
-  write_file("datauri.gltf", edit(kBase, "\"uri\":\"tri.bin\"",
-                                  "\"uri\":\"data:application/octet-stream;base64," + base64(tri_bin()) + "\""));
+  write_file(
+      "datauri.gltf",
+      edit(kBase, "\"uri\":\"tri.bin\"", "\"uri\":\"data:application/octet-stream;base64," + base64(tri_bin()) + "\""));
   ok = load_scene(g_dir + "/datauri.gltf", &s, &err);
   check(ok && s.primitives.size() == 1 && near(s.primitives[0].position[5], 3), "minimal: data URI buffer", err);
   // .glb with a BIN chunk.
@@ -319,8 +324,8 @@ void test_good_minimal() {
   const std::string bin = tri_bin();
   auto u32 = [](uint32_t v) { return std::string(reinterpret_cast<const char *>(&v), 4); };
   const std::string glb = "glTF" + u32(2) + u32(static_cast<uint32_t>(12 + 8 + json.size() + 8 + bin.size())) +
-                          u32(static_cast<uint32_t>(json.size())) + "JSON" + json + u32(static_cast<uint32_t>(bin.size())) +
-                          std::string("BIN\0", 4) + bin;
+      u32(static_cast<uint32_t>(json.size())) + "JSON" + json + u32(static_cast<uint32_t>(bin.size())) +
+      std::string("BIN\0", 4) + bin;
   write_file("ok.glb", glb);
   ok = load_scene(g_dir + "/ok.glb", &s, &err);
   check(ok && s.primitives.size() == 1 && s.cameras.size() == 1, "minimal: .glb with a BIN chunk", err);
@@ -329,16 +334,19 @@ void test_good_minimal() {
 struct Bad {
   const char *name;
   std::string file, text;  // text empty: the file is not written (or written by the case)
-  const char *place;       // substring the message must contain (besides the file name)
+  const char *place;  // substring the message must contain (besides the file name)
 };
 
 void test_bad_scenes() {
-  const std::string tex = "\"images\":[{\"uri\":\"gone.png\"}],\"textures\":[{\"source\":0}],\"materials\":[{\"name\":\"mat\","
-                          "\"pbrMetallicRoughness\":{\"baseColorTexture\":{\"index\":0}},";
+  const std::string tex =
+      "\"images\":[{\"uri\":\"gone.png\"}],\"textures\":[{\"source\":0}],\"materials\":[{\"name\":\"mat\","
+      "\"pbrMetallicRoughness\":{\"baseColorTexture\":{\"index\":0}},";
   auto src = [](const std::string &keys) {
     return edit(kBase, "{\"shader\":\"VertexLitGeneric\"}", "{\"shader\":\"VertexLitGeneric\"," + keys + "}");
   };
-  auto extras = [](const std::string &ts) { return edit(kBase, "\"asset\":", "\"extras\":{\"tiershade\":" + ts + "},\"asset\":"); };
+  auto extras = [](const std::string &ts) {
+    return edit(kBase, "\"asset\":", "\"extras\":{\"tiershade\":" + ts + "},\"asset\":");
+  };
   // Lightmap pages (extras.tiershade.lightmaps.image): a good 32 x 16 one, one with a NaN, one
   // with a negative texel, one too small to be a page.
   auto page = [](const std::string &name, int w, int h, int bad_x, int bad_y, float bad) {
@@ -360,30 +368,36 @@ void test_bad_scenes() {
       {"broken JSON", "broken.gltf", edit(kBase, "\"scene\":0,", "\"scene\":0,,"), "JSON: parse error at line 1"},
       {"truncated JSON", "truncated.gltf", kBase.substr(0, kBase.size() / 2), "JSON: parse error"},
       {"missing .bin", "nobin.gltf", edit(kBase, "tri.bin", "nope.bin"), "buffers[0]: file not found: "},
-      {"missing image", "noimage.gltf", edit(kBase, "\"materials\":[{\"name\":\"mat\",", tex), "images[0]: file not found:"},
+      {"missing image", "noimage.gltf", edit(kBase, "\"materials\":[{\"name\":\"mat\",", tex),
+       "images[0]: file not found:"},
       {"buffer file shorter than byteLength", "short.gltf", edit(kBase, "tri.bin", "short.bin"), "buffers[0]: file"},
-      {"bufferView beyond the buffer", "view.gltf", edit(kBase, "\"byteOffset\":36,\"byteLength\":6", "\"byteOffset\":40,\"byteLength\":6"),
-       "bufferViews[1]"},
-      {"accessor type wrong", "acctype.gltf", edit(kBase, "\"count\":3,\"type\":\"VEC3\"", "\"count\":3,\"type\":\"VEC2\""),
+      {"bufferView beyond the buffer", "view.gltf",
+       edit(kBase, "\"byteOffset\":36,\"byteLength\":6", "\"byteOffset\":40,\"byteLength\":6"), "bufferViews[1]"},
+      {"accessor type wrong", "acctype.gltf",
+       edit(kBase, "\"count\":3,\"type\":\"VEC3\"", "\"count\":3,\"type\":\"VEC2\""),
        "meshes[0].primitives[0].attributes.POSITION: accessor 0 has type VEC2, expected VEC3"},
       {"index component type wrong", "idxtype.gltf", edit(kBase, "\"componentType\":5123", "\"componentType\":5126"),
        "meshes[0].primitives[0].indices: accessor 1 has componentType 5126"},
-      {"index out of range", "idxrange.gltf", edit(kBase, "\"count\":3,\"type\":\"VEC3\"", "\"count\":2,\"type\":\"VEC3\""),
+      {"index out of range", "idxrange.gltf",
+       edit(kBase, "\"count\":3,\"type\":\"VEC3\"", "\"count\":2,\"type\":\"VEC3\""),
        "meshes[0].primitives[0].indices: index 2"},
       {"unknown material key", "unkkey.gltf", src("\"$phongexp\":5"),
        "materials[0] (\"mat\").extras.source: unknown key \"$phongexp\""},
-      {"wrong key type", "keytype.gltf", src("\"$phongboost\":\"big\""), "materials[0] (\"mat\").extras.source.$phongboost"},
-      {"key on the wrong shader", "wrongshader.gltf", src("\"$ssbump\":1"), "extras.source: \"$ssbump\" is a LightmappedGeneric key"},
+      {"wrong key type", "keytype.gltf", src("\"$phongboost\":\"big\""),
+       "materials[0] (\"mat\").extras.source.$phongboost"},
+      {"key on the wrong shader", "wrongshader.gltf", src("\"$ssbump\":1"),
+       "extras.source: \"$ssbump\" is a LightmappedGeneric key"},
       {"texture index out of range", "texrange.gltf", src("\"$phong\":1,\"$lightwarptexture\":{\"index\":3}"),
        "extras.source.$lightwarptexture.index: texture 3 does not exist"},
       {"Phong feature without $phong", "nophong.gltf", src("\"$rimlight\":1"), "\"$rimlight\" needs \"$phong\""},
-      {"unknown tiershade key", "unkextras.gltf", extras("{\"cameras\":0}"), "extras.tiershade: unknown key \"cameras\""},
+      {"unknown tiershade key", "unkextras.gltf", extras("{\"cameras\":0}"),
+       "extras.tiershade: unknown key \"cameras\""},
       {"unknown probe key", "unkprobe.gltf", extras("{\"probes\":[{\"position\":[0,0,0],\"sise\":8}]}"),
        "extras.tiershade.probes[0]: unknown key \"sise\""},
       {"probe size out of range", "probesize.gltf", extras("{\"probes\":[{\"position\":[0,0,0],\"size\":1024}]}"),
        "extras.tiershade.probes[0].size"},
-      {"ambient from a missing probe", "ambient.gltf", extras("{\"ambient\":[{\"position\":[0,0,0],\"from_probe\":0}]}"),
-       "extras.tiershade.ambient[0].from_probe"},
+      {"ambient from a missing probe", "ambient.gltf",
+       extras("{\"ambient\":[{\"position\":[0,0,0],\"from_probe\":0}]}"), "extras.tiershade.ambient[0].from_probe"},
       {"camera index out of range", "camidx.gltf", extras("{\"camera\":1}"), "extras.tiershade.camera"},
       {"non-finite number", "inf.gltf", edit(kBase, "\"yfov\":0.8", "\"yfov\":1e999"), "line 1, column"},
       {"no camera", "nocam.gltf", edit(kBase, "\"nodes\":[0,1]", "\"nodes\":[0]"), "no camera"},
@@ -402,7 +416,8 @@ void test_bad_scenes() {
       {"lightmap page not an image", "lmbin.gltf", extras("{\"lightmaps\":{\"image\":\"tri.bin\"}}"),
        "extras.tiershade.lightmaps.image: " /* + path */},
       {"lightmap page size differs from page", "lmsize.gltf",
-       extras("{\"lightmaps\":{\"page\":[512,256],\"image\":\"page.exr\"}}"), "32 x 16 texels, but \"page\" is 512 x 256"},
+       extras("{\"lightmaps\":{\"page\":[512,256],\"image\":\"page.exr\"}}"),
+       "32 x 16 texels, but \"page\" is 512 x 256"},
       {"lightmap page with a NaN", "lmnan.gltf", extras("{\"lightmaps\":{\"image\":\"page_nan.exr\"}}"),
        "page_nan.exr: texel (3, 2) channel G is NaN"},
       {"lightmap page with a negative texel", "lmneg.gltf", extras("{\"lightmaps\":{\"image\":\"page_neg.exr\"}}"),
@@ -413,20 +428,24 @@ void test_bad_scenes() {
        "extras.tiershade.lightmaps.image"},
       {"non-triangle mode", "lines.gltf", edit(kBase, "\"material\":0", "\"material\":0,\"mode\":1"),
        "meshes[0].primitives[0]: mode 1"},
-      {"node cycle", "cycle.gltf", edit(kBase, "{\"mesh\":0,", "{\"children\":[0],\"mesh\":0,"), "nodes[0]: appears twice"},
+      {"node cycle", "cycle.gltf", edit(kBase, "{\"mesh\":0,", "{\"children\":[0],\"mesh\":0,"),
+       "nodes[0]: appears twice"},
       {"bad spot cone", "spot.gltf",
-       edit(edit(kBase, "\"asset\":", "\"extensions\":{\"KHR_lights_punctual\":{\"lights\":[{\"type\":\"spot\",\"spot\":"
-                                      "{\"innerConeAngle\":0.5,\"outerConeAngle\":0.4}}]}},\"asset\":"),
+       edit(edit(kBase, "\"asset\":",
+                 "\"extensions\":{\"KHR_lights_punctual\":{\"lights\":[{\"type\":\"spot\",\"spot\":"
+                 "{\"innerConeAngle\":0.5,\"outerConeAngle\":0.4}}]}},\"asset\":"),
             "{\"camera\":0,", "{\"camera\":0,\"extensions\":{\"KHR_lights_punctual\":{\"light\":0}},"),
        "extensions.KHR_lights_punctual.lights[0].spot"},
       {"unknown light extras key", "lightkey.gltf",
-       edit(edit(kBase, "\"asset\":", "\"extensions\":{\"KHR_lights_punctual\":{\"lights\":[{\"type\":\"point\","
-                                      "\"extras\":{\"source\":{\"quadratic\":1,\"cubic\":2}}}]}},\"asset\":"),
+       edit(edit(kBase, "\"asset\":",
+                 "\"extensions\":{\"KHR_lights_punctual\":{\"lights\":[{\"type\":\"point\","
+                 "\"extras\":{\"source\":{\"quadratic\":1,\"cubic\":2}}}]}},\"asset\":"),
             "{\"camera\":0,", "{\"camera\":0,\"extensions\":{\"KHR_lights_punctual\":{\"light\":0}},"),
        "lights[0].extras.source: unknown key \"cubic\""},
       {"light with zero attenuation", "atten.gltf",
-       edit(edit(kBase, "\"asset\":", "\"extensions\":{\"KHR_lights_punctual\":{\"lights\":[{\"type\":\"point\","
-                                      "\"extras\":{\"source\":{\"quadratic\":0}}}]}},\"asset\":"),
+       edit(edit(kBase, "\"asset\":",
+                 "\"extensions\":{\"KHR_lights_punctual\":{\"lights\":[{\"type\":\"point\","
+                 "\"extras\":{\"source\":{\"quadratic\":0}}}]}},\"asset\":"),
             "{\"camera\":0,", "{\"camera\":0,\"extensions\":{\"KHR_lights_punctual\":{\"light\":0}},"),
        "nodes[1] light extensions.KHR_lights_punctual.lights[0]"},
       {".glb with bad magic", "bad.glb", "", "GLB header: bad magic"},
@@ -448,7 +467,8 @@ void test_bad_scenes() {
   std::string err;
   const bool ok = load_scene(g_dir + "/lmok.gltf", &s, &err);
   check(ok && s.lightmaps.page_w == 32 && s.lightmaps.page_h == 16 && s.lightmaps.image_rgba.size() == 32 * 16 * 4 &&
-            s.lightmaps.image_rgba[1] == 0.25f && s.lightmaps.image_rgba[3] == 1.f && contains(s.lightmaps.image, "page.exr"),
+            s.lightmaps.image_rgba[1] == 0.25f && s.lightmaps.image_rgba[3] == 1.f &&
+            contains(s.lightmaps.image, "page.exr"),
         "lightmaps.image: a 32 x 16 page read, its size the page size", err);
 }
 

@@ -1,7 +1,4 @@
-// ============================================================================
-// tiershade -- tests/unit/test_scene_ortho_reference.cpp
-//
-// Three features of the scene renderer, on scenes/sphere_grid.gltf (the demo's sphere grid):
+// tiershade tests: three features of the scene renderer, on scenes/sphere_grid.gltf (the demo's sphere grid):
 //   - orthographic cameras: the loader reads xmag/ymag/znear/zfar and refuses bad values with the
 //     place; the view-projection maps the view's corners to the clip cube with square pixels; the
 //     C rasteriser covers each sphere's centre and leaves the gaps between spheres empty;
@@ -13,7 +10,6 @@
 //     frame within float rounding when no light is folded, and away from the folded sm3 frame
 //     by the folding's approximation when 2 of the 6 lights are folded.
 // Prints "PASS name" / "FAIL name: detail"; exits 1 if any check failed.
-// ============================================================================
 #include <unistd.h>
 
 #include <algorithm>
@@ -43,7 +39,7 @@ const char *kGrid = "scenes/sphere_grid.gltf";
 bool prepared(const Scene &s, Tier tier, const std::string &hdr, int w, int h, SceneSelection *sel, PreparedScene *p,
               std::string *err) {
   return select_scene_variants(s, tier, hdr, sel, err) &&
-         prepare_scene(s, *sel, w, h, Api::GL33, s.hdr.tone_map_scale, p, err);
+      prepare_scene(s, *sel, w, h, Api::GL33, s.hdr.tone_map_scale, p, err);
 }
 
 void test_camera(const Scene &s) {
@@ -61,7 +57,7 @@ void test_camera(const Scene &s) {
   clip(7.2, 3.6, 0, b);
   clip(0, 0, -59, c);  // 119 in front of the eye at z = 60: just inside zfar
   const bool corners = std::fabs(a[0] + 1) < 1e-12 && std::fabs(a[1] + 1) < 1e-12 && std::fabs(b[0] - 1) < 1e-12 &&
-                       std::fabs(b[1] - 1) < 1e-12 && a[3] == 1 && b[3] == 1;
+      std::fabs(b[1] - 1) < 1e-12 && a[3] == 1 && b[3] == 1;
   check(corners, "ortho: the view's corners map to clip -1 and +1, w = 1 (2:1 output)");
   check(std::fabs(a[2] - (2.0 * 59 / 119 - 1)) < 1e-12 && c[2] < 1 && c[2] > 0.98,
         "ortho: depth is linear from znear (-1) to zfar (+1)");

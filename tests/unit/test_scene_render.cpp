@@ -1,7 +1,4 @@
-// ============================================================================
-// tiershade -- tests/unit/test_scene_render.cpp
-//
-// The scene renderer (glue/scene_effects, scene_prepare, scene_frame, static_exposure):
+// tiershade tests: the scene renderer (glue/scene_effects, scene_prepare, scene_frame, static_exposure):
 //   - the still-frame histogram counts equal ae_exact_count (the luminance_compare twin) for
 //     every bucket over HDR frames with NaN/Inf pixels and scales from 0 to overflow;
 //   - the selection builds only what a scene uses (ps20: no Phong, lights folded; no probe:
@@ -11,7 +8,6 @@
 //     display codes within the tolerances below (the twins are bit-exact on the same inputs,
 //     tests/cli/test_render.sh; here the inputs differ by interpolation rounding).
 // Prints "PASS name" / "FAIL name: detail" and "INFO" numbers; exits 1 if any check failed.
-// ============================================================================
 #include <cmath>
 #include <cstdio>
 #include <limits>
@@ -53,7 +49,7 @@ void test_static_counts() {
       const uint32_t want = ae_exact_count(f.data(), w, h, win, 0, s, b), got = lum.count(b, s);
       if (want != got && bad++ == 0)
         first = "scale " + std::to_string(s) + " bucket " + std::to_string(b) + ": " + std::to_string(got) +
-                " != " + std::to_string(want);
+            " != " + std::to_string(want);
     }
   }
   check(bad == 0, "still-frame histogram counts == ae_exact_count (8 scales x 17 buckets, NaN/Inf/denormal pixels)",
@@ -164,7 +160,8 @@ void test_cpu_vs_gl() {
            name, cover_diff, n, both, maxd, 100.0 * over2 / std::max(1L, 3 * both));
     check(cover_diff <= static_cast<long>(n / 100), std::string(name) + ": C rasteriser coverage within 1% of GL's",
           std::to_string(cover_diff));
-    check(over2 <= 3 * both * 5 / 100 && maxd <= 128, std::string(name) + ": C fallback display within tolerance of GL's",
+    check(over2 <= 3 * both * 5 / 100 && maxd <= 128,
+          std::string(name) + ": C fallback display within tolerance of GL's",
           "max " + std::to_string(maxd) + ", >2 codes: " + std::to_string(over2));
   }
 }
@@ -212,7 +209,8 @@ void test_spot_bake() {
     return;
   }
   // Only light 0 lights the page: compare it as a point and as a spot pointing straight down.
-  for (size_t i = 1; i < s.lights.size(); ++i) s.lights[i].light.color[0] = s.lights[i].light.color[1] = s.lights[i].light.color[2] = 0;
+  for (size_t i = 1; i < s.lights.size(); ++i)
+    s.lights[i].light.color[0] = s.lights[i].light.color[1] = s.lights[i].light.color[2] = 0;
   if (!prepare_scene(s, sel, 32, 18, Api::GL33, 1.f, &a, &err)) {
     check(false, "spot bake: prepare with one point light", err);
     return;
@@ -238,7 +236,8 @@ void test_spot_bake() {
   }
   printf("INFO spot bake: page total %.1f as a point light, %.1f as a 0.15/0.3 rad spot; %ld channels lit\n", sum_a,
          sum_b, lit_b);
-  check(a.lightmap_page.size() == b.lightmap_page.size() && brighter == 0, "spot bake: no texel brighter than the point light's");
+  check(a.lightmap_page.size() == b.lightmap_page.size() && brighter == 0,
+        "spot bake: no texel brighter than the point light's");
   check(sum_b > 0 && sum_b < 0.5 * sum_a, "spot bake: the cone keeps some light and drops most of it",
         std::to_string(sum_b) + " of " + std::to_string(sum_a));
 }

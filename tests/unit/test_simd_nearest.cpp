@@ -1,7 +1,4 @@
-// ============================================================================
-// tiershade -- tests/unit/test_simd_nearest.cpp
-//
-// The SIMD 2D NEAREST sampler (c_ref/math/ts_simd_sampler_nearest.h) through the world_lighting
+// tiershade tests: the SIMD 2D NEAREST sampler (c_ref/math/ts_simd_sampler_nearest.h) through the world_lighting
 // fast path (world_lighting_f_batch) against the scalar twin (world_lighting_f, whose NEAREST
 // is c_ref/math/ts_sampler.c), bit for bit: every variant (tier, bump, encoding, envmap, mask), with
 // every 2D texture NEAREST, in four shapes (POT and NPOT, REPEAT and CLAMP_TO_EDGE), on
@@ -12,7 +9,6 @@
 //
 // Usage: build/tests/test_simd_nearest   Prints PASS/FAIL lines and "N passed, N failed";
 // exit 1 on failure.
-// ============================================================================
 #include <cmath>
 #include <cstdint>
 #include <cstdio>
@@ -41,16 +37,26 @@ bool same_bits(const ts_vec4f &a, const ts_vec4f &b) { return std::memcmp(&a, &b
 float coord(Rng &r, int len) {
   const float inf = std::numeric_limits<float>::infinity(), nan = std::numeric_limits<float>::quiet_NaN();
   switch (r.next() % 16) {
-    case 0: return static_cast<float>(static_cast<int>(r.next() % (3 * len)) - len) / len;  // texel edge
-    case 1: return 0x1.fffffep-1f;
-    case 2: return -0.0f;
-    case 3: return (r.next() & 1) ? 1e-40f : -1e-40f;
-    case 4: return (r.next() & 1) ? 1e30f : -1e30f;
-    case 5: return (r.next() & 1) ? inf : -inf;
-    case 6: return nan;
-    case 7: return 1.0f;
-    case 8: return std::nextafter(static_cast<float>(r.next() % len) / len, -1.f);  // just below an edge
-    default: return r.uniform(-2.5f, 2.5f);
+    case 0:
+      return static_cast<float>(static_cast<int>(r.next() % (3 * len)) - len) / len;  // texel edge
+    case 1:
+      return 0x1.fffffep-1f;
+    case 2:
+      return -0.0f;
+    case 3:
+      return (r.next() & 1) ? 1e-40f : -1e-40f;
+    case 4:
+      return (r.next() & 1) ? 1e30f : -1e30f;
+    case 5:
+      return (r.next() & 1) ? inf : -inf;
+    case 6:
+      return nan;
+    case 7:
+      return 1.0f;
+    case 8:
+      return std::nextafter(static_cast<float>(r.next() % len) / len, -1.f);  // just below an edge
+    default:
+      return r.uniform(-2.5f, 2.5f);
   }
 }
 
@@ -73,7 +79,8 @@ Tex make_tex(Rng &r, int w, int h, int wrap, int filter) {
 int main() {
   ts_math_init();
   Rng r{20240611u};
-  const int shapes[4][3] = {{16, 8, TS_WRAP_REPEAT}, {13, 7, TS_WRAP_REPEAT}, {16, 8, TS_WRAP_CLAMP}, {11, 5, TS_WRAP_CLAMP}};
+  const int shapes[4][3] = {
+      {16, 8, TS_WRAP_REPEAT}, {13, 7, TS_WRAP_REPEAT}, {16, 8, TS_WRAP_CLAMP}, {11, 5, TS_WRAP_CLAMP}};
   std::vector<float> cube_texels(static_cast<size_t>(4 * 4 * 4 * 6));
   for (float &v : cube_texels) v = r.uniform(0.f, 2.f);
   ts_texcube cube;
@@ -99,11 +106,14 @@ int main() {
                                       r.uniform(0.f, 50.f), 0.f);
       for (int k = WL_SLOT_NORMAL; k <= WL_SLOT_EYE; ++k)
         rec[k] = ts_v4f(r.uniform(-1.f, 1.f), r.uniform(-1.f, 1.f), r.uniform(-1.f, 1.f), 0.f);
-      rec[WL_SLOT_TINT_SCALE] = ts_v4f(r.uniform(0.5f, 2.f), r.uniform(0.5f, 2.f), r.uniform(0.5f, 2.f), r.uniform(0.5f, 2.f));
-      rec[WL_SLOT_ENV_TINT] = ts_v4f(r.uniform(0.f, 1.f), r.uniform(0.f, 1.f), r.uniform(0.f, 1.f), r.uniform(0.f, 2.f));
-      rec[WL_SLOT_ENV_PARAMS] = r.next() % 2 ? ts_v4f(0.f, 1.f, 0.f, 1.f)
-                                             : ts_v4f(r.uniform(0.f, 1.f), r.uniform(0.f, 2.f), 0.7f, 0.3f);
-      rec[WL_SLOT_FOG_COLOR] = ts_v4f(r.uniform(0.f, 1.f), r.uniform(0.f, 1.f), r.uniform(0.f, 1.f), r.uniform(0.f, 1.f));
+      rec[WL_SLOT_TINT_SCALE] =
+          ts_v4f(r.uniform(0.5f, 2.f), r.uniform(0.5f, 2.f), r.uniform(0.5f, 2.f), r.uniform(0.5f, 2.f));
+      rec[WL_SLOT_ENV_TINT] =
+          ts_v4f(r.uniform(0.f, 1.f), r.uniform(0.f, 1.f), r.uniform(0.f, 1.f), r.uniform(0.f, 2.f));
+      rec[WL_SLOT_ENV_PARAMS] =
+          r.next() % 2 ? ts_v4f(0.f, 1.f, 0.f, 1.f) : ts_v4f(r.uniform(0.f, 1.f), r.uniform(0.f, 2.f), 0.7f, 0.3f);
+      rec[WL_SLOT_FOG_COLOR] =
+          ts_v4f(r.uniform(0.f, 1.f), r.uniform(0.f, 1.f), r.uniform(0.f, 1.f), r.uniform(0.f, 1.f));
       rec[WL_SLOT_FOG_PARAMS] = ts_v4f(r.uniform(0.f, 0.05f), r.uniform(0.f, 0.5f), 0.f, 0.f);
     }
     long checked = 0, differ = 0;
@@ -117,7 +127,8 @@ int main() {
               for (int fused = 0; fused < 2; ++fused) {
                 ts_math_set_fused(fused);
                 std::vector<ts_vec4f> want(static_cast<size_t>(n));
-                for (int i = 0; i < n; ++i) want[i] = world_lighting_f(&v, &recs[static_cast<size_t>(i) * WL_SLOTS], &tx);
+                for (int i = 0; i < n; ++i)
+                  want[i] = world_lighting_f(&v, &recs[static_cast<size_t>(i) * WL_SLOTS], &tx);
                 for (int isa : {TS_BATCH_AVX2, TS_BATCH_SSE2}) {
                   ts_batch_force_isa(isa);
                   std::vector<ts_vec4f> got(static_cast<size_t>(n));
@@ -126,9 +137,9 @@ int main() {
                     ++checked;
                     if (!same_bits(got[i], want[i]) && differ++ == 0)
                       first = "tier " + std::to_string(tier) + " bump " + std::to_string(bump) + " enc " +
-                              std::to_string(enc) + " env " + std::to_string(env) + " mask " + std::to_string(mask) +
-                              " fused " + std::to_string(fused) + " isa " + std::to_string(ts_batch_isa()) +
-                              " pixel " + std::to_string(i);
+                          std::to_string(enc) + " env " + std::to_string(env) + " mask " + std::to_string(mask) +
+                          " fused " + std::to_string(fused) + " isa " + std::to_string(ts_batch_isa()) + " pixel " +
+                          std::to_string(i);
                   }
                 }
                 ts_batch_force_isa(-1);

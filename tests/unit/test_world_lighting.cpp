@@ -1,7 +1,4 @@
-// ============================================================================
-// tiershade -- tests/unit/test_world_lighting.cpp
-//
-// Unit tests of the world_lighting family's C side and of the GL facts it rests on:
+// tiershade tests: unit tests of the world_lighting family's C side and of the GL facts it rests on:
 //  - the RNM basis (c_ref/offline/rnm_bake.c) against the fact sheet's constants;
 //  - the baker: cosine weights, clamping, a light behind the face, the handedness
 //    of GetBumpNormals, bad input;
@@ -14,7 +11,6 @@
 //    maps are seamless on this Mesa (why conformance samples the envmap NEAREST).
 // Prints "PASS name" / "FAIL name: detail"; exits 1 if any check failed.
 // Tolerances are written next to each check with their reason.
-// ============================================================================
 #include <cmath>
 #include <cstdio>
 #include <cstring>
@@ -33,7 +29,6 @@
 
 namespace {
 
-
 std::string num(double v) {
   char b[64];
   snprintf(b, sizeof b, "%.9g", v);
@@ -45,8 +40,8 @@ double dot(ts_vec3d a, ts_vec3d b) { return a.x * b.x + a.y * b.y + a.z * b.z; }
 // ---- basis and baker ---------------------------------------------------------
 void check_basis() {
   // The fact sheet's float constants, to the 8 digits it prints (1e-7 = its last digit).
-  const double want[3][3] = {{0.81649661, 0, 0.57735026}, {-0.40824830, 0.70710677, 0.57735026},
-                             {-0.40824830, -0.70710677, 0.57735026}};
+  const double want[3][3] = {
+      {0.81649661, 0, 0.57735026}, {-0.40824830, 0.70710677, 0.57735026}, {-0.40824830, -0.70710677, 0.57735026}};
   double worst = 0, ortho = 0;
   for (int k = 0; k < 3; ++k) {
     const ts_vec3d b = rnm_basis(k);
@@ -56,7 +51,8 @@ void check_basis() {
   check(worst < 3e-7, "basis matches the fact sheet", "max deviation " + num(worst));
   // Orthonormal to double rounding (1e-15: a few ulps of 1).
   check(ortho < 1e-15, "basis is orthonormal", "max |b_j.b_k - delta| " + num(ortho));
-  check(std::fabs(std::acos(rnm_basis(1).z) * 180 / M_PI - 54.7356) < 1e-3, "each basis vector is 54.7 deg off the normal");
+  check(std::fabs(std::acos(rnm_basis(1).z) * 180 / M_PI - 54.7356) < 1e-3,
+        "each basis vector is 54.7 deg off the normal");
 }
 
 void check_bake() {
@@ -137,8 +133,8 @@ void check_bake() {
         "a spot with a zero axis is an error naming the light", err);
   sp.spot_dir = ts_v3d(0, 0, -1);
   sp.cos_inner = sp.cos_outer;
-  check(rnm_bake_texel(ts_v3d(0, 0, 0), N, bump, &sp, 1, out, err, sizeof err) == -1, "a spot with no cone ramp is an error",
-        err);
+  check(rnm_bake_texel(ts_v3d(0, 0, 0), N, bump, &sp, 1, out, err, sizeof err) == -1,
+        "a spot with no cone ramp is an error", err);
   pt.atten[0] = pt.atten[2] = 0;
   check(rnm_bake_texel(ts_v3d(0, 0, 0), N, bump, &pt, 1, out, err, sizeof err) == -1 &&
             std::string(err).find("light 0") != std::string::npos,
@@ -191,7 +187,7 @@ struct Scene1 {
     tx.envmap = &cube;
     wl_defaults(rec);
     rec[WL_SLOT_UV] = ts_v4f(0.5f, 0.5f, 0.125f, 0.5f);  // lightmap texel 0
-    rec[WL_SLOT_LM_OFFSET] = ts_v4f(0.25f, 0, 0, 0);     // next lightmap = next texel
+    rec[WL_SLOT_LM_OFFSET] = ts_v4f(0.25f, 0, 0, 0);  // next lightmap = next texel
   }
   ts_vec4f shade(int tier, int bump, int enc, int envmap = 0, int mask_src = 0) {
     wl_variant v{tier, bump, enc, envmap, mask_src};
@@ -264,8 +260,9 @@ void check_twin() {
   ts_rgbe_decode(e, want);
   // 1e-6 relative: the shader forms the exponent as 255 a - 128 from a float a = k/255,
   // which is k within an ulp, and exp2's polynomial is within 2 ulps of 2^k.
-  check(std::fabs(c.x / want[0] - 1) < 1e-6 && std::fabs(c.y / want[1] - 1) < 1e-6 && std::fabs(c.z / want[2] - 1) < 1e-6,
-        "RGBE decode in the shader = TexLightToLinear", num(c.x) + " vs " + num(want[0]));
+  check(
+      std::fabs(c.x / want[0] - 1) < 1e-6 && std::fabs(c.y / want[1] - 1) < 1e-6 && std::fabs(c.z / want[2] - 1) < 1e-6,
+      "RGBE decode in the shader = TexLightToLinear", num(c.x) + " vs " + num(want[0]));
   e = ts_rgbe{255, 255, 255, 127};
   ts_rgbe_texel(e, tx);
   c = flat(WL_LM_RGBE, tx[0], tx[1], tx[2], tx[3]);
@@ -412,7 +409,8 @@ void check_page() {
   lm_page_texel(&p[0], 2, 0, 0, &tx, &ty);
   page[(static_cast<size_t>(ty) * W + tx) * 4] = 7.f;
   lm_page_fill_borders(&p[0], W, page.data());
-  check(page[(static_cast<size_t>(ty - 1) * W + tx - 1) * 4] == 7.f && page[(static_cast<size_t>(ty) * W + tx - 1) * 4] == 7.f,
+  check(page[(static_cast<size_t>(ty - 1) * W + tx - 1) * 4] == 7.f &&
+            page[(static_cast<size_t>(ty) * W + tx - 1) * 4] == 7.f,
         "page: borders copy the edge luxels");
   // A BSP face's RGBE blocks (flat, b0, b1, b2; 8x8 luxels each) decoded into the page.
   std::vector<unsigned char> bsp(4 * 64 * 4);
@@ -456,7 +454,8 @@ long mismatches_drawn(GlRenderer &r, Api api, const Variant &v, const FamilyInpu
   if (!prog) return -1;
   const GlFns &g = r.gl();
   g.UseProgram(prog);
-  g.Uniform2f(g.GetUniformLocation(prog, "ts_record_size"), static_cast<float>(in.w), static_cast<float>(in.h * in.slots));
+  g.Uniform2f(g.GetUniformLocation(prog, "ts_record_size"), static_cast<float>(in.w),
+              static_cast<float>(in.h * in.slots));
   g.Uniform1f(g.GetUniformLocation(prog, "ts_grid_height"), static_cast<float>(in.h));
   std::vector<std::pair<std::string, GLuint>> texs = {{"ts_record", r.upload_texture(in.record_texture())}};
   for (const TextureDesc &t : in.textures) texs.push_back({t.sampler, r.upload_texture(t)});
@@ -490,8 +489,8 @@ void check_gl_cubes() {
   kWorldLightingFamily.make_inputs(InputSet::Random, 32, 32, 99, &in);
   for (TextureDesc &t : in.textures)
     if (t.kind == TexKind::Cube) t.linear = true;
-  const BackendApi cfgs[] = {{Backend::OSMesa, Api::GL33}, {Backend::EGL, Api::GL33}, {Backend::EGL, Api::GLES3},
-                             {Backend::EGL, Api::GLES2}};
+  const BackendApi cfgs[] = {
+      {Backend::OSMesa, Api::GL33}, {Backend::EGL, Api::GL33}, {Backend::EGL, Api::GLES3}, {Backend::EGL, Api::GLES2}};
   for (const BackendApi &c : cfgs) {
     auto ctx = GlContext::create(c.backend, c.api, &err);
     const std::string tag = std::string(backend_name(c.backend)) + "/" + api_name(c.api);

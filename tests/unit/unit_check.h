@@ -1,10 +1,6 @@
-// ============================================================================
-// tiershade -- tests/unit/unit_check.h
-//
-// The PASS/FAIL lines the unit tests print (one line per check; a detail's newlines become
+// tiershade tests: the PASS/FAIL lines the unit tests print (one line per check; a detail's newlines become
 // '|'), and their counts for the closing "N passed, N failed" line (tests/run_tests.sh reads
 // both). Header-only: each test is one translation unit.
-// ============================================================================
 #pragma once
 #include <cstdio>
 #include <string>
