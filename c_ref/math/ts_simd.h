@@ -238,7 +238,8 @@ TSV_INL V4v VFN(rec_load)(const ts_vec4f *base, int stride, const size_t *pix) {
   return VFN(gather4)(q);
 }
 
-/* common_math.h safe_normalize: v * inversesqrt(max(dot(v, v), 1e-30)). */
+/* common_math.h safe_normalize: v * inversesqrt(max(dot(v, v), 1e-30)). 1e-30 is TS_MIN_LENGTH2,
+ * which is not an fp16 number (shaders/common_math.glsl says what that means for mediump). */
 TSV_INL V3v VFN(safe_normalize)(V3v v) {
   return VFN(scale3)(v, VFN(inversesqrt)(VFN(max)(VFN(dot3)(v, v), VFN(splat)(1.0e-30f))));
 }

@@ -69,8 +69,9 @@ int cmd_assemble(int argc, char **argv) {
   if (a.flag("--help")) {
     puts(
         "usage: tiershade assemble --shader S --variant V [--target essl100|essl300|glsl330] [--vertex] [--conform]\n"
-        "Prints the self-contained GLSL of one variant: includes resolved, #version,\n"
-        "precision and the variant's #defines prepended, #line directives kept.");
+        "Prints the self-contained GLSL of one variant: #version and extensions, the target,\n"
+        "stage and precision defines, the variant's #defines, shaders/ts_portability.glsl,\n"
+        "then the entry with its includes resolved (#line directives kept).");
     return 0;
   }
   if (!a.has("--shader") || !a.has("--variant")) a.fail("--shader and --variant are required");
