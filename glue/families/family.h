@@ -32,6 +32,23 @@ struct FamilyInputs {
   TextureDesc record_texture() const;
 };
 
+// Points a batch twin's input (ml_batch_input, wl_batch_input: `slot[]` and `stride[]`) at row y
+// of the record texture from pixel x0: slot k < in.slots is a run of texels (stride 1); the slots
+// past in.slots are the frame's shared ones (stride 0).
+template <class BatchInput>
+void point_batch_at_row(const FamilyInputs &in, int x0, int y, int nslots, BatchInput *b) {
+  static_assert(sizeof(ts_vec4f) == 4 * sizeof(float), "ts_vec4f is 4 packed floats");
+  for (int k = 0; k < nslots; ++k) {
+    if (k < in.slots) {
+      b->slot[k] = reinterpret_cast<const ts_vec4f *>(&in.records[(static_cast<size_t>(y + k * in.h) * in.w + x0) * 4]);
+      b->stride[k] = 1;
+    } else {
+      b->slot[k] = &in.shared.at(k);
+      b->stride[k] = 0;
+    }
+  }
+}
+
 struct ShaderFamily {
   const char *name;
   int slots;

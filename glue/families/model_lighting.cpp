@@ -66,17 +66,8 @@ ts_vec4f eval_f(const Variant &v, const FamilyInputs &in, int x, int y) {
 // The batch twin straight on the record texture: slot k of pixels (x0.., y) is a run of
 // texels (stride 1); slots past in.slots are the frame's shared ones (stride 0).
 void eval_row_f(const Variant &v, const FamilyInputs &in, int x0, int y, int count, ts_vec4f *out) {
-  static_assert(sizeof(ts_vec4f) == 4 * sizeof(float), "ts_vec4f is 4 packed floats");
   ml_batch_input b;
-  for (int k = 0; k < ML_SLOTS; ++k) {
-    if (k < in.slots) {
-      b.slot[k] = reinterpret_cast<const ts_vec4f *>(&in.records[(static_cast<size_t>(y + k * in.h) * in.w + x0) * 4]);
-      b.stride[k] = 1;
-    } else {
-      b.slot[k] = &in.shared.at(k);
-      b.stride[k] = 0;
-    }
-  }
+  point_batch_at_row(in, x0, y, ML_SLOTS, &b);
   model_lighting_f_batch(&cached_ml(v), &b, &cached_views(in), out, count);
 }
 

@@ -59,17 +59,8 @@ ts_vec4f eval_f(const Variant &v, const FamilyInputs &in, int x, int y) {
 
 // The batch twin on the record texture's row (stride 1); shared slots have stride 0.
 void eval_row_f(const Variant &v, const FamilyInputs &in, int x0, int y, int count, ts_vec4f *out) {
-  static_assert(sizeof(ts_vec4f) == 4 * sizeof(float), "ts_vec4f is 4 packed floats");
   wl_batch_input b;
-  for (int k = 0; k < WL_SLOTS; ++k) {
-    if (k < in.slots) {
-      b.slot[k] = reinterpret_cast<const ts_vec4f *>(&in.records[(static_cast<size_t>(y + k * in.h) * in.w + x0) * 4]);
-      b.stride[k] = 1;
-    } else {
-      b.slot[k] = &in.shared.at(k);
-      b.stride[k] = 0;
-    }
-  }
+  point_batch_at_row(in, x0, y, WL_SLOTS, &b);
   const wl_variant w = wl_variant_of(v);
   const TexViews tv(in);
   world_lighting_f_batch(&w, &b, &tv.t, out, count);
