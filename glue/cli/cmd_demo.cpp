@@ -17,6 +17,7 @@
 #include "families/family.h"
 #include "io/lights_file.h"
 #include "scene/cpu_renderer.h"
+#include "scene/deferred.h"
 #include "scene/frame.h"
 #include "scene/reference.h"
 #include "scene/scene.h"
@@ -42,18 +43,11 @@ ImageF opaque(const ImageF &lit) {
 
 // The double reference of the grid: every light local, from the C renderer's G-buffer at sm3.
 bool grid_reference(const Scene &s, int w, int h, ImageF *out, std::string *err) {
-  SceneSelection sel;
-  PreparedScene p;
-  if (!select_scene_variants(s, Tier::SM3, "", &sel, err) ||
-      !prepare_scene(s, sel, w, h, Api::GL33, s.hdr.tone_map_scale, &p, err))
-    return false;
-  SceneVisibility vis;
-  scene_rasterize_cpu(p, &vis);
-  std::vector<int> draw;
-  std::vector<float> slots;
-  scene_records_cpu(p, vis, &draw, &slots);
+  SceneGBufferCpu g;
   std::vector<double> ref;
-  if (!scene_reference_linear(s, p, draw, slots, &ref, err)) return false;
+  if (!scene_gbuffer_cpu(s, Tier::SM3, w, h, false, &g, err) ||
+      !scene_reference_linear(s, g.p, g.draw, g.slots, &ref, err))
+    return false;
   out->w = w;
   out->h = h;
   out->rgba.assign(static_cast<size_t>(w) * h * 4, 1.f);

@@ -9,18 +9,24 @@
 #include "scene/selection.h"
 #include "twins/model_lighting.h"
 
-bool scene_deferred_frame(const Scene &s, Tier tier, int w, int h, SceneDeferredFrame *out, std::string *err,
-                          bool all_features, bool with_reference) {
-  SceneSelection sel;
-  PreparedScene p;
-  if (!select_scene_variants(s, tier, "", &sel, err, all_features) ||
-      !prepare_scene(s, sel, w, h, Api::GL33, s.hdr.tone_map_scale, &p, err))
+bool scene_gbuffer_cpu(const Scene &s, Tier tier, int w, int h, bool all_features, SceneGBufferCpu *g,
+                       std::string *err) {
+  if (!select_scene_variants(s, tier, "", &g->sel, err, all_features) ||
+      !prepare_scene(s, g->sel, w, h, Api::GL33, s.hdr.tone_map_scale, &g->p, err))
     return false;
   SceneVisibility vis;
-  scene_rasterize_cpu(p, &vis);
-  std::vector<int> draw;
-  std::vector<float> slots;
-  scene_records_cpu(p, vis, &draw, &slots);
+  scene_rasterize_cpu(g->p, &vis);
+  scene_records_cpu(g->p, vis, &g->draw, &g->slots);
+  return true;
+}
+
+bool scene_deferred_frame(const Scene &s, Tier tier, int w, int h, SceneDeferredFrame *out, std::string *err,
+                          bool all_features, bool with_reference) {
+  SceneGBufferCpu g;
+  if (!scene_gbuffer_cpu(s, tier, w, h, all_features, &g, err)) return false;
+  const PreparedScene &p = g.p;
+  const std::vector<int> &draw = g.draw;
+  const std::vector<float> &slots = g.slots;
   int only = -1;
   for (int d : draw) {
     if (d < 0 || d == only) continue;

@@ -9,7 +9,21 @@
 
 #include "families/family.h"
 #include "base/image.h"
+#include "scene/prepare.h"
 #include "scene/scene.h"
+#include "scene/selection.h"
+
+// The C renderer's G-buffer of `s` at w x h for `tier`: the selection, the prepared frame (which
+// points into the selection: keep them together, do not copy), and per pixel its draw (-1 where
+// none) and its record slots (scene_records_cpu). all_features as in scene_deferred_frame.
+struct SceneGBufferCpu {
+  SceneSelection sel;
+  PreparedScene p;
+  std::vector<int> draw;
+  std::vector<float> slots;
+};
+bool scene_gbuffer_cpu(const Scene &s, Tier tier, int w, int h, bool all_features, SceneGBufferCpu *g,
+                       std::string *err);
 
 struct SceneDeferredFrame {
   FamilyInputs in;  // model_lighting records: ML_PIXEL_SLOTS per pixel, ML_SLOTS shared
