@@ -496,6 +496,8 @@ def world_lighting():
              "probes": [{"name": "room_centre", "position": [0, 1.5, 0], "size": 64},
                         {"name": "by_the_crate", "position": [-2.6, 1.0, -1.0], "size": 32}],
              "lightmaps": {"luxels_per_unit": 8, "encoding": "rgbe", "page": [512, 256]},
+             # a faint range fog: the pixel fog ps2b/sm3 apply and ps20 drops (docs/world_lighting.md)
+             "fog": {"color": [0.05, 0.05, 0.06], "start": 3.0, "end": 15.0, "max_density": 0.5},
              "hdr": {"path": "integer", "tone_map_scale": 1.0}})
 
 

@@ -1,6 +1,7 @@
 // tiershade bench: the world_lighting section of `tiershade bench` (docs/accuracy_cost.md):
-// what each lightmap encoding costs in error (against the float32 lightmap) and time, and
-// what each tier costs against sm3, measured in one run on the room scene (scene_world.h).
+// what each lightmap encoding costs in error (against the float32 lightmap) and time, and what
+// each tier costs against sm3, measured in one run on the lightmapped room
+// (scenes/world_lighting.gltf) as the scene renderer draws it (glue/scene/frame.h).
 // Not a test: nothing here passes or fails.
 #include <algorithm>
 #include <chrono>
@@ -9,35 +10,33 @@
 #include <sstream>
 #include <thread>
 
-#include "shaderlib/assembler.h"
-#include "budget/budget.h"
-#include "gl/context.h"
-#include "shaderlib/variants.h"
-#include "demo/room_render.h"
 #include "base/image_diff.h"
-#include "base/stats.h"
 #include "base/srgb.h"
+#include "base/stats.h"
+#include "bake/world_bake.h"
+#include "budget/budget.h"
+#include "demo/scene_files.h"
+#include "scene/deferred.h"
+#include "scene/frame.h"
+#include "scene/reference.h"
+#include "shaderlib/assembler.h"
 
 namespace {
-
-double now_ms() {
-  return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now().time_since_epoch()).count();
-}
-double srgb(double x) { return srgb_encode_clamped(x); }
 
 struct Err {
   double max = 0, mean = 0, over1 = 0;  // 8-bit display codes; % of channels off by more than 1 code
 };
-// Display-code error of frame a against b (linear, 4 floats or doubles per pixel), wall pixels only.
+// Display-code error of frame a against b (linear rgb: `sa` / `sb` values per pixel), over the
+// pixels a draw covers.
 template <class A, class B>
-Err display_error(const WorldFrame &f, const A &a, const B &b) {
+Err display_error(const std::vector<int> &draw, const A &a, int sa, const B &b, int sb) {
   Err e;
   long n = 0, off = 0;
   double sum = 0;
-  for (size_t p = 0; p < f.probe.size(); ++p) {
-    if (f.probe[p] < 0) continue;
+  for (size_t p = 0; p < draw.size(); ++p) {
+    if (draw[p] < 0) continue;
     for (int c = 0; c < 3; ++c) {
-      const double d = 255 * std::fabs(srgb(a[p * 4 + c]) - srgb(b[p * 4 + c]));
+      const double d = 255 * std::fabs(srgb_encode_clamped(a[p * sa + c]) - srgb_encode_clamped(b[p * sb + c]));
       e.max = std::max(e.max, d);
       sum += d;
       off += d > 1.0;
@@ -60,32 +59,74 @@ BudgetCounts slots_of(const Variant &v) {
   return c;
 }
 
-// Median GL 3.3 (OSMesa) time of a frame (both probe passes), and the frame itself.
-bool gl_time(const WorldFrame &f, const WorldBake &b, const WorldPass &p, Backend be, Api api, int runs, double *ms,
-             ImageF *img, std::string *err) {
-  auto ctx = GlContext::create(be, api, err);
-  if (!ctx) return false;
-  GlRenderer r(*ctx);
-  WorldPass q = p;
-  q.nearest_cube = api != Api::GL33;
-  WorldGl g;
-  if (!world_gl_setup(r, api, f, b, q, &g, err)) return false;
-  double t = 0;
-  bool ok = world_gl_draw(r, g, f, img, err, &t);  // first frame: LLVM JIT of each pass, not timed
-  std::vector<double> v;
-  for (int i = 0; ok && i < runs; ++i) {
-    ok = world_gl_draw(r, g, f, img, err, &t);
-    v.push_back(t);
+// The most expensive variant (alu + tex) the scene selects at `tier`.
+BudgetCounts scene_slots(const SceneSelection &sel) {
+  BudgetCounts best;
+  for (const Variant &v : sel.variants) {
+    const BudgetCounts c = slots_of(v);
+    if (c.alu + c.tex > best.alu + best.tex) best = c;
   }
-  world_gl_release(r, &g);
-  *ms = median(v);
-  return ok;
+  return best;
+}
+
+Scene with_encoding(const Scene &s, const char *enc) {
+  Scene o = s;
+  o.lightmaps.encoding = enc;
+  return o;
+}
+
+// The room with its alpha envmap masks (normal-map alpha, inverted base alpha) off: the variants
+// cross the lightmap encodings with no mask or a mask texture only (world_lighting.variants), so a
+// non-float encoding drops them (glue/scene/selection.cpp); without them every encoding runs the
+// same variants but for LIGHTMAP_ENCODING, and the difference is the encoding's alone.
+Scene without_alpha_masks(const Scene &s) {
+  Scene o = s;
+  for (SceneMaterial &m : o.materials)
+    if (m.envmap_mask == SceneEnvMask::NormalAlpha || m.envmap_mask == SceneEnvMask::InvBaseAlpha)
+      m.envmap_mask = SceneEnvMask::None;
+  return o;
+}
+
+// The sm3 double reference of `s` (float32 page) on the C renderer's G-buffer; *draw: the pixels'
+// draws (-1: background).
+bool reference(const Scene &s, int w, int h, std::vector<int> *draw, std::vector<double> *rgb, std::string *err) {
+  SceneGBufferCpu g;
+  if (!scene_gbuffer_cpu(s, Tier::SM3, w, h, false, &g, err) ||
+      !scene_reference_linear(s, g.p, g.draw, g.slots, rgb, err))
+    return false;
+  *draw = g.draw;
+  return true;
+}
+
+// The lit pass of the scene at `tier` on `be`/`api` (Backend::CPU: the C fallback), the median of
+// `runs` frames' lit-pass times after a first frame (LLVM JIT on llvmpipe), and with `check` the
+// channels where GL differs from the C twins on GL's G-buffer.
+bool timed_frame(const Scene &s, Tier tier, Backend be, Api api, int w, int h, int runs, bool check, double *ms,
+                 SceneRenderResult *res, std::string *err) {
+  SceneSelection sel;
+  if (!select_scene_variants(s, tier, "", &sel, err)) return false;
+  SceneRenderConfig cfg;
+  cfg.backend = be;
+  cfg.api = api;
+  cfg.w = w;
+  cfg.h = h;
+  cfg.check = check;
+  SceneRenderer r;
+  if (!r.init(s, sel, cfg, err) || !r.frame(res, err)) return false;
+  std::vector<double> t;
+  for (int i = 0; i < runs; ++i) {
+    SceneRenderResult again;
+    if (!r.frame(&again, err)) return false;
+    t.push_back(again.lit_ms);
+  }
+  *ms = t.empty() ? res->lit_ms : median(t);
+  return true;
 }
 
 struct EncRow {
-  EncRow(const char *l, int e, const char *s) : label(l), encoding(e), stores(s) {}
-  const char *label;
-  int encoding;  // -1 float32
+  EncRow(const char *l, const char *e, int v, const char *s) : label(l), encoding(e), value(v), stores(s) {}
+  const char *label, *encoding;
+  int value;  // LIGHTMAP_ENCODING, -1 float32
   const char *stores;
   double page_max = 0, page_mean = 0, clipped = 0;
   Err frame;
@@ -93,73 +134,90 @@ struct EncRow {
   BudgetCounts ps20, ps2b;
 };
 
+// Relative error of every luxel of every lightmap of every face (borders excluded) of the page as
+// the frame uploaded it, decoded, against the float32 page; and the share beyond the format's range.
+void page_error(const PreparedScene &p, EncRow *r) {
+  const PreparedDraw *wd = nullptr;
+  for (const PreparedDraw &d : p.draws)
+    if (d.world) wd = &d;
+  if (!wd) return;
+  const TextureDesc &page = p.texture(*wd, 2);
+  const double range = r->value == WL_LM_412 ? 16.0 : r->value == WL_LM_LDR ? std::pow(2.0, 2.2) : 1e300;
+  double sum = 0;
+  long n = 0, clipped = 0;
+  for (const lm_face_place &pl : p.lightmap_places)
+    for (int k = 0; k < pl.count; ++k)
+      for (int j = 0; j < pl.block_h - 2; ++j)
+        for (int i = 0; i < pl.block_w - 2; ++i) {
+          int tx, ty;
+          lm_page_texel(&pl, k, i, j, &tx, &ty);
+          const size_t o = (static_cast<size_t>(ty) * p.lightmap_w + tx) * 4;
+          double dec[3];
+          decode_texel(r->value, &page.rgba[o], dec);
+          for (int c = 0; c < 3; ++c) {
+            const double v = p.lightmap_page[o + c];
+            if (v > range) ++clipped;
+            if (v < 1e-3) continue;  // relative error of the (near-)black channels is meaningless
+            const double rel = std::fabs(dec[c] - v) / v;
+            r->page_max = std::max(r->page_max, rel);
+            sum += rel;
+            ++n;
+          }
+        }
+  r->page_mean = n ? sum / n : 0;
+  r->clipped = n ? 100.0 * clipped / n : 0;
+}
+
 bool run(const BenchOptions &opt, std::string *md, std::string *err) {
-  Selection sel;
-  if (!load_shader_decls(&sel.decls, err)) return false;
-  const WorldScene scene = default_world_scene();
-  WorldBake bake;
-  if (!bake_world(scene, &bake, err)) return false;
-  WorldFrame frame;
+  std::vector<ShaderDecl> decls;
+  if (!load_shader_decls(&decls, err)) return false;
+  Scene room;
+  if (!load_scene(kWorldLightingGltf, &room, err)) return false;
+  const Scene unmasked = without_alpha_masks(room);
   const int W = opt.size, H = std::max(8, opt.size / 2);
-  if (!world_frame(scene, bake, W, H, &frame, err)) return false;
-  auto variant = [&](const std::string &name, Variant *v) {
-    return find_variant(sel.decls, "world_lighting", name, v, err);
-  };
   const unsigned cores = std::max(1u, std::thread::hardware_concurrency());
+  auto variant = [&](const std::string &name, Variant *v) { return find_variant(decls, "world_lighting", name, v, err); };
+  // Which pixels the room covers, and the sm3 references (double, float32 page) of the room and of
+  // the room without alpha masks.
+  std::vector<int> draw;
+  std::vector<double> dref, dref_unmasked;
+  // (The reference's own variants: the float encoding's, so that no mask is dropped.)
+  if (!reference(with_encoding(room, "float"), W, H, &draw, &dref, err) ||
+      !reference(with_encoding(unmasked, "float"), W, H, &draw, &dref_unmasked, err))
+    return false;
+  SceneGBufferCpu g;  // what the scene holds, for the text
+  if (!scene_gbuffer_cpu(room, Tier::SM3, 8, 8, false, &g, err)) return false;
+  auto c_frame = [&](const Scene &s, Tier tier, ImageF *img) {
+    SceneRenderResult r;
+    double ms;
+    if (!timed_frame(s, tier, Backend::CPU, Api::GL33, W, H, 0, false, &ms, &r, err)) return false;
+    *img = r.lit;
+    return true;
+  };
 
   // ---- encodings: page error, frame error (sm3, C twin = llvmpipe bits), time ----
   std::vector<EncRow> enc = {
-      {"float32", -1, "32-bit float per channel (the reference)"},
-      {"fp16", WL_LM_FLOAT, "half float (RGBA16F, filterable where half floats are)"},
-      {"4.12", WL_LM_412, "16-bit unorm of radiance / 16, range [0, 16)"},
-      {"LDR", WL_LM_LDR, "8-bit, 0.5 radiance^(1/2.2), range [0, 4.59]"},
-      {"RGBE", WL_LM_RGBE, "ColorRGBExp32 (8-bit mantissas, shared exponent), NEAREST"},
+      {"float32", "float32", -1, "32-bit float per channel (the reference)"},
+      {"fp16", "float", WL_LM_FLOAT, "half float (RGBA16F, filterable where half floats are)"},
+      {"4.12", "412", WL_LM_412, "16-bit unorm of radiance / 16, range [0, 16)"},
+      {"LDR", "ldr", WL_LM_LDR, "8-bit, 0.5 radiance^(1/2.2), range [0, 4.59]"},
+      {"RGBE", "rgbe", WL_LM_RGBE, "ColorRGBExp32 (8-bit mantissas, shared exponent), NEAREST"},
   };
-  const TextureDesc page32 = encode_page(scene, bake, -1);
-  Variant sm3_float;
-  if (!variant("sm3:BUMPMAP=1,LIGHTMAP_ENCODING=0,ENVMAP=1,ENVMAPMASK=1", &sm3_float)) return false;
   ImageF ref32;
-  world_render_cpu(frame, bake, WorldPass{&sm3_float, &page32, false, false}, &ref32);
+  if (!c_frame(with_encoding(unmasked, "float32"), Tier::SM3, &ref32)) return false;
   for (EncRow &r : enc) {
-    const int e = r.encoding < 0 ? 0 : r.encoding;
-    const TextureDesc page = r.encoding < 0 ? page32 : encode_page(scene, bake, r.encoding);
-    // Page: every luxel of every lightmap of every face (borders excluded).
-    const double range = r.encoding == WL_LM_412 ? 16.0 : r.encoding == WL_LM_LDR ? std::pow(2.0, 2.2) : 1e300;
-    double sum = 0;
-    long n = 0, clipped = 0;
-    for (size_t f = 0; f < bake.place.size(); ++f) {
-      const lm_face_place &pl = bake.place[f];
-      for (int k = 0; k < pl.count; ++k)
-        for (int j = 0; j < pl.block_h - 2; ++j)
-          for (int i = 0; i < pl.block_w - 2; ++i) {
-            int tx, ty;
-            lm_page_texel(&pl, k, i, j, &tx, &ty);
-            const size_t o = (static_cast<size_t>(ty) * scene.page_w + tx) * 4;
-            double dec[3];
-            decode_texel(r.encoding, &page.rgba[o], dec);
-            for (int c = 0; c < 3; ++c) {
-              const double v = bake.page[o + c];
-              if (v > range) ++clipped;
-              if (v < 1e-3) continue;  // relative error of the (near-)black channels is meaningless
-              const double rel = std::fabs(dec[c] - v) / v;
-              r.page_max = std::max(r.page_max, rel);
-              sum += rel;
-              ++n;
-            }
-          }
-    }
-    r.page_mean = n ? sum / n : 0;
-    r.clipped = n ? 100.0 * clipped / n : 0;
-    Variant v;
-    const std::string tail = ",LIGHTMAP_ENCODING=" + std::to_string(e) + ",ENVMAP=1,ENVMAPMASK=1";
-    if (!variant("sm3:BUMPMAP=1" + tail, &v)) return false;
+    const Scene s = with_encoding(unmasked, r.encoding);
+    SceneGBufferCpu ge;
+    if (!scene_gbuffer_cpu(s, Tier::SM3, 8, 8, false, &ge, err)) return false;
+    page_error(ge.p, &r);
     ImageF img;
-    world_render_cpu(frame, bake, WorldPass{&v, &page, false, false}, &img);
-    r.frame = display_error(frame, img.rgba, ref32.rgba);
-    ImageF gl;
-    if (!gl_time(frame, bake, WorldPass{&v, &page, false, false}, Backend::OSMesa, Api::GL33, opt.runs, &r.gl_ms, &gl,
-                 err))
+    if (!c_frame(s, Tier::SM3, &img)) return false;
+    r.frame = display_error(draw, img.rgba, 4, ref32.rgba, 4);
+    SceneRenderResult gl;
+    if (!timed_frame(s, Tier::SM3, Backend::OSMesa, Api::GL33, W, H, opt.runs, false, &r.gl_ms, &gl, err))
       return false;
+    const int e = r.value < 0 ? 0 : r.value;
+    const std::string tail = ",LIGHTMAP_ENCODING=" + std::to_string(e) + ",ENVMAP=1,ENVMAPMASK=1";
     Variant v20, v2b;
     if (!variant("ps20:BUMPMAP=1" + tail, &v20) || !variant("ps2b:BUMPMAP=1" + tail, &v2b)) return false;
     r.ps20 = slots_of(v20);
@@ -170,79 +228,71 @@ bool run(const BenchOptions &opt, std::string *md, std::string *err) {
 
   // ---- tiers: the same scene and encoding (fp16) in ps20, ps2b, sm3 ----
   struct TierRow {
-    TierRow(const char *l, const char *v, const char *w) : label(l), variant(v), what(w) {}
-    const char *label, *variant, *what;
+    TierRow(const char *l, Tier t, const char *e, const char *w) : label(l), tier(t), encoding(e), what(w) {}
+    const char *label;
+    Tier tier;
+    const char *encoding, *what;
     BudgetCounts slots;
+    int variants = 0;
     double gl_ms = 0, gles_ms = 0, c_ms = 0;
     Err vs_sm3, vs_ref;
     long gl_vs_c = -1;
   };
   std::vector<TierRow> tiers = {
-      {"ps20", "ps20:BUMPMAP=1,LIGHTMAP_ENCODING=0,ENVMAP=1,ENVMAPMASK=1",
-       "no pixel fog; N.V with one shared inversesqrt"},
-      {"ps2b", "ps2b:BUMPMAP=1,LIGHTMAP_ENCODING=0,ENVMAP=1,ENVMAPMASK=1", "everything, straight-line code"},
-      {"sm3", "sm3:BUMPMAP=1,LIGHTMAP_ENCODING=0,ENVMAP=1,ENVMAPMASK=1",
-       "everything; contrast/saturation/Fresnel behind a uniform branch"},
-      {"ps20 LDR", "ps20:BUMPMAP=1,LIGHTMAP_ENCODING=2,ENVMAP=1,ENVMAPMASK=1",
-       "LDR lightmaps decoded as (2t)^2 instead of (2t)^2.2 (against sm3 LDR)"},
+      {"ps20", Tier::PS20, "float", "no pixel fog; N.V with one shared inversesqrt"},
+      {"ps2b", Tier::PS2B, "float", "everything, straight-line code"},
+      {"sm3", Tier::SM3, "float", "everything; contrast/saturation/Fresnel behind a uniform branch"},
+      {"ps20 LDR", Tier::PS20, "ldr", "LDR lightmaps decoded as (2t)^2 instead of (2t)^2.2 (against sm3 LDR)"},
   };
-  const TextureDesc page16 = encode_page(scene, bake, WL_LM_FLOAT), page_ldr = encode_page(scene, bake, WL_LM_LDR);
-  std::vector<double> dref;
-  world_render_double(frame, bake, WorldPass{&sm3_float, &page32, false, false}, &dref);
   ImageF sm3_img, sm3_ldr_img;
-  Variant sm3_ldr;
-  if (!variant("sm3:BUMPMAP=1,LIGHTMAP_ENCODING=2,ENVMAP=1,ENVMAPMASK=1", &sm3_ldr)) return false;
-  world_render_cpu(frame, bake, WorldPass{&sm3_float, &page16, false, false}, &sm3_img);
-  world_render_cpu(frame, bake, WorldPass{&sm3_ldr, &page_ldr, false, false}, &sm3_ldr_img);
+  if (!c_frame(with_encoding(room, "float"), Tier::SM3, &sm3_img) ||
+      !c_frame(with_encoding(unmasked, "ldr"), Tier::SM3, &sm3_ldr_img))
+    return false;
   for (TierRow &t : tiers) {
-    Variant v;
-    if (!variant(t.variant, &v)) return false;
-    const bool ldr = v.value("LIGHTMAP_ENCODING") == WL_LM_LDR;
-    const WorldPass pass{&v, ldr ? &page_ldr : &page16, false, false};
-    t.slots = slots_of(v);
-    ImageF gl, gles, cpu;
-    if (!gl_time(frame, bake, pass, Backend::OSMesa, Api::GL33, opt.runs, &t.gl_ms, &gl, err) ||
-        !gl_time(frame, bake, pass, Backend::EGL, Api::GLES3, opt.runs, &t.gles_ms, &gles, err))
+    const bool ldr = std::string(t.encoding) == "ldr";
+    const Scene s = with_encoding(ldr ? unmasked : room, t.encoding);
+    SceneSelection sel;
+    if (!select_scene_variants(s, t.tier, "", &sel, err)) return false;
+    t.slots = scene_slots(sel);
+    t.variants = static_cast<int>(sel.variants.size());
+    SceneRenderResult gl, gles, cpu;
+    if (!timed_frame(s, t.tier, Backend::OSMesa, Api::GL33, W, H, opt.runs, true, &t.gl_ms, &gl, err) ||
+        !timed_frame(s, t.tier, Backend::EGL, Api::GLES3, W, H, opt.runs, false, &t.gles_ms, &gles, err) ||
+        !timed_frame(s, t.tier, Backend::CPU, Api::GL33, W, H, std::max(1, opt.runs / 2), false, &t.c_ms, &cpu, err))
       return false;
-    std::vector<double> ct;
-    for (int i = 0; i < std::max(1, opt.runs / 2); ++i) {
-      const double t0 = now_ms();
-      world_render_cpu(frame, bake, pass, &cpu, static_cast<int>(cores));
-      ct.push_back(now_ms() - t0);
-    }
-    t.c_ms = median(ct);
-    t.gl_vs_c = 0;
-    for (size_t i = 0; i < cpu.rgba.size(); ++i) t.gl_vs_c += ulp_distance(cpu.rgba[i], gl.rgba[i]) != 0;
-    t.vs_sm3 = display_error(frame, cpu.rgba, ldr ? sm3_ldr_img.rgba : sm3_img.rgba);
-    t.vs_ref = display_error(frame, cpu.rgba, dref);
+    t.gl_vs_c = gl.check_mismatched;
+    t.vs_sm3 = display_error(draw, cpu.lit.rgba, 4, ldr ? sm3_ldr_img.rgba : sm3_img.rgba, 4);
+    t.vs_ref = display_error(draw, cpu.lit.rgba, 4, ldr ? dref_unmasked : dref, 3);
     fprintf(stderr, "bench world_lighting: %-8s %.2f ms, vs sm3 max %.2f\n", t.label, t.gl_ms, t.vs_sm3.max);
   }
-  // The share of ps20's error that is the missing fog: sm3 with the fog's density at 0.
-  WorldFrame nofog = frame;
-  nofog.in.shared[WL_SLOT_FOG_COLOR].w = 0.f;
+
+  // The share of ps20's difference that is the pixel fog it drops: sm3 with and without the fog, and
+  // ps20 against sm3 without it.
+  Scene nofog = with_encoding(room, "float");
+  nofog.fog.enabled = false;
   ImageF sm3_nofog, ps20_img;
-  world_render_cpu(nofog, bake, WorldPass{&sm3_float, &page16, false, false}, &sm3_nofog);
-  Variant ps20v;
-  if (!variant(tiers[0].variant, &ps20v)) return false;
-  world_render_cpu(frame, bake, WorldPass{&ps20v, &page16, false, false}, &ps20_img);
-  const Err fog_share = display_error(frame, sm3_nofog.rgba, sm3_img.rgba);
-  const Err rest = display_error(frame, ps20_img.rgba, sm3_nofog.rgba);
+  if (!c_frame(nofog, Tier::SM3, &sm3_nofog) || !c_frame(with_encoding(room, "float"), Tier::PS20, &ps20_img))
+    return false;
+  const Err fog_share = display_error(draw, sm3_nofog.rgba, 4, sm3_img.rgba, 4);
+  const Err rest = display_error(draw, ps20_img.rgba, 4, sm3_nofog.rgba, 4);
 
   std::ostringstream o;
   char b[1024];
   o << "## world_lighting (lightmaps, RNM, cube-map specular), " << W << "x" << H << " frame of the room\n\n"
-    << "Scene: `glue/demo/room_scene.cpp`, five tiled walls with normal maps, three coloured point lights baked into\n"
-    << "RNM lightmaps (`c_ref/offline/rnm_bake.c`) on a " << scene.page_w << "x" << scene.page_h
-    << " page, two cube-map probes rendered from the room. Errors are in\n"
-    << "8-bit display codes (sRGB-encoded, x255) over the wall pixels; times are llvmpipe medians of " << opt.runs
-    << " frames\n(both probe passes, glFinish included).\n\n"
+    << "Scene: `" << kWorldLightingGltf << "` (docs/scenes.md), drawn by the scene renderer: " << g.p.draws.size()
+    << " lightmapped draws (RNM, ssbump and flat walls,\nmasked envmaps, range fog), three point lights baked into RNM lightmaps "
+    << "(`c_ref/offline/rnm_bake.c`) on a " << g.p.lightmap_w << "x" << g.p.lightmap_h
+    << " page, two cube-map probes\nrendered from the room. Errors are in 8-bit display codes (sRGB-encoded, x255) over "
+       "the pixels the room covers;\ntimes are llvmpipe medians of "
+    << opt.runs << " lit passes (every draw, glFinish included).\n\n"
     << "### Lightmap encodings\n\n"
-    << "Each encoding stores the baked float32 page as the run-time format would (quantised on the CPU,\n"
-    << "uploaded as RGBA32F holding exactly the stored values; docs/world_lighting.md). **page error**: relative\n"
-    << "error of the decoded luxels against float32 (channels >= 1e-3), **clipped**: share of channels beyond the\n"
-    << "format's range. **frame error**: the sm3 shading (bumped, envmap, mask texture) with that encoding against\n"
-    << "the same shading from the float32 page, both computed by the C twin, which is bit-exact with llvmpipe.\n"
-    << "**decode slots**: ps20 / ps2b alu+tex of the bumped envmap variant (the float row = no decode).\n\n"
+    << "The scene's `lightmaps.encoding` set to each format, the alpha envmap masks off in every row (the variants\n"
+    << "cross the encodings with no mask or a mask texture only): the page is stored as the run-time format would (quantised "
+       "on\nthe CPU, uploaded as RGBA32F holding exactly the stored values; docs/world_lighting.md). **page error**: "
+       "relative\nerror of the decoded luxels against float32 (channels >= 1e-3), **clipped**: share of channels beyond "
+       "the\nformat's range. **frame error**: the sm3 frame with that encoding against the sm3 frame from the float32 "
+       "page\n(`\"float32\"`), both from the C fallback, which is bit-exact with llvmpipe. **decode slots**: ps20 / ps2b "
+       "alu+tex of\nthe bumped envmap variant with a mask texture (the float row = no decode).\n\n"
     << "| encoding | stores | page error max | page error mean | clipped | frame error max | frame error mean | >1 "
        "code | llvmpipe ms (GL 3.3) | slots ps20 | slots ps2b |\n"
     << "|---|---|---|---|---|---|---|---|---|---|---|\n";
@@ -253,24 +303,26 @@ bool run(const BenchOptions &opt, std::string *md, std::string *err) {
     o << b;
   }
   o << "\n### Tiers\n\n"
-    << "The same frame (fp16 lightmaps, bumped, envmap with a mask texture) in each tier. **vs sm3**: against\n"
-    << "the sm3 frame; **vs reference**: against sm3 in double precision from the float32 page. **GL = C**:\n"
-    << "channels where llvmpipe (GL 3.3) and the C twin differ.\n\n"
-    << "| tier | what it does | slots alu+tex | llvmpipe ms (GL 3.3) | llvmpipe ms (GLES 3.0) | C ms (" << cores
-    << " thr) | vs sm3 max | vs sm3 mean | vs reference max | vs reference mean | GL = C |\n"
-    << "|---|---|---|---|---|---|---|---|---|---|---|\n";
+    << "The same frame (fp16 lightmaps) at each tier, every draw with the variant the selection derives for it.\n"
+    << "**slots**: the most expensive of those variants. **vs sm3**: against the sm3 frame; **vs reference**: against\n"
+    << "sm3 in double precision from the float32 page (glue/scene/reference.h); the LDR row, as the encodings,\n"
+    << "without the alpha envmap masks, against sm3 LDR and the reference without them. **GL = C**: channels where llvmpipe\n"
+    << "(GL 3.3) and the C twins on GL's G-buffer differ.\n\n"
+    << "| tier | what it does | variants | slots alu+tex | llvmpipe ms (GL 3.3) | llvmpipe ms (GLES 3.0) | C ms ("
+    << cores << " thr) | vs sm3 max | vs sm3 mean | vs reference max | vs reference mean | GL = C |\n"
+    << "|---|---|---|---|---|---|---|---|---|---|---|---|\n";
   for (const TierRow &t : tiers) {
-    snprintf(b, sizeof b, "| %s | %s | %d+%d | %.2f | %.2f | %.2f | %.2f | %.3f | %.2f | %.3f | %ld |\n", t.label,
-             t.what, t.slots.alu, t.slots.tex, t.gl_ms, t.gles_ms, t.c_ms, t.vs_sm3.max, t.vs_sm3.mean, t.vs_ref.max,
-             t.vs_ref.mean, t.gl_vs_c);
+    snprintf(b, sizeof b, "| %s | %s | %d | %d+%d | %.2f | %.2f | %.2f | %.2f | %.3f | %.2f | %.3f | %ld |\n", t.label,
+             t.what, t.variants, t.slots.alu, t.slots.tex, t.gl_ms, t.gles_ms, t.c_ms, t.vs_sm3.max, t.vs_sm3.mean,
+             t.vs_ref.max, t.vs_ref.mean, t.gl_vs_c);
     o << b;
   }
-  snprintf(
-      b, sizeof b,
-      "\nWhere ps20's difference from sm3 comes from: the pixel fog it drops accounts for a max of %.2f codes\n"
-      "(mean %.3f; sm3 with and without fog); the rest, N.V from one shared inversesqrt instead of two\n"
-      "normalisations, is rounding only: ps20 against sm3 without fog differs by a max of %.2f codes (mean %.4f).\n",
-      fog_share.max, fog_share.mean, rest.max, rest.mean);
+  snprintf(b, sizeof b,
+           "\nWhere ps20's difference from sm3 comes from: the scene's range fog, which ps20 drops, accounts for a max "
+           "of %.2f\ncodes (mean %.3f; sm3 with and without the fog); the rest, N.V from one shared inversesqrt instead "
+           "of two\nnormalisations, is rounding only: ps20 against sm3 without fog differs by a max of %.2f codes "
+           "(mean %.4f).\n",
+           fog_share.max, fog_share.mean, rest.max, rest.mean);
   o << b;
   *md = o.str();
   return true;

@@ -1,34 +1,24 @@
-// tiershade demo: the world_lighting section of `tiershade demo`: the room (scene_world.h)
-// in each tier, "lightmaps only" and the final shading (the talk's "Light Maps Only" /
-// "Final Rendered Scene" pair), on every GL backend and by the C fallback, each GL frame
-// compared bit for bit with the C frame. GLES frames sample the cube maps NEAREST (GLES
-// cube maps are seamless; docs/world_lighting.md), so they are compared with a C frame
-// rendered the same way.
+// tiershade demo: the world_lighting section of `tiershade demo`: the lightmapped room
+// (scenes/world_lighting.gltf, rendered by the scene renderer, glue/scene/frame.h) in each tier,
+// "lightmaps only" and the final shading (the talk's "Light Maps Only" / "Final Rendered Scene"
+// pair, glue/scene/views.h), on every GL backend and by the C fallback. Each GL frame is
+// compared bit for bit with the C twins shading GL's own G-buffer (SceneRenderConfig::check).
 #include <cmath>
 #include <cstdio>
 
-#include "gl/context.h"
-#include "shaderlib/variants.h"
-#include "demo/room_render.h"
 #include "base/image_diff.h"
+#include "base/srgb.h"
+#include "demo/scene_files.h"
 #include "io/exr.h"
 #include "io/png.h"
-#include "base/srgb.h"
+#include "scene/deferred.h"
+#include "scene/frame.h"
+#include "scene/reference.h"
+#include "scene/views.h"
 
 namespace {
 
-struct DemoTierW {
-  const char *tier;
-  const char *final_variant, *lightmap_variant;
-};
-const DemoTierW kTiers[] = {
-    {"ps20", "ps20:BUMPMAP=1,LIGHTMAP_ENCODING=1,ENVMAP=1,ENVMAPMASK=1",
-     "ps20:BUMPMAP=1,LIGHTMAP_ENCODING=1,ENVMAP=0,ENVMAPMASK=0"},
-    {"ps2b", "ps2b:BUMPMAP=1,LIGHTMAP_ENCODING=0,ENVMAP=1,ENVMAPMASK=1",
-     "ps2b:BUMPMAP=1,LIGHTMAP_ENCODING=0,ENVMAP=0,ENVMAPMASK=0"},
-    {"sm3", "sm3:BUMPMAP=1,LIGHTMAP_ENCODING=0,ENVMAP=1,ENVMAPMASK=1",
-     "sm3:BUMPMAP=1,LIGHTMAP_ENCODING=0,ENVMAP=0,ENVMAPMASK=0"},
-};
+const Tier kTiers[] = {Tier::PS20, Tier::PS2B, Tier::SM3};
 
 bool save(const std::string &base, const ImageF &img, bool exr, std::string *err) {
   if (!write_png(base + ".png", img, Encode::SRGB, err)) return false;
@@ -46,88 +36,78 @@ ImageF vstack2(const ImageF &bottom, const ImageF &top, int gap) {
   return o;
 }
 
+// The lit pass of `s` at `tier` on the C fallback (cfg.backend CPU) or on GL with the check.
+bool lit_frame(const Scene &s, Tier tier, SceneRenderConfig cfg, SceneRenderResult *res, std::string *err) {
+  SceneSelection sel;
+  return select_scene_variants(s, tier, "", &sel, err) && render_scene(s, sel, cfg, res, err);
+}
+
 bool run(const DemoOptions &opt, std::string *err) {
-  Selection sel;
-  if (!load_shader_decls(&sel.decls, err)) return false;
-  const WorldScene scene = default_world_scene();
-  WorldBake bake;
-  if (!bake_world(scene, &bake, err)) return false;
-  WorldFrame frame;
-  if (!world_frame(scene, bake, opt.w, opt.h, &frame, err)) return false;
+  Scene room;
+  if (!load_scene(kWorldLightingGltf, &room, err)) return false;
   const std::string dir = opt.dir + "/world_lighting_";
   int failures = 0;
   std::vector<ImageF> finals, lightmaps;
+  SceneRenderConfig cfg;
+  cfg.w = opt.w;
+  cfg.h = opt.h;
+  printf("room: %s, %dx%d\n", kWorldLightingGltf, opt.w, opt.h);
   printf("%-5s %-10s %-16s %10s %12s %10s\n", "tier", "image", "backend", "pixels", "mismatched", "max ULP");
-  for (const DemoTierW &t : kTiers) {
-    for (int lm_only = 0; lm_only < 2; ++lm_only) {
-      Variant v;
-      if (!find_variant(sel.decls, "world_lighting", lm_only ? t.lightmap_variant : t.final_variant, &v, err))
-        return false;
-      const TextureDesc page = encode_page(scene, bake, v.value("LIGHTMAP_ENCODING"));
-      WorldPass pass{&v, &page, lm_only == 1, false};
-      const std::string base = dir + t.tier + (lm_only ? "_lightmaps" : "");
-      ImageF cpu, cpu_nearest;
-      world_render_cpu(frame, bake, pass, &cpu);
-      if (!save(base + "_cpu", cpu, !lm_only, err)) return false;
-      (lm_only ? lightmaps : finals).push_back(cpu);
-      printf("%-5s %-10s %-16s %10d %12s %10s\n", t.tier, lm_only ? "lightmaps" : "final", "cpu", opt.w * opt.h, "-",
-             "-");
-      for (const BackendApi &cfg : opt.configs) {
-        const std::string tag = std::string(backend_name(cfg.backend)) + "_" + api_name(cfg.api);
-        auto ctx = GlContext::create(cfg.backend, cfg.api, err);
-        if (!ctx) {
-          fprintf(stderr, "world_lighting demo: %s: %s\n", tag.c_str(), err->c_str());
-          ++failures;
-          continue;
-        }
-        GlRenderer r(*ctx);
-        WorldPass p = pass;
-        p.nearest_cube = cfg.api != Api::GL33;
-        const ImageF *ref = &cpu;
-        if (p.nearest_cube) {
-          if (cpu_nearest.rgba.empty()) world_render_cpu(frame, bake, p, &cpu_nearest);
-          ref = &cpu_nearest;
-        }
-        ImageF gl;
-        if (!world_render_gl(r, cfg.api, frame, bake, p, &gl, err)) {
-          fprintf(stderr, "world_lighting demo: %s %s: %s\n", v.name().c_str(), tag.c_str(), err->c_str());
+  for (const Tier tier : kTiers) {
+    for (const SceneView view : {SceneView::Final, SceneView::Lightmaps}) {
+      const bool lm_only = view == SceneView::Lightmaps;
+      const Scene s = scene_view(room, view);
+      const std::string base = dir + tier_name(tier) + (lm_only ? "_lightmaps" : "");
+      SceneRenderResult cpu;
+      cfg.backend = Backend::CPU;
+      cfg.check = false;
+      if (!lit_frame(s, tier, cfg, &cpu, err) || !save(base + "_cpu", cpu.lit, !lm_only, err)) return false;
+      (lm_only ? lightmaps : finals).push_back(cpu.lit);
+      printf("%-5s %-10s %-16s %10d %12s %10s\n", tier_name(tier), lm_only ? "lightmaps" : "final", "cpu",
+             opt.w * opt.h, "-", "-");
+      for (const BackendApi &bc : opt.configs) {
+        const std::string tag = std::string(backend_name(bc.backend)) + "_" + api_name(bc.api);
+        cfg.backend = bc.backend;
+        cfg.api = bc.api;
+        cfg.check = true;
+        SceneRenderResult gl;
+        if (!lit_frame(s, tier, cfg, &gl, err)) {
+          fprintf(stderr, "world_lighting demo: %s %s: %s\n", tier_name(tier), tag.c_str(), err->c_str());
           ++failures;
           continue;
         }
         DiffStats st;
-        const ImageF diff = diff_image(gl, *ref, &st);
-        if (!save(base + "_" + tag, gl, false, err) ||
+        const ImageF diff = diff_image(gl.lit, gl.check_lit, &st);
+        if (!save(base + "_" + tag, gl.lit, false, err) ||
             !write_png(base + "_diff_" + tag + ".png", diff, Encode::Linear, err))
           return false;
-        if (st.mismatched_pixels) ++failures;
-        printf("%-5s %-10s %-16s %10ld %12ld %10u\n", t.tier, lm_only ? "lightmaps" : "final", tag.c_str(), st.pixels,
-               st.mismatched_pixels, st.max_ulp);
+        if (st.mismatched_pixels || gl.check_mismatched != 0) ++failures;
+        printf("%-5s %-10s %-16s %10ld %12ld %10u\n", tier_name(tier), lm_only ? "lightmaps" : "final", tag.c_str(),
+               st.pixels, st.mismatched_pixels, st.max_ulp);
       }
     }
   }
-  // The reference: the sm3 shading in double precision from the unquantised float32 page.
-  Variant sm3;
-  if (!find_variant(sel.decls, "world_lighting", kTiers[2].final_variant, &sm3, err)) return false;
-  const TextureDesc page32 = encode_page(scene, bake, -1);
+  // The reference: every draw's shading at sm3 in double precision from the unquantised float32
+  // page, on the C renderer's G-buffer (glue/scene/reference.h).
+  SceneGBufferCpu g;
   std::vector<double> ref;
-  world_render_double(frame, bake, WorldPass{&sm3, &page32, false, false}, &ref);
+  if (!scene_gbuffer_cpu(room, Tier::SM3, opt.w, opt.h, false, &g, err) ||
+      !scene_reference_linear(room, g.p, g.draw, g.slots, &ref, err))
+    return false;
   ImageF ref_img;
   ref_img.w = opt.w;
   ref_img.h = opt.h;
-  ref_img.rgba.assign(ref.begin(), ref.end());
+  ref_img.rgba.assign(static_cast<size_t>(opt.w) * opt.h * 4, 1.f);
+  for (size_t q = 0; q < ref.size() / 3; ++q)
+    for (int c = 0; c < 3; ++c) ref_img.rgba[q * 4 + c] = static_cast<float>(ref[q * 3 + c]);
   if (!save(dir + "reference", ref_img, true, err)) return false;
   finals.push_back(ref_img);
-  // The flat lightmap (k = 0) alone, no normal map: what a Source level without bump maps shows.
-  Variant flat;
-  if (!find_variant(sel.decls, "world_lighting", "sm3:BUMPMAP=0,LIGHTMAP_ENCODING=0,ENVMAP=0,ENVMAPMASK=0", &flat, err))
-    return false;
-  const TextureDesc page16 = encode_page(scene, bake, WL_LM_FLOAT);
-  WorldFrame flat_frame = frame;
-  flat_frame.in.shared[WL_SLOT_TINT_SCALE].x = flat_frame.in.shared[WL_SLOT_TINT_SCALE].y =
-      flat_frame.in.shared[WL_SLOT_TINT_SCALE].z = 1.f;
-  ImageF flat_img;
-  world_render_cpu(flat_frame, bake, WorldPass{&flat, &page16, true, false}, &flat_img);
-  lightmaps.push_back(flat_img);
+  // The flat lightmap alone, no normal maps: what a Source level without bump maps shows.
+  SceneRenderResult flat;
+  cfg.backend = Backend::CPU;
+  cfg.check = false;
+  if (!lit_frame(scene_view(room, SceneView::FlatLightmaps), Tier::SM3, cfg, &flat, err)) return false;
+  lightmaps.push_back(flat.lit);
   // Grid: top row final shading (ps20 | ps2b | sm3 | double reference), bottom row lightmaps
   // only (ps20 | ps2b | sm3 | the flat lightmap without normal maps); sRGB-encoded for display.
   auto display = [](std::vector<ImageF> v) {
@@ -145,7 +125,7 @@ bool run(const DemoOptions &opt, std::string *err) {
       "(top: final ps20 | ps2b | sm3 | double reference; bottom: lightmaps only, and the flat lightmap)\n",
       dir.c_str(), dir.c_str(), dir.c_str());
   if (failures) {
-    *err = std::to_string(failures) + " world_lighting GL frames differ from the C frames or failed";
+    *err = std::to_string(failures) + " world_lighting GL frames differ from the C twins or failed";
     return false;
   }
   return true;

@@ -212,8 +212,10 @@ bool read_lightmaps(const tinygltf::Value &v, const std::string &place, const st
     return false;
   if (v.Has("encoding")) {
     if (!read_string(v.Get("encoding"), place + ".encoding", &l->encoding, e)) return false;
-    if (l->encoding != "float" && l->encoding != "412" && l->encoding != "ldr" && l->encoding != "rgbe")
-      return e.fail(place + ".encoding", quoted(l->encoding) + " is not \"float\", \"412\", \"ldr\" or \"rgbe\"");
+    if (l->encoding != "float" && l->encoding != "412" && l->encoding != "ldr" && l->encoding != "rgbe" &&
+        l->encoding != "float32")
+      return e.fail(place + ".encoding",
+                    quoted(l->encoding) + " is not \"float\", \"412\", \"ldr\", \"rgbe\" or \"float32\"");
   }
   if (v.Has("page")) {
     const tinygltf::Value &p = v.Get("page");
@@ -262,13 +264,32 @@ bool read_lightmaps(const tinygltf::Value &v, const std::string &place, const st
   return true;
 }
 
+bool read_fog(const tinygltf::Value &v, const std::string &place, SceneFog *f, Err &e) {
+  if (!check_keys(v, place, {"color", "start", "end", "max_density"}, e)) return false;
+  for (const char *k : {"color", "start", "end"})
+    if (!v.Has(k)) return e.fail(place, std::string("missing \"") + k + "\"");
+  double c[3], d = 1;
+  if (!read_vec(v.Get("color"), place + ".color", 3, 0, 1e6, c, e) ||
+      !read_number(v.Get("start"), place + ".start", 0, 1e6, &f->start, e) ||
+      !read_number(v.Get("end"), place + ".end", 0, 1e6, &f->end, e) ||
+      (v.Has("max_density") && !read_number(v.Get("max_density"), place + ".max_density", 0, 1, &d, e)))
+    return false;
+  if (!(f->end > f->start))
+    return e.fail(place + ".end", "the fog ends (" + std::to_string(f->end) + ") before it starts (" +
+                                      std::to_string(f->start) + ")");
+  for (int k = 0; k < 3; ++k) f->color[k] = static_cast<float>(c[k]);
+  f->max_density = static_cast<float>(d);
+  f->enabled = true;
+  return true;
+}
+
 }  // namespace
 
 bool convert_tiershade_extras(const tinygltf::Model &m, const std::string &dir, Scene *s, Err &e) {
   const std::string place = "extras.tiershade";
   if (m.extras.IsObject() && m.extras.Has("tiershade")) {
     const tinygltf::Value &t = m.extras.Get("tiershade");
-    if (!check_keys(t, place, {"camera", "probes", "ambient", "hdr", "lightmaps"}, e)) return false;
+    if (!check_keys(t, place, {"camera", "probes", "ambient", "hdr", "lightmaps", "fog"}, e)) return false;
     if (t.Has("camera") &&
         !read_int(t.Get("camera"), place + ".camera", 0, static_cast<int>(s->cameras.size()) - 1, &s->camera, e))
       return false;
@@ -277,6 +298,7 @@ bool convert_tiershade_extras(const tinygltf::Model &m, const std::string &dir, 
     if (t.Has("hdr") && !read_hdr_settings(t.Get("hdr"), place + ".hdr", dir, &s->hdr, e)) return false;
     if (t.Has("lightmaps") && !read_lightmaps(t.Get("lightmaps"), place + ".lightmaps", dir, &s->lightmaps, e))
       return false;
+    if (t.Has("fog") && !read_fog(t.Get("fog"), place + ".fog", &s->fog, e)) return false;
   }
   for (const SceneMaterial &mat : s->materials)
     if (mat.probe >= static_cast<int>(s->probes.size()))

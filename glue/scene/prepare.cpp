@@ -433,6 +433,7 @@ bool prepare_scene(const Scene &s, const SceneSelection &sel, int w, int h, Api 
     // faces, density and page size as the bake that wrote it; docs/scenes.md).
     if (from_file) bake.page = s.lightmaps.image_rgba;
     ps.lightmap_page = bake.page;
+    ps.lightmap_places = bake.place;
     ps.lightmap_w = ws.page_w;
     ps.lightmap_h = ws.page_h;
     probes.have_world = true;
@@ -460,7 +461,7 @@ bool prepare_scene(const Scene &s, const SceneSelection &sel, int w, int h, Api 
     const Variant &v = *c.variant;
     const int enc = v.value("LIGHTMAP_ENCODING");
     if (enc != encoding) {
-      page = encode_page(ws, bake, enc);
+      page = encode_page(ws, bake, s.lightmaps.encoding == "float32" ? -1 : enc);
       encoding = enc;
     }
     const int fi = face_of_draw[di];
@@ -496,8 +497,14 @@ bool prepare_scene(const Scene &s, const SceneSelection &sel, int w, int h, Api 
         v4(m.envmap_tint[0] * mk, m.envmap_tint[1] * mk, m.envmap_tint[2] * mk, m.envmap ? m.envmap_scale : 0.f);
     d.shared[WL_SLOT_ENV_PARAMS] =
         v4(m.envmap_contrast, m.envmap_saturation, 1.f - m.fresnel_reflection, m.fresnel_reflection);
-    d.shared[WL_SLOT_FOG_COLOR] = v4(0, 0, 0, 0);  // no fog
-    d.shared[WL_SLOT_FOG_PARAMS] = v4(0, 0, 0, 0);
+    // Range fog (scene.h SceneFog; the shader's u_fog_color / u_fog_params): density 0 = none.
+    const SceneFog &fog = s.fog;
+    const double range = fog.end - fog.start;
+    d.shared[WL_SLOT_FOG_COLOR] = fog.enabled ? v4(fog.color[0], fog.color[1], fog.color[2], fog.max_density)
+                                              : v4(0, 0, 0, 0);
+    d.shared[WL_SLOT_FOG_PARAMS] =
+        fog.enabled ? v4(static_cast<float>(1.0 / range), static_cast<float>(fog.start / range), 0, 0)
+                    : v4(0, 0, 0, 0);
     if (m.base_texture.image >= 0)
       d.tex.push_back(pool.get(key_of("u_base", m.base_texture, true, m.base_color),
                                [&] { return image_texture(s, m.base_texture, "u_base", true, m.base_color); }));

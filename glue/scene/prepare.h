@@ -12,6 +12,7 @@
 #include "scene/scene.h"
 #include "scene/selection.h"
 #include "math/ts_math.h"
+#include "offline/lightmap_page.h"
 
 struct PreparedDraw {
   const SceneDrawChoice *choice = nullptr;
@@ -44,6 +45,7 @@ struct PreparedScene {
   // lightmaps.image): lightmap_w x lightmap_h RGBA, row 0 at the bottom; empty without world draws.
   std::vector<float> lightmap_page;
   int lightmap_w = 0, lightmap_h = 0;
+  std::vector<lm_face_place> lightmap_places;  // each world face's blocks on the page (c_ref/offline/lightmap_page.h)
   double bake_ms = 0;
   std::vector<std::string> notes;
 };

@@ -1,4 +1,5 @@
-// tiershade scene: the double-precision, every-light-local reference of a scene frame (reference.h).
+// tiershade scene: the double-precision reference of a scene frame (reference.h): every light local on
+// model draws, the float32 page on world draws.
 #include "scene/reference.h"
 
 #include <algorithm>
@@ -8,7 +9,9 @@
 #include "base/parallel_rows.h"
 #include "families/family.h"
 #include "families/model_lighting.h"
+#include "families/world_lighting.h"
 #include "twins/model_lighting.h"
+#include "twins/world_lighting.h"
 
 bool scene_reference_linear(const Scene &s, const PreparedScene &p, const std::vector<int> &draw,
                             const std::vector<float> &slots, std::vector<double> *rgb, std::string *err, int threads) {
@@ -17,12 +20,6 @@ bool scene_reference_linear(const Scene &s, const PreparedScene &p, const std::v
     *err = s.path + ": reference: the G-buffer is not " + std::to_string(p.w) + "x" + std::to_string(p.h);
     return false;
   }
-  for (size_t q = 0; q < n; ++q)
-    if (draw[q] >= 0 && p.draws.at(static_cast<size_t>(draw[q])).world) {
-      *err = s.path + ": reference: " + s.primitives[p.draws[draw[q]].choice->primitive].where +
-          " is a world (lightmapped) draw; the reference covers model draws only";
-      return false;
-    }
   // The scene's lights packed once, in groups of ML_MAX_LIGHTS.
   std::vector<std::array<ts_vec4f, 5>> packed;
   for (const SceneLight &l : s.lights) {
@@ -37,22 +34,38 @@ bool scene_reference_linear(const Scene &s, const PreparedScene &p, const std::v
     packed.push_back(a);
   }
   // Per draw: its variant at sm3, linear output, and its texture views.
+  // World draws: their variant at sm3 reading the float32 page (LIGHTMAP_ENCODING 0, unquantised).
   struct Ctx {
     ml_variant v;
+    wl_variant wv;
     ts_tex2d t2[4];
     ts_texcube cube;
     ml_textures tex;
+    wl_textures wt;
   };
+  TextureDesc page32;
+  ts_tex2d page32_view{};
+  if (!p.lightmap_page.empty()) {
+    page32 = wl_texture("u_lightmap", p.lightmap_w, p.lightmap_h, true, false);
+    page32.rgba = p.lightmap_page;
+    page32_view = tex2d_of(page32);
+  }
   std::vector<Ctx> ctx(p.draws.size());
   for (size_t i = 0; i < p.draws.size(); ++i) {
     const PreparedDraw &d = p.draws[i];
-    if (d.world) continue;
     Ctx &c = ctx[i];
+    for (int k = 0; k < 4; ++k) c.t2[k] = tex2d_of(p.texture(d, k));
+    c.cube = texcube_of(p.texture(d, 4));
+    if (d.world) {
+      c.wv = wl_variant_of(*d.variant);
+      c.wv.tier = TS_TIER_ID_SM3;
+      c.wv.encoding = WL_LM_FLOAT;
+      c.wt = {&c.t2[0], &c.t2[1], &page32_view, &c.t2[3], &c.cube};
+      continue;
+    }
     c.v = ml_variant_of(*d.variant);
     c.v.tier = TS_TIER_ID_SM3;
     c.v.output_mode = 0;
-    for (int k = 0; k < 4; ++k) c.t2[k] = tex2d_of(p.texture(d, k));
-    c.cube = texcube_of(p.texture(d, 4));
     c.tex = {&c.t2[0], &c.t2[1], &c.t2[2], &c.t2[3], &c.cube};
   }
   const int nl = static_cast<int>(packed.size());
@@ -64,6 +77,16 @@ bool scene_reference_linear(const Scene &s, const PreparedScene &p, const std::v
       if (draw[q] < 0) continue;
       const PreparedDraw &d = p.draws[static_cast<size_t>(draw[q])];
       const Ctx &c = ctx[static_cast<size_t>(draw[q])];
+      if (d.world) {  // the lights are in the page: one evaluation
+        ts_vec4f wrec[WL_SLOTS];
+        std::copy(d.shared.begin(), d.shared.begin() + WL_SLOTS, wrec);
+        std::memcpy(wrec, &slots[q * 24], 24 * sizeof(float));
+        const ts_vec4d r = world_lighting_d(&c.wv, wrec, &c.wt);
+        (*rgb)[q * 3 + 0] = r.x;
+        (*rgb)[q * 3 + 1] = r.y;
+        (*rgb)[q * 3 + 2] = r.z;
+        continue;
+      }
       std::copy(d.shared.begin(), d.shared.begin() + ML_SLOTS, rec);
       std::memcpy(rec, &slots[q * 24], 24 * sizeof(float));  // the pixel slots come first
       double sum[3] = {0, 0, 0};

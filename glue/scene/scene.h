@@ -144,7 +144,8 @@ struct SceneHdr {
 // Lightmap settings ("lightmaps" in the scene's extras), used by World materials.
 struct SceneLightmaps {
   double luxels_per_unit = 6;
-  std::string encoding = "rgbe";  // "float" | "412" | "ldr" | "rgbe" (world_lighting LIGHTMAP_ENCODING)
+  std::string encoding = "rgbe";  // "float" | "412" | "ldr" | "rgbe" (world_lighting LIGHTMAP_ENCODING),
+      // or "float32": LIGHTMAP_ENCODING 0 reading the unquantised page (a reference, not a run-time format)
   int page_w = 512, page_h = 256;
   // "image": a baked page read from a file (EXR or Radiance HDR, relative to the scene file) in
   // tiershade's page layout (written by `tiershade bake`), instead of baking the luxels at load.
@@ -152,6 +153,15 @@ struct SceneLightmaps {
   // bottom (GL texture rows), alpha 1; finite and >= 0 (checked at load).
   std::string image;
   std::vector<float> image_rgba;
+};
+
+// Range fog ("fog" in the scene's extras) on World draws, as Source's pixel fog: f = saturate(min(max_density,
+// (depth - start) / (end - start))), blended with f^2 (fact sheet section 7); ps20 has no pixel fog.
+struct SceneFog {
+  bool enabled = false;
+  float color[3] = {0, 0, 0};  // linear
+  double start = 0, end = 1;  // view depth, start < end
+  float max_density = 1.f;
 };
 
 struct Scene {
@@ -167,6 +177,7 @@ struct Scene {
   std::vector<SceneAmbientSample> ambient;
   SceneHdr hdr;
   SceneLightmaps lightmaps;
+  SceneFog fog;
 };
 
 // Loads a glTF 2.0 scene (.gltf with external or data-URI buffers and images, or .glb).

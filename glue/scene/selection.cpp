@@ -129,6 +129,7 @@ void world_choice(const Scene &s, const SceneMaterial &m, Wanted *w, SceneDrawCh
   int enc = 3;
   for (int i = 0; i < 4; ++i)
     if (s.lightmaps.encoding == kEnc[i]) enc = i;
+  if (s.lightmaps.encoding == "float32") enc = 0;  // the float path, fed the unquantised page
   w->set("LIGHTMAP_ENCODING", enc, "the scene's lightmap encoding \"" + s.lightmaps.encoding + "\"");
   const bool env = m.envmap && !s.probes.empty();
   w->set("ENVMAP", env ? 1 : 0,
