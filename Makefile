@@ -17,7 +17,7 @@ CXXFLAGS := -std=c++17 $(OPT) -Wall -Wextra -Werror -ffp-contract=off -fno-fast-
             $(shell pkg-config --cflags $(PKGS) 2>/dev/null)
 SANFLAGS := -fsanitize=address,undefined
 LDFLAGS  := $(if $(filter 1,$(SAN)),$(SANFLAGS))
-LDLIBS   := -lEGL -lglslang-default-resource-limits $(shell pkg-config --libs $(PKGS) 2>/dev/null) -lpthread -ldl -lm
+LDLIBS   := -lEGL -lglslang-default-resource-limits -lembree3 $(shell pkg-config --libs $(PKGS) 2>/dev/null) -lpthread -ldl -lm
 
 SHADER_FILES := $(sort $(wildcard shaders/*.glsl shaders/*.fs shaders/*.vs shaders/*.variants))
 CASE_FILES   := $(sort $(wildcard tests/conform/*.cases))
@@ -36,7 +36,7 @@ all: $(BUILD)/tiershade $(UNIT_TESTS)
 # Debian packages (see README): installed only when missing, so a second run is quick.
 DEB_PKGS := build-essential pkg-config libosmesa6-dev libegl-dev libegl-mesa0 libgles-dev libgbm-dev \
             libglm-dev libopenexr-dev libopencolorio-dev libtinygltf-dev nlohmann-json3-dev libstb-dev \
-            libpng-dev glslang-dev spirv-tools spirv-headers
+            libpng-dev glslang-dev spirv-tools spirv-headers libembree-dev
 deps:
 	@missing=$$(for p in $(DEB_PKGS); do dpkg-query -W -f='$${Status}\n' $$p 2>/dev/null | grep -q 'install ok installed' || echo $$p; done); \
 	if [ -n "$$missing" ]; then \

@@ -1,9 +1,12 @@
-// tiershade bake: the world bake (glue/bake/world_bake.h): luxels, page, probes, encodings.
+// tiershade bake: the world bake (glue/bake/world_bake.h): luxels (supersampled, with shadow rays through
+// glue/bake/ray_scene.h), page, probes, encodings.
 #include "bake/world_bake.h"
 
+#include <algorithm>
 #include <cmath>
 
 #include "bake/glm_ts.h"
+#include "bake/ray_scene.h"
 #include "base/cube_faces.h"
 #include "offline/envmap_probes.h"
 #include "offline/lightmap_encoding.h"
@@ -11,6 +14,31 @@
 namespace {
 
 int luxels(double len, double per_unit) { return std::max(2, static_cast<int>(std::lround(len * per_unit)) + 1); }
+
+// Shadow rays start this far off the surface along its normal (scene units, metres in glTF): above
+// Embree's float precision at room scale (~1e-6 m), below any contact a lightmap resolves.
+const double kRayOffset = 1e-4;
+
+// The lights that reach p: those it faces (n . L > 0) whose segment to p nothing blocks.
+void visible_lights(const WorldBakeInput &s, const glm::dvec3 &p, const glm::dvec3 &n, std::vector<rnm_light> *out) {
+  out->clear();
+  for (const rnm_light &l : s.lights) {
+    const glm::dvec3 to = l.directional ? -to_glm(l.dir) : to_glm(l.pos) - p;
+    if (!(glm::dot(to, n) > 0)) continue;  // behind the face: it feeds no value (rnm_bake_texel)
+    const glm::dvec3 o = p + n * kRayOffset;
+    const glm::dvec3 d = l.directional ? to : to_glm(l.pos) - o;
+    // Point and spot lights: the segment up to the light (t < 1); a sun: the whole ray.
+    if (s.rays && s.rays->occluded(o, d, 0.0, l.directional ? INFINITY : 1.0 - 1e-9)) continue;
+    out->push_back(l);
+  }
+}
+
+// The four values (flat, b0, b1, b2) at p with visibility.
+int lit_values(const WorldBakeInput &s, const glm::dvec3 &p, ts_vec3d n, const ts_vec3d bump[3], ts_vec3d v4[4],
+               std::vector<rnm_light> *scratch, char *msg, size_t len) {
+  visible_lights(s, p, to_glm(n), scratch);
+  return rnm_bake_texel(to_ts(p), n, bump, scratch->data(), static_cast<int>(scratch->size()), v4, msg, len);
+}
 
 }  // namespace
 
@@ -41,15 +69,33 @@ bool bake_world(const WorldBakeInput &s, WorldBake *out, std::string *err) {
       return false;
     }
     const lm_face_size &sz = sizes[fi];
+    {  // every light checked once per face (a bad light is an error naming the face)
+      ts_vec3d v4[4];
+      if (rnm_bake_texel(world_face_point(f, 0, 0), n, bump, s.lights.data(), static_cast<int>(s.lights.size()), v4,
+                         msg, sizeof msg) != 0) {
+        *err = std::string(f.name) + ": " + msg;
+        return false;
+      }
+    }
+    const int ss = std::max(1, s.supersample);
+    std::vector<rnm_light> scratch;
     for (int j = 0; j < sz.luxels_h; ++j) {
       for (int i = 0; i < sz.luxels_w; ++i) {
-        const ts_vec3d p =
-            world_face_point(f, static_cast<double>(i) / (sz.luxels_w - 1), static_cast<double>(j) / (sz.luxels_h - 1));
-        ts_vec3d v4[4];
-        if (rnm_bake_texel(p, n, bump, s.lights.data(), static_cast<int>(s.lights.size()), v4, msg, sizeof msg) != 0) {
-          *err = std::string(f.name) + ": " + msg;
-          return false;
-        }
+        // The luxel's footprint is one luxel spacing wide, centred on its grid point; ss x ss samples.
+        ts_vec3d v4[4] = {};
+        for (int sj = 0; sj < ss; ++sj)
+          for (int si = 0; si < ss; ++si) {
+            const double a = std::clamp((i + (si + 0.5) / ss - 0.5) / (sz.luxels_w - 1), 0.0, 1.0);
+            const double b = std::clamp((j + (sj + 0.5) / ss - 0.5) / (sz.luxels_h - 1), 0.0, 1.0);
+            ts_vec3d s4[4];
+            if (lit_values(s, to_glm(world_face_point(f, a, b)), n, bump, s4, &scratch, msg, sizeof msg) != 0) {
+              *err = std::string(f.name) + ": " + msg;
+              return false;
+            }
+            for (int k = 0; k < 4; ++k) v4[k] = ts_v3d(v4[k].x + s4[k].x, v4[k].y + s4[k].y, v4[k].z + s4[k].z);
+          }
+        const double inv = 1.0 / (ss * ss);
+        for (int k = 0; k < 4; ++k) v4[k] = ts_v3d(v4[k].x * inv, v4[k].y * inv, v4[k].z * inv);
         for (int k = 0; k < 4; ++k) {
           int tx, ty;
           lm_page_texel(&out->place[fi], k, i, j, &tx, &ty);
@@ -92,9 +138,9 @@ bool bake_world(const WorldBakeInput &s, WorldBake *out, std::string *err) {
             const WorldFace &f = s.faces[hit];
             const ts_vec3d n = world_face_normal(f);
             ts_vec3d bump[3], v4[4];
+            std::vector<rnm_light> scratch;
             rnm_bump_basis(f.u, f.v, n, n, bump, msg, sizeof msg);
-            rnm_bake_texel(world_face_point(f, a, b), n, bump, s.lights.data(), static_cast<int>(s.lights.size()), v4,
-                           msg, sizeof msg);
+            lit_values(s, to_glm(world_face_point(f, a, b)), n, bump, v4, &scratch, msg, sizeof msg);
             rad = to_glm(v4[0]) * 0.6;
           }
           for (const rnm_light &l : s.lights) {  // a light bulb of radius 0.08 (not for a sun)

@@ -11,6 +11,8 @@
 #include "offline/lightmap_page.h"
 #include "offline/rnm_bake.h"
 
+class RayScene;
+
 struct WorldBakeInput {
   std::vector<WorldFace> faces;
   std::vector<rnm_light> lights;
@@ -19,6 +21,12 @@ struct WorldBakeInput {
   int page_w = 512, page_h = 256;
   int cube_size = 64;
   bool bake_luxels = true;  // false: the page is left black (alpha 1) for a page read from a file
+  // Visibility: shadow rays through this scene (every triangle of the scene, glue/bake/ray_scene.h)
+  // from each sample point to each light it faces; null: every light reaches every point it faces.
+  const RayScene *rays = nullptr;
+  // Samples per luxel along each axis (vrad: 4 samples, 2 x 2, for direct lighting; fact sheet
+  // section 1), a regular grid over the luxel's footprint on the face, clipped to the face.
+  int supersample = 2;
 };
 
 // The baked lighting: the page in float32 (flat, b0, b1, b2 per face, borders filled),

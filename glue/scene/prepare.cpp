@@ -14,6 +14,7 @@
 #include <glm/gtc/matrix_transform.hpp>
 #include <glm/gtc/type_ptr.hpp>
 
+#include "bake/ray_scene.h"
 #include "bake/world_bake.h"
 #include "scene/textures.h"
 #include "twins/model_lighting.h"
@@ -425,6 +426,21 @@ bool prepare_scene(const Scene &s, const SceneSelection &sel, int w, int h, Api 
     ws.cube_size = cube_size;
     const bool from_file = !s.lightmaps.image_rgba.empty();
     ws.bake_luxels = !from_file;
+    // Visibility: one BVH of every triangle of the scene, world and model (glue/bake/ray_scene.h).
+    RayScene rays;
+    if (!from_file) {
+      for (size_t i = 0; i < s.primitives.size(); ++i)
+        if (!rays.add_mesh(s.primitives[i].position, s.primitives[i].indices, static_cast<int>(i),
+                           s.primitives[i].where, err)) {
+          *err = s.path + ": " + *err;
+          return false;
+        }
+      if (!rays.commit(err)) {
+        *err = s.path + ": " + *err;
+        return false;
+      }
+      ws.rays = &rays;
+    }
     if (!bake_world(ws, &bake, err)) {
       *err = s.path + ": lightmap bake: " + *err;
       return false;

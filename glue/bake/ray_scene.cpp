@@ -1,0 +1,143 @@
+// tiershade bake: the baker's Embree scene (ray_scene.h).
+#include "bake/ray_scene.h"
+
+#include <embree3/rtcore.h>
+
+#include <cmath>
+#include <cstring>
+#include <limits>
+
+struct RayScene::Impl {
+  RTCDevice device = nullptr;
+  RTCScene scene = nullptr;
+  std::vector<int> ids;  // Embree geometry id -> mesh id
+  std::string error;  // the device's last error
+  bool committed = false;
+};
+
+namespace {
+void on_error(void *user, RTCError code, const char *str) {
+  *static_cast<std::string *>(user) =
+      "Embree error " + std::to_string(static_cast<int>(code)) + ": " + (str ? str : "(no message)");
+}
+}  // namespace
+
+RayScene::RayScene() : impl_(new Impl) {
+  // One build thread: the bake's own threads are the parallelism, and a 2-core machine stays calm.
+  impl_->device = rtcNewDevice("threads=1");
+  if (impl_->device) {
+    rtcSetDeviceErrorFunction(impl_->device, on_error, &impl_->error);
+    impl_->scene = rtcNewScene(impl_->device);
+  }
+}
+
+RayScene::~RayScene() {
+  if (impl_->scene) rtcReleaseScene(impl_->scene);
+  if (impl_->device) rtcReleaseDevice(impl_->device);
+  delete impl_;
+}
+
+bool RayScene::add_mesh(const std::vector<float> &position, const std::vector<uint32_t> &indices, int id,
+                        const std::string &what, std::string *err) {
+  if (!impl_->scene) {
+    *err = "cannot create an Embree device" + (impl_->error.empty() ? std::string() : ": " + impl_->error);
+    return false;
+  }
+  if (impl_->committed) {
+    *err = what + ": added after the ray scene was built";
+    return false;
+  }
+  const size_t nv = position.size() / 3, nt = indices.size() / 3;
+  if (nt == 0) return true;
+  for (size_t i = 0; i < nt * 3; ++i)
+    if (indices[i] >= nv) {
+      *err = what + ": triangle " + std::to_string(i / 3) + " names vertex " + std::to_string(indices[i]) + " of " +
+          std::to_string(nv);
+      return false;
+    }
+  for (float p : position)
+    if (!std::isfinite(p)) {
+      *err = what + ": a vertex position is not finite";
+      return false;
+    }
+  RTCGeometry g = rtcNewGeometry(impl_->device, RTC_GEOMETRY_TYPE_TRIANGLE);
+  auto *v = static_cast<float *>(
+      rtcSetNewGeometryBuffer(g, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3, 3 * sizeof(float), nv));
+  auto *t = static_cast<unsigned *>(
+      rtcSetNewGeometryBuffer(g, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3, 3 * sizeof(unsigned), nt));
+  if (!v || !t) {
+    rtcReleaseGeometry(g);
+    *err = what + ": " + (impl_->error.empty() ? std::string("Embree cannot allocate the buffers") : impl_->error);
+    return false;
+  }
+  std::memcpy(v, position.data(), nv * 3 * sizeof(float));
+  for (size_t i = 0; i < nt * 3; ++i) t[i] = indices[i];
+  rtcCommitGeometry(g);
+  const unsigned gid = rtcAttachGeometry(impl_->scene, g);
+  rtcReleaseGeometry(g);
+  if (impl_->ids.size() <= gid) impl_->ids.resize(gid + 1, -1);
+  impl_->ids[gid] = id;
+  triangles_ += static_cast<long>(nt);
+  return true;
+}
+
+bool RayScene::commit(std::string *err) {
+  if (!impl_->scene) {
+    *err = "cannot create an Embree device" + (impl_->error.empty() ? std::string() : ": " + impl_->error);
+    return false;
+  }
+  impl_->error.clear();
+  rtcCommitScene(impl_->scene);
+  if (!impl_->error.empty()) {
+    *err = "building the ray scene: " + impl_->error;
+    return false;
+  }
+  impl_->committed = true;
+  return true;
+}
+
+namespace {
+void set_ray(RTCRay *r, const glm::dvec3 &o, const glm::dvec3 &d, double tnear, double tfar) {
+  r->org_x = static_cast<float>(o.x);
+  r->org_y = static_cast<float>(o.y);
+  r->org_z = static_cast<float>(o.z);
+  r->dir_x = static_cast<float>(d.x);
+  r->dir_y = static_cast<float>(d.y);
+  r->dir_z = static_cast<float>(d.z);
+  r->tnear = static_cast<float>(tnear);
+  r->tfar = std::isinf(tfar) ? std::numeric_limits<float>::infinity() : static_cast<float>(tfar);
+  r->time = 0;
+  r->mask = 0xFFFFFFFFu;
+  r->id = 0;
+  r->flags = 0;
+}
+}  // namespace
+
+bool RayScene::occluded(const glm::dvec3 &origin, const glm::dvec3 &dir, double tnear, double tfar) const {
+  if (!impl_->committed) return false;
+  RTCRay r;
+  set_ray(&r, origin, dir, tnear, tfar);
+  RTCIntersectContext ctx;
+  rtcInitIntersectContext(&ctx);
+  rtcOccluded1(impl_->scene, &ctx, &r);
+  return r.tfar == -std::numeric_limits<float>::infinity();
+}
+
+RayScene::Hit RayScene::intersect(const glm::dvec3 &origin, const glm::dvec3 &dir, double tnear, double tfar) const {
+  Hit h;
+  if (!impl_->committed) return h;
+  RTCRayHit rh;
+  set_ray(&rh.ray, origin, dir, tnear, tfar);
+  rh.hit.geomID = RTC_INVALID_GEOMETRY_ID;
+  rh.hit.primID = RTC_INVALID_GEOMETRY_ID;
+  RTCIntersectContext ctx;
+  rtcInitIntersectContext(&ctx);
+  rtcIntersect1(impl_->scene, &ctx, &rh);
+  if (rh.hit.geomID == RTC_INVALID_GEOMETRY_ID) return h;
+  h.t = rh.ray.tfar;
+  h.id = rh.hit.geomID < impl_->ids.size() ? impl_->ids[rh.hit.geomID] : -1;
+  h.triangle = static_cast<int>(rh.hit.primID);
+  h.u = rh.hit.u;
+  h.v = rh.hit.v;
+  return h;
+}

@@ -1,0 +1,46 @@
+// tiershade bake: the ray-tracing scene of the baker: one Embree 3 BVH of every triangle of a scene
+// (world and model primitives alike), queried for visibility (shadow rays) and nearest hits. The
+// queries are thread-safe; each answer depends only on the ray and the triangles, never on the
+// thread that asks or on how the BVH was built (a shadow ray's answer is hit / no hit; a nearest
+// hit is the smallest t, ties resolved by Embree's watertight test).
+#pragma once
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include <glm/vec3.hpp>
+
+class RayScene {
+ public:
+  RayScene();
+  ~RayScene();
+  RayScene(const RayScene &) = delete;
+  RayScene &operator=(const RayScene &) = delete;
+
+  // Adds a triangle mesh (3 floats per vertex, 3 indices per triangle); `id` is returned by hits
+  // on it. Call before commit(). An index out of range is an error naming `what`.
+  bool add_mesh(const std::vector<float> &position, const std::vector<uint32_t> &indices, int id, const std::string &what,
+                std::string *err);
+  // Builds the BVH; queries after this only.
+  bool commit(std::string *err);
+
+  // Whether anything lies on the segment origin + t dir, t in (tnear, tfar) (dir need not be unit;
+  // t is in units of |dir|).
+  bool occluded(const glm::dvec3 &origin, const glm::dvec3 &dir, double tnear, double tfar) const;
+
+  struct Hit {
+    double t = 0;
+    int id = -1;  // the mesh's id (-1: no hit)
+    int triangle = -1;  // index of the triangle in its mesh
+    double u = 0, v = 0;  // barycentrics of vertices 1 and 2
+  };
+  // The nearest hit on origin + t dir, t in (tnear, tfar).
+  Hit intersect(const glm::dvec3 &origin, const glm::dvec3 &dir, double tnear, double tfar) const;
+
+  long triangles() const { return triangles_; }
+
+ private:
+  struct Impl;
+  Impl *impl_;
+  long triangles_ = 0;
+};

@@ -1,0 +1,215 @@
+// tiershade tests: the baker's visibility (glue/bake/ray_scene.h, Embree) against closed forms, on a
+// 4 x 4 floor under a 1 x 1 occluder (issue "the light baker", tests with known answers):
+//   - a point light above the floor: every luxel whose samples all lie outside the occluder's
+//     shadow (its projection from the light, where geometry puts it) holds the mean over its
+//     samples of I cos(theta) / d^2 to 1e-6 relative; every luxel whose samples all lie inside
+//     holds 0; the luxels across the boundary lie in between;
+//   - a sun straight down: the shadow is the occluder's footprint;
+//   - basis values: a light on the face normal gives each bumped value the flat value times the
+//     basis vector's z (1/sqrt(3)); a light behind the face gives zero everywhere;
+//   - the ray scene itself: hits and misses, the nearest hit's t and mesh id, a bad index refused.
+#include <cmath>
+#include <cstdio>
+#include <string>
+#include <vector>
+
+#include "bake/ray_scene.h"
+#include "bake/world_bake.h"
+#include "unit_check.h"
+
+namespace {
+
+const double kOcc = 0.5;  // the occluder: |x|, |z| <= 0.5 at height kOccY
+const double kOccY = 2.0;
+
+void add_quad(RayScene *r, double y, double half, int id, const char *what) {
+  const float h = static_cast<float>(half), fy = static_cast<float>(y);
+  const std::vector<float> p = {-h, fy, -h, h, fy, -h, h, fy, h, -h, fy, h};
+  const std::vector<uint32_t> idx = {0, 1, 2, 0, 2, 3};
+  std::string err;
+  if (!r->add_mesh(p, idx, id, what, &err)) check(false, std::string("add ") + what, err);
+}
+
+struct Floor {
+  WorldBakeInput in;
+  WorldBake out;
+  int w = 0, h = 0;  // luxels
+  bool ok = false;
+};
+
+// The floor x, z in [-2, 2] at y = 0, facing +y, 8 luxels per unit (33 x 33), lit by `lights`.
+void bake_floor(const std::vector<rnm_light> &lights, const RayScene *rays, Floor *f) {
+  f->in.faces = {{"floor", ts_v3d(-2, 0, 2), ts_v3d(1, 0, 0), ts_v3d(0, 0, -1), 4, 4, -1, ts_v3d(0, 1, 0)}};
+  f->in.lights = lights;
+  f->in.probes = {ts_v3d(0, 1, 0)};
+  f->in.luxels_per_unit = 8;
+  f->in.page_w = 256;
+  f->in.page_h = 64;
+  f->in.cube_size = 4;
+  f->in.rays = rays;
+  std::string err;
+  f->ok = bake_world(f->in, &f->out, &err);
+  if (!f->ok) check(false, "bake the floor", err);
+  f->w = f->h = 33;
+}
+
+ts_vec3d value(const Floor &f, int k, int i, int j) {
+  int tx, ty;
+  lm_page_texel(&f.out.place[0], k, i, j, &tx, &ty);
+  const float *t = &f.out.page[(static_cast<size_t>(ty) * f.in.page_w + tx) * 4];
+  return ts_v3d(t[0], t[1], t[2]);
+}
+
+// The world position of sample (si, sj) of luxel (i, j) (2 x 2 samples, as bake_world places them).
+void sample_xz(int i, int j, int si, int sj, double *x, double *z) {
+  const double a = std::min(1.0, std::max(0.0, (i + (si + 0.5) / 2 - 0.5) / 32));
+  const double b = std::min(1.0, std::max(0.0, (j + (sj + 0.5) / 2 - 0.5) / 32));
+  *x = -2 + 4 * a;
+  *z = 2 - 4 * b;
+}
+
+rnm_light point_light(double x, double y, double z, double I) {
+  rnm_light l{};
+  l.pos = ts_v3d(x, y, z);
+  l.color = ts_v3d(I, I, I);
+  l.atten[2] = 1;  // 1 / d^2
+  return l;
+}
+
+rnm_light sun(double dy, double I) {
+  rnm_light l{};
+  l.directional = 1;
+  l.dir = ts_v3d(0, dy, 0);
+  l.color = ts_v3d(I, I, I);
+  return l;
+}
+
+// Shadow test: `half` is the shadow's half-width on the floor; a sample is inside when both |x|, |z|
+// are below it by more than `margin`, outside when either is above it by more than `margin`.
+void check_shadow(const Floor &f, double half, const char *label, double (*lit)(double x, double z)) {
+  const double margin = 1e-6;
+  long outside = 0, inside = 0, across = 0, bad_out = 0, bad_in = 0, bad_across = 0;
+  double worst = 0;
+  for (int j = 0; j < f.h; ++j)
+    for (int i = 0; i < f.w; ++i) {
+      int n_in = 0, n_out = 0;
+      double expect = 0;
+      for (int sj = 0; sj < 2; ++sj)
+        for (int si = 0; si < 2; ++si) {
+          double x, z;
+          sample_xz(i, j, si, sj, &x, &z);
+          const double m = std::max(std::fabs(x), std::fabs(z)) - half;
+          if (m < -margin) ++n_in;
+          if (m > margin) {
+            ++n_out;
+            expect += lit(x, z) / 4;
+          }
+        }
+      const double v = value(f, 0, i, j).x;
+      if (n_out == 4) {
+        ++outside;
+        const double rel = std::fabs(v - expect) / expect;
+        worst = std::max(worst, rel);
+        bad_out += rel > 1e-6;
+      } else if (n_in == 4) {
+        ++inside;
+        bad_in += v != 0;
+      } else if (n_in + n_out == 4) {
+        ++across;
+        bad_across += std::fabs(v - expect) > 1e-6 * expect;  // expect > 0: some sample is out
+      }
+    }
+  check(outside > 100 && bad_out == 0,
+        std::string(label) + ": lit luxels = mean of I cos(theta) / d^2 over their samples to 1e-6",
+        std::to_string(bad_out) + " of " + std::to_string(outside) + " off; worst relative " + std::to_string(worst));
+  check(inside > 4 && bad_in == 0, std::string(label) + ": luxels inside the shadow are 0",
+        std::to_string(bad_in) + " of " + std::to_string(inside) + " lit");
+  check(bad_across == 0, std::string(label) + ": luxels across the boundary = their unshadowed samples' share, to 1e-6",
+        std::to_string(bad_across) + " of " + std::to_string(across) + " off");
+}
+
+double point_lit(double x, double z) {
+  const double dx = -x, dy = 4.0, dz = -z, d2 = dx * dx + dy * dy + dz * dz;
+  return 10.0 * (dy / std::sqrt(d2)) / d2;  // I cos(theta) / d^2, I = 10
+}
+double sun_lit(double, double) { return 3.0; }
+
+void shadows() {
+  RayScene rays;
+  add_quad(&rays, 0.0, 2.0, 0, "floor");
+  add_quad(&rays, kOccY, kOcc, 1, "occluder");
+  std::string err;
+  if (!rays.commit(&err)) return check(false, "commit", err);
+  Floor pf;
+  bake_floor({point_light(0, 4, 0, 10)}, &rays, &pf);
+  if (pf.ok) check_shadow(pf, kOcc * 4.0 / (4.0 - kOccY), "point light at height 4", point_lit);
+  Floor sf;
+  bake_floor({sun(-1, 3)}, &rays, &sf);
+  if (sf.ok) check_shadow(sf, kOcc, "sun straight down", sun_lit);
+  // Without the ray scene nothing is shadowed (the direct-only bake of before).
+  Floor nf;
+  bake_floor({sun(-1, 3)}, nullptr, &nf);
+  if (nf.ok) check(value(nf, 0, 16, 16).x == 3.f, "no ray scene: no shadow", std::to_string(value(nf, 0, 16, 16).x));
+  // The same bake twice gives the same bytes.
+  Floor again;
+  bake_floor({point_light(0, 4, 0, 10)}, &rays, &again);
+  check(again.ok && again.out.page == pf.out.page, "the bake is deterministic");
+}
+
+void basis_values() {
+  RayScene rays;
+  add_quad(&rays, 0.0, 2.0, 0, "floor");
+  std::string err;
+  if (!rays.commit(&err)) return check(false, "commit", err);
+  Floor f;
+  bake_floor({sun(-1, 2)}, &rays, &f);
+  if (!f.ok) return;
+  double worst = 0;
+  for (int j = 0; j < f.h; ++j)
+    for (int i = 0; i < f.w; ++i) {
+      const double flat = value(f, 0, i, j).x;
+      for (int k = 1; k < 4; ++k) worst = std::max(worst, std::fabs(value(f, k, i, j).x - flat / std::sqrt(3.0)) / flat);
+    }
+  check(worst < 1e-6, "basis values: a light on the normal gives flat x 1/sqrt(3) on each basis vector",
+        "worst relative " + std::to_string(worst));
+  Floor b;
+  bake_floor({sun(1, 2)}, &rays, &b);
+  bool zero = b.ok;
+  for (int j = 0; zero && j < b.h; ++j)
+    for (int i = 0; i < b.w; ++i)
+      for (int k = 0; k < 4; ++k) zero = zero && value(b, k, i, j).x == 0 && value(b, k, i, j).z == 0;
+  check(zero, "basis values: a light behind the face gives zero");
+}
+
+void ray_scene() {
+  RayScene r;
+  add_quad(&r, 1.0, 1.0, 7, "high");
+  add_quad(&r, 0.5, 1.0, 9, "low");
+  std::string err;
+  const std::vector<float> p = {0, 0, 0, 1, 0, 0, 0, 1, 0};
+  check(!r.add_mesh(p, {0, 1, 3}, 3, "broken mesh", &err) && err.find("broken mesh") != std::string::npos &&
+            err.find("vertex 3") != std::string::npos,
+        "ray scene: an index out of range is refused, naming the mesh", err);
+  if (!r.commit(&err)) return check(false, "commit", err);
+  check(r.triangles() == 4, "ray scene: 4 triangles", std::to_string(r.triangles()));
+  const RayScene::Hit h = r.intersect(glm::dvec3(0.2, 3, 0.1), glm::dvec3(0, -1, 0), 0, INFINITY);
+  check(h.id == 7 && std::fabs(h.t - 2) < 1e-6, "ray scene: the nearest hit (t, mesh id)",
+        std::to_string(h.id) + " t " + std::to_string(h.t));
+  const RayScene::Hit l = r.intersect(glm::dvec3(0.2, 0.8, 0.1), glm::dvec3(0, -1, 0), 0, INFINITY);
+  check(l.id == 9 && std::fabs(l.t - 0.3) < 1e-6, "ray scene: from between the quads, the lower one");
+  check(r.occluded(glm::dvec3(0, 3, 0), glm::dvec3(0, -3, 0), 0, 1) &&
+            !r.occluded(glm::dvec3(0, 3, 0), glm::dvec3(0, -1.5, 0), 0, 1) &&
+            !r.occluded(glm::dvec3(5, 3, 0), glm::dvec3(0, -3, 0), 0, 1),
+        "ray scene: segments blocked and clear");
+}
+
+}  // namespace
+
+int main() {
+  ts_math_init();
+  ray_scene();
+  shadows();
+  basis_values();
+  printf("%d passed, %d failed\n", g_passed, g_failed);
+  return g_failed ? 1 : 0;
+}
