@@ -2,8 +2,9 @@
  * lightmaps (fact sheet section 1, "How vrad bakes the per-basis values"):
  * the world-space bump basis of a surface (GetBumpNormals) and the four values of
  * one lightmap texel, flat and along the three basis vectors, from a set of lights.
- * Used by the tests and the demo scene until a full baker exists: no visibility,
- * no bounce, no sky. Double precision (an offline tool, not a shader twin). */
+ * The per-texel arithmetic of glue/bake/world_bake.cpp, which passes each sample
+ * the lights its shadow rays reach (no bounce or sky yet). Double precision (an
+ * offline tool, not a shader twin). */
 #ifndef TS_RNM_BAKE_H
 #define TS_RNM_BAKE_H
 #include <stddef.h>

@@ -3,6 +3,8 @@
 
 #include <embree3/rtcore.h>
 
+#include <glm/geometric.hpp>
+
 #include <cmath>
 #include <cstring>
 #include <limits>
@@ -139,5 +141,8 @@ RayScene::Hit RayScene::intersect(const glm::dvec3 &origin, const glm::dvec3 &di
   h.triangle = static_cast<int>(rh.hit.primID);
   h.u = rh.hit.u;
   h.v = rh.hit.v;
+  const glm::dvec3 n(rh.hit.Ng_x, rh.hit.Ng_y, rh.hit.Ng_z);
+  const double len = glm::length(n);
+  if (len > 0) h.normal = n / len;
   return h;
 }

@@ -13,10 +13,6 @@
 class RayScene {
  public:
   RayScene();
-  ~RayScene();
-  RayScene(const RayScene &) = delete;
-  RayScene &operator=(const RayScene &) = delete;
-
   // Adds a triangle mesh (3 floats per vertex, 3 indices per triangle); `id` is returned by hits
   // on it. Call before commit(). An index out of range is an error naming `what`.
   bool add_mesh(const std::vector<float> &position, const std::vector<uint32_t> &indices, int id, const std::string &what,
@@ -33,11 +29,15 @@ class RayScene {
     int id = -1;  // the mesh's id (-1: no hit)
     int triangle = -1;  // index of the triangle in its mesh
     double u = 0, v = 0;  // barycentrics of vertices 1 and 2
+    glm::dvec3 normal{0.0};  // the triangle's geometric normal (unit; its winding's side)
   };
   // The nearest hit on origin + t dir, t in (tnear, tfar).
   Hit intersect(const glm::dvec3 &origin, const glm::dvec3 &dir, double tnear, double tfar) const;
 
   long triangles() const { return triangles_; }
+  ~RayScene();
+  RayScene(const RayScene &) = delete;
+  RayScene &operator=(const RayScene &) = delete;
 
  private:
   struct Impl;

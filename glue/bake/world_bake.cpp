@@ -40,14 +40,35 @@ int lit_values(const WorldBakeInput &s, const glm::dvec3 &p, ts_vec3d n, const t
   return rnm_bake_texel(to_ts(p), n, bump, scratch->data(), static_cast<int>(scratch->size()), v4, msg, len);
 }
 
+// A ray scene of the faces alone (two triangles each), for a bake given none.
+bool face_rays(const std::vector<WorldFace> &faces, RayScene *r, std::string *err) {
+  for (size_t i = 0; i < faces.size(); ++i) {
+    const WorldFace &f = faces[i];
+    const glm::dvec3 o = to_glm(f.origin), u = to_glm(f.u) * f.su, v = to_glm(f.v) * f.sv;
+    std::vector<float> p;
+    for (const glm::dvec3 &q : {o, o + u, o + u + v, o + v})
+      for (int k = 0; k < 3; ++k) p.push_back(static_cast<float>(q[k]));
+    if (!r->add_mesh(p, {0, 1, 2, 0, 2, 3}, static_cast<int>(i), f.name, err)) return false;
+  }
+  return r->commit(err);
+}
+
 }  // namespace
 
-bool bake_world(const WorldBakeInput &s, WorldBake *out, std::string *err) {
-  for (const WorldFace &f : s.faces)
+bool bake_world(const WorldBakeInput &in, WorldBake *out, std::string *err) {
+  for (const WorldFace &f : in.faces)
     if (!(f.normal.x * f.normal.x + f.normal.y * f.normal.y + f.normal.z * f.normal.z > 0)) {
       *err = std::string(f.name) + ": the face has no front normal";
       return false;
     }
+  // Every visibility and probe ray goes through a ray scene: the caller's (every triangle of the
+  // scene), else one of the faces alone.
+  RayScene own;
+  WorldBakeInput s = in;
+  if (!s.rays) {
+    if (!face_rays(s.faces, &own, err)) return false;
+    s.rays = &own;
+  }
   std::vector<lm_face_size> sizes;
   for (const WorldFace &f : s.faces)
     sizes.push_back({luxels(f.su, s.luxels_per_unit), luxels(f.sv, s.luxels_per_unit), 1});
@@ -132,15 +153,16 @@ bool bake_world(const WorldBakeInput &s, WorldBake *out, std::string *err) {
           const double sc = 2 * (i + 0.5) / N - 1, tc = 2 * (j + 0.5) / N - 1;
           const glm::dvec3 d = cube_face_direction(face, sc, tc);
           glm::dvec3 rad(0.0);
-          double t, a, b;
-          const int hit = world_cast(s.faces, pos, to_ts(d), &t, &a, &b);
-          if (hit >= 0) {
-            const WorldFace &f = s.faces[hit];
-            const ts_vec3d n = world_face_normal(f);
+          const RayScene::Hit hit = s.rays->intersect(to_glm(pos), d, 1e-6, INFINITY);
+          const double t = hit.id >= 0 ? hit.t : INFINITY;
+          if (hit.id >= 0) {  // the surface's flat irradiance (with shadows) times a mean albedo
+            const glm::dvec3 n = glm::dot(hit.normal, d) > 0 ? -hit.normal : hit.normal;
+            const glm::dvec3 side = std::fabs(n.x) < 0.9 ? glm::dvec3(1, 0, 0) : glm::dvec3(0, 1, 0);
+            const glm::dvec3 su = glm::normalize(glm::cross(side, n)), sv = glm::cross(n, su);
             ts_vec3d bump[3], v4[4];
             std::vector<rnm_light> scratch;
-            rnm_bump_basis(f.u, f.v, n, n, bump, msg, sizeof msg);
-            lit_values(s, to_glm(world_face_point(f, a, b)), n, bump, v4, &scratch, msg, sizeof msg);
+            rnm_bump_basis(to_ts(su), to_ts(sv), to_ts(n), to_ts(n), bump, msg, sizeof msg);
+            lit_values(s, to_glm(pos) + d * t, to_ts(n), bump, v4, &scratch, msg, sizeof msg);
             rad = to_glm(v4[0]) * 0.6;
           }
           for (const rnm_light &l : s.lights) {  // a light bulb of radius 0.08 (not for a sun)

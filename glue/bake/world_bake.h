@@ -1,7 +1,7 @@
 // tiershade bake: the lightmap bake of a set of world faces: radiosity-normal-mapped luxels
 // (c_ref/offline/rnm_bake.c) on one page laid out by c_ref/offline/lightmap_page.c, each face's
-// cube-map probe (c_ref/offline/envmap_probes.c) and the probes' cube maps ray cast from the faces;
-// the page's run-time lightmap encodings.
+// cube-map probe (c_ref/offline/envmap_probes.c) and the probes' cube maps, every ray (shadows,
+// probes) through one Embree scene (glue/bake/ray_scene.h); the page's run-time lightmap encodings.
 #pragma once
 #include <string>
 #include <vector>

@@ -64,26 +64,3 @@ ts_vec3d world_face_point(const WorldFace &f, double a, double b) {
   return to_ts(to_glm(f.origin) + (to_glm(f.u) * (a * f.su) + to_glm(f.v) * (b * f.sv)));
 }
 
-int world_cast(const std::vector<WorldFace> &faces, ts_vec3d o, ts_vec3d d, double *t_out, double *a_out,
-               double *b_out) {
-  const glm::dvec3 og = to_glm(o), dg = to_glm(d);
-  int best = -1;
-  double best_t = 1e30;
-  for (size_t i = 0; i < faces.size(); ++i) {
-    const WorldFace &f = faces[i];
-    const glm::dvec3 n = to_glm(world_face_normal(f));
-    const double dn = glm::dot(dg, n);
-    if (dn >= 0) continue;  // parallel, or from behind
-    const double t = glm::dot(to_glm(f.origin) - og, n) / dn;
-    if (!(t > 1e-6) || t >= best_t) continue;
-    const glm::dvec3 q = (og + dg * t) - to_glm(f.origin);
-    const double a = glm::dot(q, to_glm(f.u)) / f.su, b = glm::dot(q, to_glm(f.v)) / f.sv;
-    if (a < 0 || a > 1 || b < 0 || b > 1) continue;
-    best = static_cast<int>(i);
-    best_t = t;
-    *a_out = a;
-    *b_out = b;
-  }
-  *t_out = best_t;
-  return best;
-}

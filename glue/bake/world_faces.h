@@ -1,6 +1,6 @@
 // tiershade bake: world faces, the planar quads a lightmap page holds: a face from a mesh's
-// quad (its own front normal, from the winding and the vertex normals), points on a face,
-// and the nearest face a ray hits from the front.
+// quad (its own front normal, from the winding and the vertex normals) and points on a face
+// (rays go through glue/bake/ray_scene.h).
 #pragma once
 #include <cstdint>
 #include <string>
@@ -30,7 +30,3 @@ bool world_face_from_quad(const std::vector<float> &position, const std::vector<
 ts_vec3d world_face_normal(const WorldFace &f);  // the unit front normal
 ts_vec3d world_face_point(const WorldFace &f, double a, double b);  // origin + a su u + b sv v, (a, b) in [0, 1]^2
 
-// Nearest face hit from the front by the ray o + t d (t > 1e-6): its index (-1: none; *t_out
-// then 1e30), t and the hit's (a, b).
-int world_cast(const std::vector<WorldFace> &faces, ts_vec3d o, ts_vec3d d, double *t_out, double *a_out,
-               double *b_out);

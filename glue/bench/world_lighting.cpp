@@ -69,20 +69,16 @@ BudgetCounts scene_slots(const SceneSelection &sel) {
   return best;
 }
 
-Scene with_encoding(const Scene &s, const char *enc) {
+// The room with its lightmap encoding set, and with or without its alpha envmap masks (normal-map
+// alpha, inverted base alpha). The variants cross the lightmap encodings with no mask or a mask
+// texture only (world_lighting.variants), so a non-float encoding drops those masks
+// (glue/scene/selection.cpp); without them every encoding runs the same variants but for
+// LIGHTMAP_ENCODING, and the difference is the encoding's alone.
+Scene room_as(const Scene &s, const char *encoding, bool alpha_masks = true) {
   Scene o = s;
-  o.lightmaps.encoding = enc;
-  return o;
-}
-
-// The room with its alpha envmap masks (normal-map alpha, inverted base alpha) off: the variants
-// cross the lightmap encodings with no mask or a mask texture only (world_lighting.variants), so a
-// non-float encoding drops them (glue/scene/selection.cpp); without them every encoding runs the
-// same variants but for LIGHTMAP_ENCODING, and the difference is the encoding's alone.
-Scene without_alpha_masks(const Scene &s) {
-  Scene o = s;
+  o.lightmaps.encoding = encoding;
   for (SceneMaterial &m : o.materials)
-    if (m.envmap_mask == SceneEnvMask::NormalAlpha || m.envmap_mask == SceneEnvMask::InvBaseAlpha)
+    if (!alpha_masks && (m.envmap_mask == SceneEnvMask::NormalAlpha || m.envmap_mask == SceneEnvMask::InvBaseAlpha))
       m.envmap_mask = SceneEnvMask::None;
   return o;
 }
@@ -173,7 +169,7 @@ bool run(const BenchOptions &opt, std::string *md, std::string *err) {
   if (!load_shader_decls(&decls, err)) return false;
   Scene room;
   if (!load_scene(kWorldLightingGltf, &room, err)) return false;
-  const Scene unmasked = without_alpha_masks(room);
+  const Scene unmasked = room_as(room, "rgbe", false);
   const int W = opt.size, H = std::max(8, opt.size / 2);
   const unsigned cores = std::max(1u, std::thread::hardware_concurrency());
   auto variant = [&](const std::string &name, Variant *v) { return find_variant(decls, "world_lighting", name, v, err); };
@@ -182,8 +178,8 @@ bool run(const BenchOptions &opt, std::string *md, std::string *err) {
   std::vector<int> draw;
   std::vector<double> dref, dref_unmasked;
   // (The reference's own variants: the float encoding's, so that no mask is dropped.)
-  if (!reference(with_encoding(room, "float"), W, H, &draw, &dref, err) ||
-      !reference(with_encoding(unmasked, "float"), W, H, &draw, &dref_unmasked, err))
+  if (!reference(room_as(room, "float"), W, H, &draw, &dref, err) ||
+      !reference(room_as(unmasked, "float"), W, H, &draw, &dref_unmasked, err))
     return false;
   SceneGBufferCpu g;  // what the scene holds, for the text
   if (!scene_gbuffer_cpu(room, Tier::SM3, 8, 8, false, &g, err)) return false;
@@ -204,9 +200,9 @@ bool run(const BenchOptions &opt, std::string *md, std::string *err) {
       {"RGBE", "rgbe", WL_LM_RGBE, "ColorRGBExp32 (8-bit mantissas, shared exponent), NEAREST"},
   };
   ImageF ref32;
-  if (!c_frame(with_encoding(unmasked, "float32"), Tier::SM3, &ref32)) return false;
+  if (!c_frame(room_as(unmasked, "float32"), Tier::SM3, &ref32)) return false;
   for (EncRow &r : enc) {
-    const Scene s = with_encoding(unmasked, r.encoding);
+    const Scene s = room_as(unmasked, r.encoding);
     SceneGBufferCpu ge;
     if (!scene_gbuffer_cpu(s, Tier::SM3, 8, 8, false, &ge, err)) return false;
     page_error(ge.p, &r);
@@ -245,12 +241,12 @@ bool run(const BenchOptions &opt, std::string *md, std::string *err) {
       {"ps20 LDR", Tier::PS20, "ldr", "LDR lightmaps decoded as (2t)^2 instead of (2t)^2.2 (against sm3 LDR)"},
   };
   ImageF sm3_img, sm3_ldr_img;
-  if (!c_frame(with_encoding(room, "float"), Tier::SM3, &sm3_img) ||
-      !c_frame(with_encoding(unmasked, "ldr"), Tier::SM3, &sm3_ldr_img))
+  if (!c_frame(room_as(room, "float"), Tier::SM3, &sm3_img) ||
+      !c_frame(room_as(unmasked, "ldr"), Tier::SM3, &sm3_ldr_img))
     return false;
   for (TierRow &t : tiers) {
     const bool ldr = std::string(t.encoding) == "ldr";
-    const Scene s = with_encoding(ldr ? unmasked : room, t.encoding);
+    const Scene s = room_as(ldr ? unmasked : room, t.encoding);
     SceneSelection sel;
     if (!select_scene_variants(s, t.tier, "", &sel, err)) return false;
     t.slots = scene_slots(sel);
@@ -268,10 +264,10 @@ bool run(const BenchOptions &opt, std::string *md, std::string *err) {
 
   // The share of ps20's difference that is the pixel fog it drops: sm3 with and without the fog, and
   // ps20 against sm3 without it.
-  Scene nofog = with_encoding(room, "float");
+  Scene nofog = room_as(room, "float");
   nofog.fog.enabled = false;
   ImageF sm3_nofog, ps20_img;
-  if (!c_frame(nofog, Tier::SM3, &sm3_nofog) || !c_frame(with_encoding(room, "float"), Tier::PS20, &ps20_img))
+  if (!c_frame(nofog, Tier::SM3, &sm3_nofog) || !c_frame(room_as(room, "float"), Tier::PS20, &ps20_img))
     return false;
   const Err fog_share = display_error(draw, sm3_nofog.rgba, 4, sm3_img.rgba, 4);
   const Err rest = display_error(draw, ps20_img.rgba, 4, sm3_nofog.rgba, 4);

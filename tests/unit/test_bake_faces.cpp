@@ -1,4 +1,4 @@
-// tiershade tests: glue/bake (world faces from quads, their own front normals, ray casts, the
+// tiershade tests: glue/bake (world faces from quads, their own front normals, the
 // bake's refusal of a face without a normal), glue/base (the thread pool's row assignment, the
 // cube face table) and the one host-side attenuation formula (ts_packed_light_attenuation).
 #include <atomic>
@@ -54,14 +54,6 @@ void faces() {
   ok = world_face_from_quad(pos, nrm, tan, idx, "down", -1, &f, lo);
   check(ok && near(world_face_normal(f), 0, -1, 0), "vertex normals against the winding turn the front round",
         vec(world_face_normal(f)));
-  // Ray casts hit the front only.
-  std::vector<WorldFace> one = {f};
-  double t = 0, a = 0, b = 0;
-  const int below = world_cast(one, ts_v3d(2, -5, -2), ts_v3d(0, 1, 0), &t, &a, &b);
-  check(below == 0 && std::fabs(t - 5) < 1e-12, "a ray towards the front hits at the plane",
-        "hit " + std::to_string(below) + " t " + std::to_string(t));
-  const int above = world_cast(one, ts_v3d(2, 5, -2), ts_v3d(0, -1, 0), &t, &a, &b);
-  check(above == -1 && t == 1e30, "a ray from behind misses", "hit " + std::to_string(above));
   // A degenerate quad (every corner the same, no normal) is refused.
   std::vector<float> zero(12, 0.f);
   check(!world_face_from_quad(zero, zero, {}, idx, "point", -1, &f, lo), "a quad without area or normal is refused");

@@ -19,7 +19,8 @@
 #include <string>
 #include <vector>
 
-#include "scene/cpu_renderer.h"
+#include "scene/deferred.h"
+#include "scene/frame.h"
 #include "scene/prepare.h"
 #include "scene/reference.h"
 #include "scene/scene.h"
@@ -44,7 +45,7 @@ bool prepared(const Scene &s, Tier tier, int w, int h, SceneSelection *sel, Prep
   return select_scene_variants(s, tier, "", sel, err) && prepare_scene(s, *sel, w, h, Api::GL33, 1.f, p, err);
 }
 
-void test_fog(const Scene &room, const std::string &dir) {
+void test_fog(const Scene &room, const std::string &path) {
   const SceneFog &f = room.fog;
   check(f.enabled && f.color[0] == 0.05f && f.color[2] == 0.06f && f.start == 3 && f.end == 15 &&
             f.max_density == 0.5f,
@@ -78,11 +79,11 @@ void test_fog(const Scene &room, const std::string &dir) {
   for (const auto &b : bad) {
     std::string m = text;
     m.replace(at, len, b.fog);
-    const std::string path = dir + "/bad_fog.gltf";
     std::ofstream(path) << m;
     Scene s;
     err.clear();
     const bool ok = load_scene(path, &s, &err);
+    unlink(path.c_str());
     check(!ok && err.find(path) == 0 && err.find(b.expect) != std::string::npos,
           std::string("fog: refused with its place: ") + b.fog, ok ? "accepted" : err);
   }
@@ -148,18 +149,19 @@ void test_reference(const Scene &room) {
   std::string err;
   Scene s = room;
   s.lightmaps.encoding = "float32";
-  SceneSelection sel;
-  PreparedScene p;
-  if (!prepared(s, Tier::SM3, w, h, &sel, &p, &err)) return check(false, "reference: prepare", err);
-  SceneVisibility vis;
-  scene_rasterize_cpu(p, &vis, 2);
-  std::vector<int> draw;
-  std::vector<float> slots;
-  scene_records_cpu(p, vis, &draw, &slots, 2);
-  ImageF f;
-  scene_shade_cpu(p, vis, &f, 2);
+  SceneGBufferCpu g;
   std::vector<double> ref;
-  if (!scene_reference_linear(s, p, draw, slots, &ref, &err, 2)) return check(false, "reference: world draws", err);
+  if (!scene_gbuffer_cpu(s, Tier::SM3, w, h, false, &g, &err) ||
+      !scene_reference_linear(s, g.p, g.draw, g.slots, &ref, &err, 2))
+    return check(false, "reference: world draws", err);
+  const std::vector<int> &draw = g.draw;
+  SceneRenderConfig cfg;  // the C fallback's frame of the same scene
+  cfg.backend = Backend::CPU;
+  cfg.w = w;
+  cfg.h = h;
+  SceneRenderResult res;
+  if (!render_scene(s, g.sel, cfg, &res, &err)) return check(false, "reference: the C frame", err);
+  const ImageF &f = res.lit;
   long covered = 0;
   bool bg = true;
   double m = 0;
@@ -182,11 +184,10 @@ void test_reference(const Scene &room) {
   // The fog is part of the reference: without it the reference changes.
   Scene nofog = s;
   nofog.fog.enabled = false;
-  SceneSelection sel2;
-  PreparedScene p2;
+  SceneGBufferCpu g2;
   std::vector<double> ref2;
-  if (!prepared(nofog, Tier::SM3, w, h, &sel2, &p2, &err) ||
-      !scene_reference_linear(nofog, p2, draw, slots, &ref2, &err, 2))
+  if (!scene_gbuffer_cpu(nofog, Tier::SM3, w, h, false, &g2, &err) ||
+      !scene_reference_linear(nofog, g2.p, g2.draw, g2.slots, &ref2, &err, 2))
     return check(false, "reference: without fog", err);
   double d = 0;
   for (size_t i = 0; i < ref.size(); ++i) d = std::max(d, std::fabs(ref[i] - ref2[i]));
@@ -197,31 +198,17 @@ void test_reference(const Scene &room) {
 
 int main() {
   ts_math_init();
-  char tmpl[] = "/tmp/test_scene_world.XXXXXX";
-  if (!mkdtemp(tmpl)) {
-    check(false, "mkdtemp");
-    printf("%d passed, %d failed\n", g_passed, g_failed);
-    return 1;
-  }
-  const std::string dir = tmpl;
-  char cwd[4096];
-  if (!getcwd(cwd, sizeof cwd)) cwd[0] = 0;
-  for (const char *f : {"world_lighting.bin", "textures"}) {
-    const std::string target = std::string(cwd) + "/scenes/" + f, link = dir + "/" + f;
-    if (symlink(target.c_str(), link.c_str()) != 0) check(false, "symlink " + link);
-  }
   Scene room;
   std::string err;
   if (!load_scene(kRoom, &room, &err)) {
     check(false, "load the room", err);
   } else {
-    test_fog(room, dir);
+    // The bad-fog scenes sit beside the room, so that its buffer and textures resolve.
+    test_fog(room, "scenes/.test_scene_world_" + std::to_string(getpid()) + ".gltf");
     test_views(room);
     test_float32(room);
     test_reference(room);
   }
-  for (const char *f : {"world_lighting.bin", "textures", "bad_fog.gltf"}) unlink((dir + "/" + f).c_str());
-  rmdir(dir.c_str());
   printf("%d passed, %d failed\n", g_passed, g_failed);
   return g_failed ? 1 : 0;
 }
