@@ -3,8 +3,10 @@
 #include "bake/world_bake.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 
+#include "bake/bounce.h"
 #include "bake/glm_ts.h"
 #include "bake/ray_scene.h"
 #include "base/cube_faces.h"
@@ -81,53 +83,74 @@ bool bake_world(const WorldBakeInput &in, WorldBake *out, std::string *err) {
   }
   out->page.assign(static_cast<size_t>(s.page_w) * s.page_h * 4, 0.f);
   for (size_t i = 0; i < out->page.size(); i += 4) out->page[i + 3] = 1.f;
-  for (size_t fi = 0; s.bake_luxels && fi < s.faces.size(); ++fi) {
+  // Each face's bump basis and its luxel grid, the direct light first.
+  std::vector<std::array<ts_vec3d, 3>> bump(s.faces.size());
+  std::vector<LuxelGrid> grids(s.faces.size());
+  for (size_t fi = 0; fi < s.faces.size(); ++fi) {
     const WorldFace &f = s.faces[fi];
     const ts_vec3d n = world_face_normal(f);
-    ts_vec3d bump[3];
-    if (rnm_bump_basis(f.u, f.v, n, n, bump, msg, sizeof msg) != 0) {
+    if (rnm_bump_basis(f.u, f.v, n, n, bump[fi].data(), msg, sizeof msg) != 0) {
       *err = std::string(f.name) + ": " + msg;
       return false;
     }
-    const lm_face_size &sz = sizes[fi];
+    grids[fi].w = sizes[fi].luxels_w;
+    grids[fi].h = sizes[fi].luxels_h;
+    grids[fi].v.assign(static_cast<size_t>(grids[fi].w) * grids[fi].h * 4, ts_v3d(0, 0, 0));
+  }
+  for (size_t fi = 0; s.bake_luxels && fi < s.faces.size(); ++fi) {
+    const WorldFace &f = s.faces[fi];
+    const ts_vec3d n = world_face_normal(f);
     {  // every light checked once per face (a bad light is an error naming the face)
       ts_vec3d v4[4];
-      if (rnm_bake_texel(world_face_point(f, 0, 0), n, bump, s.lights.data(), static_cast<int>(s.lights.size()), v4,
-                         msg, sizeof msg) != 0) {
+      if (rnm_bake_texel(world_face_point(f, 0, 0), n, bump[fi].data(), s.lights.data(),
+                         static_cast<int>(s.lights.size()), v4, msg, sizeof msg) != 0) {
         *err = std::string(f.name) + ": " + msg;
         return false;
       }
     }
     const int ss = std::max(1, s.supersample);
     std::vector<rnm_light> scratch;
-    for (int j = 0; j < sz.luxels_h; ++j) {
-      for (int i = 0; i < sz.luxels_w; ++i) {
+    LuxelGrid &g = grids[fi];
+    for (int j = 0; j < g.h; ++j) {
+      for (int i = 0; i < g.w; ++i) {
         // The luxel's footprint is one luxel spacing wide, centred on its grid point; ss x ss samples.
-        ts_vec3d v4[4] = {};
+        glm::dvec3 v4[4] = {glm::dvec3(0.0), glm::dvec3(0.0), glm::dvec3(0.0), glm::dvec3(0.0)};
         for (int sj = 0; sj < ss; ++sj)
           for (int si = 0; si < ss; ++si) {
-            const double a = std::clamp((i + (si + 0.5) / ss - 0.5) / (sz.luxels_w - 1), 0.0, 1.0);
-            const double b = std::clamp((j + (sj + 0.5) / ss - 0.5) / (sz.luxels_h - 1), 0.0, 1.0);
+            const double a = std::clamp((i + (si + 0.5) / ss - 0.5) / (g.w - 1), 0.0, 1.0);
+            const double b = std::clamp((j + (sj + 0.5) / ss - 0.5) / (g.h - 1), 0.0, 1.0);
             ts_vec3d s4[4];
-            if (lit_values(s, to_glm(world_face_point(f, a, b)), n, bump, s4, &scratch, msg, sizeof msg) != 0) {
+            if (lit_values(s, to_glm(world_face_point(f, a, b)), n, bump[fi].data(), s4, &scratch, msg, sizeof msg) !=
+                0) {
               *err = std::string(f.name) + ": " + msg;
               return false;
             }
-            for (int k = 0; k < 4; ++k) v4[k] = ts_v3d(v4[k].x + s4[k].x, v4[k].y + s4[k].y, v4[k].z + s4[k].z);
+            for (int k = 0; k < 4; ++k) v4[k] += to_glm(s4[k]);
           }
-        const double inv = 1.0 / (ss * ss);
-        for (int k = 0; k < 4; ++k) v4[k] = ts_v3d(v4[k].x * inv, v4[k].y * inv, v4[k].z * inv);
-        for (int k = 0; k < 4; ++k) {
-          int tx, ty;
-          lm_page_texel(&out->place[fi], k, i, j, &tx, &ty);
-          float *t = &out->page[(static_cast<size_t>(ty) * s.page_w + tx) * 4];
-          t[0] = static_cast<float>(v4[k].x);
-          t[1] = static_cast<float>(v4[k].y);
-          t[2] = static_cast<float>(v4[k].z);
-        }
+        for (int k = 0; k < 4; ++k) g.at(i, j, k) = to_ts(v4[k] / static_cast<double>(ss * ss));
       }
     }
-    lm_page_fill_borders(&out->place[fi], s.page_w, out->page.data());
+  }
+  // The interreflected light (glue/bake/bounce.h), then the page.
+  if (s.bake_luxels) {
+    if (!bounce_light(s.faces, reinterpret_cast<const ts_vec3d(*)[3]>(bump.data()), *s.rays, s.bounce, &grids,
+                      &out->bounce, err))
+      return false;
+    for (size_t fi = 0; fi < s.faces.size(); ++fi) {
+      const LuxelGrid &g = grids[fi];
+      for (int j = 0; j < g.h; ++j)
+        for (int i = 0; i < g.w; ++i)
+          for (int k = 0; k < 4; ++k) {
+            int tx, ty;
+            lm_page_texel(&out->place[fi], k, i, j, &tx, &ty);
+            float *t = &out->page[(static_cast<size_t>(ty) * s.page_w + tx) * 4];
+            const ts_vec3d &v = g.at(i, j, k);
+            t[0] = static_cast<float>(v.x);
+            t[1] = static_cast<float>(v.y);
+            t[2] = static_cast<float>(v.z);
+          }
+      lm_page_fill_borders(&out->place[fi], s.page_w, out->page.data());
+    }
   }
   // Probes: each face's, then each probe's cube, ray cast from the probe: a wall shows its
   // flat lightmap value times its mean albedo, a light shows as a small bright sphere.
@@ -155,14 +178,20 @@ bool bake_world(const WorldBakeInput &in, WorldBake *out, std::string *err) {
           glm::dvec3 rad(0.0);
           const RayScene::Hit hit = s.rays->intersect(to_glm(pos), d, 1e-6, INFINITY);
           const double t = hit.id >= 0 ? hit.t : INFINITY;
-          if (hit.id >= 0) {  // the surface's flat irradiance (with shadows) times a mean albedo
+          if (hit.id >= 0 && hit.id < static_cast<int>(s.faces.size()) && s.bake_luxels) {
+            // A face: the radiance it leaves there (emission + reflectivity x its lightmap).
+            const WorldFace &f = s.faces[static_cast<size_t>(hit.id)];
+            const glm::dvec3 q = to_glm(pos) + d * t - to_glm(f.origin);
+            rad = to_glm(luxel_exitant(f, grids[static_cast<size_t>(hit.id)], glm::dot(q, to_glm(f.u)) / f.su,
+                                       glm::dot(q, to_glm(f.v)) / f.sv));
+          } else if (hit.id >= 0) {  // other geometry: its flat irradiance (with shadows) x a mean albedo
             const glm::dvec3 n = glm::dot(hit.normal, d) > 0 ? -hit.normal : hit.normal;
             const glm::dvec3 side = std::fabs(n.x) < 0.9 ? glm::dvec3(1, 0, 0) : glm::dvec3(0, 1, 0);
             const glm::dvec3 su = glm::normalize(glm::cross(side, n)), sv = glm::cross(n, su);
-            ts_vec3d bump[3], v4[4];
+            ts_vec3d b3[3], v4[4];
             std::vector<rnm_light> scratch;
-            rnm_bump_basis(to_ts(su), to_ts(sv), to_ts(n), to_ts(n), bump, msg, sizeof msg);
-            lit_values(s, to_glm(pos) + d * t, to_ts(n), bump, v4, &scratch, msg, sizeof msg);
+            rnm_bump_basis(to_ts(su), to_ts(sv), to_ts(n), to_ts(n), b3, msg, sizeof msg);
+            lit_values(s, to_glm(pos) + d * t, to_ts(n), b3, v4, &scratch, msg, sizeof msg);
             rad = to_glm(v4[0]) * 0.6;
           }
           for (const rnm_light &l : s.lights) {  // a light bulb of radius 0.08 (not for a sun)

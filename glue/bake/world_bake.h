@@ -6,6 +6,7 @@
 #include <string>
 #include <vector>
 
+#include "bake/bounce.h"
 #include "bake/world_faces.h"
 #include "families/world_lighting.h"
 #include "offline/lightmap_page.h"
@@ -27,6 +28,7 @@ struct WorldBakeInput {
   // Samples per luxel along each axis (vrad: 4 samples, 2 x 2, for direct lighting; fact sheet
   // section 1), a regular grid over the luxel's footprint on the face, clipped to the face.
   int supersample = 2;
+  BounceSettings bounce;  // interreflection (glue/bake/bounce.h); max_bounces 0: direct light only
 };
 
 // The baked lighting: the page in float32 (flat, b0, b1, b2 per face, borders filled),
@@ -36,6 +38,7 @@ struct WorldBake {
   std::vector<float> page;  // page_w x page_h RGBA32F, alpha 1
   std::vector<int> face_probe;
   std::vector<TextureDesc> cubes;  // "u_envmap", LINEAR (a frame for GLES switches them to NEAREST)
+  BounceReport bounce;  // what the interreflection passes did
 };
 bool bake_world(const WorldBakeInput &s, WorldBake *out, std::string *err);
 

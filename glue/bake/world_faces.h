@@ -14,6 +14,8 @@ struct WorldFace {
   double su, sv;  // edge lengths
   int probe;  // explicit cube-map probe, or -1 for the nearest
   ts_vec3d normal = {0, 0, 0};  // the front normal (the lit side), not necessarily unit; bake_world refuses zero
+  ts_vec3d reflectivity = {0, 0, 0};  // diffuse reflectance for bounces (the base colour's mean, linear)
+  ts_vec3d emission = {0, 0, 0};  // emitted radiance (linear), in lightmap units (docs/baking.md)
 };
 
 // A face from one planar quad of world-space triangles (positions xyz, normals xyz, tangents

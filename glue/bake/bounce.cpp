@@ -1,0 +1,129 @@
+// tiershade bake: diffuse interreflection by gathering (bounce.h).
+#include "bake/bounce.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+
+#include "bake/glm_ts.h"
+#include "bake/ray_scene.h"
+#include "bake/world_faces.h"
+#include "base/parallel_rows.h"
+
+namespace {
+
+// splitmix64 (Steele, Lea, Flood 2014): a seeded stream per luxel and pass, so that every luxel's
+// rays are the same on any thread count.
+struct Rng {
+  uint64_t s;
+  double next() {
+    uint64_t z = (s += 0x9E3779B97F4A7C15ull);
+    z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ull;
+    z = (z ^ (z >> 27)) * 0x94D049BB133111EBull;
+    z ^= z >> 31;
+    return static_cast<double>(z >> 11) * 0x1.0p-53;
+  }
+};
+
+// Bilinear over a w x h luxel grid at (a, b) in [0, 1]^2 of the values value(i, j).
+template <class V>
+ts_vec3d bilinear(int w, int h, double a, double b, V value) {
+  const double x = std::clamp(a, 0.0, 1.0) * (w - 1), y = std::clamp(b, 0.0, 1.0) * (h - 1);
+  const int i = std::min(w - 2, static_cast<int>(x)), j = std::min(h - 2, static_cast<int>(y));
+  const double fx = x - i, fy = y - j;
+  const glm::dvec3 r = (value(i, j) * (1 - fx) + value(i + 1, j) * fx) * (1 - fy) +
+      (value(i, j + 1) * (1 - fx) + value(i + 1, j + 1) * fx) * fy;
+  return to_ts(r);
+}
+
+ts_vec3d lookup(const std::vector<ts_vec3d> &out, const LuxelGrid &g, double a, double b) {
+  return bilinear(g.w, g.h, a, b, [&](int i, int j) { return to_glm(out[static_cast<size_t>(j) * g.w + i]); });
+}
+
+}  // namespace
+
+ts_vec3d luxel_exitant(const WorldFace &f, const LuxelGrid &g, double a, double b) {
+  return bilinear(g.w, g.h, a, b, [&](int i, int j) {
+    return to_glm(f.emission) + to_glm(f.reflectivity) * to_glm(g.at(i, j, 0));
+  });
+}
+
+bool bounce_light(const std::vector<WorldFace> &faces, const ts_vec3d bump[][3], const RayScene &rays,
+                  const BounceSettings &set, std::vector<LuxelGrid> *grids, BounceReport *report, std::string *err) {
+  *report = BounceReport();
+  if (set.max_bounces <= 0) return true;
+  if (grids->size() != faces.size()) {
+    *err = "bounce: " + std::to_string(grids->size()) + " luxel grids for " + std::to_string(faces.size()) + " faces";
+    return false;
+  }
+  const int side = std::max(1, static_cast<int>(std::ceil(std::sqrt(static_cast<double>(set.gather_rays)))));
+  const int m = side * side;
+  // The radiance each face's luxels send into the next pass: emission + reflectivity x direct.
+  std::vector<std::vector<ts_vec3d>> send(faces.size());
+  double largest = 0;
+  for (size_t f = 0; f < faces.size(); ++f) {
+    const LuxelGrid &g = (*grids)[f];
+    send[f].resize(static_cast<size_t>(g.w) * g.h);
+    for (int j = 0; j < g.h; ++j)
+      for (int i = 0; i < g.w; ++i) {
+        const glm::dvec3 e = to_glm(g.at(i, j, 0));
+        largest = std::max(largest, std::max(e.x, std::max(e.y, e.z)));
+        send[f][static_cast<size_t>(j) * g.w + i] = to_ts(to_glm(faces[f].emission) + to_glm(faces[f].reflectivity) * e);
+      }
+  }
+  std::vector<LuxelGrid> added = *grids;
+  for (int pass = 1; pass <= set.max_bounces; ++pass) {
+    double pass_max = 0;
+    for (size_t f = 0; f < faces.size(); ++f) {
+      const WorldFace &face = faces[f];
+      const glm::dvec3 n = to_glm(world_face_normal(face)), u = to_glm(face.u), v = glm::cross(n, u);
+      LuxelGrid &a = added[f];
+      parallel_rows(a.h, set.threads, [&](int j) {
+        for (int i = 0; i < a.w; ++i) {
+          Rng rng{(static_cast<uint64_t>(pass) << 48) ^ (static_cast<uint64_t>(f) << 32) ^
+                  (static_cast<uint64_t>(j) << 16) ^ static_cast<uint64_t>(i)};
+          const glm::dvec3 p = to_glm(world_face_point(face, static_cast<double>(i) / (a.w - 1),
+                                                       static_cast<double>(j) / (a.h - 1))) +
+              n * 1e-4;
+          glm::dvec3 sum[4] = {glm::dvec3(0.0), glm::dvec3(0.0), glm::dvec3(0.0), glm::dvec3(0.0)};
+          for (int s = 0; s < m; ++s) {
+            // Cosine-weighted direction (Malley: a stratified disc sample lifted to the hemisphere).
+            const double r1 = (s % side + rng.next()) / side, r2 = (s / side + rng.next()) / side;
+            const double rad = std::sqrt(r1), phi = 2 * M_PI * r2;
+            const double x = rad * std::cos(phi), y = rad * std::sin(phi), z = std::sqrt(std::max(0.0, 1 - r1));
+            const glm::dvec3 d = u * x + v * y + n * z;
+            const RayScene::Hit h = rays.intersect(p, d, 0.0, INFINITY);
+            if (h.id < 0 || h.id >= static_cast<int>(faces.size())) continue;  // sky (none yet) or other geometry
+            const WorldFace &hf = faces[static_cast<size_t>(h.id)];
+            if (glm::dot(to_glm(world_face_normal(hf)), d) >= 0) continue;  // a face's back sends nothing
+            const glm::dvec3 q = p + d * h.t - to_glm(hf.origin);
+            const glm::dvec3 L = to_glm(lookup(send[static_cast<size_t>(h.id)], (*grids)[static_cast<size_t>(h.id)],
+                                               glm::dot(q, to_glm(hf.u)) / hf.su, glm::dot(q, to_glm(hf.v)) / hf.sv));
+            // E / pi = mean of L over cosine-distributed directions; bumped: L (b_k . d)+ / (n . d).
+            sum[0] += L;
+            for (int k = 0; k < 3; ++k) sum[k + 1] += L * (std::max(0.0, glm::dot(to_glm(bump[f][k]), d)) / z);
+          }
+          for (int k = 0; k < 4; ++k) a.at(i, j, k) = to_ts(sum[k] / static_cast<double>(m));
+        }
+      });
+      report->rays += static_cast<long>(a.w) * a.h * m;
+    }
+    // Add this pass, and send its flat light on (times the reflectivity) into the next.
+    for (size_t f = 0; f < faces.size(); ++f) {
+      LuxelGrid &g = (*grids)[f];
+      const LuxelGrid &a = added[f];
+      for (int j = 0; j < g.h; ++j)
+        for (int i = 0; i < g.w; ++i) {
+          for (int k = 0; k < 4; ++k) g.at(i, j, k) = to_ts(to_glm(g.at(i, j, k)) + to_glm(a.at(i, j, k)));
+          const glm::dvec3 e = to_glm(a.at(i, j, 0));
+          pass_max = std::max(pass_max, std::max(e.x, std::max(e.y, e.z)));
+          largest = std::max(largest, std::max(e.x, std::max(e.y, e.z)));
+          send[f][static_cast<size_t>(j) * g.w + i] = to_ts(to_glm(faces[f].reflectivity) * e);
+        }
+    }
+    report->passes = pass;
+    report->added.push_back(pass_max);
+    if (pass_max <= set.threshold * largest) break;
+  }
+  return true;
+}
