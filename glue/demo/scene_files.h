@@ -7,3 +7,4 @@ extern const char *const kSphereGridLights;  // scenes/sphere_grid.lights: its l
 extern const char *const kPhongSphereGltf;  // scenes/phong_sphere.gltf: the Episode One sphere
 extern const char *const kHdrDaylightGltf;  // scenes/hdr_daylight.gltf
 extern const char *const kHdrDarkRoomGltf;  // scenes/hdr_dark_room.gltf
+extern const char *const kProbeChartGltf;  // scenes/probe_chart.gltf: the colour-correction frame
