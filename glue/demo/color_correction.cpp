@@ -39,9 +39,9 @@ const char kVariant3D[] = "ps2b:LUT_ATLAS=0,SHADER_TRILINEAR=0,NUM_LOOKUPS=2";
 const char kVariantAtlas[] = "ps20:LUT_ATLAS=1,SHADER_TRILINEAR=0,NUM_LOOKUPS=2";
 const int kLutEdge = 32;  // Source's edge (fact sheet section 9)
 
-// The scene on each GL backend, against the C twins run on GL's own G-buffer and lit frame
-// (the frame corrected below is the C fallback's: GL's rasteriser may cover edge pixels
-// differently, and GLES samples cube maps NEAREST).
+// The scene on each GL backend, against the C twins run on GL's own G-buffer and lit frame.
+// The frame corrected below is the C fallback's: GL interpolates the vertex attributes its own
+// way (the mirrors magnify a last-bit difference in a normal), and GLES samples cube maps NEAREST.
 int check_scene_on_gl(const DemoOptions &opt, const ImageF &c_frame, std::string *err) {
   printf("%-16s %-28s %-28s %s\n", "scene on", "lit: GL = C twin (pixels)", "post: GL = C twin (channels)",
          "display differs from the C fallback's");
