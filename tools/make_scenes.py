@@ -2,7 +2,8 @@
 # tiershade -- tools/make_scenes.py
 # Writes the shipped glTF scenes (scenes/model_lighting.gltf, world_lighting.gltf,
 # hdr_atrium.gltf, and sphere_grid.gltf: the demo's and bench's sphere grid, whose lights are
-# read from scenes/sphere_grid.lights, their one source), their geometry (.bin next to each) and small procedural PNG textures
+# read from scenes/sphere_grid.lights, their one source; probe_chart.gltf: the colour-correction
+# frame), their geometry (.bin next to each) and small procedural PNG textures
 # (scenes/textures/). Python 3 standard library only. Run once from the repo root:
 #   python3 tools/make_scenes.py
 # The output is committed; builds and tests never run this script. Format: docs/scenes.md.
@@ -289,17 +290,32 @@ class Gltf:
         self.doc["meshes"].append({"name": name, "primitives": prims})
         return self.node(dict(name=name, mesh=len(self.doc["meshes"]) - 1, **node), root)
 
-    def texture(self, file):
-        if file not in self.tex_ids:
-            self.doc["images"].append({"uri": "textures/" + file})
-            self.doc["textures"].append({"source": len(self.doc["images"]) - 1, "sampler": 0})
-            self.tex_ids[file] = len(self.doc["textures"]) - 1
-        return self.tex_ids[file]
+    def instance(self, name, prim, material, **node):
+        """A node drawing primitive `prim` (from primitive()) with another material: the geometry's
+        accessors are shared, not written again."""
+        self.doc["meshes"].append({"name": name, "primitives": [dict(prim, material=material)]})
+        return self.node(dict(name=name, mesh=len(self.doc["meshes"]) - 1, **node))
 
-    def material(self, name, source, base=None, normal=None, color=(1, 1, 1, 1)):
+    def texture(self, file, clamp=False):
+        """The texture of scenes/textures/FILE, linear filtering, repeat (clamp: clamp to edge, a
+        second sampler added on first use)."""
+        key = (file, clamp)
+        if key not in self.tex_ids:
+            sampler = 0
+            if clamp:
+                edge = {"magFilter": 9729, "minFilter": 9729, "wrapS": 33071, "wrapT": 33071}
+                if edge not in self.doc["samplers"]:
+                    self.doc["samplers"].append(edge)
+                sampler = self.doc["samplers"].index(edge)
+            self.doc["images"].append({"uri": "textures/" + file})
+            self.doc["textures"].append({"source": len(self.doc["images"]) - 1, "sampler": sampler})
+            self.tex_ids[key] = len(self.doc["textures"]) - 1
+        return self.tex_ids[key]
+
+    def material(self, name, source, base=None, normal=None, color=(1, 1, 1, 1), clamp=False):
         pbr = {"baseColorFactor": list(color), "metallicFactor": 0.0, "roughnessFactor": 1.0}
         if base:
-            pbr["baseColorTexture"] = {"index": self.texture(base)}
+            pbr["baseColorTexture"] = {"index": self.texture(base, clamp)}
         m = {"name": name, "pbrMetallicRoughness": pbr, "extras": {"source": source}}
         if normal:
             m["normalTexture"] = {"index": self.texture(normal)}
@@ -687,6 +703,63 @@ def sphere_grid():
              "hdr": {"path": "integer", "tone_map_scale": 0.6}})
 
 
+def chart_colour(u, t):
+    """The colour chart (display values 0..1): hue along u; down the chart (t = 0 at the top) full
+    saturation from value 1 to 0.4, then saturation 1 to 0.3 while value rises to 0.8 (t < 0.8),
+    then a grey ramp along u."""
+    if t >= 0.8:
+        return (u, u, u)
+    sat = 1.0 if t < 0.4 else 1.0 - (t - 0.4) / 0.4 * 0.7
+    val = 1.0 - t * 1.5 if t < 0.4 else 0.4 + (t - 0.4)
+    h6 = u * 6.0
+    i, f = int(h6) % 6, h6 - math.floor(h6)
+    p, q, r = val * (1 - sat), val * (1 - sat * f), val * (1 - sat * (1 - f))
+    return [(val, r, p), (q, val, p), (p, val, r), (p, q, val), (r, p, val), (val, p, q)][i]
+
+
+def probe_chart():
+    """The colour-correction demo and bench frame: in the bottom third a colour chart drawn as it
+    is stored (a self-illuminated quad, tint 1, no light on it: the shader outputs the texture);
+    above it mirror spheres reflecting two real HDR probes through $envmap (Grace Cathedral, and
+    Uffizi; each probe's scale takes its log-average luminance to 0.18), a third sphere showing
+    Grace three stops darker, before a diffuse wall lit by Grace's ambient cube. Orthographic
+    camera, square view, integer path at tone-map scale 1."""
+    g = Gltf("probe_chart")
+    W, H = 384, 128
+    write_png(os.path.join(TEX, "color_chart.png"), W, H,
+              image(W, H, lambda x, y: tuple(255 * c for c in chart_colour((x + 0.5) / W, y / (H - 1)))), 3)
+    M = "VertexLitGeneric"
+    chart = g.material("colour_chart", {"shader": M, "$selfillum": 1}, base="color_chart.png", clamp=True)
+    wall = g.material("wall", {"shader": M, "$halflambert": 1}, color=(0.6, 0.6, 0.6, 1))
+
+    def mirror(name, probe, scale):
+        return g.material(name, {"shader": M, "$phong": 1, "$phongboost": 0, "$envmap": 1, "probe": probe,
+                                 "$envmapscale": scale}, color=(0, 0, 0, 1))
+
+    grace, uffizi, grace_dark = mirror("mirror_grace", 0, 1.0), mirror("mirror_uffizi", 1, 1.0), \
+        mirror("mirror_grace_3_stops_down", 0, 0.125)
+    third = round(1 / 3, 6)
+    g.mesh("chart", [(quad([-1, -1, 0], [2, 0, 0], [0, 2 * third, 0]), chart)])
+    g.mesh("wall", [(quad([-1.5, -1.5, -1.5], [3, 0, 0], [0, 3, 0]), wall)])
+    ball = g.primitive(uv_sphere(1.0, 64, 32), grace)
+    # the upper two thirds: a sphere of radius 2/3 on the left, two of 1/3 stacked on the right
+    g.instance("ball_grace", ball, grace, translation=[-third, third, 0.0], scale=[2 * third] * 3)
+    g.instance("ball_uffizi", ball, uffizi, translation=[2 * third, 2 * third, 0.0], scale=[third] * 3)
+    g.instance("ball_grace_dark", ball, grace_dark, translation=[2 * third, 0.0, 0.0], scale=[third] * 3)
+    g.ortho_camera("front", (0.0, 0.0, 60.0), (0.0, 0.0, 0.0), 1.0, 1.0, 1.0, 120.0)
+    probes = "../../shared/data/probes/"
+    g.write({"camera": 0,
+             # scales: 0.18 / exp(mean log(1e-4 + Rec. 709 luminance)) over each probe's texels
+             "probes": [{"name": "grace", "position": [0, 0, 0], "image": probes + "grace.hdr", "scale": 6.2816,
+                         "size": 128},
+                        {"name": "uffizi", "position": [0, 0, 0], "image": probes + "uffizi.hdr", "scale": 0.6452,
+                         "size": 128}],
+             # the wall takes Grace's irradiance; the chart the black cube next to it (no light at all)
+             "ambient": [{"position": [0, 0, -1.5], "from_probe": 0},
+                         {"position": [0, -2 * third, 0], "cube": [[0, 0, 0]] * 6}],
+             "hdr": {"path": "integer", "tone_map_scale": 1.0}})
+
+
 if __name__ == "__main__":
     make_textures()
     model_lighting()
@@ -695,5 +768,6 @@ if __name__ == "__main__":
     sphere_grid()
     phong_sphere()
     hdr_scenes()
+    probe_chart()
     print("wrote scenes/model_lighting.gltf, world_lighting.gltf, hdr_atrium.gltf, sphere_grid.gltf, "
-          "phong_sphere.gltf, hdr_daylight.gltf, hdr_dark_room.gltf")
+          "phong_sphere.gltf, hdr_daylight.gltf, hdr_dark_room.gltf, probe_chart.gltf")

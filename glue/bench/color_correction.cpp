@@ -65,8 +65,9 @@ void model_8bit_weights(const Lut3D &l, bool atlas, const float c_in[3], double 
 
 bool run(const BenchOptions &opt, std::string *md, std::string *err) {
   const int size = opt.size;
+  ImageF frame;  // the scene's display frame by the C fallback, before colour correction
   std::string note;
-  const ImageF frame = cc_frame(size, size, &note);
+  if (!cc_frame_c(size, &frame, &note, err)) return false;
   std::vector<CcExample> ex;
   if (!cc_examples(&ex, err)) return false;
   std::vector<ShaderDecl> decls;
@@ -272,11 +273,7 @@ bool run(const BenchOptions &opt, std::string *md, std::string *err) {
     snprintf(b, sizeof b, "| %d | %.2f | %.2f |\n", l.lookups, l.hw_ms, l.shader_ms);
     o << b;
   }
-  o << "\nReading the tables: the LUT edge sets the error (interpolating a curved transform between nodes); on\n"
-    << "llvmpipe hardware and shader filtering agree to float rounding and shader filtering costs its 8 taps. On\n"
-    << "GPUs with 8-bit filter weights the modelled column shows what hardware filtering adds; shader filtering is\n"
-    << "the cure where that matters (large LUT slopes, smooth gradients). 8-bit LUT storage (Source .raw) adds its\n"
-    << "own quantisation.\n";
+  o << "\nReading the tables: docs/color_correction.md, \"Demo and benchmark\" (what the numbers say).\n";
   *md = o.str();
   return true;
 }

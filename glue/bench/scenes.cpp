@@ -38,34 +38,43 @@ std::string f2(double v) {
 const int kW = 1280, kH = 720;
 const char *kScenes[] = {"scenes/model_lighting.gltf", "scenes/world_lighting.gltf", "scenes/hdr_atrium.gltf"};
 
-// Peak resident memory (MiB) of a `tiershade render` child process, as it reports it (VmHWM:
-// wait4's ru_maxrss would carry this large process's high-water mark across the exec).
-bool child_peak_mib(const std::vector<std::string> &args, double *mib, std::string *err) {
-  char exe[4096];
-  const ssize_t len = readlink("/proc/self/exe", exe, sizeof exe - 1);
+// This executable's path, for running `tiershade render` as a child.
+bool self_exe(std::string *exe, std::string *err) {
+  char buf[4096];
+  const ssize_t len = readlink("/proc/self/exe", buf, sizeof buf - 1);
   if (len <= 0) {
     *err = "cannot find this executable (/proc/self/exe)";
     return false;
   }
-  exe[len] = 0;
-  std::string cmd = std::string("'") + exe + "'";
-  for (const std::string &a : args) cmd += " '" + a + "'";
-  cmd += " --report-memory 2>/dev/null";
+  exe->assign(buf, static_cast<size_t>(len));
+  return true;
+}
+
+// Runs a `tiershade render ... --report-memory` command line and reads the peak resident memory
+// (MiB) it reports (VmHWM: wait4's ru_maxrss would carry this large process's high-water mark
+// across the exec). False unless the command ran, exited 0 and reported it.
+bool run_render_child(const std::string &cmd, const std::string &scene, double *mib, std::string *err) {
   fflush(stdout);
-  FILE *p = popen(cmd.c_str(), "r");
-  if (!p) {
-    *err = "cannot run " + cmd;
-    return false;
-  }
-  char line[512];
   *mib = -1;
-  while (fgets(line, sizeof line, p)) sscanf(line, "peak memory: %lf MiB", mib);
-  const int status = pclose(p);
-  if (status != 0 || *mib < 0) {
-    *err = "tiershade render " + args[1] + " failed or did not report its memory";
+  FILE *p = popen(cmd.c_str(), "r");
+  if (p) {
+    char line[512];
+    while (fgets(line, sizeof line, p)) sscanf(line, "peak memory: %lf MiB", mib);
+  }
+  if (!p || pclose(p) != 0 || *mib < 0) {
+    *err = "tiershade render " + scene + " failed or did not report its memory (" + cmd + ")";
     return false;
   }
   return true;
+}
+
+// Peak resident memory (MiB) of a `tiershade render` child process, as it reports it.
+bool child_peak_mib(const std::vector<std::string> &args, double *mib, std::string *err) {
+  std::string cmd;
+  if (!self_exe(&cmd, err)) return false;
+  cmd = "'" + cmd + "'";
+  for (const std::string &a : args) cmd += " '" + a + "'";
+  return run_render_child(cmd + " --report-memory 2>/dev/null", args[1], mib, err);
 }
 
 // The first frame as a user gets it: the wall time of a fresh `tiershade render` process with
@@ -84,37 +93,19 @@ bool child_first_frame_once(const std::string &exe, const std::string &scene, Ti
   const std::string cmd = std::string("exec env -u MESA_SHADER_CACHE_DISABLE MESA_SHADER_CACHE_DIR='") + dir +
       "/cache' " + (warmup ? "" : "TIERSHADE_NO_WARMUP=1 ") + "'" + exe + "' render '" + scene + "' --tier " +
       tier_name(tier) + " --hdr " + hdr + " --size 1280x720 --quiet --report-memory -o '" + out + "' 2>/dev/null";
-  fflush(stdout);
   const auto t0 = Clock::now();
-  FILE *p = popen(cmd.c_str(), "r");
-  if (!p) {
-    *err = "cannot run " + cmd;
-    return false;
-  }
-  char line[512];
-  *peak_mib = -1;
-  while (fgets(line, sizeof line, p)) sscanf(line, "peak memory: %lf MiB", peak_mib);
-  const int status = pclose(p);
+  const bool ok = run_render_child(cmd, scene, peak_mib, err);
   *ms = ms_since(t0);
   const std::string rm = std::string("rm -rf '") + dir + "'";
   if (system(rm.c_str()) != 0) {}
-  if (status != 0 || *peak_mib < 0) {
-    *err = "tiershade render " + scene + " failed or did not report its memory";
-    return false;
-  }
-  return true;
+  return ok;
 }
 
 // Median wall time of 3 cold processes; the largest peak memory of the 3.
 bool child_first_frame_ms(const std::string &scene, Tier tier, const std::string &hdr, bool warmup, double *ms,
                           double *peak_mib, std::string *err) {
-  char exe[4096];
-  const ssize_t len = readlink("/proc/self/exe", exe, sizeof exe - 1);
-  if (len <= 0) {
-    *err = "cannot find this executable (/proc/self/exe)";
-    return false;
-  }
-  exe[len] = 0;
+  std::string exe;
+  if (!self_exe(&exe, err)) return false;
   std::vector<double> t(3);
   *peak_mib = 0;
   for (double &v : t) {

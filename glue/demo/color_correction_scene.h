@@ -7,13 +7,19 @@
 #include "base/image.h"
 #include "color/ocio_lut_bake.h"
 #include "color/lut_texture.h"
+#include "scene/frame.h"
 
-// A display-encoded w x h frame (rows bottom-up, alpha 1): the top two thirds are a light
-// probe (TIERSHADE_PROBE_HDR, else ../shared/data/probes/grace.hdr) made displayable with a
-// plain exposure (log-average luminance to 0.18), a clip at 1 and the sRGB curve; the bottom
-// third is a colour chart (hue x value sweep, then a grey ramp). Without a readable probe the
-// chart fills the frame. *note says which.
-ImageF cc_frame(int w, int h, std::string *note);
+// The frame: scenes/probe_chart.gltf (docs/scenes.md: mirror spheres reflecting the Grace
+// Cathedral and Uffizi probes above a colour chart) rendered at sm3 by the scene renderer with
+// cfg's backend (Backend::CPU: the C fallback) at cfg.w x cfg.h, integer HDR path: *frame is the
+// display frame (codes / 255, rows bottom-up, alpha 1) before any colour correction (the scene
+// has no LUTs: colour correction is what the demo and benchmark apply to it), *res the whole
+// render result (times, --check counts when cfg.check), *note what the frame is.
+bool cc_scene_frame(const SceneRenderConfig &cfg, ImageF *frame, SceneRenderResult *res, std::string *note,
+                    std::string *err);
+// The frame the demo and benchmark correct: the C fallback's, size x size (the scene's view is
+// square); *frame_ms (optional) the time it took.
+bool cc_frame_c(int size, ImageF *frame, std::string *note, std::string *err, double *frame_ms = nullptr);
 
 // The example corrections, as OpenColorIO transforms: the colourist-style .cube files of
 // scenes/luts (day_for_night.cube, desaturate.cube, read through FileTransform) and the ASC

@@ -15,6 +15,7 @@
 
 #include "demo/exposure_walk.h"
 #include "demo/hdr_scene.h"
+#include "demo/section_util.h"
 #include "io/exr.h"
 #include "io/png.h"
 #include "io/atomic_file.h"
@@ -119,25 +120,27 @@ bool tonemap_row(const DemoOptions &opt, const Scenes &sc, int *failures, std::s
     return false;
   printf("%s\n", sc.note.c_str());
   printf("%-8s %-6s %-16s %12s\n", "path", "scale", "backend", "mismatched");
-  for (const BackendApi &cfg : opt.configs) {
-    const std::string tag = std::string(backend_name(cfg.backend)) + "_" + api_name(cfg.api);
-    auto ctx = GlContext::create(cfg.backend, cfg.api, err);
-    if (!ctx) return false;
-    GlRenderer r(*ctx);
-    PassRunner run(r);
-    HdrPipelineGl gl(run, cfg.api);
-    if (!gl.init(*sc.lit, sc.lit_linear, sc.lit_display, in, err)) return false;
-    for (int k = 0; k < 3; ++k) {
-      std::vector<uint8_t> got;
-      if (!gl.integer_frame(in.shared, kScales[k], err) || !read_rgba8(r.gl(), gl.display(), &got, err)) return false;
-      const long di = count_diff(got, ci[k].display);
-      if (!gl.float_frame(in.shared, set[k], err) || !read_rgba8(r.gl(), gl.display(), &got, err)) return false;
-      const long df = count_diff(got, cf[k].display);
-      if (di || df) ++*failures;
-      printf("%-8s %-6g %-16s %12ld\n%-8s %-6g %-16s %12ld\n", "integer", kScales[k], tag.c_str(), di, "float",
-             kScales[k], tag.c_str(), df);
-    }
-  }
+  const bool gl_ok = for_each_gl_config(
+      opt,
+      [&](const BackendApi &cfg, const std::string &tag, GlRenderer &r) {
+        PassRunner run(r);
+        HdrPipelineGl gl(run, cfg.api);
+        if (!gl.init(*sc.lit, sc.lit_linear, sc.lit_display, in, err)) return false;
+        for (int k = 0; k < 3; ++k) {
+          std::vector<uint8_t> got;
+          if (!gl.integer_frame(in.shared, kScales[k], err) || !read_rgba8(r.gl(), gl.display(), &got, err))
+            return false;
+          const long di = count_diff(got, ci[k].display);
+          if (!gl.float_frame(in.shared, set[k], err) || !read_rgba8(r.gl(), gl.display(), &got, err)) return false;
+          const long df = count_diff(got, cf[k].display);
+          if (di || df) ++*failures;
+          printf("%-8s %-6g %-16s %12ld\n%-8s %-6g %-16s %12ld\n", "integer", kScales[k], tag.c_str(), di, "float",
+                 kScales[k], tag.c_str(), df);
+        }
+        return true;
+      },
+      err);
+  if (!gl_ok) return false;
   printf(
       "wrote %s/hdr_tonemap_row_float.png and _integer.png (tone-map scale 0.05 | 1 | 4), hdr_float_linear.exr, "
       "hdr_float_bloom.exr\n",
@@ -252,27 +255,28 @@ bool adaptation(const DemoOptions &opt, int *failures, std::string *err) {
       w, h, spec.frames, spec.fps, spec.door_frame, cf[spec.door_frame - 1].scale, final_scale, settle,
       (settle - spec.door_frame) / spec.fps);
   printf("%-16s %12s %12s %14s %10s\n", "backend", "exposures", "frames", "histogram", "late reads");
-  for (const BackendApi &cfg : opt.configs) {
-    const std::string tag = std::string(backend_name(cfg.backend)) + "_" + api_name(cfg.api);
-    auto ctx = GlContext::create(cfg.backend, cfg.api, err);
-    if (!ctx) return false;
-    GlRenderer r(*ctx);
-    PassRunner run(r);
-    std::vector<AdaptationFrame> gf;
-    std::vector<HistogramMeasurement> gm;
-    int late = 0;
-    if (!run_adaptation_gl(run, cfg.backend, cfg.api, as, spec, keep, &gf, &gm, &late, err)) return false;
-    long bad_scale = 0, bad_frames = 0, bad_counts = gm.size() == cm.size() ? 0 : 1;
-    for (size_t i = 0; i < gf.size() && i < cf.size(); ++i) {
-      bad_scale += gf[i].scale != cf[i].scale;
-      bad_frames += count_diff(gf[i].display, cf[i].display) != 0;
-    }
-    for (size_t i = 0; !bad_counts && i < gm.size(); ++i)
-      bad_counts += gm[i].bucket != cm[i].bucket || gm[i].frame != cm[i].frame || gm[i].count != cm[i].count;
-    if (bad_scale || bad_frames || bad_counts) ++*failures;
-    printf("%-16s %12s %12s %14s %10d\n", tag.c_str(), bad_scale ? "DIFFER" : "= C", bad_frames ? "DIFFER" : "= C",
-           bad_counts ? "DIFFER" : "= exact", late);
-  }
+  const bool gl_ok = for_each_gl_config(
+      opt,
+      [&](const BackendApi &cfg, const std::string &tag, GlRenderer &r) {
+        PassRunner run(r);
+        std::vector<AdaptationFrame> gf;
+        std::vector<HistogramMeasurement> gm;
+        int late = 0;
+        if (!run_adaptation_gl(run, cfg.backend, cfg.api, as, spec, keep, &gf, &gm, &late, err)) return false;
+        long bad_scale = 0, bad_frames = 0, bad_counts = gm.size() == cm.size() ? 0 : 1;
+        for (size_t i = 0; i < gf.size() && i < cf.size(); ++i) {
+          bad_scale += gf[i].scale != cf[i].scale;
+          bad_frames += count_diff(gf[i].display, cf[i].display) != 0;
+        }
+        for (size_t i = 0; !bad_counts && i < gm.size(); ++i)
+          bad_counts += gm[i].bucket != cm[i].bucket || gm[i].frame != cm[i].frame || gm[i].count != cm[i].count;
+        if (bad_scale || bad_frames || bad_counts) ++*failures;
+        printf("%-16s %12s %12s %14s %10d\n", tag.c_str(), bad_scale ? "DIFFER" : "= C",
+               bad_frames ? "DIFFER" : "= C", bad_counts ? "DIFFER" : "= exact", late);
+        return true;
+      },
+      err);
+  if (!gl_ok) return false;
   printf("wrote %s/hdr_adaptation_strip.png (frames", opt.dir.c_str());
   for (int f : keep) printf(" %d", f);
   printf("), hdr_adaptation.svg, hdr_adaptation_histograms.exr (17 buckets x %d frames)\n", spec.frames);
@@ -285,11 +289,7 @@ bool run_demo(const DemoOptions &opt, std::string *err) {
   if (!make_scenes(w, h, &sc, err)) return false;
   int failures = 0;
   if (!tonemap_row(opt, sc, &failures, err) || !adaptation(opt, &failures, err)) return false;
-  if (failures) {
-    *err = std::to_string(failures) + " GL runs differ from the C twin";
-    return false;
-  }
-  return true;
+  return demo_section_result(failures, "GL runs differ from the C twin", err);
 }
 
 const DemoSection kHdrDemo = {"hdr", run_demo};

@@ -14,6 +14,7 @@
 #include "io/png.h"
 #include "base/srgb.h"
 #include "demo/scene_files.h"
+#include "demo/section_util.h"
 #include "scene/deferred.h"
 
 namespace {
@@ -61,31 +62,33 @@ bool run(const DemoOptions &opt, std::string *err) {
     const std::string file = opt.dir + "/phong_" + p.tag;
     if (!write_png(file + "_cpu.png", cpu, p.png, err) || !write_exr(file + "_cpu.exr", cpu, err)) return false;
     display.push_back(to_display(cpu, p.png));
-    for (const auto &cfg : opt.configs) {
-      const std::string tag = std::string(backend_name(cfg.backend)) + "_" + api_name(cfg.api);
-      auto ctx = GlContext::create(cfg.backend, cfg.api, err);
-      if (!ctx) return false;
-      GlRenderer r(*ctx);
-      FamilyInputs in = frame.in;
-      adapt_textures_for_api(cfg.api, &in);  // NEAREST cube maps on GLES (seamless, glue/conform/conform.h)
-      ImageF ref = cpu;
-      if (cfg.api != Api::GL33) {
-        cpu_render_frame(*fam, v, in, &ref);
-        scene_deferred_mask(frame, &ref);
-      }
-      GlFrameProgram fp;
-      ImageF gl;
-      const bool ok = gl_frame_setup(r, cfg.api, *fam, v, in, &fp, err) && gl_frame_draw(r, fp, in, &gl, nullptr, err);
-      gl_frame_release(r, &fp);
-      if (!ok) return false;
-      scene_deferred_mask(frame, &gl);
-      DiffStats st;
-      diff_image(gl, ref, &st);
-      if (st.mismatched_pixels) ++failures;
-      if (!write_png(file + "_" + tag + ".png", gl, p.png, err)) return false;
-      printf("%-14s %-16s %8ld px %8ld mismatched  max %u ULP\n", p.tag, tag.c_str(), st.pixels, st.mismatched_pixels,
-             st.max_ulp);
-    }
+    const bool gl_ok = for_each_gl_config(
+        opt,
+        [&](const BackendApi &cfg, const std::string &tag, GlRenderer &r) {
+          FamilyInputs in = frame.in;
+          adapt_textures_for_api(cfg.api, &in);  // NEAREST cube maps on GLES (seamless, glue/conform/conform.h)
+          ImageF ref = cpu;
+          if (cfg.api != Api::GL33) {
+            cpu_render_frame(*fam, v, in, &ref);
+            scene_deferred_mask(frame, &ref);
+          }
+          GlFrameProgram fp;
+          ImageF gl;
+          const bool ok =
+              gl_frame_setup(r, cfg.api, *fam, v, in, &fp, err) && gl_frame_draw(r, fp, in, &gl, nullptr, err);
+          gl_frame_release(r, &fp);
+          if (!ok) return false;
+          scene_deferred_mask(frame, &gl);
+          DiffStats st;
+          diff_image(gl, ref, &st);
+          if (st.mismatched_pixels) ++failures;
+          if (!write_png(file + "_" + tag + ".png", gl, p.png, err)) return false;
+          printf("%-14s %-16s %8ld px %8ld mismatched  max %u ULP\n", p.tag, tag.c_str(), st.pixels,
+                 st.mismatched_pixels, st.max_ulp);
+          return true;
+        },
+        err);
+    if (!gl_ok) return false;
   }
   std::vector<const ImageF *> ptrs;
   for (const auto &d : display) ptrs.push_back(&d);
@@ -94,11 +97,7 @@ bool run(const DemoOptions &opt, std::string *err) {
       "wrote %s/phong_*.png; side by side: %s/phong_comparison.png (ps20 diffuse | ps2b specular | ps2b Phong | "
       "sm3 with rim and envmap)\n",
       opt.dir.c_str(), opt.dir.c_str());
-  if (failures) {
-    *err = std::to_string(failures) + " GL frames differ from the C fallback";
-    return false;
-  }
-  return true;
+  return demo_section_result(failures, "GL frames differ from the C fallback", err);
 }
 
 const DemoSection kSection = {"model_lighting_phong", run};

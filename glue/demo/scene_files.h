@@ -5,6 +5,7 @@
 extern const char *const kSphereGridGltf;  // scenes/sphere_grid.gltf: the model-lighting grid
 extern const char *const kSphereGridLights;  // scenes/sphere_grid.lights: its lights, their one source
 extern const char *const kPhongSphereGltf;  // scenes/phong_sphere.gltf: the Episode One sphere
+extern const char *const kProbeChartGltf;  // scenes/probe_chart.gltf: the colour-correction frame
 extern const char *const kHdrDaylightGltf;  // scenes/hdr_daylight.gltf
 extern const char *const kHdrDarkRoomGltf;  // scenes/hdr_dark_room.gltf
 extern const char *const kWorldLightingGltf;  // scenes/world_lighting.gltf: the lightmapped room
