@@ -9,6 +9,7 @@
 #include "base/image_diff.h"
 #include "base/srgb.h"
 #include "demo/scene_files.h"
+#include "demo/section_util.h"
 #include "io/exr.h"
 #include "io/png.h"
 #include "scene/deferred.h"
@@ -66,7 +67,7 @@ bool run(const DemoOptions &opt, std::string *err) {
       printf("%-5s %-10s %-16s %10d %12s %10s\n", tier_name(tier), lm_only ? "lightmaps" : "final", "cpu",
              opt.w * opt.h, "-", "-");
       for (const BackendApi &bc : opt.configs) {
-        const std::string tag = std::string(backend_name(bc.backend)) + "_" + api_name(bc.api);
+        const std::string tag = config_tag(bc);
         cfg.backend = bc.backend;
         cfg.api = bc.api;
         cfg.check = true;
@@ -124,11 +125,7 @@ bool run(const DemoOptions &opt, std::string *err) {
       "wrote %sTIER[_lightmaps]_BACKEND.png, the diffs, %sreference.exr and %stiers.png\n"
       "(top: final ps20 | ps2b | sm3 | double reference; bottom: lightmaps only, and the flat lightmap)\n",
       dir.c_str(), dir.c_str(), dir.c_str());
-  if (failures) {
-    *err = std::to_string(failures) + " world_lighting GL frames differ from the C twins or failed";
-    return false;
-  }
-  return true;
+  return demo_section_result(failures, "world_lighting GL frames differ from the C twins or failed", err);
 }
 
 const DemoSection kSection = {"world_lighting", run};
