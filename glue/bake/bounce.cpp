@@ -56,8 +56,8 @@ bool bounce_light(const std::vector<WorldFace> &faces, const ts_vec3d bump[][3],
     *err = "bounce: " + std::to_string(grids->size()) + " luxel grids for " + std::to_string(faces.size()) + " faces";
     return false;
   }
-  const int side = std::max(1, static_cast<int>(std::ceil(std::sqrt(static_cast<double>(set.gather_rays)))));
-  const int m = side * side;
+  const int side_n = std::max(1, static_cast<int>(std::ceil(std::sqrt(static_cast<double>(set.gather_rays)))));
+  const int m = side_n * side_n;
   // The radiance each face's luxels send into the next pass: emission + reflectivity x direct.
   std::vector<std::vector<ts_vec3d>> send(faces.size());
   double largest = 0;
@@ -76,37 +76,46 @@ bool bounce_light(const std::vector<WorldFace> &faces, const ts_vec3d bump[][3],
     double pass_max = 0;
     for (size_t f = 0; f < faces.size(); ++f) {
       const WorldFace &face = faces[f];
-      const glm::dvec3 n = to_glm(world_face_normal(face)), u = to_glm(face.u), v = glm::cross(n, u);
+      const glm::dvec3 n = to_glm(world_face_normal(face));
       LuxelGrid &a = added[f];
+      std::vector<long> rows_traced(static_cast<size_t>(a.h), 0);
       parallel_rows(a.h, set.threads, [&](int j) {
+        long traced = 0;
         for (int i = 0; i < a.w; ++i) {
           Rng rng{(static_cast<uint64_t>(pass) << 48) ^ (static_cast<uint64_t>(f) << 32) ^
                   (static_cast<uint64_t>(j) << 16) ^ static_cast<uint64_t>(i)};
-          const glm::dvec3 p = to_glm(world_face_point(face, static_cast<double>(i) / (a.w - 1),
+          const glm::dvec3 p = to_glm(world_face_sample(face, static_cast<double>(i) / (a.w - 1),
                                                        static_cast<double>(j) / (a.h - 1))) +
               n * 1e-4;
+          // Value k: (1/pi) of the integral of L (a_k . w)+ over the face's front, a_0 = n, a_k = b_k: the
+          // mean of L over directions drawn with the cosine lobe of a_k (Malley: a stratified disc
+          // sample lifted to the hemisphere), a direction behind the face counting as 0. Each lobe
+          // has its own rays, so every estimate is bounded (a 1 / (n . w) weight would not be).
           glm::dvec3 sum[4] = {glm::dvec3(0.0), glm::dvec3(0.0), glm::dvec3(0.0), glm::dvec3(0.0)};
-          for (int s = 0; s < m; ++s) {
-            // Cosine-weighted direction (Malley: a stratified disc sample lifted to the hemisphere).
-            const double r1 = (s % side + rng.next()) / side, r2 = (s / side + rng.next()) / side;
-            const double rad = std::sqrt(r1), phi = 2 * M_PI * r2;
-            const double x = rad * std::cos(phi), y = rad * std::sin(phi), z = std::sqrt(std::max(0.0, 1 - r1));
-            const glm::dvec3 d = u * x + v * y + n * z;
-            const RayScene::Hit h = rays.intersect(p, d, 0.0, INFINITY);
-            if (h.id < 0 || h.id >= static_cast<int>(faces.size())) continue;  // sky (none yet) or other geometry
-            const WorldFace &hf = faces[static_cast<size_t>(h.id)];
-            if (glm::dot(to_glm(world_face_normal(hf)), d) >= 0) continue;  // a face's back sends nothing
-            const glm::dvec3 q = p + d * h.t - to_glm(hf.origin);
-            const glm::dvec3 L = to_glm(lookup(send[static_cast<size_t>(h.id)], (*grids)[static_cast<size_t>(h.id)],
-                                               glm::dot(q, to_glm(hf.u)) / hf.su, glm::dot(q, to_glm(hf.v)) / hf.sv));
-            // E / pi = mean of L over cosine-distributed directions; bumped: L (b_k . d)+ / (n . d).
-            sum[0] += L;
-            for (int k = 0; k < 3; ++k) sum[k + 1] += L * (std::max(0.0, glm::dot(to_glm(bump[f][k]), d)) / z);
+          for (int k = 0; k < 4; ++k) {
+            const glm::dvec3 ax = k == 0 ? n : to_glm(bump[f][k - 1]);
+            const glm::dvec3 side = std::fabs(ax.x) < 0.9 ? glm::dvec3(1, 0, 0) : glm::dvec3(0, 1, 0);
+            const glm::dvec3 au = glm::normalize(glm::cross(side, ax)), av = glm::cross(ax, au);
+            for (int s = 0; s < m; ++s) {
+              const double r1 = (s % side_n + rng.next()) / side_n, r2 = (s / side_n + rng.next()) / side_n;
+              const double rad = std::sqrt(r1), phi = 2 * M_PI * r2;
+              const glm::dvec3 d = au * (rad * std::cos(phi)) + av * (rad * std::sin(phi)) + ax * std::sqrt(1 - r1);
+              if (!(glm::dot(d, n) > 0)) continue;  // behind the face: it feeds none of the values
+              ++traced;
+              const RayScene::Hit h = rays.intersect(p, d, 0.0, INFINITY);
+              if (h.id < 0 || h.id >= static_cast<int>(faces.size())) continue;  // other geometry, or nothing
+              const WorldFace &hf = faces[static_cast<size_t>(h.id)];
+              if (glm::dot(to_glm(world_face_normal(hf)), d) >= 0) continue;  // a face's back sends nothing
+              const glm::dvec3 q = p + d * h.t - to_glm(hf.origin);
+              sum[k] += to_glm(lookup(send[static_cast<size_t>(h.id)], (*grids)[static_cast<size_t>(h.id)],
+                                      glm::dot(q, to_glm(hf.u)) / hf.su, glm::dot(q, to_glm(hf.v)) / hf.sv));
+            }
           }
           for (int k = 0; k < 4; ++k) a.at(i, j, k) = to_ts(sum[k] / static_cast<double>(m));
         }
+        rows_traced[static_cast<size_t>(j)] = traced;
       });
-      report->rays += static_cast<long>(a.w) * a.h * m;
+      for (long t : rows_traced) report->rays += t;
     }
     // Add this pass, and send its flat light on (times the reflectivity) into the next.
     for (size_t f = 0; f < faces.size(); ++f) {

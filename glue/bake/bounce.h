@@ -24,7 +24,7 @@ struct LuxelGrid {
 
 struct BounceSettings {
   int max_bounces = 0;  // 0: direct light only
-  int gather_rays = 64;  // per luxel per pass (rounded up to a square: stratified)
+  int gather_rays = 64;  // per luxel, pass and value (flat, b0, b1, b2; rounded up to a square: stratified)
   double threshold = 1e-3;  // stop when a pass adds at most this x the largest flat value so far
   int threads = 0;  // 0: all cores; the result is the same for any count
 };

@@ -120,7 +120,7 @@ bool bake_world(const WorldBakeInput &in, WorldBake *out, std::string *err) {
             const double a = std::clamp((i + (si + 0.5) / ss - 0.5) / (g.w - 1), 0.0, 1.0);
             const double b = std::clamp((j + (sj + 0.5) / ss - 0.5) / (g.h - 1), 0.0, 1.0);
             ts_vec3d s4[4];
-            if (lit_values(s, to_glm(world_face_point(f, a, b)), n, bump[fi].data(), s4, &scratch, msg, sizeof msg) !=
+            if (lit_values(s, to_glm(world_face_sample(f, a, b)), n, bump[fi].data(), s4, &scratch, msg, sizeof msg) !=
                 0) {
               *err = std::string(f.name) + ": " + msg;
               return false;

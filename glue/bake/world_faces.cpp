@@ -2,6 +2,8 @@
 // on a face and ray casts against faces, in double with GLM.
 #include "bake/world_faces.h"
 
+#include <algorithm>
+
 #include <cmath>
 
 #include "bake/glm_ts.h"
@@ -64,3 +66,7 @@ ts_vec3d world_face_point(const WorldFace &f, double a, double b) {
   return to_ts(to_glm(f.origin) + (to_glm(f.u) * (a * f.su) + to_glm(f.v) * (b * f.sv)));
 }
 
+ts_vec3d world_face_sample(const WorldFace &f, double a, double b) {
+  const double ia = std::min(0.5, kWorldSampleInset / f.su), ib = std::min(0.5, kWorldSampleInset / f.sv);
+  return world_face_point(f, std::clamp(a, ia, 1 - ia), std::clamp(b, ib, 1 - ib));
+}

@@ -31,4 +31,9 @@ bool world_face_from_quad(const std::vector<float> &position, const std::vector<
 
 ts_vec3d world_face_normal(const WorldFace &f);  // the unit front normal
 ts_vec3d world_face_point(const WorldFace &f, double a, double b);  // origin + a su u + b sv v, (a, b) in [0, 1]^2
+// Where the bake samples (a, b): world_face_point with (a, b) clamped to the face inset by
+// kWorldSampleInset scene units, so that no sample lies on a neighbouring face's plane (a ray from
+// a room's corner would otherwise slip out between the faces, or hit the wall it stands on).
+const double kWorldSampleInset = 1e-3;
+ts_vec3d world_face_sample(const WorldFace &f, double a, double b);
 

@@ -18,7 +18,7 @@ struct SceneDrawChoice {
   const Variant *variant = nullptr;  // points into SceneSelection::variants
   std::vector<std::string> why;  // "ENVMAP=0: material has no $envmap", ...
   int lights_local = 0, lights_folded = 0;  // model draws: lights shaded per pixel / folded
-  int probe = -1;  // the probe whose cube map the draw samples (-1: none)
+  int probe = -1;  // 0 when the draw samples a probe's cube map (which one: prepare_scene picks the nearest or the material's), -1: none
   bool mask_constant = false;  // world: $envmapmask texture is constant -> folded into the tint
   float mask_value = 1.f;  //   (its value)
 };

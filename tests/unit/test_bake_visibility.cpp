@@ -60,10 +60,12 @@ ts_vec3d value(const Floor &f, int k, int i, int j) {
   return ts_v3d(t[0], t[1], t[2]);
 }
 
-// The world position of sample (si, sj) of luxel (i, j) (2 x 2 samples, as bake_world places them).
+// The world position of sample (si, sj) of luxel (i, j) (2 x 2 samples, as bake_world places them:
+// clipped to the face inset by kWorldSampleInset).
 void sample_xz(int i, int j, int si, int sj, double *x, double *z) {
-  const double a = std::min(1.0, std::max(0.0, (i + (si + 0.5) / 2 - 0.5) / 32));
-  const double b = std::min(1.0, std::max(0.0, (j + (sj + 0.5) / 2 - 0.5) / 32));
+  const double inset = kWorldSampleInset / 4;  // the floor is 4 units wide
+  const double a = std::min(1.0 - inset, std::max(inset, (i + (si + 0.5) / 2 - 0.5) / 32));
+  const double b = std::min(1.0 - inset, std::max(inset, (j + (sj + 0.5) / 2 - 0.5) / 32));
   *x = -2 + 4 * a;
   *z = 2 - 4 * b;
 }
