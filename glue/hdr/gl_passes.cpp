@@ -6,21 +6,15 @@
 
 #include <cstdio>
 
+#include "base/enum_names.h"
 #include "conform/conform.h"
 #include "families/family.h"
 #include "gl/osmesa_loader.h"
 
-const char *target_format_name(TargetFormat f) {
-  switch (f) {
-    case TargetFormat::RGBA8:
-      return "RGBA8";
-    case TargetFormat::RGBA16F:
-      return "RGBA16F";
-    case TargetFormat::RGBA32F:
-      return "RGBA32F";
-  }
-  return "?";
-}
+static const EnumName<TargetFormat> kTargetFormatNames[] = {
+    {TargetFormat::RGBA8, "RGBA8"}, {TargetFormat::RGBA16F, "RGBA16F"}, {TargetFormat::RGBA32F, "RGBA32F"}};
+
+const char *target_format_name(TargetFormat f) { return enum_name(kTargetFormatNames, f); }
 
 int target_bytes_per_pixel(TargetFormat f) {
   return f == TargetFormat::RGBA8 ? 4 : f == TargetFormat::RGBA16F ? 8 : 16;

@@ -4,6 +4,7 @@
 // readback (GLES 2.0).
 #include <cstring>
 
+#include "base/enum_names.h"
 #include "hdr/luminance_histogram.h"
 
 LuminanceHistogramGl::LuminanceHistogramGl(PassRunner &runner, Backend backend, Api api, const HistogramConfig &c)
@@ -26,15 +27,11 @@ LuminanceHistogramGl::~LuminanceHistogramGl() {
 }
 
 const char *LuminanceHistogramGl::method() const {
-  switch (method_) {
-    case Method::Query:
-      return "asynchronous occlusion query (GL_SAMPLES_PASSED)";
-    case Method::PixelPack:
-      return "fenced pixel-pack-buffer readback, counted on the CPU";
-    case Method::SyncRead:
-      return "synchronous readback, counted on the CPU";
-  }
-  return "?";
+  static const EnumName<Method> kMethodNames[] = {
+      {Method::Query, "asynchronous occlusion query (GL_SAMPLES_PASSED)"},
+      {Method::PixelPack, "fenced pixel-pack-buffer readback, counted on the CPU"},
+      {Method::SyncRead, "synchronous readback, counted on the CPU"}};
+  return enum_name(kMethodNames, method_);
 }
 
 bool LuminanceHistogramGl::init(std::string *err) {

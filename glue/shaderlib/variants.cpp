@@ -5,30 +5,13 @@
 #include <cctype>
 #include <sstream>
 
+#include "base/enum_names.h"
 #include "shaderlib/assembler.h"
 
-const char *tier_name(Tier t) {
-  switch (t) {
-    case Tier::PS20:
-      return "ps20";
-    case Tier::PS2B:
-      return "ps2b";
-    case Tier::SM3:
-      return "sm3";
-  }
-  return "?";
-}
-bool parse_tier(const std::string &s, Tier *out) {
-  if (s == "ps20")
-    *out = Tier::PS20;
-  else if (s == "ps2b")
-    *out = Tier::PS2B;
-  else if (s == "sm3")
-    *out = Tier::SM3;
-  else
-    return false;
-  return true;
-}
+static const EnumName<Tier> kTierNames[] = {{Tier::PS20, "ps20"}, {Tier::PS2B, "ps2b"}, {Tier::SM3, "sm3"}};
+
+const char *tier_name(Tier t) { return enum_name(kTierNames, t); }
+bool parse_tier(const std::string &s, Tier *out) { return enum_parse(kTierNames, s, out); }
 std::vector<Tier> all_tiers() { return {Tier::PS20, Tier::PS2B, Tier::SM3}; }
 
 int Variant::value(const std::string &combo, int fallback) const {
