@@ -22,6 +22,10 @@ struct TextureDesc {
   bool repeat = false;  // GL_REPEAT (else GL_CLAMP_TO_EDGE; cube maps always clamp, seamless off)
 };
 
+// An uninitialised w x h 2D texture (RGBA, NEAREST) for a framebuffer's colour attachment,
+// left bound to GL_TEXTURE_2D.
+GLuint new_target_texture(const GlFns &g, GLenum internal_format, GLenum type, int w, int h);
+
 class GlRenderer {
  public:
   explicit GlRenderer(GlContext &ctx);

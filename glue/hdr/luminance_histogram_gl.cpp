@@ -5,6 +5,7 @@
 #include <cstring>
 
 #include "base/enum_names.h"
+#include "gl/errors.h"
 #include "hdr/luminance_histogram.h"
 
 LuminanceHistogramGl::LuminanceHistogramGl(PassRunner &runner, Backend backend, Api api, const HistogramConfig &c)
@@ -68,12 +69,7 @@ bool LuminanceHistogramGl::init(std::string *err) {
     }
     g.BindBuffer(GL_PIXEL_PACK_BUFFER, 0);
   }
-  const GLenum e = g.GetError();
-  if (e != GL_NO_ERROR) {
-    *err = "GL error " + std::to_string(e) + " setting up the luminance histogram";
-    return false;
-  }
-  return true;
+  return gl_no_error(g, "setting up the luminance histogram", err);
 }
 
 uint32_t LuminanceHistogramGl::count_marked(const uint8_t *rgba, size_t pixels) const {
@@ -161,12 +157,7 @@ bool LuminanceHistogramGl::measure(GLuint source_tex, float tscale, int bucket, 
     g.ReadPixels(win_.x0, win_.y0, win_.w, win_.h, GL_RGBA, GL_UNSIGNED_BYTE, px.data());
     sync_counts_[bucket] = count_marked(px.data(), static_cast<size_t>(win_.w) * win_.h);
   }
-  const GLenum e = g.GetError();
-  if (e != GL_NO_ERROR) {
-    *err = "GL error " + std::to_string(e) + " measuring histogram bucket " + std::to_string(bucket);
-    return false;
-  }
-  return true;
+  return gl_no_error(g, "measuring histogram bucket " + std::to_string(bucket), err);
 }
 
 bool LuminanceHistogramGl::frame(GLuint frame_tex, float tscale, int64_t frame,
