@@ -8,6 +8,7 @@
 #include "shaderlib/assembler.h"
 #include "gl/context.h"
 #include "base/image.h"
+#include "base/noncopyable.h"
 
 enum class TexKind { Tex2D, Cube, Tex3D };
 
@@ -26,12 +27,10 @@ struct TextureDesc {
 // left bound to GL_TEXTURE_2D.
 GLuint new_target_texture(const GlFns &g, GLenum internal_format, GLenum type, int w, int h);
 
-class GlRenderer {
+class GlRenderer : NonCopyable {
  public:
   explicit GlRenderer(GlContext &ctx);
   ~GlRenderer();
-  GlRenderer(const GlRenderer &) = delete;
-  GlRenderer &operator=(const GlRenderer &) = delete;
 
   const GlFns &gl() const { return ctx_.gl(); }
   // Compiles and links; on failure *err holds the log mapped to shaders/<file>:<line>.
