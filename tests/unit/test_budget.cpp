@@ -403,6 +403,5 @@ int main(int argc, char **argv) {
   test_table();
   test_nir(fixtures);
   std::cout.flush();
-  printf("%d passed, %d failed\n", g_passed, g_failed);
-  return g_failed ? 1 : 0;
+  return finish();
 }

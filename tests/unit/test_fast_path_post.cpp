@@ -34,16 +34,9 @@
 #include "hdr/paths.h"
 #include "twins/hdr_post_batch.h"
 #include "unit_check.h"
+#include "unit_vec4.h"
 
 namespace {
-
-bool same_bits(const ts_vec4f &a, const ts_vec4f &b) { return std::memcmp(&a, &b, sizeof a) == 0; }
-
-std::string show(const ts_vec4f &c) {
-  char b[160];
-  snprintf(b, sizeof b, "(%a, %a, %a, %a)", c.x, c.y, c.z, c.w);
-  return b;
-}
 
 struct PostRng {
   uint64_t s;
@@ -57,12 +50,6 @@ struct PostRng {
   float uni(float lo, float hi) { return lo + (hi - lo) * static_cast<float>(next() % 1000000u) / 1000000.f; }
   bool chance(int percent) { return static_cast<int>(next() % 100u) < percent; }
 };
-
-float bits_f(uint32_t u) {
-  float f;
-  std::memcpy(&f, &u, 4);
-  return f;
-}
 
 // Hard values: NaN of both signs and payloads, infinities, the fp16 edge, huge, denormals.
 float hard(PostRng &r) {
@@ -84,7 +71,7 @@ float hard(PostRng &r) {
     case 0:
       return std::numeric_limits<float>::quiet_NaN();
     case 1:
-      return bits_f(0xffc01234u);
+      return float_of_bits(0xffc01234u);
     case 2:
       return std::numeric_limits<float>::infinity();
     default:
@@ -328,7 +315,7 @@ void test_formats(const char *mode) {
   std::vector<float> in;
   in.reserve((1u << 21) + 64);
   for (uint32_t hi = 0; hi < (1u << 20); ++hi)
-    for (int k = 0; k < 2; ++k) in.push_back(bits_f((hi << 12) | (r.next() & 0xfffu)));
+    for (int k = 0; k < 2; ++k) in.push_back(float_of_bits((hi << 12) | (r.next() & 0xfffu)));
   for (int k = 0; k < 61; ++k) in.push_back(hard(r));  // an odd tail
   std::vector<float> hq(in.size()), hq_want(in.size());
   std::vector<uint8_t> u8(in.size()), u8_want(in.size());
@@ -462,6 +449,5 @@ int main() {
     color_correction_f_batch(&v, &in, &luts, &sentinel, 0);
     check(same_bits(sentinel, ts_v4f(7, 7, 7, 7)), "count 0 writes nothing");
   }
-  printf("%d passed, %d failed\n", g_passed, g_failed);
-  return g_failed ? 1 : 0;
+  return finish();
 }

@@ -1023,6 +1023,5 @@ int main() {
   test_model_lighting();
   test_eval_expr_overflow();
 
-  printf("test_glue: %d passed, %d failed\n", g_passed, g_failed);
-  return g_failed ? 1 : 0;
+  return finish();
 }
