@@ -162,18 +162,17 @@ expect_fail probe_missing_input     2 "$MISSING"                              --
 mkdir -p "$TMP/a_directory"
 expect_fail probe_input_is_directory 2 "$TMP/a_directory"                     -- probe --shader $ML --variant 0 --input "$TMP/a_directory"
 
-BADSLOT="$TMP/bad_slot.txt"
-printf '# pixel input\nnormal 0 0 1\nbogus_slot 1 2 3\n' > "$BADSLOT"
-expect_fail probe_input_unknown_slot 2 "$BADSLOT:3:|'bogus_slot'"             -- probe --shader $ML --variant 0 --input "$BADSLOT"
-BADNUM="$TMP/bad_number.txt"
-printf 'normal 0 0 1\n\nposition 1.0 2.x 3\n' > "$BADNUM"
-expect_fail probe_input_malformed_number 2 "$BADNUM:3:|position|2.x"          -- probe --shader $ML --variant 0 --input "$BADNUM"
-TOOMANY="$TMP/too_many.txt"
-printf 'normal 1 2 3 4 5\n' > "$TOOMANY"
-expect_fail probe_input_too_many_numbers 2 "$TOOMANY:1:|normal"               -- probe --shader $ML --variant 0 --input "$TOOMANY"
-NOVAL="$TMP/no_value.txt"
-printf 'uv   # nothing\n' > "$NOVAL"
-expect_fail probe_input_no_numbers  2 "$NOVAL:1:|uv"                          -- probe --shader $ML --variant 0 --input "$NOVAL"
+# bad_input NAME TEXT PATTERNS: probe --input refuses a file holding TEXT (printf format) with
+# a message naming the file and the place; @ in PATTERNS stands for the file's path.
+bad_input() {
+  local f="$TMP/$1.txt"
+  printf "$2" > "$f"
+  expect_fail "probe_input_$1" 2 "${3//@/$f}" -- probe --shader $ML --variant 0 --input "$f"
+}
+bad_input unknown_slot       '# pixel input\nnormal 0 0 1\nbogus_slot 1 2 3\n' "@:3:|'bogus_slot'"
+bad_input malformed_number   'normal 0 0 1\n\nposition 1.0 2.x 3\n'           "@:3:|position|2.x"
+bad_input too_many_numbers   'normal 1 2 3 4 5\n'                              "@:1:|normal"
+bad_input no_numbers         'uv   # nothing\n'                                "@:1:|uv"
 expect_fail probe_set_without_eq    2 "--set|'normal'"                        -- probe --shader $ML --variant 0 --set normal
 expect_fail probe_set_unknown_slot  2 "--set|'nrm'"                           -- probe --shader $ML --variant 0 --set nrm=0,0,1
 expect_fail probe_set_malformed     2 "--set|normal|1,,x"                     -- probe --shader $ML --variant 0 --set normal=1,,x
