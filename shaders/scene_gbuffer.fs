@@ -8,53 +8,45 @@
 // (world_lighting_slots.glsl). GBUFFER_SLOT k: slot k; -1: vec4(u_draw_index, 0, 0, 1).
 //------------------------------------------------------------------------------
 uniform float u_draw_index;
-// The assembler expands both includes; the #if keeps one family's declarations.
+// The assembler expands all includes; the #if keeps one family's declarations. gbuffer_slot(k):
+// pixel slot k as the family's fragment shader reads it (its TS_PIXEL_INPUT values); a slot the
+// variant does not have (no Phong, not ps20) is vec4(0).
 #if GBUFFER_FAMILY == 0
+#include "model_lighting_slots.glsl"
 #include "model_lighting_varyings.glsl"
+vec4 gbuffer_slot(int k) {
+    if (k == ML_SLOT_NORMAL) return vec4(v_normal, 0.0);
+    if (k == ML_SLOT_POSITION) return vec4(v_position, 1.0);
+    if (k == ML_SLOT_UV) return vec4(v_uv, 0.0, 0.0);
+#ifdef TS_TIER_PS20
+    if (k == ML_SLOT_VERTEX_ATTEN) return v_light_atten;
+#endif
+#if PHONG
+    if (k == ML_SLOT_TANGENT) return vec4(v_tangent, 0.0);
+    if (k == ML_SLOT_BITANGENT) return vec4(v_bitangent, 0.0);
+#endif
+    return vec4(0.0);
+}
 #else
+#include "world_lighting_slots.glsl"
 #include "world_lighting_varyings.glsl"
+vec4 gbuffer_slot(int k) {
+    if (k == WL_SLOT_UV) return v_uv;
+    if (k == WL_SLOT_LM_OFFSET) return v_lm_offset;
+    if (k == WL_SLOT_NORMAL) return v_normal;
+    if (k == WL_SLOT_TANGENT) return v_tangent;
+    if (k == WL_SLOT_BINORMAL) return v_binormal;
+    if (k == WL_SLOT_EYE) return v_eye;
+    return vec4(0.0);
+}
 #endif
 
 TS_DECLARE_FRAG_COLOR
 
 void main() {
-    vec4 r = vec4(0.0);
 #if GBUFFER_SLOT < 0
-    r = vec4(u_draw_index, 0.0, 0.0, 1.0);
-#elif GBUFFER_FAMILY == 0
-#if GBUFFER_SLOT == 0
-    r = vec4(v_normal, 0.0);
-#elif GBUFFER_SLOT == 1
-    r = vec4(v_position, 1.0);
-#elif GBUFFER_SLOT == 2
-    r = vec4(v_uv, 0.0, 0.0);
-#elif GBUFFER_SLOT == 3
-#ifdef TS_TIER_PS20
-    r = v_light_atten;
-#endif
-#elif GBUFFER_SLOT == 4
-#if PHONG
-    r = vec4(v_tangent, 0.0);
-#endif
-#elif GBUFFER_SLOT == 5
-#if PHONG
-    r = vec4(v_bitangent, 0.0);
-#endif
-#endif
+    TS_FRAG_COLOR = vec4(u_draw_index, 0.0, 0.0, 1.0);
 #else
-#if GBUFFER_SLOT == 0
-    r = v_uv;
-#elif GBUFFER_SLOT == 1
-    r = v_lm_offset;
-#elif GBUFFER_SLOT == 2
-    r = v_normal;
-#elif GBUFFER_SLOT == 3
-    r = v_tangent;
-#elif GBUFFER_SLOT == 4
-    r = v_binormal;
-#elif GBUFFER_SLOT == 5
-    r = v_eye;
+    TS_FRAG_COLOR = gbuffer_slot(GBUFFER_SLOT);
 #endif
-#endif
-    TS_FRAG_COLOR = r;
 }

@@ -2,56 +2,21 @@
 // GL entry-point table (facts: ../shared/docs/platform_notes.md sections 2 and 3).
 #include "gl/context.h"
 #include "gl/osmesa_loader.h"
+#include "base/enum_names.h"
 
 #include <EGL/egl.h>
 #include <EGL/eglext.h>
 
 #include <cstring>
 
-const char *backend_name(Backend b) {
-  switch (b) {
-    case Backend::OSMesa:
-      return "osmesa";
-    case Backend::EGL:
-      return "egl";
-    case Backend::CPU:
-      return "cpu";
-  }
-  return "?";
-}
-const char *api_name(Api a) {
-  switch (a) {
-    case Api::GL33:
-      return "gl33";
-    case Api::GLES2:
-      return "gles2";
-    case Api::GLES3:
-      return "gles3";
-  }
-  return "?";
-}
-bool parse_backend(const std::string &s, Backend *out) {
-  if (s == "osmesa")
-    *out = Backend::OSMesa;
-  else if (s == "egl")
-    *out = Backend::EGL;
-  else if (s == "cpu")
-    *out = Backend::CPU;
-  else
-    return false;
-  return true;
-}
-bool parse_api(const std::string &s, Api *out) {
-  if (s == "gl33")
-    *out = Api::GL33;
-  else if (s == "gles2")
-    *out = Api::GLES2;
-  else if (s == "gles3")
-    *out = Api::GLES3;
-  else
-    return false;
-  return true;
-}
+static const EnumName<Backend> kBackendNames[] = {
+    {Backend::OSMesa, "osmesa"}, {Backend::EGL, "egl"}, {Backend::CPU, "cpu"}};
+static const EnumName<Api> kApiNames[] = {{Api::GL33, "gl33"}, {Api::GLES2, "gles2"}, {Api::GLES3, "gles3"}};
+
+const char *backend_name(Backend b) { return enum_name(kBackendNames, b); }
+const char *api_name(Api a) { return enum_name(kApiNames, a); }
+bool parse_backend(const std::string &s, Backend *out) { return enum_parse(kBackendNames, s, out); }
+bool parse_api(const std::string &s, Api *out) { return enum_parse(kApiNames, s, out); }
 std::vector<BackendApi> all_gl_configs() {
   return {
       {Backend::OSMesa, Api::GL33}, {Backend::EGL, Api::GLES2}, {Backend::EGL, Api::GLES3}, {Backend::EGL, Api::GL33}};

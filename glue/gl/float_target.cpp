@@ -1,8 +1,9 @@
 // tiershade gl: program building and full-screen RGBA32F draws (see gl_render.h).
 #include "gl/float_target.h"
 
+#include "gl/errors.h"
+
 #include <chrono>
-#include <cstdio>
 
 GlRenderer::GlRenderer(GlContext &ctx) : ctx_(ctx) {
   const GlFns &g = gl();
@@ -34,12 +35,8 @@ static bool compile(const GlFns &g, GLenum type, const Assembled &src, GLuint *o
   GLint ok = 0;
   g.GetShaderiv(s, GL_COMPILE_STATUS, &ok);
   if (!ok) {
-    GLint len = 0;
-    g.GetShaderiv(s, GL_INFO_LOG_LENGTH, &len);
-    std::string log(len > 0 ? len : 1, '\0');
-    g.GetShaderInfoLog(s, static_cast<GLsizei>(log.size()), nullptr, &log[0]);
     *err = std::string(type == GL_VERTEX_SHADER ? "vertex" : "fragment") + " shader failed to compile:\n" +
-        map_compile_log(log.c_str(), src);
+        map_compile_log(gl_info_log(g, s, false).c_str(), src);
     g.DeleteShader(s);
     return false;
   }
@@ -65,11 +62,7 @@ GLuint GlRenderer::build_program(const Assembled &vs, const Assembled &fs, std::
   GLint ok = 0;
   g.GetProgramiv(p, GL_LINK_STATUS, &ok);
   if (!ok) {
-    GLint len = 0;
-    g.GetProgramiv(p, GL_INFO_LOG_LENGTH, &len);
-    std::string log(len > 0 ? len : 1, '\0');
-    g.GetProgramInfoLog(p, static_cast<GLsizei>(log.size()), nullptr, &log[0]);
-    *err = "program failed to link:\n" + std::string(log.c_str());
+    *err = "program failed to link:\n" + gl_info_log(g, p, true);
     g.DeleteProgram(p);
     return 0;
   }
@@ -125,29 +118,25 @@ GLenum GlRenderer::kind_of(GLuint t) const {
   return it == kinds_.end() ? GL_TEXTURE_2D : it->second;
 }
 
+GLuint new_target_texture(const GlFns &g, GLenum internal_format, GLenum type, int w, int h) {
+  GLuint t = 0;
+  g.GenTextures(1, &t);
+  g.BindTexture(GL_TEXTURE_2D, t);
+  g.TexImage2D(GL_TEXTURE_2D, 0, static_cast<GLint>(internal_format), w, h, 0, GL_RGBA, type, nullptr);
+  g.TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+  g.TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+  return t;
+}
+
 bool GlRenderer::ensure_target(int w, int h, std::string *err) {
   const GlFns &g = gl();
   if (fbo_ && tw_ == w && th_ == h) return true;
   if (color_) g.DeleteTextures(1, &color_);
   if (!fbo_) g.GenFramebuffers(1, &fbo_);
-  g.GenTextures(1, &color_);
-  g.BindTexture(GL_TEXTURE_2D, color_);
-  g.TexImage2D(GL_TEXTURE_2D, 0, GL_RGBA32F, w, h, 0, GL_RGBA, GL_FLOAT, nullptr);
-  g.TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
-  g.TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+  color_ = new_target_texture(g, GL_RGBA32F, GL_FLOAT, w, h);
   g.BindFramebuffer(GL_FRAMEBUFFER, fbo_);
   g.FramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, color_, 0);
-  const GLenum status = g.CheckFramebufferStatus(GL_FRAMEBUFFER);
-  if (status != GL_FRAMEBUFFER_COMPLETE) {
-    *err = "RGBA32F framebuffer incomplete (status 0x" +
-        [&] {
-          char b[16];
-          snprintf(b, sizeof b, "%x", status);
-          return std::string(b);
-        }() +
-        ")";
-    return false;
-  }
+  if (!gl_framebuffer_complete(g, "RGBA32F framebuffer", err)) return false;
   tw_ = w;
   th_ = h;
   return true;
@@ -182,12 +171,5 @@ bool GlRenderer::draw(GLuint program, const std::vector<std::pair<std::string, G
   out->rgba.assign(static_cast<size_t>(w) * h * 4, 0.f);
   g.PixelStorei(GL_PACK_ALIGNMENT, 4);
   g.ReadPixels(0, 0, w, h, GL_RGBA, GL_FLOAT, out->rgba.data());
-  const GLenum e = g.GetError();
-  if (e != GL_NO_ERROR) {
-    char b[64];
-    snprintf(b, sizeof b, "GL error 0x%x after the draw", e);
-    *err = b;
-    return false;
-  }
-  return true;
+  return gl_no_error(g, "after the draw", err);
 }

@@ -8,6 +8,7 @@
 #include "shaderlib/assembler.h"
 #include "gl/context.h"
 #include "base/image.h"
+#include "base/noncopyable.h"
 
 enum class TexKind { Tex2D, Cube, Tex3D };
 
@@ -22,12 +23,14 @@ struct TextureDesc {
   bool repeat = false;  // GL_REPEAT (else GL_CLAMP_TO_EDGE; cube maps always clamp, seamless off)
 };
 
-class GlRenderer {
+// An uninitialised w x h 2D texture (RGBA, NEAREST) for a framebuffer's colour attachment,
+// left bound to GL_TEXTURE_2D.
+GLuint new_target_texture(const GlFns &g, GLenum internal_format, GLenum type, int w, int h);
+
+class GlRenderer : NonCopyable {
  public:
   explicit GlRenderer(GlContext &ctx);
   ~GlRenderer();
-  GlRenderer(const GlRenderer &) = delete;
-  GlRenderer &operator=(const GlRenderer &) = delete;
 
   const GlFns &gl() const { return ctx_.gl(); }
   // Compiles and links; on failure *err holds the log mapped to shaders/<file>:<line>.

@@ -6,30 +6,19 @@
 
 #include <cstdio>
 
+#include "base/enum_names.h"
 #include "conform/conform.h"
 #include "families/family.h"
+#include "gl/errors.h"
 #include "gl/osmesa_loader.h"
 
-const char *target_format_name(TargetFormat f) {
-  switch (f) {
-    case TargetFormat::RGBA8:
-      return "RGBA8";
-    case TargetFormat::RGBA16F:
-      return "RGBA16F";
-    case TargetFormat::RGBA32F:
-      return "RGBA32F";
-  }
-  return "?";
-}
+static const EnumName<TargetFormat> kTargetFormatNames[] = {
+    {TargetFormat::RGBA8, "RGBA8"}, {TargetFormat::RGBA16F, "RGBA16F"}, {TargetFormat::RGBA32F, "RGBA32F"}};
+
+const char *target_format_name(TargetFormat f) { return enum_name(kTargetFormatNames, f); }
 
 int target_bytes_per_pixel(TargetFormat f) {
   return f == TargetFormat::RGBA8 ? 4 : f == TargetFormat::RGBA16F ? 8 : 16;
-}
-
-static std::string hex(unsigned v) {
-  char b[16];
-  snprintf(b, sizeof b, "0x%x", v);
-  return b;
 }
 
 bool make_target(const GlFns &g, TargetFormat f, int w, int h, GlTarget *t, std::string *err) {
@@ -37,25 +26,17 @@ bool make_target(const GlFns &g, TargetFormat f, int w, int h, GlTarget *t, std:
   t->w = w;
   t->h = h;
   t->fmt = f;
-  g.GenTextures(1, &t->tex);
-  g.BindTexture(GL_TEXTURE_2D, t->tex);
-  if (f == TargetFormat::RGBA8)
-    g.TexImage2D(GL_TEXTURE_2D, 0, GL_RGBA8, w, h, 0, GL_RGBA, GL_UNSIGNED_BYTE, nullptr);
-  else if (f == TargetFormat::RGBA16F)
-    g.TexImage2D(GL_TEXTURE_2D, 0, GL_RGBA16F, w, h, 0, GL_RGBA, GL_HALF_FLOAT, nullptr);
-  else
-    g.TexImage2D(GL_TEXTURE_2D, 0, GL_RGBA32F, w, h, 0, GL_RGBA, GL_FLOAT, nullptr);
-  g.TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
-  g.TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+  t->tex = f == TargetFormat::RGBA8     ? new_target_texture(g, GL_RGBA8, GL_UNSIGNED_BYTE, w, h)
+           : f == TargetFormat::RGBA16F ? new_target_texture(g, GL_RGBA16F, GL_HALF_FLOAT, w, h)
+                                        : new_target_texture(g, GL_RGBA32F, GL_FLOAT, w, h);
   g.TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
   g.TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
   g.GenFramebuffers(1, &t->fbo);
   g.BindFramebuffer(GL_FRAMEBUFFER, t->fbo);
   g.FramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, t->tex, 0);
-  const GLenum status = g.CheckFramebufferStatus(GL_FRAMEBUFFER);
-  if (status != GL_FRAMEBUFFER_COMPLETE) {
-    *err = std::string(target_format_name(f)) + " " + std::to_string(w) + "x" + std::to_string(h) +
-        " framebuffer incomplete (status " + hex(status) + ")";
+  if (!gl_framebuffer_complete(
+          g, std::string(target_format_name(f)) + " " + std::to_string(w) + "x" + std::to_string(h) + " framebuffer",
+          err)) {
     free_target(g, t);
     return false;
   }
@@ -123,12 +104,7 @@ bool PassRunner::draw(GLuint program, const GlTarget &t, const std::vector<PassT
   r_.bind_fullscreen_triangle();
   g.DrawArrays(GL_TRIANGLES, 0, 3);
   g.Disable(GL_SCISSOR_TEST);
-  const GLenum e = g.GetError();
-  if (e != GL_NO_ERROR) {
-    *err = "GL error " + hex(e) + " in a pass into a " + target_format_name(t.fmt) + " target";
-    return false;
-  }
-  return true;
+  return gl_no_error(g, std::string("in a pass into a ") + target_format_name(t.fmt) + " target", err);
 }
 
 static GLuint upload(const GlFns &g, int w, int h, GLenum ifmt, GLenum type, const void *data) {
@@ -152,30 +128,24 @@ GLuint upload_rgba8(const GlFns &g, int w, int h, const std::vector<uint8_t> &co
   return upload(g, w, h, GL_RGBA8, GL_UNSIGNED_BYTE, codes.data());
 }
 
-bool read_rgba8(const GlFns &g, const GlTarget &t, std::vector<uint8_t> *out, std::string *err) {
-  out->assign(static_cast<size_t>(t.w) * t.h * 4, 0);
+// The whole target as `type` values, 4 per pixel.
+template <class T>
+static bool read_target(const GlFns &g, const GlTarget &t, GLenum type, std::vector<T> *out, const std::string &doing,
+                        std::string *err) {
+  out->assign(static_cast<size_t>(t.w) * t.h * 4, T(0));
   g.BindFramebuffer(GL_FRAMEBUFFER, t.fbo);
   g.PixelStorei(GL_PACK_ALIGNMENT, 4);
-  g.ReadPixels(0, 0, t.w, t.h, GL_RGBA, GL_UNSIGNED_BYTE, out->data());
-  const GLenum e = g.GetError();
-  if (e != GL_NO_ERROR) {
-    *err = "GL error " + hex(e) + " reading an RGBA8 target";
-    return false;
-  }
-  return true;
+  g.ReadPixels(0, 0, t.w, t.h, GL_RGBA, type, out->data());
+  return gl_no_error(g, doing, err);
+}
+
+bool read_rgba8(const GlFns &g, const GlTarget &t, std::vector<uint8_t> *out, std::string *err) {
+  return read_target(g, t, GL_UNSIGNED_BYTE, out, "reading an RGBA8 target", err);
 }
 
 bool read_float(const GlFns &g, const GlTarget &t, std::vector<float> *out, std::string *err) {
-  out->assign(static_cast<size_t>(t.w) * t.h * 4, 0.f);
-  g.BindFramebuffer(GL_FRAMEBUFFER, t.fbo);
-  g.PixelStorei(GL_PACK_ALIGNMENT, 4);
-  g.ReadPixels(0, 0, t.w, t.h, GL_RGBA, GL_FLOAT, out->data());
-  const GLenum e = g.GetError();
-  if (e != GL_NO_ERROR) {
-    *err = "GL error " + hex(e) + " reading a " + std::string(target_format_name(t.fmt)) + " target as float";
-    return false;
-  }
-  return true;
+  return read_target(g, t, GL_FLOAT, out, std::string("reading a ") + target_format_name(t.fmt) + " target as float",
+                     err);
 }
 
 bool load_sync_fns(Backend b, GlSyncFns *f, std::string *err) {

@@ -12,6 +12,7 @@
 #include "exposure/auto_exposure.h"
 #include "gl/float_target.h"
 #include "shaderlib/variants.h"
+#include "base/noncopyable.h"
 
 enum class TargetFormat { RGBA8, RGBA16F, RGBA32F };
 const char *target_format_name(TargetFormat f);
@@ -35,12 +36,10 @@ struct PassTexture {
 };
 
 // Full-screen passes: GlRenderer's full-screen triangle into GlTargets.
-class PassRunner {
+class PassRunner : NonCopyable {
  public:
   explicit PassRunner(GlRenderer &r);
   ~PassRunner();
-  PassRunner(const PassRunner &) = delete;
-  PassRunner &operator=(const PassRunner &) = delete;
   const GlFns &gl() const { return r_.gl(); }
   GlRenderer &renderer() { return r_; }
   // The production program of a family variant (vertex conform_fullscreen.vs for the

@@ -25,6 +25,7 @@
 
 #include "exposure/auto_exposure.h"
 #include "hdr/gl_passes.h"
+#include "base/noncopyable.h"
 
 struct HistogramMeasurement {
   int bucket;
@@ -58,12 +59,10 @@ class LuminanceHistogramCpu {
   std::vector<float> history_;  // the smoothed luminance image (fp16 values), rgba
 };
 
-class LuminanceHistogramGl {
+class LuminanceHistogramGl : NonCopyable {
  public:
   LuminanceHistogramGl(PassRunner &runner, Backend backend, Api api, const HistogramConfig &c);
   ~LuminanceHistogramGl();
-  LuminanceHistogramGl(const LuminanceHistogramGl &) = delete;
-  LuminanceHistogramGl &operator=(const LuminanceHistogramGl &) = delete;
   bool init(std::string *err);
   // frame_tex: the frame just rendered (w x h), sampled with texelFetch (NEAREST on GLES 2.0).
   bool frame(GLuint frame_tex, float tscale, int64_t frame, std::vector<HistogramMeasurement> *collected,

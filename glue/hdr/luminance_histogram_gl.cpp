@@ -4,6 +4,8 @@
 // readback (GLES 2.0).
 #include <cstring>
 
+#include "base/enum_names.h"
+#include "gl/errors.h"
 #include "hdr/luminance_histogram.h"
 
 LuminanceHistogramGl::LuminanceHistogramGl(PassRunner &runner, Backend backend, Api api, const HistogramConfig &c)
@@ -26,15 +28,11 @@ LuminanceHistogramGl::~LuminanceHistogramGl() {
 }
 
 const char *LuminanceHistogramGl::method() const {
-  switch (method_) {
-    case Method::Query:
-      return "asynchronous occlusion query (GL_SAMPLES_PASSED)";
-    case Method::PixelPack:
-      return "fenced pixel-pack-buffer readback, counted on the CPU";
-    case Method::SyncRead:
-      return "synchronous readback, counted on the CPU";
-  }
-  return "?";
+  static const EnumName<Method> kMethodNames[] = {
+      {Method::Query, "asynchronous occlusion query (GL_SAMPLES_PASSED)"},
+      {Method::PixelPack, "fenced pixel-pack-buffer readback, counted on the CPU"},
+      {Method::SyncRead, "synchronous readback, counted on the CPU"}};
+  return enum_name(kMethodNames, method_);
 }
 
 bool LuminanceHistogramGl::init(std::string *err) {
@@ -71,12 +69,7 @@ bool LuminanceHistogramGl::init(std::string *err) {
     }
     g.BindBuffer(GL_PIXEL_PACK_BUFFER, 0);
   }
-  const GLenum e = g.GetError();
-  if (e != GL_NO_ERROR) {
-    *err = "GL error " + std::to_string(e) + " setting up the luminance histogram";
-    return false;
-  }
-  return true;
+  return gl_no_error(g, "setting up the luminance histogram", err);
 }
 
 uint32_t LuminanceHistogramGl::count_marked(const uint8_t *rgba, size_t pixels) const {
@@ -164,12 +157,7 @@ bool LuminanceHistogramGl::measure(GLuint source_tex, float tscale, int bucket, 
     g.ReadPixels(win_.x0, win_.y0, win_.w, win_.h, GL_RGBA, GL_UNSIGNED_BYTE, px.data());
     sync_counts_[bucket] = count_marked(px.data(), static_cast<size_t>(win_.w) * win_.h);
   }
-  const GLenum e = g.GetError();
-  if (e != GL_NO_ERROR) {
-    *err = "GL error " + std::to_string(e) + " measuring histogram bucket " + std::to_string(bucket);
-    return false;
-  }
-  return true;
+  return gl_no_error(g, "measuring histogram bucket " + std::to_string(bucket), err);
 }
 
 bool LuminanceHistogramGl::frame(GLuint frame_tex, float tscale, int64_t frame,

@@ -17,6 +17,7 @@
 #include "families/family.h"
 #include "conform/family_frame.h"
 #include "hdr/gl_passes.h"
+#include "base/noncopyable.h"
 
 struct HdrSettings {
   float tone_map_scale = 1.f;
@@ -32,12 +33,10 @@ bool hdr_lit_variant(const std::vector<ShaderDecl> &decls, int output_mode, Vari
 // Quarter size of the bloom chain.
 inline int hdr_bloom_size(int n) { return n / 4 > 0 ? n / 4 : 1; }
 
-class HdrPipelineGl {
+class HdrPipelineGl : NonCopyable {
  public:
   HdrPipelineGl(PassRunner &run, Api api);
   ~HdrPipelineGl();
-  HdrPipelineGl(const HdrPipelineGl &) = delete;
-  HdrPipelineGl &operator=(const HdrPipelineGl &) = delete;
   // Builds the programs and targets for w x h frames of `scene` (its G-buffer and textures are
   // uploaded once; the shared slots are bound per frame).
   bool init(const ShaderFamily &lit, const Variant &lit_linear, const Variant &lit_display, const FamilyInputs &scene,

@@ -63,26 +63,20 @@ void bloom_chain(const std::vector<float> &hdr, int w, int h, Down down, Blur bl
   const ts_tex2d src = tex_of(hdr, w, h, true);
   const ts_vec4f drec[BD_SLOTS] = {ts_v4f(0.f, 0.f, 0.f, 0.f), size_of(w, h), ts_v4f(0.3f, 0.59f, 0.11f, 2.2f)};
   const ts_vec4f brec[BB_SLOTS] = {ts_v4f(0.f, 0.f, 0.f, 0.f), size_of(bw, bh), ts_v4f(1.f, 0.f, 0.f, 0.f)};
-  parallel_rows(bh, threads, [&](int y) {
-    std::vector<ts_vec4f> pos, row(static_cast<size_t>(bw));
-    centres(y, bw, &pos);
-    down(pos.data(), drec, bw, &src, row.data());
-    store_row(&ds, static_cast<size_t>(y) * bw, row, half);
-  });
+  // One bw x bh pass into dst: shade(pos, row) shades a row from its pixel centres.
+  auto pass = [&](std::vector<float> *dst, const auto &shade) {
+    parallel_rows(bh, threads, [&](int y) {
+      std::vector<ts_vec4f> pos, row(static_cast<size_t>(bw));
+      centres(y, bw, &pos);
+      shade(pos.data(), row.data());
+      store_row(dst, static_cast<size_t>(y) * bw, row, half);
+    });
+  };
+  pass(&ds, [&](const ts_vec4f *pos, ts_vec4f *row) { down(pos, drec, bw, &src, row); });
   const ts_tex2d tds = tex_of(ds, bw, bh, true);
-  parallel_rows(bh, threads, [&](int y) {
-    std::vector<ts_vec4f> pos, row(static_cast<size_t>(bw));
-    centres(y, bw, &pos);
-    blur(0, pos.data(), brec, bw, &tds, row.data());
-    store_row(&bx, static_cast<size_t>(y) * bw, row, half);
-  });
+  pass(&bx, [&](const ts_vec4f *pos, ts_vec4f *row) { blur(0, pos, brec, bw, &tds, row); });
   const ts_tex2d tbx = tex_of(bx, bw, bh, true);
-  parallel_rows(bh, threads, [&](int y) {
-    std::vector<ts_vec4f> pos, row(static_cast<size_t>(bw));
-    centres(y, bw, &pos);
-    blur(1, pos.data(), brec, bw, &tbx, row.data());
-    store_row(out, static_cast<size_t>(y) * bw, row, half);
-  });
+  pass(out, [&](const ts_vec4f *pos, ts_vec4f *row) { blur(1, pos, brec, bw, &tbx, row); });
   *bw_out = bw;
   *bh_out = bh;
 }

@@ -6,6 +6,7 @@
 #include <cstddef>
 #include <cstdio>
 #include <string>
+#include "base/noncopyable.h"
 
 // "<path>.tmp.<pid>": the temporary name of a file or directory being written.
 std::string temp_path_for(const std::string &path);
@@ -20,12 +21,10 @@ bool write_and_close(FILE *fp, const void *data, size_t n, std::string *why);
 //   "cannot write (<reason>)"   the temporary cannot be created
 //   "write failed (<reason>)"   a write, the flush, fsync or close failed
 //   "cannot replace (<reason>)" the rename failed
-class AtomicFile {
+class AtomicFile : NonCopyable {
  public:
   explicit AtomicFile(const std::string &path);
   ~AtomicFile();
-  AtomicFile(const AtomicFile &) = delete;
-  AtomicFile &operator=(const AtomicFile &) = delete;
 
   bool open(std::string *why);
   FILE *fp() const { return fp_; }  // valid between open() and commit()

@@ -144,22 +144,23 @@ inline F4 splat4(float s) { return F4{s, s, s, s}; }
 
 // Shades n pixels of one draw with the batched twin: pixel slot k of pixel i at
 // pix[k * pitch + i], the shared slots from the draw's record.
+template <class BatchInput>
+BatchInput batch_input(const DrawCtx &c, const ts_vec4f *pix, int pitch, int slots) {
+  BatchInput in;
+  for (int k = 0; k < slots; ++k) {
+    const bool px = k < kPixelSlots;
+    in.slot[k] = px ? &pix[static_cast<size_t>(k) * pitch] : &c.rec[k];
+    in.stride[k] = px ? 1 : 0;
+  }
+  return in;
+}
+
 void shade_run(const DrawCtx &c, const ts_vec4f *pix, int pitch, int n, ts_vec4f *res) {
   if (c.world) {
-    wl_batch_input in;
-    for (int k = 0; k < WL_SLOTS; ++k) {
-      const bool px = k < kPixelSlots;
-      in.slot[k] = px ? &pix[static_cast<size_t>(k) * pitch] : &c.rec[k];
-      in.stride[k] = px ? 1 : 0;
-    }
+    const wl_batch_input in = batch_input<wl_batch_input>(c, pix, pitch, WL_SLOTS);
     world_lighting_f_batch(&c.wl, &in, &c.wt, res, n);
   } else {
-    ml_batch_input in;
-    for (int k = 0; k < ML_SLOTS; ++k) {
-      const bool px = k < kPixelSlots;
-      in.slot[k] = px ? &pix[static_cast<size_t>(k) * pitch] : &c.rec[k];
-      in.stride[k] = px ? 1 : 0;
-    }
+    const ml_batch_input in = batch_input<ml_batch_input>(c, pix, pitch, ML_SLOTS);
     model_lighting_f_batch(&c.ml, &in, &c.mt, res, n);
   }
 }

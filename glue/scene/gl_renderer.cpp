@@ -7,6 +7,7 @@
 #include "shaderlib/assembler.h"
 #include "conform/conform.h"
 #include "families/family.h"
+#include "gl/errors.h"
 
 namespace {
 using Clock = std::chrono::steady_clock;
@@ -77,32 +78,14 @@ bool SceneGl::init(const PreparedScene &p, std::string *err, double *compile_ms,
   }
   // Target: RGBA32F colour and a depth renderbuffer.
   g.GenFramebuffers(1, &fbo_);
-  g.GenTextures(1, &color_);
-  g.BindTexture(GL_TEXTURE_2D, color_);
-  g.TexImage2D(GL_TEXTURE_2D, 0, GL_RGBA32F, tw_, th_, 0, GL_RGBA, GL_FLOAT, nullptr);
-  g.TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
-  g.TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+  color_ = new_target_texture(g, GL_RGBA32F, GL_FLOAT, tw_, th_);
   g.GenRenderbuffers(1, &depth_);
   g.BindRenderbuffer(GL_RENDERBUFFER, depth_);
   g.RenderbufferStorage(GL_RENDERBUFFER, GL_DEPTH_COMPONENT24, tw_, th_);
   g.BindFramebuffer(GL_FRAMEBUFFER, fbo_);
   g.FramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, color_, 0);
   g.FramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER, depth_);
-  const GLenum status = g.CheckFramebufferStatus(GL_FRAMEBUFFER);
-  if (status != GL_FRAMEBUFFER_COMPLETE) {
-    char b[64];
-    snprintf(b, sizeof b, "scene framebuffer incomplete (status 0x%x)", status);
-    *err = b;
-    return false;
-  }
-  const GLenum e = g.GetError();
-  if (e != GL_NO_ERROR) {
-    char b[64];
-    snprintf(b, sizeof b, "GL error 0x%x while uploading the scene", e);
-    *err = b;
-    return false;
-  }
-  return true;
+  return gl_framebuffer_complete(g, "scene framebuffer", err) && gl_no_error(g, "while uploading the scene", err);
 }
 
 bool SceneGl::bind_draw(size_t i, GLuint program, bool production, std::string *err) {
@@ -181,14 +164,7 @@ bool SceneGl::draw_all(const std::vector<GLuint> &progs, bool production, int gb
     }
   }
   g.Disable(GL_DEPTH_TEST);
-  const GLenum e = g.GetError();
-  if (e != GL_NO_ERROR) {
-    char b[64];
-    snprintf(b, sizeof b, "GL error 0x%x while drawing the scene", e);
-    *err = b;
-    return false;
-  }
-  return true;
+  return gl_no_error(g, "while drawing the scene", err);
 }
 
 void SceneGl::warm(const std::atomic<int> *main_next) {

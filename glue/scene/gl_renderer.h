@@ -12,13 +12,12 @@
 #include "gl/float_target.h"
 #include "base/image.h"
 #include "scene/prepare.h"
+#include "base/noncopyable.h"
 
-class SceneGl {
+class SceneGl : NonCopyable {
  public:
   SceneGl(GlRenderer &r, Api api);
   ~SceneGl();
-  SceneGl(const SceneGl &) = delete;
-  SceneGl &operator=(const SceneGl &) = delete;
   // Compiles the variants (one program per unique variant), uploads geometry and textures.
   // *compile_ms receives the time of compiling and linking the programs.
   // target_w/h > 0: a smaller colour/depth target than the frame's (shader warm-up contexts).

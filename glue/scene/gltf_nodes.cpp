@@ -19,70 +19,35 @@ using tinygltf::Model;
 
 // ---------------------------------------------------------------------- accessors ---
 
-const char *type_name(int t) {
-  switch (t) {
-    case TINYGLTF_TYPE_SCALAR:
-      return "SCALAR";
-    case TINYGLTF_TYPE_VEC2:
-      return "VEC2";
-    case TINYGLTF_TYPE_VEC3:
-      return "VEC3";
-    case TINYGLTF_TYPE_VEC4:
-      return "VEC4";
-    case TINYGLTF_TYPE_MAT2:
-      return "MAT2";
-    case TINYGLTF_TYPE_MAT3:
-      return "MAT3";
-    case TINYGLTF_TYPE_MAT4:
-      return "MAT4";
-  }
-  return "unknown";
+// Accessor types and component types: the name errors give, and the components per element
+// or bytes per component this loader reads (0: a code no attribute accepts).
+struct GltfCode {
+  int code;
+  const char *name;
+  int n;
+};
+const GltfCode kTypes[] = {{TINYGLTF_TYPE_SCALAR, "SCALAR", 1}, {TINYGLTF_TYPE_VEC2, "VEC2", 2},
+                           {TINYGLTF_TYPE_VEC3, "VEC3", 3},     {TINYGLTF_TYPE_VEC4, "VEC4", 4},
+                           {TINYGLTF_TYPE_MAT2, "MAT2", 0},     {TINYGLTF_TYPE_MAT3, "MAT3", 0},
+                           {TINYGLTF_TYPE_MAT4, "MAT4", 0}};
+const GltfCode kComponents[] = {{TINYGLTF_COMPONENT_TYPE_BYTE, "BYTE", 0},
+                                {TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE, "UNSIGNED_BYTE", 1},
+                                {TINYGLTF_COMPONENT_TYPE_SHORT, "SHORT", 0},
+                                {TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT, "UNSIGNED_SHORT", 2},
+                                {TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT, "UNSIGNED_INT", 4},
+                                {TINYGLTF_COMPONENT_TYPE_FLOAT, "FLOAT", 4}};
+// The row of `code`; a row named "unknown" with n 0 when the table has none.
+template <size_t N>
+const GltfCode &code_row(const GltfCode (&table)[N], int code) {
+  static const GltfCode kUnknown = {-1, "unknown", 0};
+  for (const GltfCode &r : table)
+    if (r.code == code) return r;
+  return kUnknown;
 }
-
-const char *comp_name(int c) {
-  switch (c) {
-    case TINYGLTF_COMPONENT_TYPE_BYTE:
-      return "BYTE";
-    case TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE:
-      return "UNSIGNED_BYTE";
-    case TINYGLTF_COMPONENT_TYPE_SHORT:
-      return "SHORT";
-    case TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT:
-      return "UNSIGNED_SHORT";
-    case TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT:
-      return "UNSIGNED_INT";
-    case TINYGLTF_COMPONENT_TYPE_FLOAT:
-      return "FLOAT";
-  }
-  return "unknown";
-}
-
-int comp_size(int c) {
-  switch (c) {
-    case TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE:
-      return 1;
-    case TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT:
-      return 2;
-    case TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT:
-    case TINYGLTF_COMPONENT_TYPE_FLOAT:
-      return 4;
-  }
-  return 0;
-}
-
-int type_count(int t) {
-  switch (t) {
-    case TINYGLTF_TYPE_SCALAR:
-      return 1;
-    case TINYGLTF_TYPE_VEC2:
-      return 2;
-    case TINYGLTF_TYPE_VEC3:
-      return 3;
-    case TINYGLTF_TYPE_VEC4:
-      return 4;
-  }
-  return 0;
-}
+const char *type_name(int t) { return code_row(kTypes, t).name; }
+int type_count(int t) { return code_row(kTypes, t).n; }
+const char *comp_name(int c) { return code_row(kComponents, c).name; }
+int comp_size(int c) { return code_row(kComponents, c).n; }
 
 // What a use of an accessor accepts: one type; component types; normalized integers.
 struct AccessorUse {

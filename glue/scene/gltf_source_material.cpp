@@ -8,14 +8,43 @@ namespace {
 
 enum : int { MODEL = 1, WORLD = 2, BOTH = 3 };
 
-// One $-key: its JSON kind and where it goes in the material.
+// One $-key: the shaders that take it and where it goes in the material. Exactly one pointer is
+// set, and it says the key's JSON kind; numbers are checked against [lo, hi].
 struct Slot {
   const char *key;
-  char kind;  // 'b' bool, 'n' number, 'v' 3 numbers, 't' texture {"index": i}, 'i' integer
   int shaders;
-  double lo, hi;
-  void *field;
+  double lo = 0, hi = 0;
+  bool *flag = nullptr;                // true/false (or 0/1)
+  float *number = nullptr;             // a number
+  float *vec3 = nullptr;               // three numbers
+  int *integer = nullptr;              // an integer
+  SceneTextureRef *texture = nullptr;  // {"index": i}
 };
+Slot key_bool(const char *key, int shaders, bool *f) {
+  Slot s{key, shaders};
+  s.flag = f;
+  return s;
+}
+Slot key_number(const char *key, int shaders, double lo, double hi, float *f) {
+  Slot s{key, shaders, lo, hi};
+  s.number = f;
+  return s;
+}
+Slot key_vec3(const char *key, int shaders, double lo, double hi, float *f) {
+  Slot s{key, shaders, lo, hi};
+  s.vec3 = f;
+  return s;
+}
+Slot key_int(const char *key, int shaders, int lo, int hi, int *f) {
+  Slot s{key, shaders, static_cast<double>(lo), static_cast<double>(hi)};
+  s.integer = f;
+  return s;
+}
+Slot key_texture(const char *key, int shaders, SceneTextureRef *f) {
+  Slot s{key, shaders};
+  s.texture = f;
+  return s;
+}
 
 bool texture_ref(const tinygltf::Model &m, int index, const std::string &place, SceneTextureRef *out, Err &e) {
   if (index < 0 || static_cast<size_t>(index) >= m.textures.size())
@@ -58,36 +87,36 @@ bool read_source(const tinygltf::Model &m, const tinygltf::Value &src, const std
   mat->shader = shader == MODEL ? SceneShader::Model : SceneShader::World;
   bool mask_alpha_normal = false, mask_alpha_base = false;
   const Slot slots[] = {
-      {"$halflambert", 'b', MODEL, 0, 0, &mat->half_lambert},
-      {"$phong", 'b', MODEL, 0, 0, &mat->phong},
-      {"$phongexponent", 'n', MODEL, 0.01, 10000, &mat->phong_exponent},
-      {"$phongexponenttexture", 't', MODEL, 0, 0, &mat->phong_exponent_texture},
-      {"$phongexponentfactor", 'n', MODEL, 0, 10000, &mat->phong_exponent_factor},
-      {"$phongboost", 'n', MODEL, 0, 1000, &mat->phong_boost},
-      {"$phongfresnelranges", 'v', MODEL, 0, 100, mat->phong_fresnel_ranges},
-      {"$phongtint", 'v', MODEL, 0, 1000, mat->phong_tint},
-      {"$phongalbedotint", 'b', MODEL, 0, 0, &mat->phong_albedo_tint},
-      {"$basemapalphaphongmask", 'b', MODEL, 0, 0, &mat->base_alpha_phong_mask},
-      {"$invertphongmask", 'b', MODEL, 0, 0, &mat->invert_phong_mask},
-      {"$rimlight", 'b', MODEL, 0, 0, &mat->rim_light},
-      {"$rimlightexponent", 'n', MODEL, 0.01, 10000, &mat->rim_exponent},
-      {"$rimlightboost", 'n', MODEL, 0, 1000, &mat->rim_boost},
-      {"$rimmask", 'n', MODEL, 0, 1, &mat->rim_mask},
-      {"$lightwarptexture", 't', MODEL, 0, 0, &mat->light_warp_texture},
-      {"$envmapfresnel", 'n', MODEL, 0, 1, &mat->envmap_fresnel},
-      {"$selfillum", 'b', MODEL, 0, 0, &mat->self_illum},
-      {"$selfillumtint", 'v', MODEL, 0, 100000, mat->self_illum_tint},
-      {"$envmap", 'b', BOTH, 0, 0, &mat->envmap},
-      {"$envmapscale", 'n', BOTH, 0, 1000, &mat->envmap_scale},
-      {"$envmaptint", 'v', BOTH, 0, 1000, mat->envmap_tint},
-      {"probe", 'i', BOTH, 0, 1023, &mat->probe},
-      {"$ssbump", 'b', WORLD, 0, 0, &mat->ssbump},
-      {"$envmapmask", 't', WORLD, 0, 0, &mat->envmap_mask_texture},
-      {"$normalmapalphaenvmapmask", 'b', WORLD, 0, 0, &mask_alpha_normal},
-      {"$basealphaenvmapmask", 'b', WORLD, 0, 0, &mask_alpha_base},
-      {"$envmapcontrast", 'n', WORLD, 0, 1, &mat->envmap_contrast},
-      {"$envmapsaturation", 'n', WORLD, 0, 1, &mat->envmap_saturation},
-      {"$fresnelreflection", 'n', WORLD, 0, 1, &mat->fresnel_reflection},
+      key_bool("$halflambert", MODEL, &mat->half_lambert),
+      key_bool("$phong", MODEL, &mat->phong),
+      key_number("$phongexponent", MODEL, 0.01, 10000, &mat->phong_exponent),
+      key_texture("$phongexponenttexture", MODEL, &mat->phong_exponent_texture),
+      key_number("$phongexponentfactor", MODEL, 0, 10000, &mat->phong_exponent_factor),
+      key_number("$phongboost", MODEL, 0, 1000, &mat->phong_boost),
+      key_vec3("$phongfresnelranges", MODEL, 0, 100, mat->phong_fresnel_ranges),
+      key_vec3("$phongtint", MODEL, 0, 1000, mat->phong_tint),
+      key_bool("$phongalbedotint", MODEL, &mat->phong_albedo_tint),
+      key_bool("$basemapalphaphongmask", MODEL, &mat->base_alpha_phong_mask),
+      key_bool("$invertphongmask", MODEL, &mat->invert_phong_mask),
+      key_bool("$rimlight", MODEL, &mat->rim_light),
+      key_number("$rimlightexponent", MODEL, 0.01, 10000, &mat->rim_exponent),
+      key_number("$rimlightboost", MODEL, 0, 1000, &mat->rim_boost),
+      key_number("$rimmask", MODEL, 0, 1, &mat->rim_mask),
+      key_texture("$lightwarptexture", MODEL, &mat->light_warp_texture),
+      key_number("$envmapfresnel", MODEL, 0, 1, &mat->envmap_fresnel),
+      key_bool("$selfillum", MODEL, &mat->self_illum),
+      key_vec3("$selfillumtint", MODEL, 0, 100000, mat->self_illum_tint),
+      key_bool("$envmap", BOTH, &mat->envmap),
+      key_number("$envmapscale", BOTH, 0, 1000, &mat->envmap_scale),
+      key_vec3("$envmaptint", BOTH, 0, 1000, mat->envmap_tint),
+      key_int("probe", BOTH, 0, 1023, &mat->probe),
+      key_bool("$ssbump", WORLD, &mat->ssbump),
+      key_texture("$envmapmask", WORLD, &mat->envmap_mask_texture),
+      key_bool("$normalmapalphaenvmapmask", WORLD, &mask_alpha_normal),
+      key_bool("$basealphaenvmapmask", WORLD, &mask_alpha_base),
+      key_number("$envmapcontrast", WORLD, 0, 1, &mat->envmap_contrast),
+      key_number("$envmapsaturation", WORLD, 0, 1, &mat->envmap_saturation),
+      key_number("$fresnelreflection", WORLD, 0, 1, &mat->fresnel_reflection),
   };
   bool explicit_half_lambert = false;
   for (const std::string &k : src.Keys()) {
@@ -101,30 +130,22 @@ bool read_source(const tinygltf::Model &m, const tinygltf::Value &src, const std
     const std::string kp = place + "." + k;
     const tinygltf::Value &v = src.Get(k);
     double d[3];
-    switch (s->kind) {
-      case 'b':
-        if (!read_bool(v, kp, static_cast<bool *>(s->field), e)) return false;
-        break;
-      case 'n':
-        if (!read_number(v, kp, s->lo, s->hi, d, e)) return false;
-        *static_cast<float *>(s->field) = static_cast<float>(d[0]);
-        break;
-      case 'v':
-        if (!read_vec(v, kp, 3, s->lo, s->hi, d, e)) return false;
-        for (int i = 0; i < 3; ++i) static_cast<float *>(s->field)[i] = static_cast<float>(d[i]);
-        break;
-      case 'i':
-        if (!read_int(v, kp, static_cast<int>(s->lo), static_cast<int>(s->hi), static_cast<int *>(s->field), e))
-          return false;
-        break;
-      case 't': {
-        int idx = -1;
-        if (!check_keys(v, kp, {"index"}, e)) return false;
-        if (!v.Has("index")) return e.fail(kp, "missing \"index\"");
-        if (!read_int(v.Get("index"), kp + ".index", -1000000, 1000000, &idx, e)) return false;
-        if (!texture_ref(m, idx, kp + ".index", static_cast<SceneTextureRef *>(s->field), e)) return false;
-        break;
-      }
+    if (s->flag) {
+      if (!read_bool(v, kp, s->flag, e)) return false;
+    } else if (s->number) {
+      if (!read_number(v, kp, s->lo, s->hi, d, e)) return false;
+      *s->number = static_cast<float>(d[0]);
+    } else if (s->vec3) {
+      if (!read_vec(v, kp, 3, s->lo, s->hi, d, e)) return false;
+      for (int i = 0; i < 3; ++i) s->vec3[i] = static_cast<float>(d[i]);
+    } else if (s->integer) {
+      if (!read_int(v, kp, static_cast<int>(s->lo), static_cast<int>(s->hi), s->integer, e)) return false;
+    } else {
+      int idx = -1;
+      if (!check_keys(v, kp, {"index"}, e)) return false;
+      if (!v.Has("index")) return e.fail(kp, "missing \"index\"");
+      if (!read_int(v.Get("index"), kp + ".index", -1000000, 1000000, &idx, e)) return false;
+      if (!texture_ref(m, idx, kp + ".index", s->texture, e)) return false;
     }
     if (k == "$halflambert") explicit_half_lambert = true;
   }

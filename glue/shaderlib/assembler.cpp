@@ -9,30 +9,14 @@
 #include <set>
 #include <sstream>
 
+#include "base/enum_names.h"
 #include "shaderlib/shader_sources.h"
 
-const char *target_name(Target t) {
-  switch (t) {
-    case Target::ESSL100:
-      return "essl100";
-    case Target::ESSL300:
-      return "essl300";
-    case Target::GLSL330:
-      return "glsl330";
-  }
-  return "?";
-}
-bool parse_target(const std::string &s, Target *out) {
-  if (s == "essl100")
-    *out = Target::ESSL100;
-  else if (s == "essl300")
-    *out = Target::ESSL300;
-  else if (s == "glsl330")
-    *out = Target::GLSL330;
-  else
-    return false;
-  return true;
-}
+static const EnumName<Target> kTargetNames[] = {
+    {Target::ESSL100, "essl100"}, {Target::ESSL300, "essl300"}, {Target::GLSL330, "glsl330"}};
+
+const char *target_name(Target t) { return enum_name(kTargetNames, t); }
+bool parse_target(const std::string &s, Target *out) { return enum_parse(kTargetNames, s, out); }
 
 bool shader_library_read(const std::string &name, std::string *out) {
   if (const char *dir = std::getenv("TIERSHADE_SHADER_DIR")) {

@@ -5,30 +5,13 @@
 #include <cctype>
 #include <sstream>
 
+#include "base/enum_names.h"
 #include "shaderlib/assembler.h"
 
-const char *tier_name(Tier t) {
-  switch (t) {
-    case Tier::PS20:
-      return "ps20";
-    case Tier::PS2B:
-      return "ps2b";
-    case Tier::SM3:
-      return "sm3";
-  }
-  return "?";
-}
-bool parse_tier(const std::string &s, Tier *out) {
-  if (s == "ps20")
-    *out = Tier::PS20;
-  else if (s == "ps2b")
-    *out = Tier::PS2B;
-  else if (s == "sm3")
-    *out = Tier::SM3;
-  else
-    return false;
-  return true;
-}
+static const EnumName<Tier> kTierNames[] = {{Tier::PS20, "ps20"}, {Tier::PS2B, "ps2b"}, {Tier::SM3, "sm3"}};
+
+const char *tier_name(Tier t) { return enum_name(kTierNames, t); }
+bool parse_tier(const std::string &s, Tier *out) { return enum_parse(kTierNames, s, out); }
 std::vector<Tier> all_tiers() { return {Tier::PS20, Tier::PS2B, Tier::SM3}; }
 
 int Variant::value(const std::string &combo, int fallback) const {
@@ -48,6 +31,25 @@ std::string Variant::name() const {
 
 // ---- expression evaluator: precedence climbing over ints ----
 namespace {
+// The binary operators by precedence level, loosest first; within a level a two-character
+// token comes before its one-character prefix ("<=" before "<"). Operands and results are
+// long long, so that checked() sees an overflow before it is narrowed back to int.
+using Wide = long long;
+struct BinOp {
+  const char *token;
+  Wide (*apply)(Wide a, Wide b);
+};
+const BinOp kLevels[][6] = {
+    {{"||", [](Wide a, Wide b) -> Wide { return a || b; }}},
+    {{"&&", [](Wide a, Wide b) -> Wide { return a && b; }}},
+    {{"==", [](Wide a, Wide b) -> Wide { return a == b; }}, {"!=", [](Wide a, Wide b) -> Wide { return a != b; }},
+     {"<=", [](Wide a, Wide b) -> Wide { return a <= b; }}, {">=", [](Wide a, Wide b) -> Wide { return a >= b; }},
+     {"<", [](Wide a, Wide b) -> Wide { return a < b; }}, {">", [](Wide a, Wide b) -> Wide { return a > b; }}},
+    {{"+", [](Wide a, Wide b) -> Wide { return a + b; }}, {"-", [](Wide a, Wide b) -> Wide { return a - b; }}},
+    {{"*", [](Wide a, Wide b) -> Wide { return a * b; }}},
+};
+constexpr size_t kLevelCount = sizeof kLevels / sizeof kLevels[0];
+
 struct Parser {
   const std::string &s;
   const std::map<std::string, int> &vars;
@@ -68,7 +70,7 @@ struct Parser {
   bool primary(int *v) {
     ws();
     if (eat("(")) {
-      if (!orr(v)) return false;
+      if (!expression(v)) return false;
       if (!eat(")")) return fail("')' expected");
       return true;
     }
@@ -109,74 +111,25 @@ struct Parser {
     *v = static_cast<int>(x);
     return true;
   }
-  bool mul(int *v) {
-    if (!primary(v)) return false;
-    while (eat("*")) {
-      int r;
-      if (!primary(&r)) return false;
-      if (!checked(static_cast<long long>(*v) * r, v)) return false;
-    }
-    return true;
-  }
-  bool add(int *v) {
-    if (!mul(v)) return false;
+  // One binary level after another, from `level` down to the primaries (kLevels), each
+  // left-associative.
+  bool binary(size_t level, int *v) {
+    if (level == kLevelCount) return primary(v);
+    if (!binary(level + 1, v)) return false;
     for (;;) {
+      const BinOp *op = nullptr;
+      for (const BinOp &o : kLevels[level])
+        if (o.token && eat(o.token)) {
+          op = &o;
+          break;
+        }
+      if (!op) return true;
       int r;
-      if (eat("+")) {
-        if (!mul(&r)) return false;
-        if (!checked(static_cast<long long>(*v) + r, v)) return false;
-      } else if (eat("-")) {
-        if (!mul(&r)) return false;
-        if (!checked(static_cast<long long>(*v) - r, v)) return false;
-      } else {
-        return true;
-      }
+      if (!binary(level + 1, &r)) return false;
+      if (!checked(op->apply(*v, r), v)) return false;
     }
   }
-  bool rel(int *v) {
-    if (!add(v)) return false;
-    for (;;) {
-      int r;
-      if (eat("==")) {
-        if (!add(&r)) return false;
-        *v = *v == r;
-      } else if (eat("!=")) {
-        if (!add(&r)) return false;
-        *v = *v != r;
-      } else if (eat("<=")) {
-        if (!add(&r)) return false;
-        *v = *v <= r;
-      } else if (eat(">=")) {
-        if (!add(&r)) return false;
-        *v = *v >= r;
-      } else if (eat("<")) {
-        if (!add(&r)) return false;
-        *v = *v < r;
-      } else if (eat(">")) {
-        if (!add(&r)) return false;
-        *v = *v > r;
-      } else
-        return true;
-    }
-  }
-  bool andd(int *v) {
-    if (!rel(v)) return false;
-    while (eat("&&")) {
-      int r;
-      if (!rel(&r)) return false;
-      *v = *v && r;
-    }
-    return true;
-  }
-  bool orr(int *v) {
-    if (!andd(v)) return false;
-    while (eat("||")) {
-      int r;
-      if (!andd(&r)) return false;
-      *v = *v || r;
-    }
-    return true;
-  }
+  bool expression(int *v) { return binary(0, v); }
   bool fail(const std::string &m) {
     if (err.empty()) err = m + " at column " + std::to_string(p + 1);
     return false;
@@ -189,7 +142,7 @@ bool tier_in(Tier t, const std::vector<Tier> &v) { return v.empty() || std::find
 bool eval_expr(const std::string &expr, const std::map<std::string, int> &vars, int *out, std::string *err) {
   Parser ps{expr, vars, 0, std::string()};
   int v = 0;
-  if (!ps.orr(&v)) {
+  if (!ps.expression(&v)) {
     *err = ps.err;
     return false;
   }

@@ -102,6 +102,25 @@ json_keys() {
   if [ -z "$missing" ]; then pass "$name"; else fail "$name" "objects without key(s):$missing"; fi
 }
 
+# json_checks WHAT STATUSES KEY...: after `run <WHAT> --json ...`: the status is one of STATUSES,
+# stdout (kept as $TMP/WHAT.json) is one JSON value, every object has every KEY.
+json_checks() {
+  local what=$1 statuses=$2
+  shift 2
+  cp "$OUT" "$TMP/$what.json"
+  case " $statuses " in
+    *" $RC "*) pass "${what}_json_status" ;;
+    *) fail "${what}_json_status" "status $RC, want one of $statuses: $(err1)" ;;
+  esac
+  if msg=$(json_ok "$TMP/$what.json"); then pass "${what}_json_valid"; else fail "${what}_json_valid" "$msg"; fi
+  json_keys "${what}_json_keys" "$TMP/$what.json" "$@"
+}
+
+# json_objects NAME FILE TEXT WHY: every object line of FILE contains TEXT.
+json_objects() {
+  if ! grep '^ *{' "$2" | grep -qvF -- "$3"; then pass "$1"; else fail "$1" "$4"; fi
+}
+
 ML=model_lighting
 
 # ---------------------------------------------------------------- bad input
@@ -162,18 +181,17 @@ expect_fail probe_missing_input     2 "$MISSING"                              --
 mkdir -p "$TMP/a_directory"
 expect_fail probe_input_is_directory 2 "$TMP/a_directory"                     -- probe --shader $ML --variant 0 --input "$TMP/a_directory"
 
-BADSLOT="$TMP/bad_slot.txt"
-printf '# pixel input\nnormal 0 0 1\nbogus_slot 1 2 3\n' > "$BADSLOT"
-expect_fail probe_input_unknown_slot 2 "$BADSLOT:3:|'bogus_slot'"             -- probe --shader $ML --variant 0 --input "$BADSLOT"
-BADNUM="$TMP/bad_number.txt"
-printf 'normal 0 0 1\n\nposition 1.0 2.x 3\n' > "$BADNUM"
-expect_fail probe_input_malformed_number 2 "$BADNUM:3:|position|2.x"          -- probe --shader $ML --variant 0 --input "$BADNUM"
-TOOMANY="$TMP/too_many.txt"
-printf 'normal 1 2 3 4 5\n' > "$TOOMANY"
-expect_fail probe_input_too_many_numbers 2 "$TOOMANY:1:|normal"               -- probe --shader $ML --variant 0 --input "$TOOMANY"
-NOVAL="$TMP/no_value.txt"
-printf 'uv   # nothing\n' > "$NOVAL"
-expect_fail probe_input_no_numbers  2 "$NOVAL:1:|uv"                          -- probe --shader $ML --variant 0 --input "$NOVAL"
+# bad_input NAME TEXT PATTERNS: probe --input refuses a file holding TEXT (printf format) with
+# a message naming the file and the place; @ in PATTERNS stands for the file's path.
+bad_input() {
+  local f="$TMP/$1.txt"
+  printf "$2" > "$f"
+  expect_fail "probe_input_$1" 2 "${3//@/$f}" -- probe --shader $ML --variant 0 --input "$f"
+}
+bad_input unknown_slot       '# pixel input\nnormal 0 0 1\nbogus_slot 1 2 3\n' "@:3:|'bogus_slot'"
+bad_input malformed_number   'normal 0 0 1\n\nposition 1.0 2.x 3\n'           "@:3:|position|2.x"
+bad_input too_many_numbers   'normal 1 2 3 4 5\n'                              "@:1:|normal"
+bad_input no_numbers         'uv   # nothing\n'                                "@:1:|uv"
 expect_fail probe_set_without_eq    2 "--set|'normal'"                        -- probe --shader $ML --variant 0 --set normal
 expect_fail probe_set_unknown_slot  2 "--set|'nrm'"                           -- probe --shader $ML --variant 0 --set nrm=0,0,1
 expect_fail probe_set_malformed     2 "--set|normal|1,,x"                     -- probe --shader $ML --variant 0 --set normal=1,,x
@@ -254,10 +272,7 @@ fi
 
 run variants --json
 if ! crashed variants_json; then
-  cp "$OUT" "$TMP/variants.json"
-  if [ "$RC" -ne 0 ]; then fail variants_json_status "status $RC: $(err1)"; else pass variants_json_status; fi
-  if msg=$(json_ok "$TMP/variants.json"); then pass variants_json_valid; else fail variants_json_valid "$msg"; fi
-  json_keys variants_json_keys "$TMP/variants.json" shader variant tier defines
+  json_checks variants 0 shader variant tier defines
   objs=$(grep -c '^ *{' "$TMP/variants.json")
   if [ "$objs" = "$TOTAL" ]; then pass variants_json_count_matches_count
   else fail variants_json_count_matches_count "$objs objects, --count says $TOTAL"; fi
@@ -276,33 +291,24 @@ fi
 
 run budget --json --tier ps20 --shader $ML
 if ! crashed budget_json; then
-  cp "$OUT" "$TMP/budget.json"
   # documented: status 1 when a variant is over budget, 0 otherwise
-  if [ "$RC" -eq 0 ] || [ "$RC" -eq 1 ]; then pass budget_json_status; else fail budget_json_status "status $RC: $(err1)"; fi
-  if msg=$(json_ok "$TMP/budget.json"); then pass budget_json_valid; else fail budget_json_valid "$msg"; fi
-  json_keys budget_json_keys "$TMP/budget.json" shader variant tier alu tex total limit_alu limit_tex limit_total
+  json_checks budget "0 1" shader variant tier alu tex total limit_alu limit_tex limit_total
   objs=$(grep -c '^ *{' "$TMP/budget.json")
   if [ "$objs" -eq 12 ]; then pass budget_json_one_object_per_variant; else fail budget_json_one_object_per_variant "$objs objects, want 12"; fi
-  if ! grep '^ *{' "$TMP/budget.json" | grep -qv '"tier":"ps20"'; then pass budget_json_tier_filter
-  else fail budget_json_tier_filter "objects of another tier"; fi
-  if ! grep '^ *{' "$TMP/budget.json" | grep -qv '"limit_alu":64,"limit_tex":32,"limit_total":96'; then
-    pass budget_json_ps20_limits
-  else fail budget_json_ps20_limits "ps20 limits are not 64/32/96"; fi
+  json_objects budget_json_tier_filter "$TMP/budget.json" '"tier":"ps20"' "objects of another tier"
+  json_objects budget_json_ps20_limits "$TMP/budget.json" '"limit_alu":64,"limit_tex":32,"limit_total":96' \
+    "ps20 limits are not 64/32/96"
 fi
 
 run conform --json --size 4 --tier ps20 --backend osmesa --shader $ML
 if ! crashed conform_json; then
-  cp "$OUT" "$TMP/conform.json"
-  if [ "$RC" -eq 0 ]; then pass conform_json_status; else fail conform_json_status "status $RC: $(err1)"; fi
-  if msg=$(json_ok "$TMP/conform.json"); then pass conform_json_valid; else fail conform_json_valid "$msg"; fi
-  json_keys conform_json_keys "$TMP/conform.json" shader variant tier backend api pixels mismatches max_ulp max_abs
+  json_checks conform 0 shader variant tier backend api pixels mismatches max_ulp max_abs
   objs=$(grep -c '^ *{' "$TMP/conform.json")
   # one object per variant (12 in ps20) and input set (random, hard)
   if [ "$objs" -eq 24 ]; then pass conform_json_object_count; else fail conform_json_object_count "$objs objects, want 24"; fi
-  if ! grep '^ *{' "$TMP/conform.json" | grep -qv '"backend":"osmesa","api":"gl33"'; then pass conform_json_backend_filter
-  else fail conform_json_backend_filter "objects of another backend/api"; fi
-  if ! grep '^ *{' "$TMP/conform.json" | grep -qv '"pixels":16,'; then pass conform_json_pixels
-  else fail conform_json_pixels "pixels is not 16 for --size 4"; fi
+  json_objects conform_json_backend_filter "$TMP/conform.json" '"backend":"osmesa","api":"gl33"' \
+    "objects of another backend/api"
+  json_objects conform_json_pixels "$TMP/conform.json" '"pixels":16,' "pixels is not 16 for --size 4"
 fi
 
 # probe_ok NAME ARGS...: status 0 and "agree bit for bit"

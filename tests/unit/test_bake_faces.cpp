@@ -121,6 +121,5 @@ void attenuation() {
 int main() {
   ts_math_init();
   for (void (*part)() : {faces, pool, cube, attenuation}) part();
-  printf("%d passed, %d failed\n", g_passed, g_failed);
-  return g_failed ? 1 : 0;
+  return finish();
 }

@@ -62,6 +62,5 @@ void test_srgb() {
 int main() {
   test_median();
   test_srgb();
-  printf("test_base: %d passed, %d failed\n", g_passed, g_failed);
-  return g_failed ? 1 : 0;
+  return finish();
 }

@@ -38,22 +38,32 @@ int op(const BudgetCounts &c, const std::string &name) {
   return it == c.by_op.end() ? 0 : it->second;
 }
 
+// The by_op counts a check wants: (op name, count).
+using OpCounts = std::vector<std::pair<std::string, int>>;
+
 // Counts `src` and checks alu/tex (pass -1 to skip one), plus the invariant
-// that by_op sums to total().  Returns the counts for further checks.
-BudgetCounts expect(const std::string &name, const std::string &src, int alu, int tex) {
+// that by_op sums to total(); with `ops`, then a check `ops_name` that each op has its count.
+// Returns the counts for further checks.
+BudgetCounts expect(const std::string &name, const std::string &src, int alu, int tex, const OpCounts &ops = {},
+                    const std::string &ops_name = "") {
   BudgetCounts c;
   std::string err;
   bool ok = budget_count_fragment(src, &c, &err);
   if (!ok) {
     check(false, name, "count failed: " + err);
-    return c;
+  } else {
+    int sum = 0;
+    for (const auto &kv : c.by_op) sum += kv.second;
+    bool good = (alu < 0 || c.alu == alu) && (tex < 0 || c.tex == tex) && sum == c.total();
+    std::ostringstream want;
+    want << "want alu=" << alu << " tex=" << tex << ", got " << describe(c) << " (by_op sum " << sum << ")";
+    check(good, name, want.str());
   }
-  int sum = 0;
-  for (const auto &kv : c.by_op) sum += kv.second;
-  bool good = (alu < 0 || c.alu == alu) && (tex < 0 || c.tex == tex) && sum == c.total();
-  std::ostringstream want;
-  want << "want alu=" << alu << " tex=" << tex << ", got " << describe(c) << " (by_op sum " << sum << ")";
-  check(good, name, want.str());
+  if (!ops.empty()) {
+    bool ops_ok = ok;
+    for (const auto &o : ops) ops_ok = ops_ok && op(c, o.first) == o.second;
+    check(ops_ok, ops_name, describe(c));
+  }
   return c;
 }
 
@@ -115,20 +125,23 @@ out vec4 o;
 std::string shader(const std::string &body) { return kHead + "void main() {\n" + body + "\n}\n"; }
 
 void test_weights() {
-  BudgetCounts c;
-  c = expect("scalar pow = 3 (+1 output mov)", shader("o = vec4(pow(v_a.x, u_e));"), 4, 0);
-  check(op(c, "Pow") == 3, "scalar pow by_op", describe(c));
-  c = expect("vec3 pow = 3x3 = 9", shader("o = vec4(pow(v_a.xyz, vec3(u_e)), v_a.w);"), 10, 0);
-  check(op(c, "Pow") == 9, "vec3 pow by_op", describe(c));
-  c = expect("normalize+dot+max+texture+scalar pow",
-             shader("vec3 n = normalize(v_a.xyz);\n"
-                    "float ndl = max(dot(n, u_l), 0.0);\n"
-                    "vec4 t = texture(s, v_uv);\n"
-                    "o = t * pow(ndl, u_e);"),
-             3 + 1 + 1 + 3 + 1 + 1, 1);
-  check(op(c, "Normalize") == 3 && op(c, "OpDot") == 1 && op(c, "FMax") == 1 && op(c, "Pow") == 3 &&
-            op(c, "OpImageSampleImplicitLod") == 1 && op(c, "output mov (oC#/oDepth)") == 1,
-        "normalize/dot/max/pow by_op", describe(c));
+  expect("scalar pow = 3 (+1 output mov)", shader("o = vec4(pow(v_a.x, u_e));"), 4, 0,
+         {{"Pow", 3}}, "scalar pow by_op");
+  expect("vec3 pow = 3x3 = 9", shader("o = vec4(pow(v_a.xyz, vec3(u_e)), v_a.w);"), 10, 0,
+         {{"Pow", 9}}, "vec3 pow by_op");
+  expect("normalize+dot+max+texture+scalar pow",
+         shader("vec3 n = normalize(v_a.xyz);\n"
+                "float ndl = max(dot(n, u_l), 0.0);\n"
+                "vec4 t = texture(s, v_uv);\n"
+                "o = t * pow(ndl, u_e);"),
+         3 + 1 + 1 + 3 + 1 + 1, 1,
+         {{"Normalize", 3},
+          {"OpDot", 1},
+          {"FMax", 1},
+          {"Pow", 3},
+          {"OpImageSampleImplicitLod", 1},
+          {"output mov (oC#/oDepth)", 1}},
+         "normalize/dot/max/pow by_op");
   expect("sin(vec2) = 2 sincos = 16", shader("o = vec4(sin(v_a.xy), v_a.zw);"), 17, 0);
   expect("exp2/log2/inversesqrt per component", shader("o = exp2(v_a) + log2(v_b) + inversesqrt(v_c);"),
          4 + 4 + 4 + 2 + 1, 0);
@@ -144,17 +157,16 @@ void test_weights() {
 }
 
 void test_fusion_and_modifiers() {
-  BudgetCounts c;
-  c = expect("mad fusion: vec*scalar + vec = 1", shader("o = v_a * v_b.x + v_c;"), 1 + 1, 0);
-  check(op(c, "OpVectorTimesScalar") == 0, "mad fusion leaves no mul", describe(c));
+  expect("mad fusion: vec*scalar + vec = 1", shader("o = v_a * v_b.x + v_c;"), 1 + 1, 0,
+         {{"OpVectorTimesScalar", 0}}, "mad fusion leaves no mul");
   expect("mad fusion: vec*vec + vec (Fma) = 1", shader("o = v_a * v_b + v_c;"), 1 + 1, 0);
   expect("no fusion when the mul has two uses", shader("vec4 m = v_a * v_b.x;\no = (m + v_c) * m.yzwx;"), 1 + 1 + 1 + 1,
          0);
   expect("an add absorbs one mul only", shader("o = v_a * v_b.x + v_c * v_b.y;"), 1 + 1 + 1, 0);
-  c = expect("dp2add: vec2 dot + add = 2", shader("o = vec4(dot(v_a.xy, v_b.xy) + v_c.x);"), 2 + 1, 0);
-  check(op(c, "OpFAdd") == 0 && op(c, "OpDot") == 2, "dp2add by_op", describe(c));
-  c = expect("_sat: clamp(mad, 0, 1) is free", shader("o = clamp(v_a * v_b + v_c, 0.0, 1.0);"), 1 + 1, 0);
-  check(op(c, "FClamp") == 0, "_sat by_op", describe(c));
+  expect("dp2add: vec2 dot + add = 2", shader("o = vec4(dot(v_a.xy, v_b.xy) + v_c.x);"), 2 + 1, 0,
+         {{"OpFAdd", 0}, {"OpDot", 2}}, "dp2add by_op");
+  expect("_sat: clamp(mad, 0, 1) is free", shader("o = clamp(v_a * v_b + v_c, 0.0, 1.0);"), 1 + 1, 0,
+         {{"FClamp", 0}}, "_sat by_op");
   expect("clamp(input, 0, 1) = mov_sat 1", shader("o = clamp(v_a, 0.0, 1.0);"), 1 + 1, 0);
   expect("_sat on each lane: clamp(vec3(dot, dot, dot), 0, 1) is free",
          shader("vec3 d = clamp(vec3(dot(v_a.xyz, v_b.xyz), dot(v_a.xyz, v_c.xyz), dot(v_b.xyz, v_c.xyz)), "
@@ -163,18 +175,16 @@ void test_fusion_and_modifiers() {
   expect("clamp(x, 0.2, 0.8) = max+min 2", shader("o = clamp(v_a * v_b, 0.2, 0.8);"), 1 + 2 + 1, 0);
   expect("divide by scalar uniform = rcp+mul 2", shader("o = v_a / u_e;"), 2 + 1, 0);
   expect("divide vec4 by vec4 = 4 rcp + mul", shader("o = v_a / v_b;"), 4 + 1 + 1, 0);
-  c = expect("vec4(rgb, 1.0) costs a mov for the constant lane", shader("o = vec4(v_a.xyz * v_b.x, 1.0);"), 1 + 1 + 1,
-             0);
-  check(op(c, "OpCompositeConstruct (constant lanes)") == 1, "constant-lane mov by_op", describe(c));
+  expect("vec4(rgb, 1.0) costs a mov for the constant lane", shader("o = vec4(v_a.xyz * v_b.x, 1.0);"), 1 + 1 + 1,
+         0, {{"OpCompositeConstruct (constant lanes)", 1}}, "constant-lane mov by_op");
 }
 
 void test_control_flow() {
-  BudgetCounts c;
-  c = expect("constant loop of 4 taps is unrolled",
-             shader("vec4 acc = vec4(0.0);\n"
-                    "for (int i = 0; i < 4; i++) acc += texture(s, v_uv + u_off[i].xy) * u_off[i].z;\n"
-                    "o = acc;"),
-             4 * 2 + 1, 4);
+  expect("constant loop of 4 taps is unrolled",
+         shader("vec4 acc = vec4(0.0);\n"
+                "for (int i = 0; i < 4; i++) acc += texture(s, v_uv + u_off[i].xy) * u_off[i].z;\n"
+                "o = acc;"),
+         4 * 2 + 1, 4);
   expect("nested loops 3x2 taps",
          shader("vec4 a = vec4(0.0);\n"
                 "for (int y = 0; y < 3; ++y) for (int x = 0; x < 2; ++x)\n"
@@ -196,27 +206,25 @@ void test_control_flow() {
                       "for (int i = 0; i < u_n; i++) a += texture(s, v_uv * float(i));\n"
                       "o = a;"),
                "unbounded loop");
-  c = expect("discard = texkill (1 tex) + compare",
-             shader("vec4 t = texture(s, v_uv);\nif (t.a < 0.5) discard;\no = t;"), 1 + 1, 2);
-  check(op(c, "OpKill") == 1, "texkill by_op", describe(c));
+  expect("discard = texkill (1 tex) + compare",
+         shader("vec4 t = texture(s, v_uv);\nif (t.a < 0.5) discard;\no = t;"), 1 + 1, 2,
+         {{"OpKill", 1}}, "texkill by_op");
   expect("discard on a compare with 0 needs no add",
          shader("vec4 t = texture(s, v_uv);\nif (t.a < 0.0) discard;\no = t;"), 1, 2);
-  c = expect("if/else: both sides counted + phi cmp",
-             shader("vec3 c;\n"
-                    "if (v_a.z > u_e) c = normalize(v_a.xyz); else c = texture(s, v_uv).rgb * 2.0;\n"
-                    "o = vec4(c, v_a.w);"),
-             1 + 3 + 1 + 1 + 1, 1);
-  check(op(c, "OpPhi") == 1, "if/else phi by_op", describe(c));
-  c = expect("switch: case compares + (k-1) cmps at the merge",
-             shader("vec4 a = v_a;\n"
-                    "switch (u_n) { case 0: a *= 2.0; break; case 1: a = normalize(a); break; "
-                    "default: a = sqrt(a); }\n"
-                    "o = a;"),
-             1 + 3 + 8 + 1 + 2 + 1, 0);
-  check(op(c, "OpPhi") == 2 && op(c, "OpSwitch") == 1, "switch by_op", describe(c));
-  c = expect("early return: output written on two paths needs a cmp",
-             shader("if (v_a.x > 0.5) { o = v_a; return; }\no = texture(s, v_uv);"), 1 + 1 + 1, 1);
-  check(op(c, "output merge cmp") == 1, "early return by_op", describe(c));
+  expect("if/else: both sides counted + phi cmp",
+         shader("vec3 c;\n"
+                "if (v_a.z > u_e) c = normalize(v_a.xyz); else c = texture(s, v_uv).rgb * 2.0;\n"
+                "o = vec4(c, v_a.w);"),
+         1 + 3 + 1 + 1 + 1, 1, {{"OpPhi", 1}}, "if/else phi by_op");
+  expect("switch: case compares + (k-1) cmps at the merge",
+         shader("vec4 a = v_a;\n"
+                "switch (u_n) { case 0: a *= 2.0; break; case 1: a = normalize(a); break; "
+                "default: a = sqrt(a); }\n"
+                "o = a;"),
+         1 + 3 + 8 + 1 + 2 + 1, 0, {{"OpPhi", 2}, {"OpSwitch", 1}}, "switch by_op");
+  expect("early return: output written on two paths needs a cmp",
+         shader("if (v_a.x > 0.5) { o = v_a; return; }\no = texture(s, v_uv);"), 1 + 1 + 1, 1,
+         {{"output merge cmp", 1}}, "early return by_op");
   expect("two outputs = two movs",
          "#version 330\nin vec4 v_a;\nlayout(location = 0) out vec4 o0;\nlayout(location = 1) out vec4 o1;\n"
          "void main() { o0 = v_a * 2.0; o1 = v_a + 1.0; }\n",
@@ -403,6 +411,5 @@ int main(int argc, char **argv) {
   test_table();
   test_nir(fixtures);
   std::cout.flush();
-  printf("%d passed, %d failed\n", g_passed, g_failed);
-  return g_failed ? 1 : 0;
+  return finish();
 }

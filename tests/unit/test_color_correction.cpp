@@ -506,6 +506,5 @@ int main() {
   test_ciede2000();
   const std::string rm = "rm -rf '" + g_dir + "'";
   if (std::system(rm.c_str()) != 0) printf("FAIL cleanup: %s\n", rm.c_str());
-  printf("%d passed, %d failed\n", g_passed, g_failed);
-  return g_failed ? 1 : 0;
+  return finish();
 }

@@ -22,16 +22,9 @@
 #include "families/model_lighting.h"
 #include "twins/model_lighting_batch.h"
 #include "unit_check.h"
+#include "unit_vec4.h"
 
 namespace {
-
-bool same_bits(const ts_vec4f &a, const ts_vec4f &b) { return std::memcmp(&a, &b, sizeof a) == 0; }
-
-std::string show(const ts_vec4f &c) {
-  char b[160];
-  snprintf(b, sizeof b, "(%a, %a, %a, %a)", c.x, c.y, c.z, c.w);
-  return b;
-}
 
 // A deferred-style copy of a grid: the first `pixel` slots per pixel, the rest shared
 // (taken from pixel (0, 0)), as sphere frames and the scene renderer pass them.
@@ -273,6 +266,5 @@ int main() {
     model_lighting_f_records(&m, nullptr, &views.tex, &sentinel, 0);
     check(same_bits(sentinel, ts_v4f(7, 7, 7, 7)), "count 0 writes nothing");
   }
-  printf("%d passed, %d failed\n", g_passed, g_failed);
-  return g_failed ? 1 : 0;
+  return finish();
 }

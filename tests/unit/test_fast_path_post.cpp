@@ -34,16 +34,9 @@
 #include "hdr/paths.h"
 #include "twins/hdr_post_batch.h"
 #include "unit_check.h"
+#include "unit_vec4.h"
 
 namespace {
-
-bool same_bits(const ts_vec4f &a, const ts_vec4f &b) { return std::memcmp(&a, &b, sizeof a) == 0; }
-
-std::string show(const ts_vec4f &c) {
-  char b[160];
-  snprintf(b, sizeof b, "(%a, %a, %a, %a)", c.x, c.y, c.z, c.w);
-  return b;
-}
 
 struct PostRng {
   uint64_t s;
@@ -57,12 +50,6 @@ struct PostRng {
   float uni(float lo, float hi) { return lo + (hi - lo) * static_cast<float>(next() % 1000000u) / 1000000.f; }
   bool chance(int percent) { return static_cast<int>(next() % 100u) < percent; }
 };
-
-float bits_f(uint32_t u) {
-  float f;
-  std::memcpy(&f, &u, 4);
-  return f;
-}
 
 // Hard values: NaN of both signs and payloads, infinities, the fp16 edge, huge, denormals.
 float hard(PostRng &r) {
@@ -84,7 +71,7 @@ float hard(PostRng &r) {
     case 0:
       return std::numeric_limits<float>::quiet_NaN();
     case 1:
-      return bits_f(0xffc01234u);
+      return float_of_bits(0xffc01234u);
     case 2:
       return std::numeric_limits<float>::infinity();
     default:
@@ -161,8 +148,12 @@ void run_family(const std::string &name, int pixel_slots, const std::vector<ts_v
   }
 }
 
-// Bloom/tone-map records: positions around and beyond the target, sizes of `w` x `h` (or odd).
-std::vector<ts_vec4f> post_records(PostRng &r, int n, int slots, int tw, int th, int hard_percent) {
+void set_size(std::vector<ts_vec4f> *recs, int slots, int slot, int w, int h, PostRng &r, int hard_percent);
+
+// Bloom/tone-map records: positions around and beyond the tw x th target, the other slots random
+// but for slot `size_slot`: the source size sw x sh (set_size: some of its reciprocals hard).
+std::vector<ts_vec4f> post_records(PostRng &r, int n, int slots, int tw, int th, int size_slot, int sw, int sh,
+                                   int hard_percent) {
   std::vector<ts_vec4f> recs(static_cast<size_t>(n) * slots);
   for (int i = 0; i < n; ++i) {
     ts_vec4f *rec = &recs[static_cast<size_t>(i) * slots];
@@ -173,6 +164,7 @@ std::vector<ts_vec4f> post_records(PostRng &r, int n, int slots, int tw, int th,
       rec[k] = ts_v4f(maybe_hard(r, r.uni(-0.5f, 3.f), hard_percent), maybe_hard(r, r.uni(0.f, 2.f), hard_percent),
                       maybe_hard(r, r.uni(0.f, 4.f), hard_percent), maybe_hard(r, r.uni(0.f, 3.f), hard_percent));
   }
+  set_size(&recs, slots, size_slot, sw, sh, r, hard_percent);
   return recs;
 }
 
@@ -182,6 +174,20 @@ void set_size(std::vector<ts_vec4f> *recs, int slots, int slot, int w, int h, Po
     s = ts_v4f(static_cast<float>(w), static_cast<float>(h), 1.f / static_cast<float>(w), 1.f / static_cast<float>(h));
     if (r.chance(hard_percent)) s.z = hard(r);
     if (r.chance(hard_percent)) s.w = hard(r);
+  }
+}
+
+// run_family for each value 0..values-1 of a family's one combo (variant V{value}); scalar and
+// batch take the variant first.
+template <class In, int S, class V, class Scalar, class Batch>
+void run_combo(const std::string &combo, int values, const std::string &sfx, int pixel_slots,
+               const std::vector<ts_vec4f> &recs, Scalar scalar, Batch batch, const char *mode) {
+  for (int value = 0; value < values; ++value) {
+    const V v = {value};
+    run_family<In, S>(
+        combo + "=" + std::to_string(value) + sfx, pixel_slots, recs,
+        [&](const ts_vec4f *rec) { return scalar(&v, rec); },
+        [&](const In *in, ts_vec4f *o, int c) { batch(&v, in, o, c); }, mode);
   }
 }
 
@@ -203,39 +209,37 @@ void test_hdr_families(const char *mode) {
     for (int hp : {0, 8}) {
       const std::string sfx = std::string(" [") + tc.name + (hp ? ", hard records]" : "]");
       // bloom_downsample: a quarter-size target of the texture
-      std::vector<ts_vec4f> rd = post_records(r, n, BD_SLOTS, (tc.w + 3) / 4, (tc.h + 3) / 4, hp);
-      set_size(&rd, BD_SLOTS, BD_SLOT_SIZE, tc.w, tc.h, r, hp);
-      for (int shape = 0; shape < 2; ++shape) {
-        const bd_variant v = {shape};
-        run_family<bd_batch_input, BD_SLOTS>(
-            "bloom_downsample SHAPE=" + std::to_string(shape) + sfx, BD_PIXEL_SLOTS, rd,
-            [&](const ts_vec4f *rec) { return bloom_downsample_f(&v, rec, t); },
-            [&](const bd_batch_input *in, ts_vec4f *o, int c) { bloom_downsample_f_batch(&v, in, t, o, c); }, mode);
-      }
-      std::vector<ts_vec4f> rb = post_records(r, n, BB_SLOTS, tc.w, tc.h, hp);
-      set_size(&rb, BB_SLOTS, BB_SLOT_SIZE, tc.w, tc.h, r, hp);
-      for (int dir = 0; dir < 2; ++dir) {
-        const bb_variant v = {dir};
-        run_family<bb_batch_input, BB_SLOTS>(
-            "bloom_blur DIRECTION=" + std::to_string(dir) + sfx, BB_PIXEL_SLOTS, rb,
-            [&](const ts_vec4f *rec) { return bloom_blur_f(&v, rec, t); },
-            [&](const bb_batch_input *in, ts_vec4f *o, int c) { bloom_blur_f_batch(&v, in, t, o, c); }, mode);
-      }
+      run_combo<bd_batch_input, BD_SLOTS, bd_variant>(
+          "bloom_downsample SHAPE", 2, sfx, BD_PIXEL_SLOTS,
+          post_records(r, n, BD_SLOTS, (tc.w + 3) / 4, (tc.h + 3) / 4, BD_SLOT_SIZE, tc.w, tc.h, hp),
+          [&](const bd_variant *v, const ts_vec4f *rec) { return bloom_downsample_f(v, rec, t); },
+          [&](const bd_variant *v, const bd_batch_input *in, ts_vec4f *o, int c) {
+            bloom_downsample_f_batch(v, in, t, o, c);
+          },
+          mode);
+      // bloom_blur: a target of the texture's size
+      run_combo<bb_batch_input, BB_SLOTS, bb_variant>(
+          "bloom_blur DIRECTION", 2, sfx, BB_PIXEL_SLOTS,
+          post_records(r, n, BB_SLOTS, tc.w, tc.h, BB_SLOT_SIZE, tc.w, tc.h, hp),
+          [&](const bb_variant *v, const ts_vec4f *rec) { return bloom_blur_f(v, rec, t); },
+          [&](const bb_variant *v, const bb_batch_input *in, ts_vec4f *o, int c) {
+            bloom_blur_f_batch(v, in, t, o, c);
+          },
+          mode);
       // hdr_tonemap: a full-size target over the (quarter-size) bloom texture
-      std::vector<ts_vec4f> rt = post_records(r, n, HT_SLOTS, tc.w * 4, tc.h * 4, hp);
-      set_size(&rt, HT_SLOTS, HT_SLOT_SIZE, tc.w * 4, tc.h * 4, r, hp);
+      std::vector<ts_vec4f> rt = post_records(r, n, HT_SLOTS, tc.w * 4, tc.h * 4, HT_SLOT_SIZE, tc.w * 4, tc.h * 4, hp);
       for (int i = 0; i < n; ++i) {  // the frame: HDR colours
         ts_vec4f &f = rt[static_cast<size_t>(i) * HT_SLOTS + HT_SLOT_FRAME];
         f = ts_v4f(maybe_hard(r, r.uni(0.f, 20.f), hp + 2), maybe_hard(r, r.uni(0.f, 2.f), hp + 2),
                    maybe_hard(r, r.uni(0.f, 0.01f), hp + 2), 1.f);
       }
-      for (int mode_out = 0; mode_out < 3; ++mode_out) {
-        const ht_variant v = {mode_out};
-        run_family<ht_batch_input, HT_SLOTS>(
-            "hdr_tonemap OUTPUT_MODE=" + std::to_string(mode_out) + sfx, HT_PIXEL_SLOTS, rt,
-            [&](const ts_vec4f *rec) { return hdr_tonemap_f(&v, rec, t); },
-            [&](const ht_batch_input *in, ts_vec4f *o, int c) { hdr_tonemap_f_batch(&v, in, t, o, c); }, mode);
-      }
+      run_combo<ht_batch_input, HT_SLOTS, ht_variant>(
+          "hdr_tonemap OUTPUT_MODE", 3, sfx, HT_PIXEL_SLOTS, rt,
+          [&](const ht_variant *v, const ts_vec4f *rec) { return hdr_tonemap_f(v, rec, t); },
+          [&](const ht_variant *v, const ht_batch_input *in, ts_vec4f *o, int c) {
+            hdr_tonemap_f_batch(v, in, t, o, c);
+          },
+          mode);
     }
   }
 }
@@ -328,7 +332,7 @@ void test_formats(const char *mode) {
   std::vector<float> in;
   in.reserve((1u << 21) + 64);
   for (uint32_t hi = 0; hi < (1u << 20); ++hi)
-    for (int k = 0; k < 2; ++k) in.push_back(bits_f((hi << 12) | (r.next() & 0xfffu)));
+    for (int k = 0; k < 2; ++k) in.push_back(float_of_bits((hi << 12) | (r.next() & 0xfffu)));
   for (int k = 0; k < 61; ++k) in.push_back(hard(r));  // an odd tail
   std::vector<float> hq(in.size()), hq_want(in.size());
   std::vector<uint8_t> u8(in.size()), u8_want(in.size());
@@ -435,8 +439,7 @@ int main() {
   if (host_fma && have_isa(TS_BATCH_AVX2)) {
     PostRng r(5);
     const Tex2 tex(r, 37, 23, TS_WRAP_CLAMP, TS_FILTER_LINEAR, 0, 6.f);
-    std::vector<ts_vec4f> rb = post_records(r, 512, BB_SLOTS, 37, 23, 0);
-    set_size(&rb, BB_SLOTS, BB_SLOT_SIZE, 37, 23, r, 0);
+    std::vector<ts_vec4f> rb = post_records(r, 512, BB_SLOTS, 37, 23, BB_SLOT_SIZE, 37, 23, 0);
     const bb_variant v = {0};
     std::vector<ts_vec4f> got(512);
     const bb_batch_input in = {{&rb[0], &rb[1], &rb[2]}, {BB_SLOTS, BB_SLOTS, BB_SLOTS}};
@@ -462,6 +465,5 @@ int main() {
     color_correction_f_batch(&v, &in, &luts, &sentinel, 0);
     check(same_bits(sentinel, ts_v4f(7, 7, 7, 7)), "count 0 writes nothing");
   }
-  printf("%d passed, %d failed\n", g_passed, g_failed);
-  return g_failed ? 1 : 0;
+  return finish();
 }

@@ -560,34 +560,18 @@ void render_constant(Ctx &c, Api api, const std::string &tag) {
 }
 
 void test_backends_in_one_process() {
-  {
-    Ctx c = make_ctx(Backend::OSMesa, Api::GL33);
-    check(c.ok(), "backends.osmesa_first_context", c.err);
-    if (c.ok()) render_constant(c, Api::GL33, "osmesa_first");
-    release(c);
-  }
-  {
-    Ctx c = make_ctx(Backend::EGL, Api::GLES3);
-    check(c.ok(), "backends.egl_gles3_context", c.err);
-    if (c.ok()) render_constant(c, Api::GLES3, "egl_gles3");
-    release(c);
-  }
-  {
-    Ctx c = make_ctx(Backend::OSMesa, Api::GL33);
-    check(c.ok(), "backends.osmesa_again_context", c.err);
-    if (c.ok()) render_constant(c, Api::GL33, "osmesa_again");
-    release(c);
-  }
-  {
-    Ctx c = make_ctx(Backend::EGL, Api::GLES2);
-    check(c.ok(), "backends.egl_gles2_context", c.err);
-    if (c.ok()) render_constant(c, Api::GLES2, "egl_gles2");
-    release(c);
-  }
-  {
-    Ctx c = make_ctx(Backend::EGL, Api::GL33);
-    check(c.ok(), "backends.egl_gl33_context", c.err);
-    if (c.ok()) render_constant(c, Api::GL33, "egl_gl33");
+  // One context after another, OSMesa and EGL alternating, each released before the next.
+  const struct {
+    Backend backend;
+    Api api;
+    const char *tag;
+  } kSequence[] = {{Backend::OSMesa, Api::GL33, "osmesa_first"}, {Backend::EGL, Api::GLES3, "egl_gles3"},
+                   {Backend::OSMesa, Api::GL33, "osmesa_again"}, {Backend::EGL, Api::GLES2, "egl_gles2"},
+                   {Backend::EGL, Api::GL33, "egl_gl33"}};
+  for (const auto &step : kSequence) {
+    Ctx c = make_ctx(step.backend, step.api);
+    check(c.ok(), std::string("backends.") + step.tag + "_context", c.err);
+    if (c.ok()) render_constant(c, step.api, step.tag);
     release(c);
   }
   {
@@ -1023,6 +1007,5 @@ int main() {
   test_model_lighting();
   test_eval_expr_overflow();
 
-  printf("test_glue: %d passed, %d failed\n", g_passed, g_failed);
-  return g_failed ? 1 : 0;
+  return finish();
 }

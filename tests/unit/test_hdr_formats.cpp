@@ -16,32 +16,22 @@
 #include "math/hdr_formats.h"
 #include "hdr/gl_passes.h"
 #include "math/ts_math.h"
-#include "unit_check.h"
+#include "unit_gl.h"
 
 namespace {
 
-float from_bits(uint32_t b) {
-  float f;
-  std::memcpy(&f, &b, 4);
-  return f;
-}
-uint32_t bits_of(float f) {
-  uint32_t b;
-  std::memcpy(&b, &f, 4);
-  return b;
-}
 
 std::vector<float> test_values() {
   std::vector<float> v;
   for (int k = 0; k < 255; ++k) {  // RGBA8 rounding boundaries and their neighbours
     const uint32_t b = bits_of((k + 0.5f) / 255.f);
-    for (int d = -8; d <= 8; ++d) v.push_back(from_bits(b + static_cast<uint32_t>(d)));
+    for (int d = -8; d <= 8; ++d) v.push_back(float_of_bits(b + static_cast<uint32_t>(d)));
   }
   for (int e = -26; e <= 16; ++e)  // half boundaries: mantissa steps of 2^-10 and the bits below them
     for (uint32_t m : {0u, 1u, 0x1fffu, 0x2000u, 0x2001u, 0x3fffu, 0x7fe000u, 0x7fffffu}) {
       const uint32_t b = (static_cast<uint32_t>(e + 127) << 23) | m;
-      v.push_back(from_bits(b));
-      v.push_back(-from_bits(b));
+      v.push_back(float_of_bits(b));
+      v.push_back(-float_of_bits(b));
     }
   for (float x : {0.f, -0.f, 1.f, 65504.f, 65519.f, 65520.f, 65536.f, 1e30f, 3e-6f, 6e-8f, 1e-39f, 0.5f, 2.f}) {
     v.push_back(x);
@@ -55,13 +45,10 @@ std::vector<float> test_values() {
 }
 
 void run(Backend b, Api api, const std::vector<float> &vals) {
-  const std::string name = std::string(backend_name(b)) + "/" + api_name(api);
+  const std::string name = config_name(b, api);
   std::string err;
-  auto ctx = GlContext::create(b, api, &err);
-  if (!ctx) {
-    check(false, "formats " + name, err);
-    return;
-  }
+  auto ctx = open_context(b, api, "formats " + name);
+  if (!ctx) return;
   GlRenderer r(*ctx);
   const GlFns &g = r.gl();
   // One value per channel: a W x H RGBA32F texture, passed through unchanged.

@@ -13,7 +13,7 @@
 
 #include "hdr/paths.h"
 #include "demo/hdr_scene.h"
-#include "unit_check.h"
+#include "unit_gl.h"
 
 namespace {
 
@@ -39,13 +39,10 @@ struct Fixture {
 };
 
 void run(const Fixture &fx, Backend b, Api api) {
-  const std::string name = std::string(backend_name(b)) + "/" + api_name(api);
+  const std::string name = config_name(b, api);
   std::string err;
-  auto ctx = GlContext::create(b, api, &err);
-  if (!ctx) {
-    check(false, "hdr paths " + name, err);
-    return;
-  }
+  auto ctx = open_context(b, api, "hdr paths " + name);
+  if (!ctx) return;
   GlRenderer r(*ctx);
   PassRunner run(r);
   HdrPipelineGl gl(run, api);

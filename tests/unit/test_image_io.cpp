@@ -54,16 +54,6 @@ std::string g_tmp;  // the mkdtemp directory
 
 std::string in_tmp(const std::string &name) { return g_tmp + "/" + name; }
 
-uint32_t bits(float f) {
-  uint32_t u;
-  std::memcpy(&u, &f, 4);
-  return u;
-}
-float from_bits(uint32_t u) {
-  float f;
-  std::memcpy(&f, &u, 4);
-  return f;
-}
 
 // Deterministic xorshift generator.
 uint32_t g_rng = 0x12345678u;
@@ -90,7 +80,7 @@ float px(const ImageF &img, int x, int y, int c) { return img.rgba[(size_t)4 * (
 long first_bit_mismatch(const std::vector<float> &a, const std::vector<float> &b) {
   if (a.size() != b.size()) return 0;
   for (size_t i = 0; i < a.size(); ++i)
-    if (bits(a[i]) != bits(b[i])) return (long)i;
+    if (bits_of(a[i]) != bits_of(b[i])) return (long)i;
   return -1;
 }
 
@@ -138,10 +128,10 @@ void test_exr_float_roundtrip() {
   ImageF img = make_image(w, h);
   const float specials[] = {0.0f,
                             -0.0f,
-                            from_bits(0x00000001u),  // smallest denormal
-                            from_bits(0x80000001u),
-                            from_bits(0x007fffffu),  // largest denormal
-                            from_bits(0x00400000u),
+                            float_of_bits(0x00000001u),  // smallest denormal
+                            float_of_bits(0x80000001u),
+                            float_of_bits(0x007fffffu),  // largest denormal
+                            float_of_bits(0x00400000u),
                             FLT_MIN,
                             65504.0f,
                             -65504.0f,
@@ -152,15 +142,15 @@ void test_exr_float_roundtrip() {
                             -FLT_MAX,
                             INFINITY,
                             -INFINITY,
-                            from_bits(0x7fc00000u),  // quiet NaN
-                            from_bits(0xffc00001u),  // negative NaN with payload
-                            from_bits(0x7fa12345u),  // signalling NaN payload
+                            float_of_bits(0x7fc00000u),  // quiet NaN
+                            float_of_bits(0xffc00001u),  // negative NaN with payload
+                            float_of_bits(0x7fa12345u),  // signalling NaN payload
                             1.0f,
                             std::nextafter(1.0f, 2.0f),
                             3.14159265f,
                             1e-30f};
   const size_t ns = sizeof specials / sizeof specials[0];
-  for (size_t i = 0; i < img.rgba.size(); ++i) img.rgba[i] = i < ns ? specials[i] : from_bits(rnd());
+  for (size_t i = 0; i < img.rgba.size(); ++i) img.rgba[i] = i < ns ? specials[i] : float_of_bits(rnd());
 
   const std::string path = in_tmp("float.exr");
   std::string err;
@@ -178,7 +168,7 @@ void test_exr_float_roundtrip() {
   check(back.w == w && back.h == h && m < 0, "exr_float_roundtrip_bitexact",
         "size " + std::to_string(back.w) + "x" + std::to_string(back.h) + ", first mismatch at " + std::to_string(m) +
             (m >= 0 && (size_t)m < back.rgba.size()
-                 ? " (" + hex(bits(img.rgba[m])) + " vs " + hex(bits(back.rgba[m])) + ")"
+                 ? " (" + hex(bits_of(img.rgba[m])) + " vs " + hex(bits_of(back.rgba[m])) + ")"
                  : ""));
 
   // Inspect the file with OpenEXR directly: FLOAT channels, ZIP, and the
@@ -199,7 +189,7 @@ void test_exr_float_roundtrip() {
     in.setFrameBuffer(fb);
     in.readPixels(0, h - 1);
     bool top_first = true;
-    for (int x = 0; x < w; ++x) top_first = top_first && bits(r[x]) == bits(px(img, x, h - 1, 0));
+    for (int x = 0; x < w; ++x) top_first = top_first && bits_of(r[x]) == bits_of(px(img, x, h - 1, 0));
     check(top_first, "exr_file_rows_top_down", "file row 0 is not ImageF row h-1");
   } catch (const std::exception &e) {
     check(false, "exr_float_file_layout", e.what());
@@ -231,7 +221,7 @@ void test_exr_half_roundtrip() {
     // Round to nearest half: relative error <= 2^-11, absolute <= 2^-25
     // in the half denormal range.
     const double tol = std::fabs(v) * std::ldexp(1.0, -11) + std::ldexp(1.0, -25);
-    if (bits(r) != bits(expect) || std::fabs((double)r - v) > tol) {
+    if (bits_of(r) != bits_of(expect) || std::fabs((double)r - v) > tol) {
       detail = "index " + std::to_string(i) + ": wrote " + std::to_string(v) + " read " + std::to_string(r);
       break;
     }
@@ -705,8 +695,8 @@ void test_read_failures(const std::string &probe) {
 
 void test_ulp_distance() {
   const float one_up = std::nextafter(1.0f, 2.0f);
-  const float tiny = from_bits(1), ntiny = from_bits(0x80000001u);
-  const float qnan = from_bits(0x7fc00000u), nan2 = from_bits(0x7fc00001u);
+  const float tiny = float_of_bits(1), ntiny = float_of_bits(0x80000001u);
+  const float qnan = float_of_bits(0x7fc00000u), nan2 = float_of_bits(0x7fc00001u);
   struct Case {
     const char *name;
     float a, b;
@@ -759,7 +749,7 @@ void test_diff_image() {
   px(b, 1, 0, 1) = std::nextafter(px(a, 1, 0, 1), 10.0f);
   px(a, 2, 2, 2) = 1.0f;
   px(b, 2, 2, 2) = 2.0f;
-  px(a, 0, 2, 0) = px(b, 0, 2, 0) = from_bits(0x7fc00000u);
+  px(a, 0, 2, 0) = px(b, 0, 2, 0) = float_of_bits(0x7fc00000u);
   d = diff_image(a, b, &st);
   check(st.pixels == 12 && st.mismatched_pixels == 2 && st.max_ulp == (1u << 23) && st.max_abs == 1.0 &&
             st.worst_x == 2 && st.worst_y == 2,
@@ -967,7 +957,7 @@ void test_hdr_probe(const char *path) {
       for (int y = 0; y < h; ++y)
         for (int i = 0; i < 4 * w; ++i, ++channels) {
           const float a = img.rgba[(size_t)4 * w * (h - 1 - y) + i], b = ref[(size_t)4 * w * y + i];
-          differ += bits(a) != bits(b);
+          differ += bits_of(a) != bits_of(b);
           if (i % 4 != 3) maxv = std::max(maxv, a);
         }
     stbi_image_free(ref);
@@ -1012,6 +1002,5 @@ int main(int argc, char **argv) {
   fs::remove_all(g_tmp, ec);
   check(!ec && !fs::exists(g_tmp), "temp_dir_removed", ec.message());
 
-  std::printf("test_image_io: %d passed, %d failed\n", g_passed, g_failed);
-  return g_failed ? 1 : 0;
+  return finish();
 }

@@ -15,7 +15,7 @@
 #include "families/family.h"
 #include "math/hdr_formats.h"
 #include "hdr/luminance_histogram.h"
-#include "unit_check.h"
+#include "unit_gl.h"
 
 namespace {
 
@@ -57,14 +57,11 @@ void make_frame(int f, bool srgb8, std::vector<uint16_t> *halves, std::vector<ui
 }
 
 void run(Backend b, Api api, int encoding, double alpha) {
-  const std::string name = std::string(backend_name(b)) + "/" + api_name(api) +
+  const std::string name = config_name(b, api) +
       (encoding ? " integer path" : " float path") + (alpha < 1 ? ", prefilter 1/16" : ", no prefilter");
   std::string err;
-  auto ctx = GlContext::create(b, api, &err);
-  if (!ctx) {
-    check(false, "histogram " + name, err);
-    return;
-  }
+  auto ctx = open_context(b, api, "histogram " + name);
+  if (!ctx) return;
   GlRenderer r(*ctx);
   PassRunner runner(r);
   HistogramConfig cfg;

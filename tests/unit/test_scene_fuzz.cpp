@@ -317,6 +317,5 @@ int main(int argc, char **argv) {
   }
   const std::string rm = "rm -rf '" + dir + "'";
   if (system(rm.c_str()) != 0) check(false, "remove " + dir);
-  printf("%d passed, %d failed\n", g_passed, g_failed);
-  return g_failed ? 1 : 0;
+  return finish();
 }

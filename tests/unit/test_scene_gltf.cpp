@@ -488,6 +488,5 @@ int main() {
     const std::string rm = "rm -rf '" + g_dir + "'";
     if (system(rm.c_str()) != 0) check(false, "remove " + g_dir);
   }
-  printf("%d passed, %d failed\n", g_passed, g_failed);
-  return g_failed ? 1 : 0;
+  return finish();
 }

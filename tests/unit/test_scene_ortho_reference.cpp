@@ -267,6 +267,5 @@ int main() {
     test_deferred(grid);
     test_reference(grid);
   }
-  printf("%d passed, %d failed\n", g_passed, g_failed);
-  return g_failed ? 1 : 0;
+  return finish();
 }

@@ -249,6 +249,5 @@ int main() {
   test_static_counts();
   test_selection();
   test_cpu_vs_gl();
-  printf("%s\n", g_failed ? "FAILED" : "OK");
-  return g_failed ? 1 : 0;
+  return finish();
 }

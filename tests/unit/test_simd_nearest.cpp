@@ -165,6 +165,5 @@ int main() {
   }
   check(discriminating > 1000, "the check discriminates: NEAREST and LINEAR frames differ",
         std::to_string(discriminating) + " pixels differ");
-  printf("%d passed, %d failed\n", g_passed, g_failed);
-  return g_failed ? 1 : 0;
+  return finish();
 }

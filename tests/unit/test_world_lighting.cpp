@@ -535,6 +535,5 @@ int main() {
   check_encodings();
   check_page();
   check_gl_cubes();
-  printf("%s\n", g_failed ? "some checks FAILED" : "all checks passed");
-  return g_failed ? 1 : 0;
+  return finish();
 }
