@@ -27,6 +27,7 @@ struct FamilyInputs {
   // others are shared by every pixel and passed to GL as the production uniforms.
   std::vector<ts_vec4f> shared;  // empty, or the family's full record with the shared slots set
   ts_vec4f slot(int x, int y, int k) const;
+  void gather(int x, int y, int n, ts_vec4f *rec) const;  // rec[k] = slot(x, y, k), k < n
   void set_slot(int x, int y, int k, ts_vec4f v);
   void resize(int w_, int h_, int slots_);
   TextureDesc record_texture() const;
@@ -110,6 +111,9 @@ std::vector<const BenchSection *> bench_sections();
 // #defines for a variant: each combo value, the tier (TS_TIER_PS20/PS2B/SM3) and
 // the input mode (TS_CONFORM, TS_DEFERRED, or nothing for production).
 std::vector<Define> variant_defines(const Variant &v, InputMode mode);
+
+// An RGBA32F 2D texture of w x h zeros with the given sampler name and filtering.
+TextureDesc blank_texture(const std::string &sampler, int w, int h, bool linear, bool repeat);
 
 // The C sampler's view of a texture the shader samples (same filtering and wrapping).
 ts_tex2d tex2d_of(const TextureDesc &t);
