@@ -41,25 +41,24 @@ std::string fmt(float f) {
 
 }  // namespace
 
+// `tiershade probe --help`.
+const char kHelp[] = R"(usage: tiershade probe --shader S --variant V [--backend osmesa|egl] [--api gl33|gles2|gles3]
+                       [--grid random|hard:X,Y | --case NAME] [--size N --seed K] [--cases FILE]
+                       [--input FILE] [--set SLOT=x,y,z,w]...
+Evaluates one pixel of a variant in GL and in C and prints both, with the ULP distance
+and the double-precision reference. The pixel's input record starts from a conformance
+grid pixel (--grid, same --size/--seed as `conform`), from the first pixel of the hard grid
+that has hard case NAME (--case; the cases: tests/conform/<shader>.cases, or --cases FILE),
+or from the first random record; then FILE (lines 'SLOT x y z w', # comments) and --set
+override single slots (SLOT.xz for some components; the case-file syntax, docs/conformance.md).
+Values accept nan, inf and hex floats. Slot names: see the worst-pixel report of conform.)";
+
 int cmd_probe(int argc, char **argv) {
   Args a("probe", argc, argv, {"--help"},
          {"--shader", "--variant", "--backend", "--api", "--set", "--input", "--grid", "--case", "--cases", "--size",
           "--seed"});
-  if (a.flag("--help")) {
-    puts(
-        "usage: tiershade probe --shader S --variant V [--backend osmesa|egl] [--api gl33|gles2|gles3]\n"
-        "                       [--grid random|hard:X,Y | --case NAME] [--size N --seed K] [--cases FILE]\n"
-        "                       [--input FILE] [--set SLOT=x,y,z,w]...\n"
-        "Evaluates one pixel of a variant in GL and in C and prints both, with the ULP distance\n"
-        "and the double-precision reference. The pixel's input record starts from a conformance\n"
-        "grid pixel (--grid, same --size/--seed as `conform`), from the first pixel of the hard grid\n"
-        "that has hard case NAME (--case; the cases: tests/conform/<shader>.cases, or --cases FILE),\n"
-        "or from the first random record; then FILE (lines 'SLOT x y z w', # comments) and --set\n"
-        "override single slots (SLOT.xz for some components; the case-file syntax, docs/conformance.md).\n"
-        "Values accept nan, inf and hex floats. Slot names: see the worst-pixel report of conform.");
-    return 0;
-  }
-  if (!a.positional().empty()) a.fail("unexpected argument '" + a.positional()[0] + "'");
+  if (a.help(kHelp)) return 0;
+  a.no_positional();
   if (!a.has("--shader") || !a.has("--variant")) a.fail("--shader and --variant are required");
   Selection sel;
   select_variants(a, &sel);

@@ -29,22 +29,11 @@
 #include "gl/float_target.h"
 #include "base/image.h"
 #include "base/image_diff.h"
+#include "families/family.h"  // Rng (every seed here is nonzero, as it was)
 #include "math/ts_sampler3d.h"
 #include "unit_check.h"
 
 namespace {
-
-struct Rng {
-  uint32_t s;
-  explicit Rng(uint32_t seed) : s(seed) {}
-  uint32_t next() {
-    s ^= s << 13;
-    s ^= s >> 17;
-    s ^= s << 5;
-    return s;
-  }
-  float uniform(float lo, float hi) { return lo + (hi - lo) * static_cast<float>(next() >> 8) * (1.0f / 16777216.0f); }
-};
 
 const int kW = 256, kH = 128;  // 32768 coordinates per case
 
