@@ -1,11 +1,8 @@
 // tiershade cli: `probe` subcommand: one pixel of one variant, evaluated in GL and in
 // C (float32 bit-exact twin and the double reference), printed side by side.
-#include <sys/stat.h>
-
 #include <cmath>
 #include <cstdio>
 #include <cstring>
-#include <fstream>
 #include <sstream>
 
 #include "conform/conform.h"
@@ -13,6 +10,7 @@
 #include "families/hard_cases.h"
 #include "cli/select_args.h"
 #include "base/image_diff.h"
+#include "io/text_lines.h"
 
 namespace {
 
@@ -123,25 +121,17 @@ int cmd_probe(int argc, char **argv) {
   Rng rng(static_cast<uint32_t>(seed));  // for uniform() and pick() in --input and --set values
   if (a.has("--input")) {
     const std::string path = a.get("--input");
-    struct stat st;
-    if (stat(path.c_str(), &st) != 0 || !S_ISREG(st.st_mode))
-      a.fail("cannot read input file '" + path + "' (not a readable regular file)");
-    std::ifstream file(path);
-    if (!file) a.fail("cannot read input file '" + path + "'");
-    std::string line;
-    int lineno = 0;
-    while (std::getline(file, line)) {
-      ++lineno;
-      const size_t hash = line.find('#');
-      if (hash != std::string::npos) line.resize(hash);
+    TextLines file;
+    std::string line, err;
+    if (!file.open(path, "input", &err)) a.fail(err);
+    while (file.next(&line)) {
       std::istringstream ls(line);
       std::string name, rest, tok;
       if (!(ls >> name)) continue;
       while (ls >> tok) rest += (rest.empty() ? "" : " ") + tok;
-      set_slot_value(a, *f, &in, &rng, path + ":" + std::to_string(lineno), name + " " + rest);
+      set_slot_value(a, *f, &in, &rng, file.where(), name + " " + rest);
     }
-    if (file.bad())
-      a.fail("cannot read input file '" + path + "' (read error after line " + std::to_string(lineno) + ")");
+    if (!file.finish(&err)) a.fail(err);
   }
   for (const auto &s : a.all("--set")) {
     const size_t eq = s.find('=');
