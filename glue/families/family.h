@@ -71,14 +71,15 @@ struct ShaderFamily {
 const ShaderFamily *find_family(const std::string &name);
 std::vector<const ShaderFamily *> all_families();  // sorted by name
 
-// Each family registers itself from its own file (glue/family_<name>.cpp):
+// Each family registers itself from its own file (glue/families/<name>.cpp, built with
+// families/record_family.h):
 //   static const FamilyRegistrar kRegister(&kMyFamily);
 struct FamilyRegistrar {
   explicit FamilyRegistrar(const ShaderFamily *f);
 };
 
 // Extra sections of `tiershade demo` and `tiershade bench`, registered the same way by the
-// files that own them (glue/demo_<name>.cpp, glue/bench_<name>.cpp), run in name order
+// files that own them (glue/demo/<name>.cpp, glue/bench/<name>.cpp), run in name order
 // after the model-lighting section.
 struct DemoOptions {
   std::string dir;  // output directory (exists)

@@ -1,5 +1,5 @@
 // tiershade families: the model_lighting family's helpers shared by its conformance inputs
-// (family_model_lighting.cpp), the scene renderer and the tests.
+// (model_lighting.cpp), the scene renderer and the tests.
 #pragma once
 #include "families/family.h"
 #include "twins/model_lighting.h"

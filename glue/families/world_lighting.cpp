@@ -1,7 +1,7 @@
 // tiershade families: the world_lighting family (lightmaps, radiosity normal mapping,
 // cube-map specular): its input records (random and hard cases), its test textures,
 // and the bridge to its C twin (c_ref/twins/world_lighting.c). The texture builders are
-// shared with the demo and the benchmark through family_world_lighting.h.
+// shared with the demo and the benchmark through world_lighting.h.
 #include "families/world_lighting.h"
 
 #include <cmath>

@@ -1,5 +1,5 @@
 // tiershade families: the world_lighting family's helpers shared by its conformance
-// inputs (family_world_lighting.cpp), its demo and its benchmark.
+// inputs (world_lighting.cpp), its demo and its benchmark.
 #pragma once
 #include <vector>
 

@@ -29,7 +29,7 @@
 #include "gl/float_target.h"
 #include "base/image.h"
 #include "base/image_diff.h"
-#include "families/family.h"  // Rng (every seed here is nonzero, as it was)
+#include "families/family.h"  // Rng (xorshift32; every seed below is nonzero)
 #include "math/ts_sampler3d.h"
 #include "unit_check.h"
 
