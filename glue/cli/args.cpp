@@ -1,4 +1,4 @@
-// tiershade cli: command-line parsing (see cli.h).
+// tiershade cli: command-line parsing (see args.h).
 #include "cli/args.h"
 
 #include <algorithm>
@@ -61,6 +61,16 @@ int Args::get_int(const std::string &name, int def, int lo, int hi) const {
     fail("option " + name + " wants an integer in [" + std::to_string(lo) + ", " + std::to_string(hi) + "], got '" + s +
          "'");
   return static_cast<int>(v);
+}
+
+bool Args::help(const char *text) const {
+  if (!flag("--help")) return false;
+  puts(text);
+  return true;
+}
+
+void Args::no_positional() const {
+  if (!pos_.empty()) fail("unexpected argument '" + pos_[0] + "'");
 }
 
 void Args::fail(const std::string &msg) const {

@@ -20,6 +20,10 @@ class Args {
   std::vector<std::string> all(const std::string &name) const;
   int get_int(const std::string &name, int def, int lo, int hi) const;
   const std::vector<std::string> &positional() const { return pos_; }
+  // --help given: prints text (and a newline) and returns true (the command then exits 0).
+  bool help(const char *text) const;
+  // Fails with "unexpected argument 'X'" on the first positional argument, if any.
+  void no_positional() const;
   [[noreturn]] void fail(const std::string &msg) const;
   const std::string &cmd() const { return cmd_; }
 

@@ -12,16 +12,15 @@
 #include "scene/selection.h"
 #include "scene/prepare.h"
 
+// `tiershade bake --help`.
+const char kHelp[] = R"(usage: tiershade bake SCENE.gltf -o PAGE.exr
+Bakes the scene's lightmap page (flat and three RNM lightmaps per LightmappedGeneric face, from
+its lights) and writes it as RGBA float32 EXR, rows as GL texture rows (row 0 at the bottom).
+Name it in the scene's extras.tiershade.lightmaps.image to render without baking (docs/scenes.md).)";
+
 int cmd_bake(int argc, char **argv) {
   Args a("bake", argc, argv, {"--help"}, {"-o"});
-  if (a.flag("--help")) {
-    puts(
-        "usage: tiershade bake SCENE.gltf -o PAGE.exr\n"
-        "Bakes the scene's lightmap page (flat and three RNM lightmaps per LightmappedGeneric face, from\n"
-        "its lights) and writes it as RGBA float32 EXR, rows as GL texture rows (row 0 at the bottom).\n"
-        "Name it in the scene's extras.tiershade.lightmaps.image to render without baking (docs/scenes.md).");
-    return 0;
-  }
+  if (a.help(kHelp)) return 0;
   if (a.positional().size() != 1) a.fail("expected one scene file (tiershade bake SCENE.gltf -o PAGE.exr)");
   if (!a.has("-o")) a.fail("-o PAGE.exr is required");
   const std::string out = a.get("-o");

@@ -9,7 +9,6 @@
 #include <cstdio>
 #include <cstdlib>
 #include <fstream>
-#include <functional>
 #include <sstream>
 #include <thread>
 
@@ -56,23 +55,17 @@ struct Context {
   unsigned cores = 1;
 };
 
-// A row's deferred frame: the G-buffer record per pixel and where the geometry is.
-struct RowFrame {
-  FamilyInputs in;
-  std::vector<uint8_t> hit;
-};
-using FrameOf = std::function<bool(const BenchRow &row, const Variant &v, RowFrame *out, std::string *err)>;
-
-// Measures every row on the frames frame_of makes; ref_display holds the reference's display rgb
-// per pixel. The mediump row's rounding is measured against the row before it (its highp twin).
-bool measure_rows(const Context &cx, const FrameOf &frame_of, const std::vector<double> &ref_display,
+// Measures every row on the deferred frames of `scene` (cx.n x cx.n, at the row's tier; all_features:
+// scene_deferred_frame's); ref_display holds the reference's display rgb per pixel. The mediump
+// row's rounding is measured against the row before it (its highp twin).
+bool measure_rows(const Context &cx, const Scene &scene, bool all_features, const std::vector<double> &ref_display,
                   std::vector<BenchRow> *rows, std::string *err) {
   ImageF prev_gles;
   for (BenchRow &row : *rows) {
     Variant v;
     if (!find_variant(cx.decls, "model_lighting", row.variant, &v, err)) return false;
-    RowFrame frame;
-    if (!frame_of(row, v, &frame, err)) return false;
+    SceneDeferredFrame frame;
+    if (!scene_deferred_frame(scene, v.tier, cx.n, cx.n, &frame, err, all_features)) return false;
     Assembled fs;
     std::string e;
     if (!assemble(v.shader->fragment, Target::GLSL330, Stage::Fragment, variant_defines(v, InputMode::Production), &fs,
@@ -246,22 +239,21 @@ std::string basename_of(const std::string &p) {
 
 }  // namespace
 
+// `tiershade bench --help`.
+const char kHelp[] = R"(usage: tiershade bench [-o docs/accuracy_cost.md] [--size N] [--runs K] [--section NAME]
+--section NAME runs one registered section (e.g. scenes, world_lighting) and prints its
+markdown without writing any file.
+Measures, for each tier of each shader family, in one run: instruction slots, llvmpipe
+milliseconds per N x N frame (median of K draws; OSMesa GL 3.3 and EGL GLES 3.0), the
+cold first frame (compile + JIT, Mesa's shader cache off), the C fallback's milliseconds
+per frame (all cores, and one), and the error against the double-precision reference of
+the full model (every light local, exact sRGB), in 8-bit display code values.
+Writes the markdown tables to -o and SVG plots next to it. Default N = 1024, K = 7.)";
+
 int cmd_bench(int argc, char **argv) {
   Args a("bench", argc, argv, {"--help"}, {"-o", "--size", "--runs", "--section"});
-  if (a.flag("--help")) {
-    puts(
-        "usage: tiershade bench [-o docs/accuracy_cost.md] [--size N] [--runs K] [--section NAME]\n"
-        "--section NAME runs one registered section (e.g. scenes, world_lighting) and prints its\n"
-        "markdown without writing any file.\n"
-        "Measures, for each tier of each shader family, in one run: instruction slots, llvmpipe\n"
-        "milliseconds per N x N frame (median of K draws; OSMesa GL 3.3 and EGL GLES 3.0), the\n"
-        "cold first frame (compile + JIT, Mesa's shader cache off), the C fallback's milliseconds\n"
-        "per frame (all cores, and one), and the error against the double-precision reference of\n"
-        "the full model (every light local, exact sRGB), in 8-bit display code values.\n"
-        "Writes the markdown tables to -o and SVG plots next to it. Default N = 1024, K = 7.");
-    return 0;
-  }
-  if (!a.positional().empty()) a.fail("unexpected argument '" + a.positional()[0] + "'");
+  if (a.help(kHelp)) return 0;
+  a.no_positional();
   const std::string out_path = a.get("-o", "docs/accuracy_cost.md");
   Context cx;
   cx.n = a.get_int("--size", 1024, 16, 4096);
@@ -324,14 +316,7 @@ int cmd_bench(int argc, char **argv) {
   if (!scene_deferred_frame(grid, Tier::SM3, n, n, &ref_frame, &err, false, true)) a.fail(err);
   std::vector<double> ref_display(ref_frame.reference.size());
   for (size_t i = 0; i < ref_display.size(); ++i) ref_display[i] = srgb(ref_frame.reference[i]);
-  const FrameOf grid_frame = [&](const BenchRow &, const Variant &v, RowFrame *f, std::string *e) {
-    SceneDeferredFrame d;
-    if (!scene_deferred_frame(grid, v.tier, n, n, &d, e)) return false;
-    f->in = std::move(d.in);
-    f->hit = std::move(d.hit);
-    return true;
-  };
-  if (!measure_rows(cx, grid_frame, ref_display, &hl2, &err)) {
+  if (!measure_rows(cx, grid, false, ref_display, &hl2, &err)) {
     fprintf(stderr, "tiershade bench: %s\n", err.c_str());
     return 1;
   }
@@ -376,14 +361,7 @@ int cmd_bench(int argc, char **argv) {
     for (size_t p = 0; p < frame.hit.size(); ++p)
       for (int c = 0; c < 3; ++c) ref_display[p * 3 + c] = display(2, dbl[p * 4 + c]);
   }
-  const FrameOf ball_frame = [&](const BenchRow &, const Variant &v, RowFrame *f, std::string *e) {
-    SceneDeferredFrame d;
-    if (!scene_deferred_frame(ball, v.tier, n, n, &d, e, true)) return false;
-    f->in = std::move(d.in);
-    f->hit = std::move(d.hit);
-    return true;
-  };
-  if (!measure_rows(cx, ball_frame, ref_display, &ep1, &err)) {
+  if (!measure_rows(cx, ball, true, ref_display, &ep1, &err)) {
     fprintf(stderr, "tiershade bench: %s\n", err.c_str());
     return 1;
   }

@@ -58,7 +58,7 @@ int cmd_budget(int argc, char **argv) {
         kNirRatioLo, kNirRatioHi, budget_weight_table_markdown().c_str());
     return 0;
   }
-  if (!a.positional().empty()) a.fail("unexpected argument '" + a.positional()[0] + "'");
+  a.no_positional();
   const bool nir = a.flag("--nir");
   // Mesa reads ST_DEBUG once, when the first screen is created: before any context.
   if (nir) nir_capture_setup_env();

@@ -8,26 +8,24 @@
 #include "families/hard_cases.h"
 #include "cli/select_args.h"
 
+// `tiershade conform --help`.
+const char kHelp[] = R"(usage: tiershade conform [--shader S] [--tier T]... [--variant V] [--backend osmesa|egl|all]
+                         [--api gl33|gles2|gles3|all] [--size N] [--set random|hard|all] [--seed K] [--json] [--verbose]
+                         [--cases FILE]... [--list-cases]
+Renders an N x N grid of per-pixel input records through each variant on llvmpipe,
+reads back RGBA32F and compares every pixel with the C reference (0 ULP allowed).
+Hard inputs: the named cases of tests/conform/<shader>.cases (embedded; zero/denormal/huge/NaN
+normals, light at the point, N.L = -1/0/1, colours up to 65504, Inf/NaN inputs...), each on a
+random record; outputs must also be finite and in range. --cases FILE replaces the cases of the
+shader FILE is named after (FILE = .../<shader>.cases; format: docs/conformance.md).
+--list-cases prints the hard cases of the selected shaders and exits.
+Exit status 1 when any variant fails. --json prints one object per variant, backend, api and set.)";
+
 int cmd_conform(int argc, char **argv) {
   Args a("conform", argc, argv, {"--help", "--json", "--verbose", "--list-cases"},
          {"--shader", "--tier", "--variant", "--backend", "--api", "--size", "--set", "--seed", "--cases"});
-  if (a.flag("--help")) {
-    puts(
-        "usage: tiershade conform [--shader S] [--tier T]... [--variant V] [--backend osmesa|egl|all]\n"
-        "                         [--api gl33|gles2|gles3|all] [--size N] [--set random|hard|all] [--seed K] [--json] "
-        "[--verbose]\n"
-        "                         [--cases FILE]... [--list-cases]\n"
-        "Renders an N x N grid of per-pixel input records through each variant on llvmpipe,\n"
-        "reads back RGBA32F and compares every pixel with the C reference (0 ULP allowed).\n"
-        "Hard inputs: the named cases of tests/conform/<shader>.cases (embedded; zero/denormal/huge/NaN\n"
-        "normals, light at the point, N.L = -1/0/1, colours up to 65504, Inf/NaN inputs...), each on a\n"
-        "random record; outputs must also be finite and in range. --cases FILE replaces the cases of the\n"
-        "shader FILE is named after (FILE = .../<shader>.cases; format: docs/conformance.md).\n"
-        "--list-cases prints the hard cases of the selected shaders and exits.\n"
-        "Exit status 1 when any variant fails. --json prints one object per variant, backend, api and set.");
-    return 0;
-  }
-  if (!a.positional().empty()) a.fail("unexpected argument '" + a.positional()[0] + "'");
+  if (a.help(kHelp)) return 0;
+  a.no_positional();
   const int size = a.get_int("--size", 64, 1, 1024);
   const int seed = a.get_int("--seed", 1, 0, 1 << 30);
   const std::string set_name = a.get("--set", "all");

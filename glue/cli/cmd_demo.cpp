@@ -58,26 +58,25 @@ bool grid_reference(const Scene &s, int w, int h, ImageF *out, std::string *err)
 
 }  // namespace
 
+// `tiershade demo --help`.
+const char kHelp[] = R"(usage: tiershade demo [-o DIR] [--size WxH] [--backend osmesa|egl|all] [--lights FILE]
+Renders the lit sphere grid (scenes/sphere_grid.gltf: six lights, ambient cube, orthographic
+camera) with the HL2 model lighting in each tier, through the scene renderer (the variants the
+scene selects, as `tiershade render`): ps20 (2 local lights, the rest folded into the ambient
+cube, linear output for an sRGB target), ps2b (4 lights), sm3 (4 lights in a dynamic loop);
+ps2b and sm3 tone-map and encode sRGB in the shader. Each tier is rendered on llvmpipe through
+OSMesa (GL 3.3) and EGL (GLES 2.0, GLES 3.0, GL 3.3) and by the C fallback; every GL frame is
+compared bit for bit with the C twin shading GL's own G-buffer.
+Writes DIR/model_lighting_<tier>_<backend>.png/.exr, DIR/model_lighting_<tier>_diff_<backend>.png
+(black = bit-equal), DIR/model_lighting_reference.png (double precision, every light local)
+and DIR/model_lighting_tiers.png (ps20 | ps2b | sm3 | reference). Default DIR: out.
+--lights replaces the six lights with a lights file (format: tiershade fold --help;
+example: scenes/sphere_grid.lights).)";
+
 int cmd_demo(int argc, char **argv) {
   Args a("demo", argc, argv, {"--help"}, {"-o", "--size", "--backend", "--lights"});
-  if (a.flag("--help")) {
-    puts(
-        "usage: tiershade demo [-o DIR] [--size WxH] [--backend osmesa|egl|all] [--lights FILE]\n"
-        "Renders the lit sphere grid (scenes/sphere_grid.gltf: six lights, ambient cube, orthographic\n"
-        "camera) with the HL2 model lighting in each tier, through the scene renderer (the variants the\n"
-        "scene selects, as `tiershade render`): ps20 (2 local lights, the rest folded into the ambient\n"
-        "cube, linear output for an sRGB target), ps2b (4 lights), sm3 (4 lights in a dynamic loop);\n"
-        "ps2b and sm3 tone-map and encode sRGB in the shader. Each tier is rendered on llvmpipe through\n"
-        "OSMesa (GL 3.3) and EGL (GLES 2.0, GLES 3.0, GL 3.3) and by the C fallback; every GL frame is\n"
-        "compared bit for bit with the C twin shading GL's own G-buffer.\n"
-        "Writes DIR/model_lighting_<tier>_<backend>.png/.exr, DIR/model_lighting_<tier>_diff_<backend>.png\n"
-        "(black = bit-equal), DIR/model_lighting_reference.png (double precision, every light local)\n"
-        "and DIR/model_lighting_tiers.png (ps20 | ps2b | sm3 | reference). Default DIR: out.\n"
-        "--lights replaces the six lights with a lights file (format: tiershade fold --help;\n"
-        "example: scenes/sphere_grid.lights).");
-    return 0;
-  }
-  if (!a.positional().empty()) a.fail("unexpected argument '" + a.positional()[0] + "'");
+  if (a.help(kHelp)) return 0;
+  a.no_positional();
   const std::string dir = a.get("-o", "out");
   int w = 640, h = 320;
   if (a.has("--size")) {

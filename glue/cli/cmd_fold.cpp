@@ -41,25 +41,24 @@ double sphere_integral(const ts_vec4f rec_in[ML_SLOTS], int channel, int half_la
 
 }  // namespace
 
+// `tiershade fold --help`.
+const char kHelp[] = R"(usage: tiershade fold [--tier ps20|ps2b|sm3] [--lights FILE] [--center X,Y,Z] [--lambert]
+Chooses the lights a tier shades locally (ps20: 2, ps2b and sm3: 4; the brightest at the
+model centre) and folds the others into the ambient cube, conserving the sphere integral of
+the half-Lambert (or, with --lambert, Lambert) shading (docs/light_folding.md). Prints the
+kept lights, the cube, and for each folded light the integral over all normals of its
+shading as a local light and folded, computed with the C twin.
+Lights file lines ('#' comments):
+  point       R G B  X Y Z  C L Q
+  spot        R G B  X Y Z  DX DY DZ  EXPONENT INNER_DEG OUTER_DEG  C L Q
+  directional R G B  DX DY DZ
+Without --lights, the demo scene's six lights are used (scenes/sphere_grid.lights, run from the
+repository root).)";
+
 int cmd_fold(int argc, char **argv) {
   Args a("fold", argc, argv, {"--help", "--lambert"}, {"--tier", "--lights", "--center"});
-  if (a.flag("--help")) {
-    puts(
-        "usage: tiershade fold [--tier ps20|ps2b|sm3] [--lights FILE] [--center X,Y,Z] [--lambert]\n"
-        "Chooses the lights a tier shades locally (ps20: 2, ps2b and sm3: 4; the brightest at the\n"
-        "model centre) and folds the others into the ambient cube, conserving the sphere integral of\n"
-        "the half-Lambert (or, with --lambert, Lambert) shading (docs/light_folding.md). Prints the\n"
-        "kept lights, the cube, and for each folded light the integral over all normals of its\n"
-        "shading as a local light and folded, computed with the C twin.\n"
-        "Lights file lines ('#' comments):\n"
-        "  point       R G B  X Y Z  C L Q\n"
-        "  spot        R G B  X Y Z  DX DY DZ  EXPONENT INNER_DEG OUTER_DEG  C L Q\n"
-        "  directional R G B  DX DY DZ\n"
-        "Without --lights, the demo scene's six lights are used (scenes/sphere_grid.lights, run from the\n"
-        "repository root).");
-    return 0;
-  }
-  if (!a.positional().empty()) a.fail("unexpected argument '" + a.positional()[0] + "'");
+  if (a.help(kHelp)) return 0;
+  a.no_positional();
   Tier tier = Tier::PS20;
   if (a.has("--tier") && !parse_tier(a.get("--tier"), &tier)) a.fail("unknown tier '" + a.get("--tier") + "'");
   float center[3] = {0, 0, 0};

@@ -14,24 +14,23 @@
 
 namespace {
 
-const char kHelp[] =
-    "usage: tiershade lut inspect FILE\n"
-    "       tiershade lut bake SOURCE --size N -o OUT.cube|OUT.raw\n"
-    "       tiershade lut convert IN OUT          (.cube <-> .raw)\n"
-    "\n"
-    "inspect: kind, edge, title, domain and value range of a .cube (1D or 3D) or a Source .raw.\n"
-    "bake: evaluates a colour transform with OpenColorIO's CPU processor at the n^3 lattice\n"
-    "nodes (r, g, b)/(n-1) and writes the 3D LUT (.cube; .raw needs --size 32). SOURCE is one of\n"
-    "  --file F                      a LUT or CDL file OpenColorIO reads (.cube, .cc, .ccc, .cdl,\n"
-    "                                .3dl, .spi3d, ...), trilinear for 3D tables\n"
-    "  --config C --look L[,L2]      looks of an OCIO config, from --src to --dst (default: the\n"
-    "       [--src S] [--dst D]      config's `default` role both ways)\n"
-    "  --slope r,g,b --offset r,g,b  ASC CDL values (any of the four; the others default to\n"
-    "  --power r,g,b --sat s         slope 1, offset 0, power 1, sat 1), ASC style (clamped)\n"
-    "convert: a .cube 3D table on the unit domain to a Source .raw (edge 32, 8-bit codes),\n"
-    "or a .raw to a .cube. Source .raw: 32^3 RGB8, red fastest (INFERRED; docs/color_correction.md).\n"
-    "Errors in input files name the file and line; the output is written atomically, so a\n"
-    "failure leaves no output file. Exit status: 0 ok, 1 cannot write, 2 bad arguments or input.";
+const char kHelp[] = R"(usage: tiershade lut inspect FILE
+       tiershade lut bake SOURCE --size N -o OUT.cube|OUT.raw
+       tiershade lut convert IN OUT          (.cube <-> .raw)
+
+inspect: kind, edge, title, domain and value range of a .cube (1D or 3D) or a Source .raw.
+bake: evaluates a colour transform with OpenColorIO's CPU processor at the n^3 lattice
+nodes (r, g, b)/(n-1) and writes the 3D LUT (.cube; .raw needs --size 32). SOURCE is one of
+  --file F                      a LUT or CDL file OpenColorIO reads (.cube, .cc, .ccc, .cdl,
+                                .3dl, .spi3d, ...), trilinear for 3D tables
+  --config C --look L[,L2]      looks of an OCIO config, from --src to --dst (default: the
+       [--src S] [--dst D]      config's `default` role both ways)
+  --slope r,g,b --offset r,g,b  ASC CDL values (any of the four; the others default to
+  --power r,g,b --sat s         slope 1, offset 0, power 1, sat 1), ASC style (clamped)
+convert: a .cube 3D table on the unit domain to a Source .raw (edge 32, 8-bit codes),
+or a .raw to a .cube. Source .raw: 32^3 RGB8, red fastest (INFERRED; docs/color_correction.md).
+Errors in input files name the file and line; the output is written atomically, so a
+failure leaves no output file. Exit status: 0 ok, 1 cannot write, 2 bad arguments or input.)";
 
 bool parse_triple(const std::string &s, double v[3]) {
   std::string t = s;
@@ -104,10 +103,7 @@ int write_lut(const Args &a, const std::string &out, const Lut3D &l) {
 int cmd_lut(int argc, char **argv) {
   Args a("lut", argc, argv, {"--help"},
          {"-o", "--size", "--file", "--config", "--look", "--src", "--dst", "--slope", "--offset", "--power", "--sat"});
-  if (a.flag("--help")) {
-    puts(kHelp);
-    return 0;
-  }
+  if (a.help(kHelp)) return 0;
   const auto &pos = a.positional();
   if (pos.empty()) a.fail("wants a subcommand: inspect, bake or convert (see tiershade lut --help)");
   const std::string sub = pos[0];

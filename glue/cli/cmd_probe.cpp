@@ -1,11 +1,8 @@
 // tiershade cli: `probe` subcommand: one pixel of one variant, evaluated in GL and in
 // C (float32 bit-exact twin and the double reference), printed side by side.
-#include <sys/stat.h>
-
 #include <cmath>
 #include <cstdio>
 #include <cstring>
-#include <fstream>
 #include <sstream>
 
 #include "conform/conform.h"
@@ -13,6 +10,7 @@
 #include "families/hard_cases.h"
 #include "cli/select_args.h"
 #include "base/image_diff.h"
+#include "io/text_lines.h"
 
 namespace {
 
@@ -41,25 +39,24 @@ std::string fmt(float f) {
 
 }  // namespace
 
+// `tiershade probe --help`.
+const char kHelp[] = R"(usage: tiershade probe --shader S --variant V [--backend osmesa|egl] [--api gl33|gles2|gles3]
+                       [--grid random|hard:X,Y | --case NAME] [--size N --seed K] [--cases FILE]
+                       [--input FILE] [--set SLOT=x,y,z,w]...
+Evaluates one pixel of a variant in GL and in C and prints both, with the ULP distance
+and the double-precision reference. The pixel's input record starts from a conformance
+grid pixel (--grid, same --size/--seed as `conform`), from the first pixel of the hard grid
+that has hard case NAME (--case; the cases: tests/conform/<shader>.cases, or --cases FILE),
+or from the first random record; then FILE (lines 'SLOT x y z w', # comments) and --set
+override single slots (SLOT.xz for some components; the case-file syntax, docs/conformance.md).
+Values accept nan, inf and hex floats. Slot names: see the worst-pixel report of conform.)";
+
 int cmd_probe(int argc, char **argv) {
   Args a("probe", argc, argv, {"--help"},
          {"--shader", "--variant", "--backend", "--api", "--set", "--input", "--grid", "--case", "--cases", "--size",
           "--seed"});
-  if (a.flag("--help")) {
-    puts(
-        "usage: tiershade probe --shader S --variant V [--backend osmesa|egl] [--api gl33|gles2|gles3]\n"
-        "                       [--grid random|hard:X,Y | --case NAME] [--size N --seed K] [--cases FILE]\n"
-        "                       [--input FILE] [--set SLOT=x,y,z,w]...\n"
-        "Evaluates one pixel of a variant in GL and in C and prints both, with the ULP distance\n"
-        "and the double-precision reference. The pixel's input record starts from a conformance\n"
-        "grid pixel (--grid, same --size/--seed as `conform`), from the first pixel of the hard grid\n"
-        "that has hard case NAME (--case; the cases: tests/conform/<shader>.cases, or --cases FILE),\n"
-        "or from the first random record; then FILE (lines 'SLOT x y z w', # comments) and --set\n"
-        "override single slots (SLOT.xz for some components; the case-file syntax, docs/conformance.md).\n"
-        "Values accept nan, inf and hex floats. Slot names: see the worst-pixel report of conform.");
-    return 0;
-  }
-  if (!a.positional().empty()) a.fail("unexpected argument '" + a.positional()[0] + "'");
+  if (a.help(kHelp)) return 0;
+  a.no_positional();
   if (!a.has("--shader") || !a.has("--variant")) a.fail("--shader and --variant are required");
   Selection sel;
   select_variants(a, &sel);
@@ -124,25 +121,17 @@ int cmd_probe(int argc, char **argv) {
   Rng rng(static_cast<uint32_t>(seed));  // for uniform() and pick() in --input and --set values
   if (a.has("--input")) {
     const std::string path = a.get("--input");
-    struct stat st;
-    if (stat(path.c_str(), &st) != 0 || !S_ISREG(st.st_mode))
-      a.fail("cannot read input file '" + path + "' (not a readable regular file)");
-    std::ifstream file(path);
-    if (!file) a.fail("cannot read input file '" + path + "'");
-    std::string line;
-    int lineno = 0;
-    while (std::getline(file, line)) {
-      ++lineno;
-      const size_t hash = line.find('#');
-      if (hash != std::string::npos) line.resize(hash);
+    TextLines file;
+    std::string line, err;
+    if (!file.open(path, "input", &err)) a.fail(err);
+    while (file.next(&line)) {
       std::istringstream ls(line);
       std::string name, rest, tok;
       if (!(ls >> name)) continue;
       while (ls >> tok) rest += (rest.empty() ? "" : " ") + tok;
-      set_slot_value(a, *f, &in, &rng, path + ":" + std::to_string(lineno), name + " " + rest);
+      set_slot_value(a, *f, &in, &rng, file.where(), name + " " + rest);
     }
-    if (file.bad())
-      a.fail("cannot read input file '" + path + "' (read error after line " + std::to_string(lineno) + ")");
+    if (!file.finish(&err)) a.fail(err);
   }
   for (const auto &s : a.all("--set")) {
     const size_t eq = s.find('=');

@@ -85,25 +85,24 @@ bool warm_frame_ms(const Scene &s, const SceneSelection &sel, const SceneRenderC
 
 }  // namespace
 
+// `tiershade render --help`.
+const char kHelp[] = R"(usage: tiershade render SCENE.gltf [--tier ps20|ps2b|sm3] [--backend egl|osmesa|cpu]
+                        [--api gles3|gles2|gl33] [--hdr integer|float] [--size WxH] -o OUT
+                        [--check] [--compile-all] [--threads N] [--progress] [--quiet]
+                        [--dump-draws DIR]
+Renders a glTF 2.0 scene (docs/scenes.md) with only the shader variants it needs and writes
+OUT.exr (the lit pass, RGBA32F as the shaders wrote it) and OUT.png (the final frame).
+Defaults: sm3, EGL surfaceless GLES 3.0 (OSMesa: GL 3.3), the scene's HDR path, 1280x720.
+--backend cpu renders with the C fallback alone (its own rasteriser, the bit-exact twins).
+--check: on GL, also shades GL's own G-buffer with the C twin and fails unless equal bit for bit.
+--compile-all: also compiles every combo of the families used, to measure what the selection saved.
+--dump-draws DIR: GL: writes the draws (geometry, uniform values, textures) and the lit frame, for
+a bare engine to replay with a shader bundle (docs/bundles.md; tests/bundle/bare_gl_render).)";
+
 int cmd_render(int argc, char **argv) {
   Args a("render", argc, argv, {"--help", "--check", "--quiet", "--progress", "--compile-all", "--report-memory"},
          {"--tier", "--backend", "--api", "--hdr", "--size", "-o", "--threads", "--exposure-frames", "--dump-draws"});
-  if (a.flag("--help")) {
-    puts(
-        "usage: tiershade render SCENE.gltf [--tier ps20|ps2b|sm3] [--backend egl|osmesa|cpu]\n"
-        "                        [--api gles3|gles2|gl33] [--hdr integer|float] [--size WxH] -o OUT\n"
-        "                        [--check] [--compile-all] [--threads N] [--progress] [--quiet]\n"
-        "                        [--dump-draws DIR]\n"
-        "Renders a glTF 2.0 scene (docs/scenes.md) with only the shader variants it needs and writes\n"
-        "OUT.exr (the lit pass, RGBA32F as the shaders wrote it) and OUT.png (the final frame).\n"
-        "Defaults: sm3, EGL surfaceless GLES 3.0 (OSMesa: GL 3.3), the scene's HDR path, 1280x720.\n"
-        "--backend cpu renders with the C fallback alone (its own rasteriser, the bit-exact twins).\n"
-        "--check: on GL, also shades GL's own G-buffer with the C twin and fails unless equal bit for bit.\n"
-        "--compile-all: also compiles every combo of the families used, to measure what the selection saved.\n"
-        "--dump-draws DIR: GL: writes the draws (geometry, uniform values, textures) and the lit frame, for\n"
-        "a bare engine to replay with a shader bundle (docs/bundles.md; tests/bundle/bare_gl_render).");
-    return 0;
-  }
+  if (a.help(kHelp)) return 0;
   if (a.positional().size() != 1) a.fail("expected one scene file (tiershade render SCENE.gltf -o OUT)");
   if (!a.has("-o")) a.fail("-o OUT is required");
   Tier tier = Tier::SM3;

@@ -9,23 +9,22 @@
 
 int cmd_variants_bundle(const Args &a);  // glue/cli/cmd_variants_bundle.cpp
 
+// `tiershade variants --help`.
+const char kHelp[] = R"(usage: tiershade variants [--list] [--json] [--count] [--shader S] [--tier ps20|ps2b|sm3]...
+       tiershade variants SCENE --tier T [--target essl100|essl300|glsl330] [--hdr integer|float] -o DIR
+       tiershade variants --shader S [--variant V]... [--tier T]... [--target T] -o DIR
+Lists every variant: tier x static combos x dynamic combos, minus the skip rules
+declared in shaders/<shader>.variants. A variant is named TIER:NAME=V,... and can
+also be given by its index in the full list of its shader.
+With -o DIR it writes a shader bundle for engines (docs/bundles.md): the self-contained
+production GLSL of the variants a scene needs (or of the variants given), and
+DIR/manifest.json with their defines, attributes, uniforms, sampler units and slots.
+--target defaults to essl300. An existing DIR is replaced only if it is a bundle.)";
+
 int cmd_variants(int argc, char **argv) {
   Args a("variants", argc, argv, {"--list", "--json", "--help", "--count"},
          {"--shader", "--tier", "--variant", "--target", "-o", "--hdr"});
-  if (a.flag("--help")) {
-    puts(
-        "usage: tiershade variants [--list] [--json] [--count] [--shader S] [--tier ps20|ps2b|sm3]...\n"
-        "       tiershade variants SCENE --tier T [--target essl100|essl300|glsl330] [--hdr integer|float] -o DIR\n"
-        "       tiershade variants --shader S [--variant V]... [--tier T]... [--target T] -o DIR\n"
-        "Lists every variant: tier x static combos x dynamic combos, minus the skip rules\n"
-        "declared in shaders/<shader>.variants. A variant is named TIER:NAME=V,... and can\n"
-        "also be given by its index in the full list of its shader.\n"
-        "With -o DIR it writes a shader bundle for engines (docs/bundles.md): the self-contained\n"
-        "production GLSL of the variants a scene needs (or of the variants given), and\n"
-        "DIR/manifest.json with their defines, attributes, uniforms, sampler units and slots.\n"
-        "--target defaults to essl300. An existing DIR is replaced only if it is a bundle.");
-    return 0;
-  }
+  if (a.help(kHelp)) return 0;
   if (!a.positional().empty() && !a.has("-o"))
     a.fail("unexpected argument '" + a.positional()[0] +
            "' (a scene bundle: tiershade variants SCENE --tier T -o DIR)");

@@ -1,13 +1,12 @@
 // tiershade families: the color_correction family: input records (random and hard cases),
 // the LUT textures, and the bridge to its C twin (c_ref/twins/color_correction.c).
 #include <cmath>
+#include <iterator>
 #include <limits>
 
 #include "families/color_correction_inputs.h"
+#include "families/record_family.h"
 #include "twins/color_correction.h"
-#include "families/family.h"
-#include "families/hard_cases.h"
-#include "families/slot_table.h"
 
 namespace {
 
@@ -25,31 +24,10 @@ cc_variant to_cc(const Variant &v) {
   return c;
 }
 
-void gather(const FamilyInputs &in, int x, int y, ts_vec4f rec[CC_SLOTS]) {
-  for (int k = 0; k < CC_SLOTS; ++k) rec[k] = in.slot(x, y, k);
-}
-
-ts_vec4f eval_f(const Variant &v, const FamilyInputs &in, int x, int y) {
-  ts_vec4f rec[CC_SLOTS];
-  gather(in, x, y, rec);
-  const cc_variant c = to_cc(v);
+cc_luts luts_of(const FamilyInputs &in) {
   cc_luts luts;
   cc_luts_of(in, &luts);
-  return color_correction_f(&c, rec, &luts);
-}
-
-ts_vec4d eval_d(const Variant &v, const FamilyInputs &in, int x, int y) {
-  ts_vec4f rec[CC_SLOTS];
-  gather(in, x, y, rec);
-  const cc_variant c = to_cc(v);
-  cc_luts luts;
-  cc_luts_of(in, &luts);
-  return color_correction_d(&c, rec, &luts);
-}
-
-void output_range(const Variant &, float *lo, float *hi) {
-  *lo = 0.f;  // the output is saturated (an 8-bit display target)
-  *hi = 1.f;
+  return luts;
 }
 
 // A LUT with random nodes in [-0.25, 1.25] (random, so that every tap and weight shows in
@@ -67,17 +45,18 @@ Lut3D random_lut(Rng &r, int n, bool hard) {
   return l;
 }
 
-void random_pixel(Rng &r, int n, ts_vec4f rec[CC_SLOTS]) {
+// The grids' LUT edge: Source's 32^3 on the random grid; on the hard grid an odd 17^3 (a common
+// .cube edge), so that both power-of-two and other edges are addressed.
+constexpr int kHardLutEdge = 17;
+int lut_edge(InputSet set) { return set == InputSet::Random ? 32 : kHardLutEdge; }
+
+void random_pixel(Rng &r, InputSet set, ts_vec4f rec[CC_SLOTS]) {
   rec[CC_SLOT_COLOR] = ts_v4f(r.uniform(-0.1f, 1.1f), r.uniform(-0.1f, 1.1f), r.uniform(-0.1f, 1.1f), r.uniform(0, 1));
   rec[CC_SLOT_WEIGHTS] =
       ts_v4f(r.uniform(-0.25f, 1.25f), r.uniform(-0.25f, 1.25f), r.uniform(-0.25f, 1.25f), r.uniform(-0.25f, 1.25f));
   rec[CC_SLOT_PARAMS] = ts_v4f(r.uniform(-0.25f, 1.25f), 0, 0, 0);
-  rec[CC_SLOT_LUT] = cc_lut_params(n);
+  rec[CC_SLOT_LUT] = cc_lut_params(lut_edge(set));
 }
-
-// The hard grid's LUT edge: an odd 17^3 (a common .cube edge), so that both power-of-two and
-// other edges are addressed (the random grid has Source's 32^3).
-constexpr int kHardLutEdge = 17;
 
 // lattice(): a random lattice node k/(N-1) of the hard grid's LUTs, for tests/conform/color_correction.cases.
 const CaseFunctionRegistrar kCaseFunctions("color_correction",
@@ -87,14 +66,10 @@ const CaseFunctionRegistrar kCaseFunctions("color_correction",
                                                    static_cast<float>(env.rng->next() % n) / static_cast<float>(n - 1);
                                              }}});
 
-void make_inputs(InputSet set, int w, int h, uint32_t seed, FamilyInputs *out) {
-  const int n = set == InputSet::Random ? 32 : kHardLutEdge;
-  Rng r(seed);
-  // The hard cases: tests/conform/color_correction.cases.
-  fill_record_grid(
-      "color_correction", set, w, h, CC_SLOTS, r, [&](ts_vec4f *rec) { random_pixel(r, n, rec); }, out);
+// The LUTs, drawn after the records (and the hard cases of tests/conform/color_correction.cases).
+void random_luts(Rng &r, InputSet set, FamilyInputs *out) {
   std::vector<Lut3D> luts;
-  for (int i = 0; i < CC_MAX_LOOKUPS; ++i) luts.push_back(random_lut(r, n, set == InputSet::Hard));
+  for (int i = 0; i < CC_MAX_LOOKUPS; ++i) luts.push_back(random_lut(r, lut_edge(set), set == InputSet::Hard));
   cc_set_luts(out, {&luts[0], &luts[1], &luts[2], &luts[3]}, true);
   // LUTs 1 and 3 are NEAREST, so that both filters meet both filtering variants
   // (shader filtering samples texel centres: docs/color_correction.md).
@@ -105,18 +80,11 @@ void make_inputs(InputSet set, int w, int h, uint32_t seed, FamilyInputs *out) {
 }
 
 // The record layout: shaders/color_correction_slots.glsl, the one table (slot_table.h).
-#define TS_SLOT TS_SLOT_ROW
-constexpr SlotRow kSlotRows[] = {
-#include "../../shaders/color_correction_slots.glsl"
-};
-#undef TS_SLOT
-static_assert(slot_rows_valid(kSlotRows, CC_SLOTS, CC_PIXEL_SLOTS), "shaders/color_correction_slots.glsl: bad rows");
-
-std::vector<std::string> slot_names() { return slot_names_of(kSlotRows); }
-
-void bind_uniforms(const GlFns &gl, GLuint program, const std::vector<ts_vec4f> &shared) {
-  bind_slot_uniforms(gl, program, shared, kSlotRows, CC_PIXEL_SLOTS);
-}
+#define TS_SLOT_FILE "../../shaders/color_correction_slots.glsl"
+#include "families/slot_rows.inc"
+constexpr RecordLayout kLayout = {
+    "color_correction",   CC_SLOTS,         CC_PIXEL_SLOTS, kSlotRows,
+    std::size(kSlotRows), output_range_unit};  // the output is saturated (an 8-bit display target)
 
 }  // namespace
 
@@ -154,8 +122,6 @@ void cc_luts_of(const FamilyInputs &in, cc_luts *out) {
   }
 }
 
-const ShaderFamily kColorCorrectionFamily = {
-    "color_correction", CC_SLOTS,       slot_names(),  make_inputs, eval_f, eval_d,
-    output_range,       CC_PIXEL_SLOTS, bind_uniforms,
-};
+const ShaderFamily kColorCorrectionFamily =
+    twin_family<kLayout, to_cc, luts_of, color_correction_f, color_correction_d, random_pixel, random_luts>();
 const FamilyRegistrar kRegister(&kColorCorrectionFamily);

@@ -1,5 +1,5 @@
 // tiershade families: input records and LUT textures of the color_correction family, for
-// the demo, the benchmark and the tests (the family itself: family_color_correction.cpp).
+// the demo, the benchmark and the tests (the family itself: color_correction.cpp).
 #pragma once
 #include <vector>
 

@@ -1,5 +1,6 @@
 // tiershade families: shader-family plumbing shared by every family (see family.h).
 #include "families/family.h"
+#include "families/record_family.h"
 
 #include <cmath>
 
@@ -11,6 +12,9 @@ ts_vec4f FamilyInputs::slot(int x, int y, int k) const {
   if (k >= slots) return shared.at(k);
   const float *p = &records[(static_cast<size_t>(y + k * h) * w + x) * 4];
   return ts_v4f(p[0], p[1], p[2], p[3]);
+}
+void FamilyInputs::gather(int x, int y, int n, ts_vec4f *rec) const {
+  for (int k = 0; k < n; ++k) rec[k] = slot(x, y, k);
 }
 void FamilyInputs::set_slot(int x, int y, int k, ts_vec4f v) {
   float *p = &records[(static_cast<size_t>(y + k * h) * w + x) * 4];
@@ -92,6 +96,29 @@ std::vector<Define> variant_defines(const Variant &v, InputMode mode) {
   if (mode == InputMode::Conform) d.push_back({"TS_CONFORM", "1"});
   if (mode == InputMode::Deferred) d.push_back({"TS_DEFERRED", "1"});
   return d;
+}
+
+void output_range_half(const Variant &, float *lo, float *hi) {
+  *lo = 0.f;
+  *hi = 65504.f;
+}
+void output_range_unit(const Variant &, float *lo, float *hi) {
+  *lo = 0.f;
+  *hi = 1.f;
+}
+void output_range_by_output_mode(const Variant &v, float *lo, float *hi) {
+  (v.value("OUTPUT_MODE") == 0 ? output_range_half : output_range_unit)(v, lo, hi);
+}
+
+TextureDesc blank_texture(const std::string &sampler, int w, int h, bool linear, bool repeat) {
+  TextureDesc t;
+  t.sampler = sampler;
+  t.w = w;
+  t.h = h;
+  t.linear = linear;
+  t.repeat = repeat;
+  t.rgba.assign(static_cast<size_t>(w) * h * 4, 0.f);
+  return t;
 }
 
 ts_tex2d tex2d_of(const TextureDesc &t) {

@@ -27,6 +27,7 @@ struct FamilyInputs {
   // others are shared by every pixel and passed to GL as the production uniforms.
   std::vector<ts_vec4f> shared;  // empty, or the family's full record with the shared slots set
   ts_vec4f slot(int x, int y, int k) const;
+  void gather(int x, int y, int n, ts_vec4f *rec) const;  // rec[k] = slot(x, y, k), k < n
   void set_slot(int x, int y, int k, ts_vec4f v);
   void resize(int w_, int h_, int slots_);
   TextureDesc record_texture() const;
@@ -70,14 +71,15 @@ struct ShaderFamily {
 const ShaderFamily *find_family(const std::string &name);
 std::vector<const ShaderFamily *> all_families();  // sorted by name
 
-// Each family registers itself from its own file (glue/family_<name>.cpp):
+// Each family registers itself from its own file (glue/families/<name>.cpp, built with
+// families/record_family.h):
 //   static const FamilyRegistrar kRegister(&kMyFamily);
 struct FamilyRegistrar {
   explicit FamilyRegistrar(const ShaderFamily *f);
 };
 
 // Extra sections of `tiershade demo` and `tiershade bench`, registered the same way by the
-// files that own them (glue/demo_<name>.cpp, glue/bench_<name>.cpp), run in name order
+// files that own them (glue/demo/<name>.cpp, glue/bench/<name>.cpp), run in name order
 // after the model-lighting section.
 struct DemoOptions {
   std::string dir;  // output directory (exists)
@@ -110,6 +112,9 @@ std::vector<const BenchSection *> bench_sections();
 // #defines for a variant: each combo value, the tier (TS_TIER_PS20/PS2B/SM3) and
 // the input mode (TS_CONFORM, TS_DEFERRED, or nothing for production).
 std::vector<Define> variant_defines(const Variant &v, InputMode mode);
+
+// An RGBA32F 2D texture of w x h zeros with the given sampler name and filtering.
+TextureDesc blank_texture(const std::string &sampler, int w, int h, bool linear, bool repeat);
 
 // The C sampler's view of a texture the shader samples (same filtering and wrapping).
 ts_tex2d tex2d_of(const TextureDesc &t);

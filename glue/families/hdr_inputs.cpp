@@ -1,4 +1,4 @@
-// tiershade families: input generators shared by the HDR families (see hdr_family_util.h).
+// tiershade families: input generators shared by the HDR families (see hdr_inputs.h).
 #include "families/hdr_inputs.h"
 
 #include <cmath>
@@ -6,13 +6,7 @@
 #include "math/hdr_formats.h"
 
 TextureDesc hdr_test_texture(Rng &r, const std::string &sampler, int w, int h, bool linear) {
-  TextureDesc t;
-  t.sampler = sampler;
-  t.w = w;
-  t.h = h;
-  t.linear = linear;
-  t.repeat = false;
-  t.rgba.resize(static_cast<size_t>(w) * h * 4);
+  TextureDesc t = blank_texture(sampler, w, h, linear, false);
   for (size_t i = 0; i < t.rgba.size(); ++i) {
     float v;
     const uint32_t k = r.next() % 64;

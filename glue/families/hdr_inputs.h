@@ -1,5 +1,5 @@
 // tiershade families: input generators shared by the HDR post-processing families
-// (luminance_compare, bloom_downsample, bloom_blur, hdr_tonemap): half-quantised
+// (bloom_downsample, bloom_blur, hdr_tonemap, luminance_compare): half-quantised
 // HDR textures like the fp16 frames they read, and fragment positions.
 #pragma once
 #include <string>
@@ -10,6 +10,13 @@
 // zero to half, as llvmpipe writes them: c_ref/math/hdr_formats.h): mostly a wide HDR
 // range (1e-3 .. 64, log-uniform), with some zeros, 65504s and half denormals.
 TextureDesc hdr_test_texture(Rng &r, const std::string &sampler, int w, int h, bool linear);
+
+// The textures of a family that samples one such texture (bilinear, named Sampler, W x H),
+// drawn after its records (families/record_family.h: record_inputs).
+template <const char *Sampler, int W, int H>
+void one_hdr_texture(Rng &r, InputSet, FamilyInputs *out) {
+  out->textures = {hdr_test_texture(r, Sampler, W, H, true)};
+}
 
 // A fragment position in a w x h target: half of the time an exact pixel centre
 // (i + 0.5, as gl_FragCoord gives), otherwise anywhere in [-1, w + 1] x [-1, h + 1].

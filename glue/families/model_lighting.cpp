@@ -1,33 +1,21 @@
 // tiershade families: the model_lighting family: input records (random and hard
 // cases), and the bridge to its C twin (c_ref/twins/model_lighting.c).
 #include <cmath>
+#include <iterator>
 #include <memory>
 
 #include "families/model_lighting.h"
-#include "families/slot_table.h"
-#include "families/family.h"
-#include "families/hard_cases.h"
+#include "families/record_family.h"
 #include "twins/model_lighting.h"
 #include "twins/model_lighting_batch.h"
 
 namespace {
 
-// The C views of the family's textures, in make_inputs' order.
-enum { TEX_ALBEDO, TEX_NORMAL, TEX_EXPONENT, TEX_WARP, TEX_ENVMAP, TEX_COUNT };
-struct Views {
-  ts_tex2d t2[4];
-  ts_texcube cube;
-  ml_textures tex;
-  explicit Views(const FamilyInputs &in) {
-    for (int i = 0; i < 4; ++i) t2[i] = tex2d_of(in.textures.at(i));
-    cube = texcube_of(in.textures.at(TEX_ENVMAP));
-    tex = {&t2[TEX_ALBEDO], &t2[TEX_NORMAL], &t2[TEX_EXPONENT], &t2[TEX_WARP], &cube};
-  }
-};
-
-void gather(const FamilyInputs &in, int x, int y, ts_vec4f rec[ML_SLOTS]) {
-  for (int k = 0; k < ML_SLOTS; ++k) rec[k] = in.slot(x, y, k);
-}
+// The record layout: shaders/model_lighting_slots.glsl, the one table (slot_table.h).
+#define TS_SLOT_FILE "../../shaders/model_lighting_slots.glsl"
+#include "families/slot_rows.inc"
+constexpr RecordLayout kLayout = {"model_lighting",           ML_SLOTS, ML_PIXEL_SLOTS, kSlotRows, std::size(kSlotRows),
+                                  output_range_by_output_mode};
 
 // ml_variant_of looks combos up by name: cache it per thread for the frame's variant.
 const ml_variant &cached_ml(const Variant &v) {
@@ -46,21 +34,15 @@ const ml_variant &cached_ml(const Variant &v) {
 
 // The texture views, rebuilt only when the frame's textures change (per thread).
 const ml_textures &cached_views(const FamilyInputs &in) {
-  thread_local const float *key[TEX_COUNT] = {};
-  thread_local std::unique_ptr<Views> views;
-  bool same = views != nullptr && in.textures.size() == TEX_COUNT;
-  for (int i = 0; same && i < TEX_COUNT; ++i) same = key[i] == in.textures[i].rgba.data();
+  thread_local const float *key[ML_TEX_COUNT] = {};
+  thread_local std::unique_ptr<MlTextureViews> views;
+  bool same = views != nullptr && in.textures.size() == ML_TEX_COUNT;
+  for (int i = 0; same && i < ML_TEX_COUNT; ++i) same = key[i] == in.textures[i].rgba.data();
   if (!same) {
-    views.reset(new Views(in));
-    for (int i = 0; i < TEX_COUNT; ++i) key[i] = in.textures.at(i).rgba.data();
+    views.reset(new MlTextureViews(in));
+    for (int i = 0; i < ML_TEX_COUNT; ++i) key[i] = in.textures.at(i).rgba.data();
   }
   return views->tex;
-}
-
-ts_vec4f eval_f(const Variant &v, const FamilyInputs &in, int x, int y) {
-  ts_vec4f rec[ML_SLOTS];
-  gather(in, x, y, rec);
-  return model_lighting_f(&cached_ml(v), rec, &cached_views(in));
 }
 
 // The batch twin straight on the record texture: slot k of pixels (x0.., y) is a run of
@@ -69,17 +51,6 @@ void eval_row_f(const Variant &v, const FamilyInputs &in, int x0, int y, int cou
   ml_batch_input b;
   point_batch_at_row(in, x0, y, ML_SLOTS, &b);
   model_lighting_f_batch(&cached_ml(v), &b, &cached_views(in), out, count);
-}
-
-ts_vec4d eval_d(const Variant &v, const FamilyInputs &in, int x, int y) {
-  ts_vec4f rec[ML_SLOTS];
-  gather(in, x, y, rec);
-  return model_lighting_d(&cached_ml(v), rec, &cached_views(in));
-}
-
-void output_range(const Variant &v, float *lo, float *hi) {
-  *lo = 0.f;
-  *hi = v.value("OUTPUT_MODE") == 0 ? 65504.f : 1.f;
 }
 
 ts_vec4f v4(ts_vec3f v, float w) { return ts_v4f(v.x, v.y, v.z, w); }
@@ -97,7 +68,7 @@ void random_light(Rng &r, ts_vec4f l[5]) {
   l[4] = type == 2 ? ts_v4f(1, 0, 0, 0) : ts_v4f(r.uniform(0.05f, 1.f), r.uniform(0, 0.5f), r.uniform(0, 0.5f), 0);
 }
 
-void random_pixel(Rng &r, ts_vec4f rec[ML_SLOTS]) {
+void random_pixel(Rng &r, InputSet, ts_vec4f rec[ML_SLOTS]) {
   rec[ML_SLOT_NORMAL] = v4(ts_scale3f(r.unit_vector(), r.uniform(0.2f, 3.f)), 0.f);
   rec[ML_SLOT_POSITION] = ts_v4f(r.uniform(-2, 2), r.uniform(-2, 2), r.uniform(-2, 2), 1.f);
   rec[ML_SLOT_UV] = ts_v4f(r.uniform(-1, 2), r.uniform(-1, 2), 0, 0);
@@ -125,27 +96,14 @@ void random_pixel(Rng &r, ts_vec4f rec[ML_SLOTS]) {
   for (int i = 0; i < ML_MAX_LIGHTS; ++i) random_light(r, &rec[ML_SLOT_LIGHT0 + 5 * i]);
 }
 
-void make_inputs(InputSet set, int w, int h, uint32_t seed, FamilyInputs *out) {
-  Rng r(seed);
-  // The hard cases: tests/conform/model_lighting.cases.
-  fill_record_grid(
-      "model_lighting", set, w, h, ML_SLOTS, r, [&](ts_vec4f *rec) { random_pixel(r, rec); }, out);
-  // Textures: RGBA32F, bilinear (RGBA8 would take llvmpipe's 8-bit fixed-point
-  // filtering path: platform notes section 4). Order: enum TEX_*.
-  auto tex2d = [&](const char *name, int w, int h, bool repeat) {
-    TextureDesc t;
-    t.sampler = name;
-    t.w = w;
-    t.h = h;
-    t.linear = true;
-    t.repeat = repeat;
-    t.rgba.resize(static_cast<size_t>(w) * h * 4);
-    return t;
-  };
+// Textures: RGBA32F, bilinear (RGBA8 would take llvmpipe's 8-bit fixed-point filtering path:
+// platform notes section 4), drawn after the records (and the hard cases of
+// tests/conform/model_lighting.cases). Order: enum ml_texture_index.
+void random_textures(Rng &r, InputSet, FamilyInputs *out) {
   auto texel = [](TextureDesc &t, int x, int y) { return &t.rgba[(static_cast<size_t>(y) * t.w + x) * 4]; };
-  TextureDesc albedo = tex2d("u_albedo", 16, 16, true);
+  TextureDesc albedo = blank_texture("u_albedo", 16, 16, true, true);
   for (float &v : albedo.rgba) v = r.uniform(0.05f, 1.f);
-  TextureDesc nmap = tex2d("u_normal_map", 16, 16, true);
+  TextureDesc nmap = blank_texture("u_normal_map", 16, 16, true, true);
   for (int y = 0; y < 16; ++y)
     for (int x = 0; x < 16; ++x) {
       const ts_vec3f d = r.unit_vector();
@@ -155,7 +113,7 @@ void make_inputs(InputSet set, int w, int h, uint32_t seed, FamilyInputs *out) {
       p[2] = 0.5f + 0.5f * std::fabs(d.z);
       p[3] = r.uniform(0, 1);
     }
-  TextureDesc expmap = tex2d("u_exponent_map", 16, 16, true);
+  TextureDesc expmap = blank_texture("u_exponent_map", 16, 16, true, true);
   for (float &v : expmap.rgba) v = r.uniform(0, 1);
   // Hard-case blocks (tests/conform/model_lighting.cases): texels (0..1, 0..1) of the normal map are grey, so
   // they decode to a zero vector; texels (2..3, 0..1) are a flat (0.5, 0.5, 1) normal
@@ -167,7 +125,7 @@ void make_inputs(InputSet set, int w, int h, uint32_t seed, FamilyInputs *out) {
       p[2] = x < 2 ? 0.5f : 1.f;
       if (x >= 2) texel(expmap, x, y)[0] = 1.f;
     }
-  TextureDesc warp = tex2d("u_light_warp", 32, 1, false);
+  TextureDesc warp = blank_texture("u_light_warp", 32, 1, true, false);
   for (float &v : warp.rgba) v = r.uniform(0, 1);
   TextureDesc env;
   env.sampler = "u_envmap";
@@ -179,21 +137,13 @@ void make_inputs(InputSet set, int w, int h, uint32_t seed, FamilyInputs *out) {
   out->textures = {albedo, nmap, expmap, warp, env};
 }
 
-// The record layout: shaders/model_lighting_slots.glsl, the one table (slot_table.h).
-#define TS_SLOT TS_SLOT_ROW
-constexpr SlotRow kSlotRows[] = {
-#include "../../shaders/model_lighting_slots.glsl"
-};
-#undef TS_SLOT
-static_assert(slot_rows_valid(kSlotRows, ML_SLOTS, ML_PIXEL_SLOTS), "shaders/model_lighting_slots.glsl: bad rows");
-
-std::vector<std::string> slot_names() { return slot_names_of(kSlotRows); }
-
-void bind_uniforms(const GlFns &gl, GLuint program, const std::vector<ts_vec4f> &shared) {
-  bind_slot_uniforms(gl, program, shared, kSlotRows, ML_PIXEL_SLOTS);
-}
-
 }  // namespace
+
+MlTextureViews::MlTextureViews(const FamilyInputs &in) {
+  for (int i = 0; i < 4; ++i) t2[i] = tex2d_of(in.textures.at(i));
+  cube = texcube_of(in.textures.at(ML_TEX_ENVMAP));
+  tex = {&t2[ML_TEX_ALBEDO], &t2[ML_TEX_NORMAL], &t2[ML_TEX_EXPONENT], &t2[ML_TEX_WARP], &cube};
+}
 
 ml_variant ml_variant_of(const Variant &v) {
   ml_variant m = {};
@@ -210,8 +160,8 @@ ml_variant ml_variant_of(const Variant &v) {
   return m;
 }
 
-const ShaderFamily kModelLightingFamily = {
-    "model_lighting", ML_SLOTS,     slot_names(),   make_inputs,   eval_f,
-    eval_d,           output_range, ML_PIXEL_SLOTS, bind_uniforms, eval_row_f,
-};
+const ShaderFamily kModelLightingFamily =
+    family_of<kLayout>(record_inputs<kLayout, random_pixel, random_textures>,
+                       eval_twin<kLayout, cached_ml, cached_views, model_lighting_f>,
+                       eval_twin<kLayout, cached_ml, cached_views, model_lighting_d>, eval_row_f);
 const FamilyRegistrar kRegister(&kModelLightingFamily);

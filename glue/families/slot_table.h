@@ -23,12 +23,8 @@ struct SlotRow {
   const char *source;  // production uniform (or, per pixel, the varying/texture)
 };
 
-// Turns a table row into a SlotRow. A family file includes its table between these lines:
-//   #define TS_SLOT TS_SLOT_ROW
-//   constexpr SlotRow kSlotRows[] = {
-//   #include "../../shaders/<family>_slots.glsl"
-//   };
-//   #undef TS_SLOT
+// Turns a table row into a SlotRow. A family file gets its table as `kSlotRows` from
+// families/slot_rows.inc (and names it in its RecordLayout, families/record_family.h).
 #define TS_SLOT_ROW(ID, first, count, name, naming, source) {first, count, #name, SlotNaming::naming, #source},
 
 // Slots per element of a naming (0: any count).
@@ -37,12 +33,12 @@ constexpr int slot_naming_period(SlotNaming n) {
 }
 
 // The rows are in slot order with no gap or overlap, cover [0, slots), no row straddles the
-// per-pixel boundary, and each row's count suits its naming. Checked by a static_assert in
-// every family file, so a table edit that breaks the layout does not compile.
-template <size_t N>
-constexpr bool slot_rows_valid(const SlotRow (&rows)[N], int slots, int pixel_slots) {
+// per-pixel boundary, and each row's count suits its naming. Checked by a static_assert for
+// every family (families/record_family.h: family_of), so a table edit that breaks the layout
+// does not compile.
+constexpr bool slot_rows_valid(const SlotRow *rows, size_t n, int slots, int pixel_slots) {
   int next = 0;
-  for (size_t i = 0; i < N; ++i) {
+  for (size_t i = 0; i < n; ++i) {
     const SlotRow &r = rows[i];
     if (r.first != next || r.count < 1) return false;
     if (r.first < pixel_slots && r.first + r.count > pixel_slots) return false;
@@ -55,17 +51,8 @@ constexpr bool slot_rows_valid(const SlotRow (&rows)[N], int slots, int pixel_sl
 
 // One name per slot, in slot order.
 std::vector<std::string> slot_names_of(const SlotRow *rows, size_t n);
-template <size_t N>
-std::vector<std::string> slot_names_of(const SlotRow (&rows)[N]) {
-  return slot_names_of(rows, N);
-}
 
 // Deferred frames: sets each shared row's uniform (vec4 or vec4 array) from `shared`; rows below
 // pixel_slots are per pixel and skipped. A uniform the program does not use is skipped too.
 void bind_slot_uniforms(const GlFns &gl, GLuint program, const std::vector<ts_vec4f> &shared, const SlotRow *rows,
                         size_t n, int pixel_slots);
-template <size_t N>
-void bind_slot_uniforms(const GlFns &gl, GLuint program, const std::vector<ts_vec4f> &shared, const SlotRow (&rows)[N],
-                        int pixel_slots) {
-  bind_slot_uniforms(gl, program, shared, rows, N, pixel_slots);
-}

@@ -1,17 +1,17 @@
 // tiershade families: the world_lighting family (lightmaps, radiosity normal mapping,
 // cube-map specular): its input records (random and hard cases), its test textures,
 // and the bridge to its C twin (c_ref/twins/world_lighting.c). The texture builders are
-// shared with the demo and the benchmark through family_world_lighting.h.
+// shared with the demo and the benchmark through world_lighting.h.
 #include "families/world_lighting.h"
-#include "families/slot_table.h"
-
-#include "families/hard_cases.h"
-#include "twins/world_lighting_batch.h"
 
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <iterator>
 #include <limits>
+
+#include "families/record_family.h"
+#include "twins/world_lighting_batch.h"
 
 namespace {
 
@@ -45,16 +45,23 @@ struct TexViews {
   }
 };
 
-void gather(const FamilyInputs &in, int x, int y, ts_vec4f rec[WL_SLOTS]) {
-  for (int k = 0; k < WL_SLOTS; ++k) rec[k] = in.slot(x, y, k);
-}
+// Pixel (x, y)'s twin arguments: its record, the variant and the texture views (built per call).
+struct PixelCall {
+  ts_vec4f rec[WL_SLOTS];
+  wl_variant w;
+  TexViews tv;
+  PixelCall(const Variant &v, const FamilyInputs &in, int x, int y) : w(wl_variant_of(v)), tv(in) {
+    in.gather(x, y, WL_SLOTS, rec);
+  }
+};
 
 ts_vec4f eval_f(const Variant &v, const FamilyInputs &in, int x, int y) {
-  ts_vec4f rec[WL_SLOTS];
-  gather(in, x, y, rec);
-  const wl_variant w = wl_variant_of(v);
-  const TexViews tv(in);
-  return world_lighting_f(&w, rec, &tv.t);
+  const PixelCall c(v, in, x, y);
+  return world_lighting_f(&c.w, c.rec, &c.tv.t);
+}
+ts_vec4d eval_d(const Variant &v, const FamilyInputs &in, int x, int y) {
+  const PixelCall c(v, in, x, y);
+  return world_lighting_d(&c.w, c.rec, &c.tv.t);
 }
 
 // The batch twin on the record texture's row (stride 1); shared slots have stride 0.
@@ -64,19 +71,6 @@ void eval_row_f(const Variant &v, const FamilyInputs &in, int x0, int y, int cou
   const wl_variant w = wl_variant_of(v);
   const TexViews tv(in);
   world_lighting_f_batch(&w, &b, &tv.t, out, count);
-}
-
-ts_vec4d eval_d(const Variant &v, const FamilyInputs &in, int x, int y) {
-  ts_vec4f rec[WL_SLOTS];
-  gather(in, x, y, rec);
-  const wl_variant w = wl_variant_of(v);
-  const TexViews tv(in);
-  return world_lighting_d(&w, rec, &tv.t);
-}
-
-void output_range(const Variant &, float *lo, float *hi) {
-  *lo = 0.f;
-  *hi = 65504.f;
 }
 
 ts_vec4f v4(ts_vec3f v, float w) { return ts_v4f(v.x, v.y, v.z, w); }
@@ -132,21 +126,10 @@ wl_variant wl_variant_of(const Variant &v) {
   return w;
 }
 
-TextureDesc wl_texture(const char *sampler, int w, int h, bool linear, bool repeat) {
-  TextureDesc t;
-  t.sampler = sampler;
-  t.w = w;
-  t.h = h;
-  t.linear = linear;
-  t.repeat = repeat;
-  t.rgba.assign(static_cast<size_t>(w) * h * 4, 0.f);
-  return t;
-}
-
 void wl_test_textures(Rng &r, std::vector<TextureDesc> *out) {
-  TextureDesc base = wl_texture("u_base", kTexSize, kTexSize, true, true);
+  TextureDesc base = blank_texture("u_base", kTexSize, kTexSize, true, true);
   for (size_t i = 0; i < base.rgba.size(); ++i) base.rgba[i] = i % 4 == 3 ? r.uniform(0, 1) : r.uniform(0.05f, 1.f);
-  TextureDesc nm = wl_texture("u_normalmap", kTexSize, kTexSize, true, true);
+  TextureDesc nm = blank_texture("u_normalmap", kTexSize, kTexSize, true, true);
   for (int y = 0; y < kTexSize / 2; ++y)
     for (int x = 0; x < kTexSize; ++x) {
       // Mostly outward normals (z > -0.2), stored 0.5 n + 0.5 like an 8-bit normal map.
@@ -159,7 +142,7 @@ void wl_test_textures(Rng &r, std::vector<TextureDesc> *out) {
       p[3] = r.uniform(0, 1);
     }
   for (int i = 0; i < kNumNmSpecial; ++i) put_block(&nm, 2 * i, kTexSize / 2, kNmSpecial[i]);
-  TextureDesc lm = wl_texture("u_lightmap", kPageW, kPageH, true, false);
+  TextureDesc lm = blank_texture("u_lightmap", kPageW, kPageH, true, false);
   for (int y = 0; y < kPageH / 2; ++y)
     for (int x = 0; x < kPageW; ++x) {
       float *p = &lm.rgba[(static_cast<size_t>(y) * kPageW + x) * 4];
@@ -168,11 +151,11 @@ void wl_test_textures(Rng &r, std::vector<TextureDesc> *out) {
       p[3] = static_cast<float>(128 - 8 + static_cast<int>(r.next() % 11)) / 255.f;
     }
   for (int i = 0; i < kNumLmSpecial; ++i) put_block(&lm, 2 * i, kPageH / 2, kLmSpecial[i]);
-  TextureDesc mask = wl_texture("u_envmap_mask", kTexSize, kTexSize, true, true);
+  TextureDesc mask = blank_texture("u_envmap_mask", kTexSize, kTexSize, true, true);
   for (float &v : mask.rgba) v = r.uniform(0, 1);
   // The cube: NEAREST, because GLES cube maps are always seamless and seamless LINEAR
   // filtering is not reproducible per pixel (docs/world_lighting.md, "Cube maps on GLES").
-  TextureDesc cube = wl_texture("u_envmap", kCubeSize, kCubeSize * 6, false, false);
+  TextureDesc cube = blank_texture("u_envmap", kCubeSize, kCubeSize * 6, false, false);
   cube.kind = TexKind::Cube;
   cube.h = kCubeSize;
   for (size_t i = 0; i < cube.rgba.size(); ++i) cube.rgba[i] = i % 4 == 3 ? 1.f : r.uniform(0.f, 4.f);
@@ -201,7 +184,7 @@ void wl_defaults(ts_vec4f rec[WL_SLOTS]) {
 
 namespace {
 
-void random_pixel(Rng &r, ts_vec4f rec[WL_SLOTS]) {
+void random_pixel(Rng &r, InputSet, ts_vec4f rec[WL_SLOTS]) {
   // Base/normal/mask uv: any u (wraps), v inside the regular rows of a period.
   const float period = static_cast<float>(static_cast<int>(r.next() % 3) - 1);
   rec[WL_SLOT_UV] =
@@ -231,32 +214,22 @@ void random_pixel(Rng &r, ts_vec4f rec[WL_SLOTS]) {
   rec[WL_SLOT_FOG_PARAMS] = ts_v4f(1.f / range, start / range, 0, 0);
 }
 
-void make_inputs(InputSet set, int w, int h, uint32_t seed, FamilyInputs *out) {
-  Rng r(seed);
-  // The hard cases: tests/conform/world_lighting.cases (aimed at the special blocks above).
-  fill_record_grid(
-      "world_lighting", set, w, h, WL_SLOTS, r, [&](ts_vec4f *rec) { random_pixel(r, rec); }, out);
-  wl_test_textures(r, &out->textures);
-}
+// The conformance textures, drawn after the records (and the hard cases of
+// tests/conform/world_lighting.cases, aimed at the special blocks above).
+void test_textures(Rng &r, InputSet, FamilyInputs *out) { wl_test_textures(r, &out->textures); }
 
 // The record layout: shaders/world_lighting_slots.glsl, the one table (slot_table.h).
-#define TS_SLOT TS_SLOT_ROW
-constexpr SlotRow kSlotRows[] = {
-#include "../../shaders/world_lighting_slots.glsl"
-};
-#undef TS_SLOT
-static_assert(slot_rows_valid(kSlotRows, WL_SLOTS, WL_PIXEL_SLOTS), "shaders/world_lighting_slots.glsl: bad rows");
-
-std::vector<std::string> slot_names() { return slot_names_of(kSlotRows); }
+#define TS_SLOT_FILE "../../shaders/world_lighting_slots.glsl"
+#include "families/slot_rows.inc"
+constexpr RecordLayout kLayout = {"world_lighting",     WL_SLOTS,         WL_PIXEL_SLOTS, kSlotRows,
+                                  std::size(kSlotRows), output_range_half};
 
 }  // namespace
 
 void wl_bind_uniforms(const GlFns &gl, GLuint program, const std::vector<ts_vec4f> &shared) {
-  bind_slot_uniforms(gl, program, shared, kSlotRows, WL_PIXEL_SLOTS);
+  bind_layout_uniforms<kLayout>(gl, program, shared);
 }
 
-const ShaderFamily kWorldLightingFamily = {
-    "world_lighting", WL_SLOTS,     slot_names(),   make_inputs,      eval_f,
-    eval_d,           output_range, WL_PIXEL_SLOTS, wl_bind_uniforms, eval_row_f,
-};
+const ShaderFamily kWorldLightingFamily =
+    family_of<kLayout>(record_inputs<kLayout, random_pixel, test_textures>, eval_f, eval_d, eval_row_f);
 static const FamilyRegistrar kRegister(&kWorldLightingFamily);

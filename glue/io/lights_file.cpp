@@ -1,36 +1,23 @@
 // tiershade io: the plain-text lights file (see lights_file.h).
 #include "io/lights_file.h"
 
-#include <sys/stat.h>
-
 #include <cmath>
 #include <cstdlib>
-#include <fstream>
 #include <sstream>
 
 #include <glm/gtc/constants.hpp>
 
+#include "io/text_lines.h"
+
 bool read_lights(const std::string &path, std::vector<ts_light> *out, std::string *err) {
-  struct stat st;
-  if (stat(path.c_str(), &st) != 0 || !S_ISREG(st.st_mode)) {
-    *err = "cannot read lights file '" + path + "' (not a readable regular file)";
-    return false;
-  }
-  std::ifstream f(path);
-  if (!f) {
-    *err = "cannot read lights file '" + path + "'";
-    return false;
-  }
+  TextLines f;
+  if (!f.open(path, "lights", err)) return false;
   std::string line;
-  int lineno = 0;
-  while (std::getline(f, line)) {
-    ++lineno;
-    const size_t hash = line.find('#');
-    if (hash != std::string::npos) line.resize(hash);
+  while (f.next(&line)) {
     std::istringstream in(line);
     std::string type;
     if (!(in >> type)) continue;
-    const std::string where = path + ":" + std::to_string(lineno) + ": ";
+    const std::string where = f.where() + ": ";
     std::vector<float> v;
     std::string tok;
     while (in >> tok) {
@@ -81,10 +68,7 @@ bool read_lights(const std::string &path, std::vector<ts_light> *out, std::strin
     }
     out->push_back(l);
   }
-  if (f.bad()) {
-    *err = "cannot read lights file '" + path + "' (read error after line " + std::to_string(lineno) + ")";
-    return false;
-  }
+  if (!f.finish(err)) return false;
   if (out->empty()) {
     *err = path + ": no lights";
     return false;

@@ -9,27 +9,13 @@
 
 #include "base/cube_faces.h"
 #include "base/image.h"
+#include "families/family.h"
 #include "io/radiance_hdr.h"
-
-namespace {
-
-TextureDesc tex2d(const char *sampler, int w, int h, bool repeat) {
-  TextureDesc t;
-  t.sampler = sampler;
-  t.w = w;
-  t.h = h;
-  t.linear = true;
-  t.repeat = repeat;
-  t.rgba.assign(static_cast<size_t>(w) * h * 4, 0.f);
-  return t;
-}
-
-}  // namespace
 
 TextureDesc make_bump_normal_map(const char *sampler, int n) {
   // A grid of round dimples (height h = -cos^2 bumps), normals from the height gradient;
   // alpha: a spec mask with glossy stripes.
-  TextureDesc t = tex2d(sampler, n, n, true);
+  TextureDesc t = blank_texture(sampler, n, n, true, true);
   const int cells = 8;
   for (int y = 0; y < n; ++y) {
     for (int x = 0; x < n; ++x) {
@@ -55,7 +41,7 @@ TextureDesc make_bump_normal_map(const char *sampler, int n) {
 }
 
 TextureDesc make_exponent_map(const char *sampler, int n) {
-  TextureDesc t = tex2d(sampler, n, n, true);
+  TextureDesc t = blank_texture(sampler, n, n, true, true);
   for (int y = 0; y < n; ++y) {
     for (int x = 0; x < n; ++x) {
       float *p = &t.rgba[(static_cast<size_t>(y) * n + x) * 4];
@@ -70,7 +56,7 @@ TextureDesc make_exponent_map(const char *sampler, int n) {
 }
 
 TextureDesc make_warp_ramp(const char *sampler) {
-  TextureDesc t = tex2d(sampler, 64, 1, false);
+  TextureDesc t = blank_texture(sampler, 64, 1, true, false);
   for (int x = 0; x < 64; ++x) {
     const double s = (x + 0.5) / 64;  // half-Lambert term, 0 (back) .. 1 (lit)
     float *p = &t.rgba[x * 4];

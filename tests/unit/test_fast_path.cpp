@@ -122,17 +122,7 @@ int main() {
   grids[2].in = deferred_copy(grids[0].in, fam->pixel_slots);
 
   // The C views of a grid's textures for the direct calls (make_inputs' order).
-  struct Views {
-    ts_tex2d t2[4];
-    ts_texcube cube;
-    ml_textures tex;
-    explicit Views(const FamilyInputs &in) {
-      for (int i = 0; i < 4; ++i) t2[i] = tex2d_of(in.textures.at(i));
-      cube = texcube_of(in.textures.at(4));
-      tex = {&t2[0], &t2[1], &t2[2], &t2[3], &cube};
-    }
-    Views(const Views &) = delete;
-  };
+  using Views = MlTextureViews;
 
   std::vector<int> fused_modes = {0};
   if (host_fma) fused_modes.push_back(1);

@@ -30,22 +30,11 @@
 #include "base/image.h"
 #include "color/lut_texture.h"
 #include "base/image_diff.h"
+#include "families/family.h"  // Rng (xorshift32; every seed below is nonzero)
 #include "math/ts_sampler3d.h"
 #include "unit_check.h"
 
 namespace {
-
-struct Rng {
-  uint32_t s;
-  explicit Rng(uint32_t seed) : s(seed) {}
-  uint32_t next() {
-    s ^= s << 13;
-    s ^= s >> 17;
-    s ^= s << 5;
-    return s;
-  }
-  float uniform(float lo, float hi) { return lo + (hi - lo) * static_cast<float>(next() >> 8) * (1.0f / 16777216.0f); }
-};
 
 const int kW = 256, kH = 128;  // 32768 coordinates per case
 
