@@ -167,7 +167,7 @@ bool bake_world(const WorldBakeInput &in, WorldBake *out, std::string *err) {
   out->cubes.clear();
   const int N = s.cube_size;
   for (const ts_vec3d &pos : s.probes) {
-    TextureDesc c = wl_texture("u_envmap", N, N * 6, true, false);
+    TextureDesc c = blank_texture("u_envmap", N, N * 6, true, false);
     c.kind = TexKind::Cube;
     c.h = N;
     for (int face = 0; face < 6; ++face) {
@@ -214,7 +214,7 @@ bool bake_world(const WorldBakeInput &in, WorldBake *out, std::string *err) {
 }
 
 TextureDesc encode_page(const WorldBakeInput &s, const WorldBake &b, int encoding) {
-  TextureDesc t = wl_texture("u_lightmap", s.page_w, s.page_h, encoding != WL_LM_RGBE, false);
+  TextureDesc t = blank_texture("u_lightmap", s.page_w, s.page_h, encoding != WL_LM_RGBE, false);
   for (size_t i = 0; i < b.page.size(); i += 4) {
     const float *in = &b.page[i];
     float *o = &t.rgba[i];

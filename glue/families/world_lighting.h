@@ -9,11 +9,6 @@
 extern const ShaderFamily kWorldLightingFamily;
 
 wl_variant wl_variant_of(const Variant &v);
-// An RGBA32F texture of w x h zeros with the given sampler name and filtering (the one
-// blank_texture of family.h, under the name its callers in bake/ and demo/ use).
-inline TextureDesc wl_texture(const char *sampler, int w, int h, bool linear, bool repeat) {
-  return blank_texture(sampler, w, h, linear, repeat);
-}
 // The conformance textures: u_base, u_normalmap, u_lightmap, u_envmap_mask, u_envmap.
 void wl_test_textures(Rng &r, std::vector<TextureDesc> *out);
 // Source's defaults in every slot (flat +Z frame, unit tints and scales, no fog).

@@ -46,7 +46,7 @@ bool scene_reference_linear(const Scene &s, const PreparedScene &p, const std::v
   TextureDesc page32;
   ts_tex2d page32_view{};
   if (!p.lightmap_page.empty()) {
-    page32 = wl_texture("u_lightmap", p.lightmap_w, p.lightmap_h, true, false);
+    page32 = blank_texture("u_lightmap", p.lightmap_w, p.lightmap_h, true, false);
     page32.rgba = p.lightmap_page;
     page32_view = tex2d_of(page32);
   }
