@@ -9,6 +9,7 @@
 #include <cstdio>
 #include <sstream>
 #include <thread>
+#include <tuple>
 
 #include "base/image_diff.h"
 #include "base/srgb.h"
@@ -104,9 +105,8 @@ bool timed_frame(const Scene &s, Tier tier, Backend be, Api api, int w, int h, i
   SceneRenderConfig cfg;
   cfg.backend = be;
   cfg.api = api;
-  cfg.w = w;
-  cfg.h = h;
   cfg.check = check;
+  std::tie(cfg.w, cfg.h) = std::make_pair(w, h);
   SceneRenderer r;
   if (!r.init(s, sel, cfg, err) || !r.frame(res, err)) return false;
   std::vector<double> t;

@@ -160,18 +160,24 @@ struct Probes {
   }
 };
 
-int nearest_probe(const Scene &s, const double c[3], int explicit_index) {
-  if (explicit_index >= 0) return explicit_index;
+// The index of the item (a probe, an ambient sample: anything with a `position`) nearest c, the
+// lowest index on a tie; -1 for none.
+template <class T>
+int nearest_of(const std::vector<T> &items, const double c[3]) {
   int best = -1;
   double bd = 0;
-  for (size_t i = 0; i < s.probes.size(); ++i) {
-    const double dd = length2(d3(s.probes[i].position) - d3(c));
+  for (size_t i = 0; i < items.size(); ++i) {
+    const double dd = length2(d3(items[i].position) - d3(c));
     if (best < 0 || dd < bd) {
       best = static_cast<int>(i);
       bd = dd;
     }
   }
   return best;
+}
+
+int nearest_probe(const Scene &s, const double c[3], int explicit_index) {
+  return explicit_index >= 0 ? explicit_index : nearest_of(s.probes, c);
 }
 
 void primitive_center(const ScenePrimitive &p, double c[3]) {
@@ -214,15 +220,7 @@ bool model_draw(const Scene &s, const PreparedScene &ps, const SceneDrawChoice &
   d->shared.assign(ML_SLOTS, v4(0, 0, 0, 0));
   // Ambient cube: the nearest sample of the irradiance volume (Source: the model's leaf).
   float cube[6][3] = {};
-  int best = -1;
-  double bd = 0;
-  for (size_t i = 0; i < s.ambient.size(); ++i) {
-    const double dd = length2(d3(s.ambient[i].position) - d3(center));
-    if (best < 0 || dd < bd) {
-      best = static_cast<int>(i);
-      bd = dd;
-    }
-  }
+  const int best = nearest_of(s.ambient, center);
   if (best >= 0) {
     const SceneAmbientSample &a = s.ambient[best];
     if (a.from_probe >= 0) {
