@@ -111,22 +111,12 @@ static float lp_poly(float x, const float *c, int n) {
   return have_odd ? ts_madf(odd, x, even) : even;
 }
 
-/* Coefficients (double in gallivm, rounded to float): llvmpipe_bitexact.md tables. */
-static const float exp2_c[6] = {
-    0x1p+0f, /* 0x3f800000 */
-    0x1.62e4f6p-1f, /* 0x3f31727b */
-    0x1.ebd5a8p-3f, /* 0x3e75ead4 */
-    0x1.c95446p-5f, /* 0x3d64aa23 */
-    0x1.26900cp-7f, /* 0x3c134806 */
-    0x1.ec320ap-10f, /* 0x3af61905 */
-};
-static const float log2_c[5] = {
-    0x1.715476p+1f, /* 0x4038aa3b */
-    0x1.ec6ff2p-1f, /* 0x3f7637f9 */
-    0x1.27a642p-1f, /* 0x3f13d321 */
-    0x1.9d062cp-2f, /* 0x3ece8316 */
-    0x1.a07ab2p-2f, /* 0x3ed03d59 */
-};
+/* Coefficients (double in gallivm, rounded to float): llvmpipe_bitexact.md tables. Their bits:
+ * exp2 0x3f800000 0x3f31727b 0x3e75ead4 0x3d64aa23 0x3c134806 0x3af61905,
+ * log2 0x4038aa3b 0x3f7637f9 0x3f13d321 0x3ece8316 0x3ed03d59. */
+const float ts_lp_exp2_coeffs[6] = {0x1p+0f,        0x1.62e4f6p-1f, 0x1.ebd5a8p-3f,
+                                    0x1.c95446p-5f, 0x1.26900cp-7f, 0x1.ec320ap-10f};
+const float ts_lp_log2_coeffs[5] = {0x1.715476p+1f, 0x1.ec6ff2p-1f, 0x1.27a642p-1f, 0x1.9d062cp-2f, 0x1.a07ab2p-2f};
 
 /* ------------------------------------------------------------------------ */
 /* scalar float32, llvmpipe-exact                                            */
@@ -144,7 +134,7 @@ float ts_exp2f(float x) {
   fr = x - fl;
   i = ts_lp_itruncf(fl);
   scale = ts_bitsf(((uint32_t)i + 127u) << 23);
-  return scale * lp_poly(fr, exp2_c, 6);
+  return scale * lp_poly(fr, ts_lp_exp2_coeffs, 6);
 }
 
 /* gallivm lp_build_log2_approx(handle_edge_cases=1) ("log2_safe"). The edge
@@ -155,7 +145,7 @@ float ts_log2f(float x) {
   float e = (float)((int)((b & 0x7f800000u) >> 23) - 127);
   float m = ts_bitsf((b & 0x007fffffu) | 0x3f800000u);
   float y = (m - 1.0f) / (m + 1.0f);
-  float r = ts_madf(y, lp_poly(y * y, log2_c, 5), e);
+  float r = ts_madf(y, lp_poly(y * y, ts_lp_log2_coeffs, 5), e);
   float xd = ts_daz(x);
   if (!(xd < INFINITY)) r = INFINITY; /* UGE +inf  */
   if (!(xd != 0.0f)) r = -INFINITY; /* UEQ 0     */

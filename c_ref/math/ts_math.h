@@ -88,6 +88,10 @@ float ts_madf(float a, float b, float c);
 float ts_lp_minf(float a, float b);
 float ts_lp_maxf(float a, float b);
 int ts_lp_itruncf(float x);
+/* gallivm lp_build_exp2 / lp_build_log2_approx polynomial coefficients (ts_exp2f, ts_log2f and
+ * their lanes in ts_simd.h), lowest degree first. */
+extern const float ts_lp_exp2_coeffs[6];
+extern const float ts_lp_log2_coeffs[5];
 
 #ifdef __cplusplus
 }

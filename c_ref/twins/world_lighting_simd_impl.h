@@ -4,9 +4,7 @@
  * the record's contrast/saturation/R0 becomes a select. Included by world_lighting_batch.c after
  * ts_simd.h, ts_simd_sampler.h and ts_simd_sampler_nearest.h (VFN(tex2d): NEAREST or LINEAR). */
 
-TSV_INL V4v VFN(wl_rec)(const wl_batch_input *in, int k, const size_t *pix) {
-  return VFN(rec_load)(in->slot[k], in->stride[k], pix);
-}
+#include "twins/simd_common.h"
 
 #define WLV_SQRT_2_OVER_3 0.816496580927726f
 #define WLV_OO_SQRT_6 0.408248290463863f
@@ -82,12 +80,11 @@ TSV_INL VF VFN(wl_fresnel)(VF NdotV, VF one_minus_r0, VF r0) {
   return (x2 * x2) * (x * one_minus_r0) + r0;
 }
 
-static void VFN(wl_block)(const wl_variant *v, const wl_batch_input *in, const wl_textures *tx, const size_t *pix,
-                          V3v *out) {
+static V4v VFN(wl_block)(const wl_variant *v, const wl_batch_input *in, const wl_textures *tx, const size_t *pix) {
   const VF zero = VFN(splat)(0.0f), one = VFN(splat)(1.0f);
-  const V4v uv = VFN(wl_rec)(in, WL_SLOT_UV, pix);
-  const V4v lm_offset = VFN(wl_rec)(in, WL_SLOT_LM_OFFSET, pix);
-  const V4v tint_scale = VFN(wl_rec)(in, WL_SLOT_TINT_SCALE, pix);
+  const V4v uv = TSV_REC(in, WL_SLOT_UV, pix);
+  const V4v lm_offset = TSV_REC(in, WL_SLOT_LM_OFFSET, pix);
+  const V4v tint_scale = TSV_REC(in, WL_SLOT_TINT_SCALE, pix);
   const V4v base = VFN(tex2d)(tx->base, uv.x, uv.y);
 
   V3v diffuse, n = VFN(v3)(zero, zero, one);
@@ -112,15 +109,14 @@ static void VFN(wl_block)(const wl_variant *v, const wl_batch_input *in, const w
   V3v color;
   if (v->envmap) {
     color = VFN(mul3)(base_rgb, VFN(mul3)(diffuse, VFN(xyz)(tint_scale)));
-    const V4v env_tint = VFN(wl_rec)(in, WL_SLOT_ENV_TINT, pix);
-    const V4v env_params = VFN(wl_rec)(in, WL_SLOT_ENV_PARAMS, pix);
-    V3v N = VFN(xyz)(VFN(wl_rec)(in, WL_SLOT_NORMAL, pix));
+    const V4v env_tint = TSV_REC(in, WL_SLOT_ENV_TINT, pix);
+    const V4v env_params = TSV_REC(in, WL_SLOT_ENV_PARAMS, pix);
+    V3v N = VFN(xyz)(TSV_REC(in, WL_SLOT_NORMAL, pix));
     if (v->bumpmap != WL_BUMP_NONE) {
-      const V3v T = VFN(xyz)(VFN(wl_rec)(in, WL_SLOT_TANGENT, pix)),
-                B = VFN(xyz)(VFN(wl_rec)(in, WL_SLOT_BINORMAL, pix));
+      const V3v T = VFN(xyz)(TSV_REC(in, WL_SLOT_TANGENT, pix)), B = VFN(xyz)(TSV_REC(in, WL_SLOT_BINORMAL, pix));
       N = VFN(add3)(VFN(add3)(VFN(scale3)(T, n.x), VFN(scale3)(B, n.y)), VFN(scale3)(N, n.z));
     }
-    const V3v E = VFN(xyz)(VFN(wl_rec)(in, WL_SLOT_EYE, pix));
+    const V3v E = VFN(xyz)(TSV_REC(in, WL_SLOT_EYE, pix));
     const V4v env4 = VFN(textureCube)(tx->envmap, VFN(reflect_unnormalized)(N, E));
     const V3v env = VFN(scale3)(VFN(xyz)(env4), env_tint.w);
     const V3v tint = VFN(xyz)(env_tint);
@@ -149,12 +145,11 @@ static void VFN(wl_block)(const wl_variant *v, const wl_batch_input *in, const w
     color = VFN(mul3)(VFN(mul3)(base_rgb, diffuse), VFN(scale3)(VFN(xyz)(tint_scale), tint_scale.w));
   }
   if (v->tier != TS_TIER_ID_PS20) {
-    const V4v fc = VFN(wl_rec)(in, WL_SLOT_FOG_COLOR, pix), fp = VFN(wl_rec)(in, WL_SLOT_FOG_PARAMS, pix);
+    const V4v fc = TSV_REC(in, WL_SLOT_FOG_COLOR, pix), fp = TSV_REC(in, WL_SLOT_FOG_PARAMS, pix);
     const VF f = VFN(saturate)(VFN(min)(fc.w, lm_offset.z * fp.x - fp.y));
     color = VFN(add3)(color, VFN(scale3)(VFN(sub3)(VFN(xyz)(fc), color), f * f));
   }
-  const VF top = VFN(splat)(65504.0f);
-  *out = VFN(v3)(VFN(clamp)(color.x, zero, top), VFN(clamp)(color.y, zero, top), VFN(clamp)(color.z, zero, top));
+  return VFN(rgba)(VFN(output_linear)(color), one);
 }
 
 #undef WLV_SQRT_2_OVER_3
@@ -162,20 +157,4 @@ static void VFN(wl_block)(const wl_variant *v, const wl_batch_input *in, const w
 #undef WLV_OO_SQRT_2
 #undef WLV_OO_SQRT_3
 
-static void VFN(wl_batch)(const wl_variant *v, const wl_batch_input *in, const wl_textures *tx, ts_vec4f *out,
-                          int count) {
-  for (int first = 0; first < count; first += TSV_W) {
-    const int n = count - first < TSV_W ? count - first : TSV_W;
-    size_t pix[TSV_W];
-    for (int j = 0; j < TSV_W; ++j) pix[j] = (size_t)first + (size_t)(j < n ? j : n - 1);
-    V3v c;
-    VFN(wl_block)(v, in, tx, pix, &c);
-    for (int j = 0; j < n; ++j) {
-      ts_vec4f *o = &out[first + j];
-      o->x = c.x[j];
-      o->y = c.y[j];
-      o->z = c.z[j];
-      o->w = 1.0f;
-    }
-  }
-}
+TSV_BATCH(wl_batch, wl_block, wl_variant, wl_batch_input, wl_textures)
