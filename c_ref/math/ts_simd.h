@@ -98,23 +98,19 @@ TSV_INL VF VFN(clamp)(VF x, VF lo, VF hi) { return VFN(min)(VFN(max)(x, lo), hi)
 TSV_INL VF VFN(saturate)(VF x) { return VFN(lp_min)(VFN(lp_max)(x, VFN(splat)(0.0f)), VFN(splat)(1.0f)); }
 TSV_INL VF VFN(inversesqrt)(VF x) { return 1.0f / VFN(sqrt)(x); }
 
-/* gallivm lp_build_polynomial for the two fixed degrees used (see ts_math.c lp_poly). */
-TSV_INL VF VFN(poly6)(VF x, const float *c) {
+/* gallivm lp_build_polynomial (ts_math.c lp_poly) for n >= 2 coefficients: one Horner chain in
+ * x^2 per parity, started by c[n-1] and c[n-2]; then odd * x + even. `hi` always holds the chain
+ * that takes the next coefficient. */
+TSV_INL VF VFN(poly)(VF x, const float *c, int n) {
   const VF x2 = x * x;
-  VF odd = VFN(splat)(c[5]), even = VFN(splat)(c[4]);
-  odd = VFN(mad)(x2, odd, VFN(splat)(c[3]));
-  even = VFN(mad)(x2, even, VFN(splat)(c[2]));
-  odd = VFN(mad)(x2, odd, VFN(splat)(c[1]));
-  even = VFN(mad)(x2, even, VFN(splat)(c[0]));
-  return VFN(mad)(odd, x, even);
-}
-TSV_INL VF VFN(poly5)(VF x, const float *c) {
-  const VF x2 = x * x;
-  VF even = VFN(splat)(c[4]), odd = VFN(splat)(c[3]);
-  even = VFN(mad)(x2, even, VFN(splat)(c[2]));
-  odd = VFN(mad)(x2, odd, VFN(splat)(c[1]));
-  even = VFN(mad)(x2, even, VFN(splat)(c[0]));
-  return VFN(mad)(odd, x, even);
+  VF hi = VFN(splat)(c[n - 1]), lo = VFN(splat)(c[n - 2]);
+#pragma GCC unroll 8
+  for (int i = n - 3; i >= 0; i--) {
+    const VF t = VFN(mad)(x2, hi, VFN(splat)(c[i]));
+    hi = lo;
+    lo = t;
+  }
+  return VFN(mad)(hi, x, lo); /* hi: the chain of c[1] (odd), lo: the chain of c[0] (even) */
 }
 
 TSV_INL VF VFN(exp2)(VF x) {
@@ -124,7 +120,7 @@ TSV_INL VF VFN(exp2)(VF x) {
   const VF fr = x - fl;
   const VU i = (VU)VFN(itrunc)(fl);
   const VF scale = VFN(asf)((i + 127u) << 23);
-  return scale * VFN(poly6)(fr, ts_lp_exp2_coeffs);
+  return scale * VFN(poly)(fr, ts_lp_exp2_coeffs, 6);
 }
 
 /* log2_safe: the edge selects run inf, zero, negative; compares as the scalar `!(...)`. */
@@ -133,7 +129,7 @@ TSV_INL VF VFN(log2)(VF x) {
   const VF e = VFN(tof)((VI)((b & 0x7f800000u) >> 23) - 127);
   const VF m = VFN(asf)((b & 0x007fffffu) | 0x3f800000u);
   const VF y = (m - 1.0f) / (m + 1.0f);
-  VF r = VFN(mad)(y, VFN(poly5)(y * y, ts_lp_log2_coeffs), e);
+  VF r = VFN(mad)(y, VFN(poly)(y * y, ts_lp_log2_coeffs, 5), e);
   r = VFN(sel)(~(x < __builtin_inff()), VFN(splat)(__builtin_inff()), r);
   r = VFN(sel)(~(x != 0.0f), VFN(splat)(-__builtin_inff()), r);
   r = VFN(sel)(~(x >= 0.0f), VFN(splat)(__builtin_nanf("")), r);

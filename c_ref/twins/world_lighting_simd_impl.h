@@ -6,11 +6,6 @@
 
 #include "twins/simd_common.h"
 
-#define WLV_SQRT_2_OVER_3 0.816496580927726f
-#define WLV_OO_SQRT_6 0.408248290463863f
-#define WLV_OO_SQRT_2 0.707106781186548f
-#define WLV_OO_SQRT_3 0.577350269189626f
-
 /* common_lightmap.h */
 static V3v VFN(wl_lightmap)(const wl_variant *v, const ts_tex2d *lm, VF u, VF w, VF ox, VF oy, float k) {
   const VF kv = VFN(splat)(k);
@@ -32,28 +27,9 @@ static V3v VFN(wl_lightmap)(const wl_variant *v, const ts_tex2d *lm, VF u, VF w,
   return rgb;
 }
 
-/* common_rnm.h */
-TSV_INL V3v VFN(rnm_weights)(V3v n) {
-  V3v d =
-      VFN(v3)(n.x * WLV_SQRT_2_OVER_3 + n.z * WLV_OO_SQRT_3,
-              VFN(dot3)(n, VFN(v3)(VFN(splat)(-WLV_OO_SQRT_6), VFN(splat)(WLV_OO_SQRT_2), VFN(splat)(WLV_OO_SQRT_3))),
-              VFN(dot3)(n, VFN(v3)(VFN(splat)(-WLV_OO_SQRT_6), VFN(splat)(-WLV_OO_SQRT_2), VFN(splat)(WLV_OO_SQRT_3))));
-  d = VFN(saturate3)(d);
-  const VF e = VFN(splat)(1.0e-30f); /* TS_RNM_MIN_WEIGHT: not an fp16 number (common_rnm.glsl) */
-  return VFN(add3)(VFN(mul3)(d, d), VFN(v3)(e, e, e));
-}
-TSV_INL V3v VFN(rnm_blend)(V3v d, V3v l0, V3v l1, V3v l2) {
-  const V3v s = VFN(add3)(VFN(add3)(VFN(scale3)(l0, d.x), VFN(scale3)(l1, d.y)), VFN(scale3)(l2, d.z));
-  const VF sum = d.x + (d.y + d.z);
-  return VFN(v3)(s.x / sum, s.y / sum, s.z / sum);
-}
-TSV_INL V3v VFN(ssbump_blend)(V3v t, V3v l0, V3v l1, V3v l2) {
-  return VFN(add3)(VFN(add3)(VFN(scale3)(l0, t.x), VFN(scale3)(l1, t.y)), VFN(scale3)(l2, t.z));
-}
-TSV_INL V3v VFN(ssbump_direction)(V3v t) {
-  return VFN(v3)(t.x * WLV_SQRT_2_OVER_3 - (t.y + t.z) * WLV_OO_SQRT_6, (t.y - t.z) * WLV_OO_SQRT_2,
-                 ((t.x + t.y) + t.z) * WLV_OO_SQRT_3);
-}
+/* common_rnm.h itself, on lanes */
+#include "math/ts_generic_lanes.h"
+#include "common/common_rnm.h"
 
 /* common_envmap.h */
 TSV_INL V3v VFN(reflect_unnormalized)(V3v N, V3v E) {
@@ -101,7 +77,7 @@ static V4v VFN(wl_block)(const wl_variant *v, const wl_batch_input *in, const wl
       n = VFN(sub3)(VFN(scale3)(t, VFN(splat)(2.0f)), VFN(v3)(one, one, one));
       diffuse = VFN(rnm_blend)(VFN(rnm_weights)(n), l0, l1, l2);
     } else {
-      n = v->tier == TS_TIER_ID_PS20 ? VFN(ssbump_direction)(t) : VFN(safe_normalize)(VFN(ssbump_direction)(t));
+      n = v->tier == TS_TIER_ID_PS20 ? VFN(ssbump_direction)(t) : VFN(ssbump_normal)(t);
       diffuse = VFN(ssbump_blend)(t, l0, l1, l2);
     }
   }
@@ -151,10 +127,5 @@ static V4v VFN(wl_block)(const wl_variant *v, const wl_batch_input *in, const wl
   }
   return VFN(rgba)(VFN(output_linear)(color), one);
 }
-
-#undef WLV_SQRT_2_OVER_3
-#undef WLV_OO_SQRT_6
-#undef WLV_OO_SQRT_2
-#undef WLV_OO_SQRT_3
 
 TSV_BATCH(wl_batch, wl_block, wl_variant, wl_batch_input, wl_textures)
