@@ -1,5 +1,6 @@
 /* tiershade common: generic twin of shaders/common_rnm.glsl (radiosity normal
- * mapping, fact sheet section 1; see ts_generic.h). No include guard on purpose. */
+ * mapping, fact sheet section 1; see ts_generic.h). No include guard on purpose. The batch
+ * twin includes it on lanes too (ts_generic_lanes.h), hence SPLAT() on the constant vectors. */
 
 #define WL_SQRT_2_OVER_3 K(0.816496580927726)
 #define WL_OO_SQRT_6 K(0.408248290463863)
@@ -10,11 +11,11 @@
  * shaders/common_rnm.glsl). The b0 dot has two terms (its y lane is 0 and
  * NIR drops it); the others are dot() with a constant vector (ts_dot3, last lane first). */
 static V3 FN(rnm_weights)(V3 n) {
-  V3 d =
-      M(v3)(n.x * WL_SQRT_2_OVER_3 + n.z * WL_OO_SQRT_3, M(dot3)(n, M(v3)(-WL_OO_SQRT_6, WL_OO_SQRT_2, WL_OO_SQRT_3)),
-            M(dot3)(n, M(v3)(-WL_OO_SQRT_6, -WL_OO_SQRT_2, WL_OO_SQRT_3)));
+  V3 d = M(v3)(n.x * WL_SQRT_2_OVER_3 + n.z * WL_OO_SQRT_3,
+               M(dot3)(n, M(v3)(SPLAT(-WL_OO_SQRT_6), SPLAT(WL_OO_SQRT_2), SPLAT(WL_OO_SQRT_3))),
+               M(dot3)(n, M(v3)(SPLAT(-WL_OO_SQRT_6), SPLAT(-WL_OO_SQRT_2), SPLAT(WL_OO_SQRT_3))));
   d = M(saturate3)(d);
-  return M(add3)(M(mul3)(d, d), M(v3)(K(1.0e-30), K(1.0e-30), K(1.0e-30)));
+  return M(add3)(M(mul3)(d, d), M(v3)(SPLAT(K(1.0e-30)), SPLAT(K(1.0e-30)), SPLAT(K(1.0e-30))));
 }
 
 static V3 FN(rnm_blend)(V3 d, V3 l0, V3 l1, V3 l2) {

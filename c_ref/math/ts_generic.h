@@ -6,6 +6,8 @@
  *   V3, V4    -> ts_vec3f / ts_vec3d ...
  *   FN(name)  -> name_f / name_d            (twin-local functions)
  *   K(0.5)    -> 0.5f / 0.5                 (literals parsed like GLSL's strtof)
+ *   SPLAT(k)  -> k                          (a constant operand; on SIMD lanes, ts_generic_lanes.h,
+ *                                            the constant in every lane)
  * Operation order in a twin mirrors the GLSL statement by statement: float32
  * arithmetic is not associative, and the reference is bit-exact (0 ULP). */
 #ifndef TS_GENERIC_H
@@ -18,4 +20,5 @@
 #define V3 M(vec3)
 #define V4 M(vec4)
 #define K(x) TS_CAT(x, TS_LIT)
+#define SPLAT(x) (x)
 #endif

@@ -8,6 +8,8 @@
  */
 #include "math/ts_math.h"
 
+#include "math/ts_bits.h"
+
 #include <math.h>
 #include <stdint.h>
 #include <stdlib.h>
@@ -60,36 +62,19 @@ int ts_math_fused(void) { return ts_fused; }
 /* float32 bit helpers and raw gallivm/x86 primitives                        */
 /* ------------------------------------------------------------------------ */
 
-static uint32_t fbits(float f) {
-  uint32_t u;
-  memcpy(&u, &f, 4);
-  return u;
-}
-static float bitsf(uint32_t u) {
-  float f;
-  memcpy(&f, &u, 4);
-  return f;
-}
 static int is_nanf(float x) { return x != x; }
-
-/* DAZ: a denormal operand is read as a zero of the same sign. Applied
- * explicitly where C code does not run through an SSE arithmetic op. */
-static float daz(float x) {
-  uint32_t u = fbits(x);
-  return (u & 0x7f800000u) == 0 ? bitsf(u & 0x80000000u) : x;
-}
 
 float ts_madf(float a, float b, float c) { return ts_fused ? fmaf(a, b, c) : a * b + c; }
 
 float ts_lp_minf(float a, float b) {
-  a = daz(a);
-  b = daz(b);
+  a = ts_daz(a);
+  b = ts_daz(b);
   return a < b ? a : b;
 }
 
 float ts_lp_maxf(float a, float b) {
-  a = daz(a);
-  b = daz(b);
+  a = ts_daz(a);
+  b = ts_daz(b);
   return a > b ? a : b;
 }
 
@@ -102,8 +87,8 @@ int ts_lp_itruncf(float x) {
 /* SSE4.1 roundps(floor), as used by gallivm lp_build_floor: DAZ, NaN quieted. */
 static float lp_floor(float x) {
   float t;
-  x = daz(x);
-  if (is_nanf(x)) return bitsf(fbits(x) | 0x00400000u);
+  x = ts_daz(x);
+  if (is_nanf(x)) return ts_bitsf(ts_fbits(x) | 0x00400000u);
   if (!(fabsf(x) < 8388608.0f)) return x; /* inf, or already an integer */
   t = (float)(int)x; /* exact: |x| < 2^23 */
   if (t > x) t -= 1.0f;
@@ -126,22 +111,12 @@ static float lp_poly(float x, const float *c, int n) {
   return have_odd ? ts_madf(odd, x, even) : even;
 }
 
-/* Coefficients (double in gallivm, rounded to float): llvmpipe_bitexact.md tables. */
-static const float exp2_c[6] = {
-    0x1p+0f, /* 0x3f800000 */
-    0x1.62e4f6p-1f, /* 0x3f31727b */
-    0x1.ebd5a8p-3f, /* 0x3e75ead4 */
-    0x1.c95446p-5f, /* 0x3d64aa23 */
-    0x1.26900cp-7f, /* 0x3c134806 */
-    0x1.ec320ap-10f, /* 0x3af61905 */
-};
-static const float log2_c[5] = {
-    0x1.715476p+1f, /* 0x4038aa3b */
-    0x1.ec6ff2p-1f, /* 0x3f7637f9 */
-    0x1.27a642p-1f, /* 0x3f13d321 */
-    0x1.9d062cp-2f, /* 0x3ece8316 */
-    0x1.a07ab2p-2f, /* 0x3ed03d59 */
-};
+/* Coefficients (double in gallivm, rounded to float): llvmpipe_bitexact.md tables. Their bits:
+ * exp2 0x3f800000 0x3f31727b 0x3e75ead4 0x3d64aa23 0x3c134806 0x3af61905,
+ * log2 0x4038aa3b 0x3f7637f9 0x3f13d321 0x3ece8316 0x3ed03d59. */
+const float ts_lp_exp2_coeffs[6] = {0x1p+0f,        0x1.62e4f6p-1f, 0x1.ebd5a8p-3f,
+                                    0x1.c95446p-5f, 0x1.26900cp-7f, 0x1.ec320ap-10f};
+const float ts_lp_log2_coeffs[5] = {0x1.715476p+1f, 0x1.ec6ff2p-1f, 0x1.27a642p-1f, 0x1.9d062cp-2f, 0x1.a07ab2p-2f};
 
 /* ------------------------------------------------------------------------ */
 /* scalar float32, llvmpipe-exact                                            */
@@ -158,20 +133,20 @@ float ts_exp2f(float x) {
   fl = lp_floor(x);
   fr = x - fl;
   i = ts_lp_itruncf(fl);
-  scale = bitsf(((uint32_t)i + 127u) << 23);
-  return scale * lp_poly(fr, exp2_c, 6);
+  scale = ts_bitsf(((uint32_t)i + 127u) << 23);
+  return scale * lp_poly(fr, ts_lp_exp2_coeffs, 6);
 }
 
 /* gallivm lp_build_log2_approx(handle_edge_cases=1) ("log2_safe"). The edge
  * masks use lp_build_cmp, whose float predicates are UNORDERED, so a NaN input
  * sets all three; the selects run inf, zero, negative (last wins). */
 float ts_log2f(float x) {
-  uint32_t b = fbits(x);
+  uint32_t b = ts_fbits(x);
   float e = (float)((int)((b & 0x7f800000u) >> 23) - 127);
-  float m = bitsf((b & 0x007fffffu) | 0x3f800000u);
+  float m = ts_bitsf((b & 0x007fffffu) | 0x3f800000u);
   float y = (m - 1.0f) / (m + 1.0f);
-  float r = ts_madf(y, lp_poly(y * y, log2_c, 5), e);
-  float xd = daz(x);
+  float r = ts_madf(y, lp_poly(y * y, ts_lp_log2_coeffs, 5), e);
+  float xd = ts_daz(x);
   if (!(xd < INFINITY)) r = INFINITY; /* UGE +inf  */
   if (!(xd != 0.0f)) r = -INFINITY; /* UEQ 0     */
   if (!(xd >= 0.0f)) r = NAN; /* ULT 0     */
@@ -181,7 +156,7 @@ float ts_log2f(float x) {
 /* gallivm lp_build_pow: select(x UEQ 0, 0, exp2(log2_safe(x) * y)). */
 float ts_powf(float x, float y) {
   float r = ts_exp2f(ts_log2f(x) * y);
-  float xd = daz(x);
+  float xd = ts_daz(x);
   return (xd == 0.0f || is_nanf(xd)) ? 0.0f : r;
 }
 
@@ -205,12 +180,12 @@ float ts_clampf(float x, float lo, float hi) { return ts_minf(ts_maxf(x, lo), hi
 float ts_saturatef(float x) { return ts_lp_minf(ts_lp_maxf(x, 0.0f), 1.0f); }
 float ts_floorf(float x) { return lp_floor(x); }
 float ts_fractf(float x) { return x - lp_floor(x); } /* not clamped: fract(-tiny) = 1 */
-float ts_absf(float x) { return bitsf(fbits(x) & 0x7fffffffu); }
+float ts_absf(float x) { return ts_bitsf(ts_fbits(x) & 0x7fffffffu); }
 /* step(edge,x) = x >= edge ? 1 : 0 (ordered compare: NaN -> 0; measured). */
 float ts_stepf(float edge, float x) { return x >= edge ? 1.0f : 0.0f; }
 /* sign: +1/-1 by comparison; +0 for +-0, denormals and NaN (measured). */
 float ts_signf(float x) {
-  float xd = daz(x);
+  float xd = ts_daz(x);
   if (xd > 0.0f) return 1.0f;
   if (xd < 0.0f) return -1.0f;
   return 0.0f;
@@ -241,102 +216,28 @@ double ts_signd(double x) { return x > 0.0 ? 1.0 : (x < 0.0 ? -1.0 : 0.0); }
 /* vectors, float32                                                          */
 /* ------------------------------------------------------------------------ */
 
-ts_vec2f ts_v2f(float x, float y) {
-  ts_vec2f v;
-  v.x = x;
-  v.y = y;
-  return v;
-}
-ts_vec3f ts_v3f(float x, float y, float z) {
-  ts_vec3f v;
-  v.x = x;
-  v.y = y;
-  v.z = z;
-  return v;
-}
-ts_vec4f ts_v4f(float x, float y, float z, float w) {
-  ts_vec4f v;
-  v.x = x;
-  v.y = y;
-  v.z = z;
-  v.w = w;
-  return v;
-}
+#include "math/ts_generic.h"
+#include "math/ts_generic_float.h"
+#include "math/ts_math_vec.h"
 
 /* GLSL dot: NIR scalarises fdotN as a reduction from the LAST component,
  * a0*b0 + (a1*b1 + (a2*b2 + a3*b3)), unfused (measured on llvmpipe; the
  * left-to-right order mismatches in ~7% of random cases). */
-float ts_dot2f(ts_vec2f a, ts_vec2f b) { return a.x * b.x + a.y * b.y; }
 float ts_dot3f(ts_vec3f a, ts_vec3f b) { return a.x * b.x + (a.y * b.y + a.z * b.z); }
 float ts_dot4f(ts_vec4f a, ts_vec4f b) { return a.x * b.x + (a.y * b.y + (a.z * b.z + a.w * b.w)); }
-
-ts_vec3f ts_add3f(ts_vec3f a, ts_vec3f b) { return ts_v3f(a.x + b.x, a.y + b.y, a.z + b.z); }
-ts_vec3f ts_sub3f(ts_vec3f a, ts_vec3f b) { return ts_v3f(a.x - b.x, a.y - b.y, a.z - b.z); }
-ts_vec3f ts_mul3f(ts_vec3f a, ts_vec3f b) { return ts_v3f(a.x * b.x, a.y * b.y, a.z * b.z); }
-ts_vec3f ts_scale3f(ts_vec3f v, float s) { return ts_v3f(v.x * s, v.y * s, v.z * s); }
-/* GLSL length(v) = sqrt(dot(v,v)); normalize(v) = v * inversesqrt(dot(v,v)). */
-float ts_length3f(ts_vec3f v) { return sqrtf(ts_dot3f(v, v)); }
+/* GLSL normalize(v) = v * inversesqrt(dot(v,v)). */
 ts_vec3f ts_normalize3f(ts_vec3f v) { return ts_scale3f(v, ts_inversesqrtf(ts_dot3f(v, v))); }
-ts_vec3f ts_max3f(ts_vec3f a, ts_vec3f b) { return ts_v3f(ts_maxf(a.x, b.x), ts_maxf(a.y, b.y), ts_maxf(a.z, b.z)); }
-ts_vec3f ts_min3f(ts_vec3f a, ts_vec3f b) { return ts_v3f(ts_minf(a.x, b.x), ts_minf(a.y, b.y), ts_minf(a.z, b.z)); }
-ts_vec3f ts_saturate3f(ts_vec3f v) { return ts_v3f(ts_saturatef(v.x), ts_saturatef(v.y), ts_saturatef(v.z)); }
-ts_vec3f ts_pow3f(ts_vec3f a, ts_vec3f b) { return ts_v3f(ts_powf(a.x, b.x), ts_powf(a.y, b.y), ts_powf(a.z, b.z)); }
-ts_vec3f ts_neg3f(ts_vec3f v) { return ts_v3f(-v.x, -v.y, -v.z); }
-
-ts_vec4f ts_add4f(ts_vec4f a, ts_vec4f b) { return ts_v4f(a.x + b.x, a.y + b.y, a.z + b.z, a.w + b.w); }
-ts_vec4f ts_sub4f(ts_vec4f a, ts_vec4f b) { return ts_v4f(a.x - b.x, a.y - b.y, a.z - b.z, a.w - b.w); }
-ts_vec4f ts_mul4f(ts_vec4f a, ts_vec4f b) { return ts_v4f(a.x * b.x, a.y * b.y, a.z * b.z, a.w * b.w); }
-ts_vec4f ts_scale4f(ts_vec4f v, float s) { return ts_v4f(v.x * s, v.y * s, v.z * s, v.w * s); }
-ts_vec4f ts_saturate4f(ts_vec4f v) {
-  return ts_v4f(ts_saturatef(v.x), ts_saturatef(v.y), ts_saturatef(v.z), ts_saturatef(v.w));
-}
 
 /* ------------------------------------------------------------------------ */
 /* vectors, double                                                           */
 /* ------------------------------------------------------------------------ */
 
-ts_vec2d ts_v2d(double x, double y) {
-  ts_vec2d v;
-  v.x = x;
-  v.y = y;
-  return v;
-}
-ts_vec3d ts_v3d(double x, double y, double z) {
-  ts_vec3d v;
-  v.x = x;
-  v.y = y;
-  v.z = z;
-  return v;
-}
-ts_vec4d ts_v4d(double x, double y, double z, double w) {
-  ts_vec4d v;
-  v.x = x;
-  v.y = y;
-  v.z = z;
-  v.w = w;
-  return v;
-}
-double ts_dot2d(ts_vec2d a, ts_vec2d b) { return a.x * b.x + a.y * b.y; }
+#include "math/ts_generic_double.h"
+#include "math/ts_math_vec.h"
+
 double ts_dot3d(ts_vec3d a, ts_vec3d b) { return a.x * b.x + a.y * b.y + a.z * b.z; }
 double ts_dot4d(ts_vec4d a, ts_vec4d b) { return a.x * b.x + a.y * b.y + a.z * b.z + a.w * b.w; }
-ts_vec3d ts_add3d(ts_vec3d a, ts_vec3d b) { return ts_v3d(a.x + b.x, a.y + b.y, a.z + b.z); }
-ts_vec3d ts_sub3d(ts_vec3d a, ts_vec3d b) { return ts_v3d(a.x - b.x, a.y - b.y, a.z - b.z); }
-ts_vec3d ts_mul3d(ts_vec3d a, ts_vec3d b) { return ts_v3d(a.x * b.x, a.y * b.y, a.z * b.z); }
-ts_vec3d ts_scale3d(ts_vec3d v, double s) { return ts_v3d(v.x * s, v.y * s, v.z * s); }
-double ts_length3d(ts_vec3d v) { return sqrt(ts_dot3d(v, v)); }
 ts_vec3d ts_normalize3d(ts_vec3d v) {
   double l = sqrt(ts_dot3d(v, v));
   return ts_v3d(v.x / l, v.y / l, v.z / l);
-}
-ts_vec3d ts_max3d(ts_vec3d a, ts_vec3d b) { return ts_v3d(ts_maxd(a.x, b.x), ts_maxd(a.y, b.y), ts_maxd(a.z, b.z)); }
-ts_vec3d ts_min3d(ts_vec3d a, ts_vec3d b) { return ts_v3d(ts_mind(a.x, b.x), ts_mind(a.y, b.y), ts_mind(a.z, b.z)); }
-ts_vec3d ts_saturate3d(ts_vec3d v) { return ts_v3d(ts_saturated(v.x), ts_saturated(v.y), ts_saturated(v.z)); }
-ts_vec3d ts_pow3d(ts_vec3d a, ts_vec3d b) { return ts_v3d(pow(a.x, b.x), pow(a.y, b.y), pow(a.z, b.z)); }
-ts_vec3d ts_neg3d(ts_vec3d v) { return ts_v3d(-v.x, -v.y, -v.z); }
-ts_vec4d ts_add4d(ts_vec4d a, ts_vec4d b) { return ts_v4d(a.x + b.x, a.y + b.y, a.z + b.z, a.w + b.w); }
-ts_vec4d ts_sub4d(ts_vec4d a, ts_vec4d b) { return ts_v4d(a.x - b.x, a.y - b.y, a.z - b.z, a.w - b.w); }
-ts_vec4d ts_mul4d(ts_vec4d a, ts_vec4d b) { return ts_v4d(a.x * b.x, a.y * b.y, a.z * b.z, a.w * b.w); }
-ts_vec4d ts_scale4d(ts_vec4d v, double s) { return ts_v4d(v.x * s, v.y * s, v.z * s, v.w * s); }
-ts_vec4d ts_saturate4d(ts_vec4d v) {
-  return ts_v4d(ts_saturated(v.x), ts_saturated(v.y), ts_saturated(v.z), ts_saturated(v.w));
 }

@@ -12,24 +12,64 @@
 extern "C" {
 #endif
 
-typedef struct {
-  float x, y;
-} ts_vec2f;
-typedef struct {
-  double x, y;
-} ts_vec2d;
-typedef struct {
-  float x, y, z;
-} ts_vec3f;
-typedef struct {
-  double x, y, z;
-} ts_vec3d;
-typedef struct {
-  float x, y, z, w;
-} ts_vec4f;
-typedef struct {
-  double x, y, z, w;
-} ts_vec4d;
+/* One precision's vector types and functions: S is the suffix (f, d), R the real type. The
+ * two instances (below) hold the same names; what each computes is in ts_math.c. */
+#define TS_MATH_API(S, R)                            \
+  typedef struct {                                   \
+    R x, y;                                          \
+  } ts_vec2##S;                                      \
+  typedef struct {                                   \
+    R x, y, z;                                       \
+  } ts_vec3##S;                                      \
+  typedef struct {                                   \
+    R x, y, z, w;                                    \
+  } ts_vec4##S;                                      \
+  /* scalar */                                       \
+  R ts_exp2##S(R x);                                 \
+  R ts_log2##S(R x);                                 \
+  R ts_pow##S(R x, R y);                             \
+  R ts_exp##S(R x);                                  \
+  R ts_log##S(R x);                                  \
+  R ts_sqrt##S(R x);                                 \
+  R ts_inversesqrt##S(R x);                          \
+  R ts_min##S(R a, R b);                             \
+  R ts_max##S(R a, R b);                             \
+  R ts_clamp##S(R x, R lo, R hi);                    \
+  R ts_saturate##S(R x);                             \
+  R ts_floor##S(R x);                                \
+  R ts_fract##S(R x);                                \
+  R ts_abs##S(R x);                                  \
+  R ts_step##S(R edge, R x);                         \
+  R ts_sign##S(R x);                                 \
+  /* vectors */                                      \
+  ts_vec2##S ts_v2##S(R x, R y);                     \
+  ts_vec3##S ts_v3##S(R x, R y, R z);                \
+  ts_vec4##S ts_v4##S(R x, R y, R z, R w);           \
+  R ts_dot2##S(ts_vec2##S a, ts_vec2##S b);          \
+  ts_vec3##S ts_add3##S(ts_vec3##S a, ts_vec3##S b); \
+  ts_vec3##S ts_sub3##S(ts_vec3##S a, ts_vec3##S b); \
+  ts_vec3##S ts_mul3##S(ts_vec3##S a, ts_vec3##S b); \
+  ts_vec3##S ts_scale3##S(ts_vec3##S v, R s);        \
+  R ts_dot3##S(ts_vec3##S a, ts_vec3##S b);          \
+  R ts_length3##S(ts_vec3##S v);                     \
+  ts_vec3##S ts_normalize3##S(ts_vec3##S v);         \
+  ts_vec3##S ts_max3##S(ts_vec3##S a, ts_vec3##S b); \
+  ts_vec3##S ts_min3##S(ts_vec3##S a, ts_vec3##S b); \
+  ts_vec3##S ts_saturate3##S(ts_vec3##S v);          \
+  ts_vec3##S ts_pow3##S(ts_vec3##S a, ts_vec3##S b); \
+  ts_vec3##S ts_neg3##S(ts_vec3##S v);               \
+  ts_vec4##S ts_add4##S(ts_vec4##S a, ts_vec4##S b); \
+  ts_vec4##S ts_sub4##S(ts_vec4##S a, ts_vec4##S b); \
+  ts_vec4##S ts_mul4##S(ts_vec4##S a, ts_vec4##S b); \
+  ts_vec4##S ts_scale4##S(ts_vec4##S v, R s);        \
+  R ts_dot4##S(ts_vec4##S a, ts_vec4##S b);          \
+  ts_vec4##S ts_saturate4##S(ts_vec4##S v);
+
+/* float32, llvmpipe-exact (ts_exp2f, ts_vec3f, ts_dot3f, ...) */
+TS_MATH_API(f, float)
+/* double, plain libm accuracy reference (ts_exp2d, ts_vec3d, ts_dot3d, ...) */
+TS_MATH_API(d, double)
+#undef TS_MATH_API
 
 /* ---- state ---------------------------------------------------------------- */
 void ts_math_init(void); /* FTZ|DAZ on this thread + fused-mad autodetect */
@@ -48,90 +88,10 @@ float ts_madf(float a, float b, float c);
 float ts_lp_minf(float a, float b);
 float ts_lp_maxf(float a, float b);
 int ts_lp_itruncf(float x);
-
-/* ---- scalar, float32 llvmpipe-exact ---------------------------------------- */
-float ts_exp2f(float x);
-float ts_log2f(float x);
-float ts_powf(float x, float y);
-float ts_expf(float x);
-float ts_logf(float x);
-float ts_sqrtf(float x);
-float ts_inversesqrtf(float x);
-float ts_minf(float a, float b);
-float ts_maxf(float a, float b);
-float ts_clampf(float x, float lo, float hi);
-float ts_saturatef(float x);
-float ts_floorf(float x);
-float ts_fractf(float x);
-float ts_absf(float x);
-float ts_stepf(float edge, float x);
-float ts_signf(float x);
-
-/* ---- scalar, double reference ----------------------------------------------- */
-double ts_exp2d(double x);
-double ts_log2d(double x);
-double ts_powd(double x, double y);
-double ts_expd(double x);
-double ts_logd(double x);
-double ts_sqrtd(double x);
-double ts_inversesqrtd(double x);
-double ts_mind(double a, double b);
-double ts_maxd(double a, double b);
-double ts_clampd(double x, double lo, double hi);
-double ts_saturated(double x);
-double ts_floord(double x);
-double ts_fractd(double x);
-double ts_absd(double x);
-double ts_stepd(double edge, double x);
-double ts_signd(double x);
-
-/* ---- vectors, float32 --------------------------------------------------------- */
-ts_vec2f ts_v2f(float x, float y);
-ts_vec3f ts_v3f(float x, float y, float z);
-ts_vec4f ts_v4f(float x, float y, float z, float w);
-float ts_dot2f(ts_vec2f a, ts_vec2f b);
-ts_vec3f ts_add3f(ts_vec3f a, ts_vec3f b);
-ts_vec3f ts_sub3f(ts_vec3f a, ts_vec3f b);
-ts_vec3f ts_mul3f(ts_vec3f a, ts_vec3f b);
-ts_vec3f ts_scale3f(ts_vec3f v, float s);
-float ts_dot3f(ts_vec3f a, ts_vec3f b);
-float ts_length3f(ts_vec3f v);
-ts_vec3f ts_normalize3f(ts_vec3f v);
-ts_vec3f ts_max3f(ts_vec3f a, ts_vec3f b);
-ts_vec3f ts_min3f(ts_vec3f a, ts_vec3f b);
-ts_vec3f ts_saturate3f(ts_vec3f v);
-ts_vec3f ts_pow3f(ts_vec3f a, ts_vec3f b);
-ts_vec3f ts_neg3f(ts_vec3f v);
-ts_vec4f ts_add4f(ts_vec4f a, ts_vec4f b);
-ts_vec4f ts_sub4f(ts_vec4f a, ts_vec4f b);
-ts_vec4f ts_mul4f(ts_vec4f a, ts_vec4f b);
-ts_vec4f ts_scale4f(ts_vec4f v, float s);
-float ts_dot4f(ts_vec4f a, ts_vec4f b);
-ts_vec4f ts_saturate4f(ts_vec4f v);
-
-/* ---- vectors, double ------------------------------------------------------------ */
-ts_vec2d ts_v2d(double x, double y);
-ts_vec3d ts_v3d(double x, double y, double z);
-ts_vec4d ts_v4d(double x, double y, double z, double w);
-double ts_dot2d(ts_vec2d a, ts_vec2d b);
-ts_vec3d ts_add3d(ts_vec3d a, ts_vec3d b);
-ts_vec3d ts_sub3d(ts_vec3d a, ts_vec3d b);
-ts_vec3d ts_mul3d(ts_vec3d a, ts_vec3d b);
-ts_vec3d ts_scale3d(ts_vec3d v, double s);
-double ts_dot3d(ts_vec3d a, ts_vec3d b);
-double ts_length3d(ts_vec3d v);
-ts_vec3d ts_normalize3d(ts_vec3d v);
-ts_vec3d ts_max3d(ts_vec3d a, ts_vec3d b);
-ts_vec3d ts_min3d(ts_vec3d a, ts_vec3d b);
-ts_vec3d ts_saturate3d(ts_vec3d v);
-ts_vec3d ts_pow3d(ts_vec3d a, ts_vec3d b);
-ts_vec3d ts_neg3d(ts_vec3d v);
-ts_vec4d ts_add4d(ts_vec4d a, ts_vec4d b);
-ts_vec4d ts_sub4d(ts_vec4d a, ts_vec4d b);
-ts_vec4d ts_mul4d(ts_vec4d a, ts_vec4d b);
-ts_vec4d ts_scale4d(ts_vec4d v, double s);
-double ts_dot4d(ts_vec4d a, ts_vec4d b);
-ts_vec4d ts_saturate4d(ts_vec4d v);
+/* gallivm lp_build_exp2 / lp_build_log2_approx polynomial coefficients (ts_exp2f, ts_log2f and
+ * their lanes in ts_simd.h), lowest degree first. */
+extern const float ts_lp_exp2_coeffs[6];
+extern const float ts_lp_log2_coeffs[5];
 
 #ifdef __cplusplus
 }

@@ -6,25 +6,13 @@
  * everything re-verified bit for bit against the driver (docs/c_math_layer.md).
  */
 #include "math/ts_sampler.h"
+#include "math/ts_bits.h"
 #include "math/ts_sampler_wrap.h"
 
 #include <math.h>
 #include <stddef.h>
 #include <stdint.h>
 #include <string.h>
-
-static uint32_t fb(float f) {
-  uint32_t u;
-  memcpy(&u, &f, 4);
-  return u;
-}
-static float bf(uint32_t u) {
-  float f;
-  memcpy(&f, &u, 4);
-  return f;
-}
-/* DAZ: denormal -> zero of the same sign (what SSE compares see under MXCSR.DAZ) */
-static float daz(float x) { return (fb(x) & 0x7f800000u) ? x : bf(fb(x) & 0x80000000u); }
 
 static ts_vec4f texel(const float *tx, int w, int x, int y) {
   const float *p = tx + ((size_t)y * (size_t)w + (size_t)x) * 4u;
@@ -36,26 +24,31 @@ ts_vec4f ts_texelFetchf(const ts_tex2d *t, int x, int y) {
   return texel(t->texels, t->w, x, y);
 }
 
+/* One 2D lookup in precision S (f: llvmpipe-exact, d: the double reference; R its real type, V4
+ * the texel type): NEAREST, or LINEAR as lerp(wy, lerp(wx, t00, t10), lerp(wx, t01, t11)). */
+#define TS_SAMPLE2D(S, R, V4)                                                                           \
+  static V4 sample2d_##S(const float *tx, int w, int h, int wrap_s, int wrap_t, int filter, R u, R v) { \
+    int x0, x1, y0, y1;                                                                                 \
+    R wx, wy;                                                                                           \
+    if (filter == TS_FILTER_NEAREST)                                                                    \
+      return fetch_##S(tx, w, h, ts_wrap_nearest_##S(u, w, wrap_s), ts_wrap_nearest_##S(v, h, wrap_t)); \
+    ts_wrap_linear_##S(u, w, wrap_s, &x0, &x1, &wx);                                                    \
+    ts_wrap_linear_##S(v, h, wrap_t, &y0, &y1, &wy);                                                    \
+    return ts_lerp4_##S(wy, ts_lerp4_##S(wx, fetch_##S(tx, w, h, x0, y0), fetch_##S(tx, w, h, x1, y0)), \
+                        ts_lerp4_##S(wx, fetch_##S(tx, w, h, x0, y1), fetch_##S(tx, w, h, x1, y1)));    \
+  }
+
 /* ---------------------------------------------------------------------------- */
 /* float32, llvmpipe-exact                                                       */
 /* ---------------------------------------------------------------------------- */
 
 /* Fetch that never reads outside the image (llvmpipe only produces in-range
  * indices for finite coordinates; NaN/inf coordinates are clamped here). */
-static ts_vec4f fetch_safe(const float *tx, int w, int h, int x, int y) {
+static ts_vec4f fetch_f(const float *tx, int w, int h, int x, int y) {
   return texel(tx, w, ts_clampi(x, 0, w - 1), ts_clampi(y, 0, h - 1));
 }
 
-static ts_vec4f sample2d_f(const float *tx, int w, int h, int wrap_s, int wrap_t, int filter, float u, float v) {
-  int x0, x1, y0, y1;
-  float wx, wy;
-  if (filter == TS_FILTER_NEAREST)
-    return fetch_safe(tx, w, h, ts_wrap_nearest(u, w, wrap_s), ts_wrap_nearest(v, h, wrap_t));
-  ts_wrap_linear(u, w, wrap_s, &x0, &x1, &wx);
-  ts_wrap_linear(v, h, wrap_t, &y0, &y1, &wy);
-  return ts_lerp4(wy, ts_lerp4(wx, fetch_safe(tx, w, h, x0, y0), fetch_safe(tx, w, h, x1, y0)),
-                  ts_lerp4(wx, fetch_safe(tx, w, h, x0, y1), fetch_safe(tx, w, h, x1, y1)));
-}
+TS_SAMPLE2D(f, float, ts_vec4f)
 
 ts_vec4f ts_texture2Df(const ts_tex2d *t, ts_vec2f uv) {
   return sample2d_f(t->texels, t->w, t->h, t->wrap_s, t->wrap_t, t->filter, uv.x, uv.y);
@@ -71,32 +64,32 @@ ts_vec4f ts_texture2Df(const ts_tex2d *t, ts_vec2f uv) {
  * centre of the +-Z face. */
 ts_vec4f ts_textureCubef(const ts_texcube *c, ts_vec3f d) {
   const uint32_t S = 0x80000000u;
-  float ax = bf(fb(d.x) & ~S), ay = bf(fb(d.y) & ~S), az = bf(fb(d.z) & ~S);
+  float ax = ts_bitsf(ts_fbits(d.x) & ~S), ay = ts_bitsf(ts_fbits(d.y) & ~S), az = ts_bitsf(ts_fbits(d.z) & ~S);
   float mx = ts_lp_maxf(ax, ay);
-  int sel_x = !(daz(ax) <= daz(ay)); /* |x| UGT |y| */
-  int sel_z = !(daz(az) < mx); /* |z| UGE mx  */
+  int sel_x = !(ts_daz(ax) <= ts_daz(ay)); /* |x| UGT |y| */
+  int sel_z = !(ts_daz(az) < mx); /* |z| UGE mx  */
   float ma = sel_z ? d.z : (sel_x ? d.x : d.y);
-  uint32_t sg = fb(ma) & S;
+  uint32_t sg = ts_fbits(ma) & S;
   uint32_t sc, tc;
   int face;
   if (sel_z) {
     face = 4;
-    sc = fb(d.x) ^ sg;
-    tc = fb(d.y) ^ S;
+    sc = ts_fbits(d.x) ^ sg;
+    tc = ts_fbits(d.y) ^ S;
   } else if (sel_x) {
     face = 0;
-    sc = fb(d.z) ^ S ^ sg;
-    tc = fb(d.y) ^ S;
+    sc = ts_fbits(d.z) ^ S ^ sg;
+    tc = ts_fbits(d.y) ^ S;
   } else {
     face = 2;
-    sc = fb(d.x);
-    tc = fb(d.z) ^ sg;
+    sc = ts_fbits(d.x);
+    tc = ts_fbits(d.z) ^ sg;
   }
   face += sg ? 1 : 0;
   {
-    float ama = bf(fb(ma) & ~S);
-    float ima = !(daz(ama) <= 0.0f) ? 0.5f / ama : 0.0f; /* |ma| UGT 0, else 0 */
-    float s = bf(sc) * ima + 0.5f, t = bf(tc) * ima + 0.5f;
+    float ama = ts_bitsf(ts_fbits(ma) & ~S);
+    float ima = !(ts_daz(ama) <= 0.0f) ? 0.5f / ama : 0.0f; /* |ma| UGT 0, else 0 */
+    float s = ts_bitsf(sc) * ima + 0.5f, t = ts_bitsf(tc) * ima + 0.5f;
     return sample2d_f(c->faces[face], c->size, c->size, TS_WRAP_CLAMP, TS_WRAP_CLAMP, c->filter, s, t);
   }
 }
@@ -105,21 +98,12 @@ ts_vec4f ts_textureCubef(const ts_texcube *c, ts_vec3f d) {
 /* double reference: same addressing, computed in double                         */
 /* ---------------------------------------------------------------------------- */
 
-static ts_vec4d texel_d(const float *tx, int w, int h, int x, int y) {
-  ts_vec4f p = fetch_safe(tx, w, h, x, y);
+static ts_vec4d fetch_d(const float *tx, int w, int h, int x, int y) {
+  ts_vec4f p = fetch_f(tx, w, h, x, y);
   return ts_v4d(p.x, p.y, p.z, p.w);
 }
 
-static ts_vec4d sample2d_d(const float *tx, int w, int h, int wrap_s, int wrap_t, int filter, double u, double v) {
-  int x0, x1, y0, y1;
-  double wx, wy;
-  if (filter == TS_FILTER_NEAREST)
-    return texel_d(tx, w, h, ts_wrap_nearest_d(u, w, wrap_s), ts_wrap_nearest_d(v, h, wrap_t));
-  ts_wrap_linear_d(u, w, wrap_s, &x0, &x1, &wx);
-  ts_wrap_linear_d(v, h, wrap_t, &y0, &y1, &wy);
-  return ts_lerp4d(wy, ts_lerp4d(wx, texel_d(tx, w, h, x0, y0), texel_d(tx, w, h, x1, y0)),
-                   ts_lerp4d(wx, texel_d(tx, w, h, x0, y1), texel_d(tx, w, h, x1, y1)));
-}
+TS_SAMPLE2D(d, double, ts_vec4d)
 
 ts_vec4d ts_texture2Dd(const ts_tex2d *t, ts_vec2d uv) {
   return sample2d_d(t->texels, t->w, t->h, t->wrap_s, t->wrap_t, t->filter, uv.x, uv.y);

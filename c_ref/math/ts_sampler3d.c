@@ -14,6 +14,26 @@
 #include <math.h>
 #include <stddef.h>
 
+/* ts_texture3Df / ts_texture3Dd: the same steps in precision S (R its real type, V4 the texel
+ * type): NEAREST, or LINEAR as lerp(wz, bilinear(slice z0), bilinear(slice z1)). */
+#define TS_TEXTURE3D(S, R, V4)                                                                                  \
+  V4 ts_texture3D##S(const ts_tex3d *t, ts_vec3##S p) {                                                         \
+    int x0, x1, y0, y1, z0, z1;                                                                                 \
+    R wx, wy, wz;                                                                                               \
+    V4 s0, s1;                                                                                                  \
+    if (t->filter == TS_FILTER_NEAREST)                                                                         \
+      return fetch_##S(t, ts_wrap_nearest_##S(p.x, t->w, t->wrap_s), ts_wrap_nearest_##S(p.y, t->h, t->wrap_t), \
+                       ts_wrap_nearest_##S(p.z, t->d, t->wrap_r));                                              \
+    ts_wrap_linear_##S(p.x, t->w, t->wrap_s, &x0, &x1, &wx);                                                    \
+    ts_wrap_linear_##S(p.y, t->h, t->wrap_t, &y0, &y1, &wy);                                                    \
+    ts_wrap_linear_##S(p.z, t->d, t->wrap_r, &z0, &z1, &wz);                                                    \
+    s0 = ts_lerp4_##S(wy, ts_lerp4_##S(wx, fetch_##S(t, x0, y0, z0), fetch_##S(t, x1, y0, z0)),                 \
+                      ts_lerp4_##S(wx, fetch_##S(t, x0, y1, z0), fetch_##S(t, x1, y1, z0)));                    \
+    s1 = ts_lerp4_##S(wy, ts_lerp4_##S(wx, fetch_##S(t, x0, y0, z1), fetch_##S(t, x1, y0, z1)),                 \
+                      ts_lerp4_##S(wx, fetch_##S(t, x0, y1, z1), fetch_##S(t, x1, y1, z1)));                    \
+    return ts_lerp4_##S(wz, s0, s1);                                                                            \
+  }
+
 static ts_vec4f texel(const ts_tex3d *t, int x, int y, int z) {
   const float *p = t->texels + (((size_t)z * (size_t)t->h + (size_t)y) * (size_t)t->w + (size_t)x) * 4u;
   return ts_v4f(p[0], p[1], p[2], p[3]);
@@ -21,7 +41,7 @@ static ts_vec4f texel(const ts_tex3d *t, int x, int y, int z) {
 
 /* Never reads outside the volume: llvmpipe produces in-range indices for
  * finite coordinates; NaN/inf coordinates are clamped here. */
-static ts_vec4f fetch_safe(const ts_tex3d *t, int x, int y, int z) {
+static ts_vec4f fetch_f(const ts_tex3d *t, int x, int y, int z) {
   return texel(t, ts_clampi(x, 0, t->w - 1), ts_clampi(y, 0, t->h - 1), ts_clampi(z, 0, t->d - 1));
 }
 
@@ -34,45 +54,15 @@ ts_vec4f ts_texelFetch3Df(const ts_tex3d *t, int x, int y, int z) {
 /* float32, llvmpipe-exact                                                       */
 /* ---------------------------------------------------------------------------- */
 
-ts_vec4f ts_texture3Df(const ts_tex3d *t, ts_vec3f p) {
-  int x0, x1, y0, y1, z0, z1;
-  float wx, wy, wz;
-  ts_vec4f s0, s1;
-  if (t->filter == TS_FILTER_NEAREST)
-    return fetch_safe(t, ts_wrap_nearest(p.x, t->w, t->wrap_s), ts_wrap_nearest(p.y, t->h, t->wrap_t),
-                      ts_wrap_nearest(p.z, t->d, t->wrap_r));
-  ts_wrap_linear(p.x, t->w, t->wrap_s, &x0, &x1, &wx);
-  ts_wrap_linear(p.y, t->h, t->wrap_t, &y0, &y1, &wy);
-  ts_wrap_linear(p.z, t->d, t->wrap_r, &z0, &z1, &wz);
-  s0 = ts_lerp4(wy, ts_lerp4(wx, fetch_safe(t, x0, y0, z0), fetch_safe(t, x1, y0, z0)),
-                ts_lerp4(wx, fetch_safe(t, x0, y1, z0), fetch_safe(t, x1, y1, z0)));
-  s1 = ts_lerp4(wy, ts_lerp4(wx, fetch_safe(t, x0, y0, z1), fetch_safe(t, x1, y0, z1)),
-                ts_lerp4(wx, fetch_safe(t, x0, y1, z1), fetch_safe(t, x1, y1, z1)));
-  return ts_lerp4(wz, s0, s1);
-}
+TS_TEXTURE3D(f, float, ts_vec4f)
 
 /* ---------------------------------------------------------------------------- */
 /* double reference: same addressing, computed in double                         */
 /* ---------------------------------------------------------------------------- */
 
-static ts_vec4d texel_d(const ts_tex3d *t, int x, int y, int z) {
-  ts_vec4f p = fetch_safe(t, x, y, z);
+static ts_vec4d fetch_d(const ts_tex3d *t, int x, int y, int z) {
+  ts_vec4f p = fetch_f(t, x, y, z);
   return ts_v4d(p.x, p.y, p.z, p.w);
 }
 
-ts_vec4d ts_texture3Dd(const ts_tex3d *t, ts_vec3d p) {
-  int x0, x1, y0, y1, z0, z1;
-  double wx, wy, wz;
-  ts_vec4d s0, s1;
-  if (t->filter == TS_FILTER_NEAREST)
-    return texel_d(t, ts_wrap_nearest_d(p.x, t->w, t->wrap_s), ts_wrap_nearest_d(p.y, t->h, t->wrap_t),
-                   ts_wrap_nearest_d(p.z, t->d, t->wrap_r));
-  ts_wrap_linear_d(p.x, t->w, t->wrap_s, &x0, &x1, &wx);
-  ts_wrap_linear_d(p.y, t->h, t->wrap_t, &y0, &y1, &wy);
-  ts_wrap_linear_d(p.z, t->d, t->wrap_r, &z0, &z1, &wz);
-  s0 = ts_lerp4d(wy, ts_lerp4d(wx, texel_d(t, x0, y0, z0), texel_d(t, x1, y0, z0)),
-                 ts_lerp4d(wx, texel_d(t, x0, y1, z0), texel_d(t, x1, y1, z0)));
-  s1 = ts_lerp4d(wy, ts_lerp4d(wx, texel_d(t, x0, y0, z1), texel_d(t, x1, y0, z1)),
-                 ts_lerp4d(wx, texel_d(t, x0, y1, z1), texel_d(t, x1, y1, z1)));
-  return ts_lerp4d(wz, s0, s1);
-}
+TS_TEXTURE3D(d, double, ts_vec4d)

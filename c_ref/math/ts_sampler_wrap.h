@@ -21,7 +21,7 @@ static float ts_fract_safe(float u) {
 }
 
 /* lp_build_sample_wrap_nearest (float coords, normalized). */
-static int ts_wrap_nearest(float u, int len, int wrap) {
+static int ts_wrap_nearest_f(float u, int len, int wrap) {
   float lf = (float)len;
   if (wrap == TS_WRAP_REPEAT) {
     if (ts_is_pot(len)) /* ifloor(u*len) & (len-1) */
@@ -32,7 +32,7 @@ static int ts_wrap_nearest(float u, int len, int wrap) {
 }
 
 /* lp_build_sample_wrap_linear: the two texels i0, i1 and the weight w of i1. */
-static void ts_wrap_linear(float u, int len, int wrap, int *i0, int *i1, float *w) {
+static void ts_wrap_linear_f(float u, int len, int wrap, int *i0, int *i1, float *w) {
   float lf = (float)len, c, fl;
   if (wrap == TS_WRAP_REPEAT) {
     if (!ts_is_pot(len)) u = u - ts_floorf(u);
@@ -60,7 +60,7 @@ static void ts_wrap_linear(float u, int len, int wrap, int *i0, int *i1, float *
 }
 
 /* gallivm lerp(w, a, b) = mad(w, b - a, a) (fused iff llvmpipe fuses: ts_madf). */
-static ts_vec4f ts_lerp4(float w, ts_vec4f a, ts_vec4f b) {
+static ts_vec4f ts_lerp4_f(float w, ts_vec4f a, ts_vec4f b) {
   return ts_v4f(ts_madf(w, b.x - a.x, a.x), ts_madf(w, b.y - a.y, a.y), ts_madf(w, b.z - a.z, a.z),
                 ts_madf(w, b.w - a.w, a.w));
 }
@@ -99,7 +99,7 @@ static void ts_wrap_linear_d(double u, int len, int wrap, int *i0, int *i1, doub
   }
 }
 
-static ts_vec4d ts_lerp4d(double w, ts_vec4d a, ts_vec4d b) {
+static ts_vec4d ts_lerp4_d(double w, ts_vec4d a, ts_vec4d b) {
   return ts_v4d(a.x + w * (b.x - a.x), a.y + w * (b.y - a.y), a.z + w * (b.z - a.z), a.w + w * (b.w - a.w));
 }
 

@@ -16,27 +16,19 @@
 #define VFN(name) TSV_CAT(TSV_CAT(name, _), TSV_SFX)
 #define TSV_INL static inline __attribute__((always_inline))
 
-#if TSV_W == 8
-#ifndef TSV_TYPES8_
-#define TSV_TYPES8_
+#ifndef TSV_TYPES_
+#define TSV_TYPES_
 typedef float tsv_f8 __attribute__((vector_size(32)));
 typedef int tsv_i8 __attribute__((vector_size(32)));
 typedef unsigned tsv_u8 __attribute__((vector_size(32)));
-#endif
-#define VF tsv_f8
-#define VI tsv_i8
-#define VU tsv_u8
-#else
-#ifndef TSV_TYPES4_
-#define TSV_TYPES4_
 typedef float tsv_f4 __attribute__((vector_size(16)));
 typedef int tsv_i4 __attribute__((vector_size(16)));
 typedef unsigned tsv_u4 __attribute__((vector_size(16)));
 #endif
-#define VF tsv_f4
-#define VI tsv_i4
-#define VU tsv_u4
-#endif
+/* This instance's lanes: tsv_f8, tsv_i8, tsv_u8 (TSV_W 8) or tsv_f4, tsv_i4, tsv_u4 (TSV_W 4). */
+#define VF TSV_CAT(tsv_f, TSV_W)
+#define VI TSV_CAT(tsv_i, TSV_W)
+#define VU TSV_CAT(tsv_u, TSV_W)
 
 /* Vector structs are declared per width (the suffix keeps the instances apart). */
 typedef struct {
@@ -106,28 +98,20 @@ TSV_INL VF VFN(clamp)(VF x, VF lo, VF hi) { return VFN(min)(VFN(max)(x, lo), hi)
 TSV_INL VF VFN(saturate)(VF x) { return VFN(lp_min)(VFN(lp_max)(x, VFN(splat)(0.0f)), VFN(splat)(1.0f)); }
 TSV_INL VF VFN(inversesqrt)(VF x) { return 1.0f / VFN(sqrt)(x); }
 
-/* gallivm lp_build_polynomial for the two fixed degrees used (see ts_math.c lp_poly). */
-TSV_INL VF VFN(poly6)(VF x, const float *c) {
+/* gallivm lp_build_polynomial (ts_math.c lp_poly) for n >= 2 coefficients: one Horner chain in
+ * x^2 per parity, started by c[n-1] and c[n-2]; then odd * x + even. `hi` always holds the chain
+ * that takes the next coefficient. */
+TSV_INL VF VFN(poly)(VF x, const float *c, int n) {
   const VF x2 = x * x;
-  VF odd = VFN(splat)(c[5]), even = VFN(splat)(c[4]);
-  odd = VFN(mad)(x2, odd, VFN(splat)(c[3]));
-  even = VFN(mad)(x2, even, VFN(splat)(c[2]));
-  odd = VFN(mad)(x2, odd, VFN(splat)(c[1]));
-  even = VFN(mad)(x2, even, VFN(splat)(c[0]));
-  return VFN(mad)(odd, x, even);
+  VF hi = VFN(splat)(c[n - 1]), lo = VFN(splat)(c[n - 2]);
+#pragma GCC unroll 8
+  for (int i = n - 3; i >= 0; i--) {
+    const VF t = VFN(mad)(x2, hi, VFN(splat)(c[i]));
+    hi = lo;
+    lo = t;
+  }
+  return VFN(mad)(hi, x, lo); /* hi: the chain of c[1] (odd), lo: the chain of c[0] (even) */
 }
-TSV_INL VF VFN(poly5)(VF x, const float *c) {
-  const VF x2 = x * x;
-  VF even = VFN(splat)(c[4]), odd = VFN(splat)(c[3]);
-  even = VFN(mad)(x2, even, VFN(splat)(c[2]));
-  odd = VFN(mad)(x2, odd, VFN(splat)(c[1]));
-  even = VFN(mad)(x2, even, VFN(splat)(c[0]));
-  return VFN(mad)(odd, x, even);
-}
-
-static const float VFN(exp2_c)[6] = {0x1p+0f,        0x1.62e4f6p-1f, 0x1.ebd5a8p-3f,
-                                     0x1.c95446p-5f, 0x1.26900cp-7f, 0x1.ec320ap-10f};
-static const float VFN(log2_c)[5] = {0x1.715476p+1f, 0x1.ec6ff2p-1f, 0x1.27a642p-1f, 0x1.9d062cp-2f, 0x1.a07ab2p-2f};
 
 TSV_INL VF VFN(exp2)(VF x) {
   x = VFN(lp_min)(VFN(splat)(128.0f), x);
@@ -136,7 +120,7 @@ TSV_INL VF VFN(exp2)(VF x) {
   const VF fr = x - fl;
   const VU i = (VU)VFN(itrunc)(fl);
   const VF scale = VFN(asf)((i + 127u) << 23);
-  return scale * VFN(poly6)(fr, VFN(exp2_c));
+  return scale * VFN(poly)(fr, ts_lp_exp2_coeffs, 6);
 }
 
 /* log2_safe: the edge selects run inf, zero, negative; compares as the scalar `!(...)`. */
@@ -145,7 +129,7 @@ TSV_INL VF VFN(log2)(VF x) {
   const VF e = VFN(tof)((VI)((b & 0x7f800000u) >> 23) - 127);
   const VF m = VFN(asf)((b & 0x007fffffu) | 0x3f800000u);
   const VF y = (m - 1.0f) / (m + 1.0f);
-  VF r = VFN(mad)(y, VFN(poly5)(y * y, VFN(log2_c)), e);
+  VF r = VFN(mad)(y, VFN(poly)(y * y, ts_lp_log2_coeffs, 5), e);
   r = VFN(sel)(~(x < __builtin_inff()), VFN(splat)(__builtin_inff()), r);
   r = VFN(sel)(~(x != 0.0f), VFN(splat)(-__builtin_inff()), r);
   r = VFN(sel)(~(x >= 0.0f), VFN(splat)(__builtin_nanf("")), r);
@@ -237,6 +221,48 @@ TSV_INL V4v VFN(rec_load)(const ts_vec4f *base, int stride, const size_t *pix) {
   for (int j = 0; j < TSV_W; ++j) q[j] = p + pix[j] * s;
   return VFN(gather4)(q);
 }
+
+/* Slot k of a block from any batch input (a struct of slot[] and stride[], as in twins/model_lighting_batch.h). */
+#define TSV_REC(in, k, pix) VFN(rec_load)((in)->slot[k], (in)->stride[k], (pix))
+
+/* The pixels of the block that starts at `first` (a short last block repeats its last pixel);
+ * returns how many are real. */
+TSV_INL int VFN(block_pix)(int first, int count, size_t *pix) {
+  const int n = count - first < TSV_W ? count - first : TSV_W;
+  for (int j = 0; j < TSV_W; ++j) pix[j] = (size_t)first + (size_t)(j < n ? j : n - 1);
+  return n;
+}
+
+/* (c, a) as one 4-vector. */
+TSV_INL V4v VFN(rgba)(V3v c, VF a) {
+  V4v r;
+  r.x = c.x;
+  r.y = c.y;
+  r.z = c.z;
+  r.w = a;
+  return r;
+}
+
+/* The first n lanes of c to out[0..n-1]. */
+TSV_INL void VFN(store4)(V4v c, ts_vec4f *out, int n) {
+  for (int j = 0; j < n; ++j) {
+    out[j].x = c.x[j];
+    out[j].y = c.y[j];
+    out[j].z = c.z[j];
+    out[j].w = c.w[j];
+  }
+}
+
+/* A batch twin: pixels 0..count-1 of `in`, TSV_W at a time, each block shaded by
+ * block(v, in, tex, pix) -> V4v (the twin's *_simd_impl.h). */
+#define TSV_BATCH(name, block, variant_t, input_t, tex_t)                                                    \
+  static void VFN(name)(const variant_t *v, const input_t *in, const tex_t *tex, ts_vec4f *out, int count) { \
+    for (int first = 0; first < count; first += TSV_W) {                                                     \
+      size_t pix[TSV_W];                                                                                     \
+      const int n = VFN(block_pix)(first, count, pix);                                                       \
+      VFN(store4)(VFN(block)(v, in, tex, pix), out + first, n);                                              \
+    }                                                                                                        \
+  }
 
 /* common_math.h safe_normalize: v * inversesqrt(max(dot(v, v), 1e-30)). 1e-30 is TS_MIN_LENGTH2,
  * which is not an fp16 number (shaders/common_math.glsl says what that means for mediump). */

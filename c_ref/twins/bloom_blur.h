@@ -4,11 +4,8 @@
 #ifndef TS_BLOOM_BLUR_H
 #define TS_BLOOM_BLUR_H
 #include "math/ts_math.h"
+#include "twins/twin_api.h"
 #include "math/ts_sampler.h"
-
-#ifdef __cplusplus
-extern "C" {
-#endif
 
 /* The input record's slots (enum bb_slot) and its counts (BB_SLOTS, BB_PIXEL_SLOTS, as #defines)
  * come from the one table shaders/bloom_blur_slots.glsl. */
@@ -22,10 +19,7 @@ typedef struct {
   int direction; /* DIRECTION: 0 X, 1 Y */
 } bb_variant;
 
-ts_vec4f bloom_blur_f(const bb_variant *v, const ts_vec4f rec[BB_SLOTS], const ts_tex2d *source);
-ts_vec4d bloom_blur_d(const bb_variant *v, const ts_vec4f rec[BB_SLOTS], const ts_tex2d *source);
+/* bloom_blur_f: float32, bit-exact with llvmpipe; bloom_blur_d: double, the accuracy reference */
+TS_TWIN_DECLARE(bloom_blur, (const bb_variant *v, const ts_vec4f rec[BB_SLOTS], const ts_tex2d *source))
 
-#ifdef __cplusplus
-}
-#endif
 #endif

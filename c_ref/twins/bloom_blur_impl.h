@@ -1,9 +1,11 @@
 /* tiershade twins: generic body of the bloom_blur twin; mirrors
  * shaders/bloom_blur.fs statement by statement (weights and offsets: fact sheet
- * section 8, BlurFilter). Instantiated by bloom_blur.c. */
+ * section 8, BlurFilter). Instantiated by bloom_blur.c through twin_instances.h; gives bloom_blur_f / bloom_blur_d. */
+#include "common/common_math.h"
+#include "common/common_output.h"
 
 static V3 FN(bb_fetch)(const ts_tex2d *src, TS_REAL u, TS_REAL v) {
-  V4 s = FN(sample2d)(src, u, v);
+  V4 s = M(texture2D)(src, M(v2)(u, v));
   return M(v3)(s.x, s.y, s.z);
 }
 
@@ -16,7 +18,7 @@ static V3 FN(bb_pair)(const bb_variant *v, const ts_tex2d *src, V4 pos, TS_REAL 
   return M(add3)(FN(bb_fetch)(src, x, (pos.y + offset) * size.w), FN(bb_fetch)(src, x, (pos.y - offset) * size.w));
 }
 
-static V4 FN(bloom_blur_impl)(const bb_variant *v, const ts_vec4f rec[BB_SLOTS], const ts_tex2d *src) {
+V4 FN(bloom_blur)(const bb_variant *v, const ts_vec4f rec[BB_SLOTS], const ts_tex2d *src) {
   static const TS_REAL offsets[6] = {K(1.3366), K(3.4295), K(5.4264), K(7.4359), K(9.4436), K(11.4401)};
   static const TS_REAL weights[6] = {K(0.2185), K(0.0821), K(0.0461), K(0.0262), K(0.0162), K(0.0102)};
   V4 pos = FN(vec4_in)(rec[BB_SLOT_POS]);

@@ -5,11 +5,8 @@
 #ifndef TS_BLOOM_DOWNSAMPLE_H
 #define TS_BLOOM_DOWNSAMPLE_H
 #include "math/ts_math.h"
+#include "twins/twin_api.h"
 #include "math/ts_sampler.h"
-
-#ifdef __cplusplus
-extern "C" {
-#endif
 
 /* The input record's slots (enum bd_slot) and its counts (BD_SLOTS, BD_PIXEL_SLOTS, as #defines)
  * come from the one table shaders/bloom_downsample_slots.glsl. */
@@ -23,10 +20,7 @@ typedef struct {
   int shape; /* SHAPE: 0 plain box, 1 shaped taps */
 } bd_variant;
 
-ts_vec4f bloom_downsample_f(const bd_variant *v, const ts_vec4f rec[BD_SLOTS], const ts_tex2d *source);
-ts_vec4d bloom_downsample_d(const bd_variant *v, const ts_vec4f rec[BD_SLOTS], const ts_tex2d *source);
+/* bloom_downsample_f: float32, bit-exact with llvmpipe; bloom_downsample_d: double, the accuracy reference */
+TS_TWIN_DECLARE(bloom_downsample, (const bd_variant *v, const ts_vec4f rec[BD_SLOTS], const ts_tex2d *source))
 
-#ifdef __cplusplus
-}
-#endif
 #endif

@@ -1,14 +1,17 @@
 /* tiershade twins: generic body of the bloom_downsample twin; mirrors
- * shaders/bloom_downsample.fs statement by statement. Instantiated by bloom_downsample.c. */
+ * shaders/bloom_downsample.fs statement by statement. Instantiated by bloom_downsample.c through twin_instances.h; gives bloom_downsample_f / bloom_downsample_d. */
+#include "common/common_math.h"
+#include "common/common_hdr.h"
+#include "common/common_output.h"
 
 static V3 FN(bd_tap)(const bd_variant *v, const ts_tex2d *src, TS_REAL tx, TS_REAL ty, V4 size, V4 shape) {
-  V4 s = FN(sample2d)(src, tx * size.z, ty * size.w);
+  V4 s = M(texture2D)(src, M(v2)(tx * size.z, ty * size.w));
   V3 p = M(v3)(s.x, s.y, s.z);
   if (v->shape) p = FN(bloom_shape)(p, shape);
   return p;
 }
 
-static V4 FN(bloom_downsample_impl)(const bd_variant *v, const ts_vec4f rec[BD_SLOTS], const ts_tex2d *src) {
+V4 FN(bloom_downsample)(const bd_variant *v, const ts_vec4f rec[BD_SLOTS], const ts_tex2d *src) {
   V4 pos = FN(vec4_in)(rec[BD_SLOT_POS]);
   V4 size = FN(vec4_in)(rec[BD_SLOT_SIZE]);
   V4 shape = FN(vec4_in)(rec[BD_SLOT_SHAPE]);

@@ -5,12 +5,9 @@
 #ifndef TS_COLOR_CORRECTION_H
 #define TS_COLOR_CORRECTION_H
 #include "math/ts_math.h"
+#include "twins/twin_api.h"
 #include "math/ts_sampler.h"
 #include "math/ts_sampler3d.h"
-
-#ifdef __cplusplus
-extern "C" {
-#endif
 
 /* The input record's slots (enum cc_slot) and its counts (CC_SLOTS, CC_PIXEL_SLOTS, as #defines)
  * come from the one table shaders/color_correction_slots.glsl. */
@@ -33,14 +30,9 @@ typedef struct {
 } cc_luts;
 
 /* The addressing slot for LUT edge n, as the shader expects it (CC_SLOT_LUT). */
-ts_vec4f cc_lut_params(int n);
+TS_C_API ts_vec4f cc_lut_params(int n);
 
-/* float32, bit-exact with llvmpipe */
-ts_vec4f color_correction_f(const cc_variant *v, const ts_vec4f rec[CC_SLOTS], const cc_luts *luts);
-/* double, the same algorithm in double precision */
-ts_vec4d color_correction_d(const cc_variant *v, const ts_vec4f rec[CC_SLOTS], const cc_luts *luts);
+/* color_correction_f: float32, bit-exact with llvmpipe; color_correction_d: double, the accuracy reference */
+TS_TWIN_DECLARE(color_correction, (const cc_variant *v, const ts_vec4f rec[CC_SLOTS], const cc_luts *luts))
 
-#ifdef __cplusplus
-}
-#endif
 #endif

@@ -14,20 +14,8 @@
 #include "twins/color_correction.h"
 #include "math/ts_batch.h"
 
-#ifdef __cplusplus
-extern "C" {
-#endif
+#include "twins/twin_api.h"
 
-typedef struct {
-  const ts_vec4f *slot[CC_SLOTS];
-  int stride[CC_SLOTS]; /* in ts_vec4f; 0 = one value for every pixel */
-} cc_batch_input;
-
-/* out[i] = color_correction_f(v, record of pixel i, luts), i = 0..count-1 */
-void color_correction_f_batch(const cc_variant *v, const cc_batch_input *in, const cc_luts *luts, ts_vec4f *out,
-                              int count);
-
-#ifdef __cplusplus
-}
-#endif
+/* cc_batch_input; color_correction_f_batch: out[i] = color_correction_f(v, record of pixel i, luts) */
+TS_BATCH_DECLARE(color_correction, cc_batch_input, CC_SLOTS, cc_variant, cc_luts)
 #endif

@@ -1,5 +1,16 @@
 /* tiershade twins: generic body of the color_correction twin; mirrors
- * shaders/color_correction.fs statement by statement. Instantiated by color_correction.c. */
+ * shaders/color_correction.fs statement by statement. Instantiated by color_correction.c through twin_instances.h; gives color_correction_f / color_correction_d. */
+
+/* The LUT taps common_color_correction.h reads: the rgb of a 2D / 3D texture lookup. */
+static V3 FN(cc_tex2d)(const ts_tex2d *t, TS_REAL u, TS_REAL v) {
+  V4 s = M(texture2D)(t, M(v2)(u, v));
+  return M(v3)(s.x, s.y, s.z);
+}
+static V3 FN(cc_tex3d)(const ts_tex3d *t, V3 p) {
+  V4 s = M(texture3D)(t, p);
+  return M(v3)(s.x, s.y, s.z);
+}
+#include "common/common_color_correction.h"
 
 /* A record slot in the instantiation's precision (float slots, widened for double). */
 static V4 FN(cc_in)(ts_vec4f v) { return M(v4)((TS_REAL)v.x, (TS_REAL)v.y, (TS_REAL)v.z, (TS_REAL)v.w); }
@@ -13,7 +24,7 @@ static V3 FN(cc_lookup)(const cc_variant *v, const cc_luts *luts, int i, V3 uvw,
   return v->atlas ? FN(cc_atlas_hw)(&luts->atlas[i], uv0, uv1, fz) : FN(cc_volume_hw)(&luts->volume[i], uvw);
 }
 
-static V4 FN(color_correction_impl)(const cc_variant *v, const ts_vec4f rec[CC_SLOTS], const cc_luts *luts) {
+V4 FN(color_correction)(const cc_variant *v, const ts_vec4f rec[CC_SLOTS], const cc_luts *luts) {
   V4 color = FN(cc_in)(rec[CC_SLOT_COLOR]);
   V4 weights = FN(cc_in)(rec[CC_SLOT_WEIGHTS]);
   V4 params = FN(cc_in)(rec[CC_SLOT_PARAMS]);

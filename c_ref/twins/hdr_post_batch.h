@@ -21,37 +21,15 @@
 #include "twins/hdr_tonemap.h"
 #include "math/ts_batch.h"
 
-#ifdef __cplusplus
-extern "C" {
-#endif
+#include "twins/twin_api.h"
 
-typedef struct {
-  const ts_vec4f *slot[BD_SLOTS];
-  int stride[BD_SLOTS]; /* in ts_vec4f; 0 = one value for every pixel */
-} bd_batch_input;
-typedef struct {
-  const ts_vec4f *slot[BB_SLOTS];
-  int stride[BB_SLOTS];
-} bb_batch_input;
-typedef struct {
-  const ts_vec4f *slot[HT_SLOTS];
-  int stride[HT_SLOTS];
-} ht_batch_input;
-
-/* out[i] = <twin>_f(v, record of pixel i, texture), i = 0..count-1 */
-void bloom_downsample_f_batch(const bd_variant *v, const bd_batch_input *in, const ts_tex2d *source, ts_vec4f *out,
-                              int count);
-void bloom_blur_f_batch(const bb_variant *v, const bb_batch_input *in, const ts_tex2d *source, ts_vec4f *out,
-                        int count);
-void hdr_tonemap_f_batch(const ht_variant *v, const ht_batch_input *in, const ts_tex2d *bloom, ts_vec4f *out,
-                         int count);
+/* bd_batch_input, bb_batch_input, ht_batch_input; out[i] = <twin>_f(v, record of pixel i, texture) */
+TS_BATCH_DECLARE(bloom_downsample, bd_batch_input, BD_SLOTS, bd_variant, ts_tex2d)
+TS_BATCH_DECLARE(bloom_blur, bb_batch_input, BB_SLOTS, bb_variant, ts_tex2d)
+TS_BATCH_DECLARE(hdr_tonemap, ht_batch_input, HT_SLOTS, ht_variant, ts_tex2d)
 
 /* out[i] = ts_quantize_half(in[i]) / ts_unorm8_from_float(in[i]), i = 0..n-1 (in == out allowed
  * for the first). Pure bit operations and an exact multiply-add: no dependence on the fused mode. */
-void ts_quantize_half_batch(const float *in, float *out, size_t n);
-void ts_unorm8_from_float_batch(const float *in, uint8_t *out, size_t n);
-
-#ifdef __cplusplus
-}
-#endif
+TS_C_API void ts_quantize_half_batch(const float *in, float *out, size_t n);
+TS_C_API void ts_unorm8_from_float_batch(const float *in, uint8_t *out, size_t n);
 #endif

@@ -4,43 +4,7 @@
  * Variant switches stay scalar `if`s; every record value is per lane.
  * Included by c_ref/twins/hdr_post_batch.c through ts_simd_instances.h (once per instruction set). */
 
-/* The pixels of block `first` (a short block repeats its last pixel). */
-TSV_INL int VFN(hp_pix)(int first, int count, size_t *pix) {
-  const int n = count - first < TSV_W ? count - first : TSV_W;
-  for (int j = 0; j < TSV_W; ++j) pix[j] = (size_t)first + (size_t)(j < n ? j : n - 1);
-  return n;
-}
-
-TSV_INL void VFN(hp_store)(V3v c, VF a, ts_vec4f *out, int n) {
-  for (int j = 0; j < n; ++j) {
-    out[j].x = c.x[j];
-    out[j].y = c.y[j];
-    out[j].z = c.z[j];
-    out[j].w = a[j];
-  }
-}
-
-/* common_output.h */
-TSV_INL V3v VFN(hp_linear)(V3v c) {
-  const VF z = VFN(splat)(0.0f), top = VFN(splat)(65504.0f);
-  return VFN(v3)(VFN(clamp)(c.x, z, top), VFN(clamp)(c.y, z, top), VFN(clamp)(c.z, z, top));
-}
-TSV_INL VF VFN(hp_srgb1)(VF x) {
-  const VF hi = 1.055f * VFN(pow)(x, VFN(splat)(1.0f / 2.4f)) - 0.055f;
-  return VFN(sel)(x <= 0.0031308f, 12.92f * x, hi);
-}
-TSV_INL V3v VFN(hp_output)(V3v c, int mode) {
-  if (mode == 1) {
-    const VF e = VFN(splat)(1.0f / 2.2f);
-    const V3v s = VFN(saturate3)(c);
-    return VFN(saturate3)(VFN(v3)(VFN(pow)(s.x, e), VFN(pow)(s.y, e), VFN(pow)(s.z, e)));
-  }
-  if (mode == 2) {
-    const V3v s = VFN(saturate3)(c);
-    return VFN(saturate3)(VFN(v3)(VFN(hp_srgb1)(s.x), VFN(hp_srgb1)(s.y), VFN(hp_srgb1)(s.z)));
-  }
-  return VFN(hp_linear)(c);
-}
+#include "twins/simd_common.h"
 
 TSV_INL V3v VFN(hp_fetch)(const ts_tex2d *t, VF u, VF v) { return VFN(xyz)(VFN(texture2D)(t, u, v)); }
 
@@ -54,69 +18,57 @@ TSV_INL V3v VFN(bd_tap)(const bd_variant *v, const ts_tex2d *src, VF tx, VF ty, 
   return p;
 }
 
-static void VFN(bd_batch)(const bd_variant *v, const bd_batch_input *in, const ts_tex2d *src, ts_vec4f *out,
-                          int count) {
-  for (int first = 0; first < count; first += TSV_W) {
-    size_t pix[TSV_W];
-    const int n = VFN(hp_pix)(first, count, pix);
-    const V4v pos = VFN(rec_load)(in->slot[BD_SLOT_POS], in->stride[BD_SLOT_POS], pix);
-    const V4v size = VFN(rec_load)(in->slot[BD_SLOT_SIZE], in->stride[BD_SLOT_SIZE], pix);
-    const V4v shape = VFN(rec_load)(in->slot[BD_SLOT_SHAPE], in->stride[BD_SLOT_SHAPE], pix);
-    const VF cx = pos.x * 4.0f, cy = pos.y * 4.0f;
-    V3v sum = VFN(bd_tap)(v, src, cx - 1.0f, cy - 1.0f, size, shape);
-    sum = VFN(add3)(sum, VFN(bd_tap)(v, src, cx + 1.0f, cy - 1.0f, size, shape));
-    sum = VFN(add3)(sum, VFN(bd_tap)(v, src, cx - 1.0f, cy + 1.0f, size, shape));
-    sum = VFN(add3)(sum, VFN(bd_tap)(v, src, cx + 1.0f, cy + 1.0f, size, shape));
-    VFN(hp_store)(VFN(hp_linear)(VFN(scale3)(sum, VFN(splat)(0.25f))), VFN(splat)(1.0f), out + first, n);
-  }
+static V4v VFN(bd_block)(const bd_variant *v, const bd_batch_input *in, const ts_tex2d *src, const size_t *pix) {
+  const V4v pos = TSV_REC(in, BD_SLOT_POS, pix);
+  const V4v size = TSV_REC(in, BD_SLOT_SIZE, pix);
+  const V4v shape = TSV_REC(in, BD_SLOT_SHAPE, pix);
+  const VF cx = pos.x * 4.0f, cy = pos.y * 4.0f;
+  V3v sum = VFN(bd_tap)(v, src, cx - 1.0f, cy - 1.0f, size, shape);
+  sum = VFN(add3)(sum, VFN(bd_tap)(v, src, cx + 1.0f, cy - 1.0f, size, shape));
+  sum = VFN(add3)(sum, VFN(bd_tap)(v, src, cx - 1.0f, cy + 1.0f, size, shape));
+  sum = VFN(add3)(sum, VFN(bd_tap)(v, src, cx + 1.0f, cy + 1.0f, size, shape));
+  return VFN(rgba)(VFN(output_linear)(VFN(scale3)(sum, VFN(splat)(0.25f))), VFN(splat)(1.0f));
 }
+TSV_BATCH(bd_batch, bd_block, bd_variant, bd_batch_input, ts_tex2d)
 
 /* ---- bloom_blur ---- */
-static void VFN(bb_batch)(const bb_variant *v, const bb_batch_input *in, const ts_tex2d *src, ts_vec4f *out,
-                          int count) {
+static V4v VFN(bb_block)(const bb_variant *v, const bb_batch_input *in, const ts_tex2d *src, const size_t *pix) {
   static const float offsets[6] = {1.3366f, 3.4295f, 5.4264f, 7.4359f, 9.4436f, 11.4401f};
   static const float weights[6] = {0.2185f, 0.0821f, 0.0461f, 0.0262f, 0.0162f, 0.0102f};
-  for (int first = 0; first < count; first += TSV_W) {
-    size_t pix[TSV_W];
-    const int n = VFN(hp_pix)(first, count, pix);
-    const V4v pos = VFN(rec_load)(in->slot[BB_SLOT_POS], in->stride[BB_SLOT_POS], pix);
-    const V4v size = VFN(rec_load)(in->slot[BB_SLOT_SIZE], in->stride[BB_SLOT_SIZE], pix);
-    const V4v params = VFN(rec_load)(in->slot[BB_SLOT_PARAMS], in->stride[BB_SLOT_PARAMS], pix);
-    const VF x = pos.x * size.z, y = pos.y * size.w;
-    V3v sum = VFN(scale3)(VFN(hp_fetch)(src, x, y), VFN(splat)(0.2013f));
-    for (int i = 0; i < 6; ++i) {
-      V3v pair;
-      if (v->direction == 0)
-        pair = VFN(add3)(VFN(hp_fetch)(src, (pos.x + offsets[i]) * size.z, y),
-                         VFN(hp_fetch)(src, (pos.x - offsets[i]) * size.z, y));
-      else
-        pair = VFN(add3)(VFN(hp_fetch)(src, x, (pos.y + offsets[i]) * size.w),
-                         VFN(hp_fetch)(src, x, (pos.y - offsets[i]) * size.w));
-      sum = VFN(add3)(sum, VFN(scale3)(pair, VFN(splat)(weights[i])));
-    }
-    VFN(hp_store)(VFN(hp_linear)(VFN(scale3)(sum, params.x)), VFN(splat)(1.0f), out + first, n);
+  const V4v pos = TSV_REC(in, BB_SLOT_POS, pix);
+  const V4v size = TSV_REC(in, BB_SLOT_SIZE, pix);
+  const V4v params = TSV_REC(in, BB_SLOT_PARAMS, pix);
+  const VF x = pos.x * size.z, y = pos.y * size.w;
+  V3v sum = VFN(scale3)(VFN(hp_fetch)(src, x, y), VFN(splat)(0.2013f));
+  for (int i = 0; i < 6; ++i) {
+    V3v pair;
+    if (v->direction == 0)
+      pair = VFN(add3)(VFN(hp_fetch)(src, (pos.x + offsets[i]) * size.z, y),
+                       VFN(hp_fetch)(src, (pos.x - offsets[i]) * size.z, y));
+    else
+      pair = VFN(add3)(VFN(hp_fetch)(src, x, (pos.y + offsets[i]) * size.w),
+                       VFN(hp_fetch)(src, x, (pos.y - offsets[i]) * size.w));
+    sum = VFN(add3)(sum, VFN(scale3)(pair, VFN(splat)(weights[i])));
   }
+  return VFN(rgba)(VFN(output_linear)(VFN(scale3)(sum, params.x)), VFN(splat)(1.0f));
 }
+TSV_BATCH(bb_batch, bb_block, bb_variant, bb_batch_input, ts_tex2d)
 
 /* ---- hdr_tonemap ---- */
-static void VFN(ht_batch)(const ht_variant *v, const ht_batch_input *in, const ts_tex2d *bloom_tex, ts_vec4f *out,
-                          int count) {
-  for (int first = 0; first < count; first += TSV_W) {
-    size_t pix[TSV_W];
-    const int n = VFN(hp_pix)(first, count, pix);
-    const V4v pos = VFN(rec_load)(in->slot[HT_SLOT_POS], in->stride[HT_SLOT_POS], pix);
-    const V4v size = VFN(rec_load)(in->slot[HT_SLOT_SIZE], in->stride[HT_SLOT_SIZE], pix);
-    const V3v fb = VFN(xyz)(VFN(rec_load)(in->slot[HT_SLOT_FRAME], in->stride[HT_SLOT_FRAME], pix));
-    const V4v params = VFN(rec_load)(in->slot[HT_SLOT_PARAMS], in->stride[HT_SLOT_PARAMS], pix);
-    V3v bloom = VFN(scale3)(VFN(hp_fetch)(bloom_tex, pos.x * size.z, pos.y * size.w), VFN(sqrt)(params.x));
-    const VF one = VFN(splat)(1.0f);
-    bloom = VFN(v3)(VFN(min)(bloom.x, one), VFN(min)(bloom.y, one), VFN(min)(bloom.z, one));
-    const VF lum = VFN(dot3)(bloom, VFN(v3)(VFN(splat)(0.2125f), VFN(splat)(0.7154f), VFN(splat)(0.0721f)));
-    const VF k = params.y * VFN(pow)(lum, params.z);
-    const V3v c = VFN(add3)(VFN(scale3)(fb, params.x), VFN(scale3)(bloom, k));
-    VFN(hp_store)(VFN(hp_output)(c, v->output_mode), one, out + first, n);
-  }
+static V4v VFN(ht_block)(const ht_variant *v, const ht_batch_input *in, const ts_tex2d *bloom_tex, const size_t *pix) {
+  const V4v pos = TSV_REC(in, HT_SLOT_POS, pix);
+  const V4v size = TSV_REC(in, HT_SLOT_SIZE, pix);
+  const V3v fb = VFN(xyz)(TSV_REC(in, HT_SLOT_FRAME, pix));
+  const V4v params = TSV_REC(in, HT_SLOT_PARAMS, pix);
+  V3v bloom = VFN(scale3)(VFN(hp_fetch)(bloom_tex, pos.x * size.z, pos.y * size.w), VFN(sqrt)(params.x));
+  const VF one = VFN(splat)(1.0f);
+  bloom = VFN(v3)(VFN(min)(bloom.x, one), VFN(min)(bloom.y, one), VFN(min)(bloom.z, one));
+  const VF lum = VFN(dot3)(bloom, VFN(v3)(VFN(splat)(0.2125f), VFN(splat)(0.7154f), VFN(splat)(0.0721f)));
+  const VF k = params.y * VFN(pow)(lum, params.z);
+  const V3v c = VFN(add3)(VFN(scale3)(fb, params.x), VFN(scale3)(bloom, k));
+  return VFN(rgba)(VFN(output)(c, v->output_mode), one);
 }
+TSV_BATCH(ht_batch, ht_block, ht_variant, ht_batch_input, ts_tex2d)
 
 /* ---- hdr_formats.c on lanes ---- */
 /* ts_quantize_half: round toward zero to fp16 and back, as bit masks. A finite value in the

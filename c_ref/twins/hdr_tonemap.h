@@ -5,11 +5,8 @@
 #ifndef TS_HDR_TONEMAP_H
 #define TS_HDR_TONEMAP_H
 #include "math/ts_math.h"
+#include "twins/twin_api.h"
 #include "math/ts_sampler.h"
-
-#ifdef __cplusplus
-extern "C" {
-#endif
 
 /* The input record's slots (enum ht_slot) and its counts (HT_SLOTS, HT_PIXEL_SLOTS, as #defines)
  * come from the one table shaders/hdr_tonemap_slots.glsl. */
@@ -23,10 +20,7 @@ typedef struct {
   int output_mode; /* OUTPUT_MODE: 0 linear, 1 gamma 2.2, 2 exact sRGB */
 } ht_variant;
 
-ts_vec4f hdr_tonemap_f(const ht_variant *v, const ts_vec4f rec[HT_SLOTS], const ts_tex2d *bloom);
-ts_vec4d hdr_tonemap_d(const ht_variant *v, const ts_vec4f rec[HT_SLOTS], const ts_tex2d *bloom);
+/* hdr_tonemap_f: float32, bit-exact with llvmpipe; hdr_tonemap_d: double, the accuracy reference */
+TS_TWIN_DECLARE(hdr_tonemap, (const ht_variant *v, const ts_vec4f rec[HT_SLOTS], const ts_tex2d *bloom))
 
-#ifdef __cplusplus
-}
-#endif
 #endif

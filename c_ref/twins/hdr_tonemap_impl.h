@@ -1,12 +1,15 @@
 /* tiershade twins: generic body of the hdr_tonemap twin; mirrors
- * shaders/hdr_tonemap.fs statement by statement. Instantiated by hdr_tonemap.c. */
+ * shaders/hdr_tonemap.fs statement by statement. Instantiated by hdr_tonemap.c through twin_instances.h; gives hdr_tonemap_f / hdr_tonemap_d. */
+#include "common/common_math.h"
+#include "common/common_hdr.h"
+#include "common/common_output.h"
 
-static V4 FN(hdr_tonemap_impl)(const ht_variant *v, const ts_vec4f rec[HT_SLOTS], const ts_tex2d *bloom_tex) {
+V4 FN(hdr_tonemap)(const ht_variant *v, const ts_vec4f rec[HT_SLOTS], const ts_tex2d *bloom_tex) {
   V4 pos = FN(vec4_in)(rec[HT_SLOT_POS]);
   V4 size = FN(vec4_in)(rec[HT_SLOT_SIZE]);
   V3 fb = FN(xyz)(rec[HT_SLOT_FRAME]);
   V4 params = FN(vec4_in)(rec[HT_SLOT_PARAMS]);
-  V4 s = FN(sample2d)(bloom_tex, pos.x * size.z, pos.y * size.w);
+  V4 s = M(texture2D)(bloom_tex, M(v2)(pos.x * size.z, pos.y * size.w));
   V3 bloom = M(scale3)(M(v3)(s.x, s.y, s.z), M(sqrt)(params.x));
   bloom = M(v3)(M(min)(bloom.x, K(1.0)), M(min)(bloom.y, K(1.0)), M(min)(bloom.z, K(1.0)));
   TS_REAL k = params.y * M(pow)(FN(luminance)(bloom), params.z);

@@ -5,10 +5,7 @@
 #ifndef TS_LUMINANCE_COMPARE_H
 #define TS_LUMINANCE_COMPARE_H
 #include "math/ts_math.h"
-
-#ifdef __cplusplus
-extern "C" {
-#endif
+#include "twins/twin_api.h"
 
 /* The input record's slots (enum lc_slot) and its counts (LC_SLOTS, LC_PIXEL_SLOTS, as #defines)
  * come from the one table shaders/luminance_compare_slots.glsl. */
@@ -22,12 +19,9 @@ typedef struct {
   int input_encoding; /* INPUT_ENCODING: 0 linear x tone-map scale, 1 sRGB-encoded, 2 luminance image (.r) */
 } lc_variant;
 
-ts_vec4f luminance_compare_f(const lc_variant *v, const ts_vec4f rec[LC_SLOTS]);
-ts_vec4d luminance_compare_d(const lc_variant *v, const ts_vec4f rec[LC_SLOTS]);
+/* luminance_compare_f: float32, bit-exact with llvmpipe; luminance_compare_d: double, the accuracy reference */
+TS_TWIN_DECLARE(luminance_compare, (const lc_variant *v, const ts_vec4f rec[LC_SLOTS]))
 /* The luminance the test compares (before the bucket bounds), float32 and llvmpipe-exact. */
-float luminance_compare_lum_f(const lc_variant *v, ts_vec4f color, float tone_map_scale);
+TS_C_API float luminance_compare_lum_f(const lc_variant *v, ts_vec4f color, float tone_map_scale);
 
-#ifdef __cplusplus
-}
-#endif
 #endif

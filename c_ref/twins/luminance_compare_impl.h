@@ -1,5 +1,7 @@
 /* tiershade twins: generic body of the luminance_compare twin; mirrors
- * shaders/luminance_compare.fs statement by statement. Instantiated by luminance_compare.c. */
+ * shaders/luminance_compare.fs statement by statement. Instantiated by luminance_compare.c through twin_instances.h; gives luminance_compare_f / luminance_compare_d. */
+#include "common/common_math.h"
+#include "common/common_hdr.h"
 
 static TS_REAL FN(lc_lum)(const lc_variant *v, V3 c, TS_REAL tscale) {
   if (v->input_encoding == 2) return c.x * tscale;
@@ -7,7 +9,7 @@ static TS_REAL FN(lc_lum)(const lc_variant *v, V3 c, TS_REAL tscale) {
   return FN(luminance)(c) * tscale;
 }
 
-static V4 FN(luminance_compare_impl)(const lc_variant *v, const ts_vec4f rec[LC_SLOTS]) {
+V4 FN(luminance_compare)(const lc_variant *v, const ts_vec4f rec[LC_SLOTS]) {
   V3 c = FN(xyz)(rec[LC_SLOT_COLOR]);
   V4 range = FN(vec4_in)(rec[LC_SLOT_RANGE]);
   TS_REAL lum = FN(lc_lum)(v, c, range.z);

@@ -5,10 +5,7 @@
 #ifndef TS_LUMINANCE_SMOOTH_H
 #define TS_LUMINANCE_SMOOTH_H
 #include "math/ts_math.h"
-
-#ifdef __cplusplus
-extern "C" {
-#endif
+#include "twins/twin_api.h"
 
 /* The input record's slots (enum ls_slot) and its counts (LS_SLOTS, LS_PIXEL_SLOTS, as #defines)
  * come from the one table shaders/luminance_smooth_slots.glsl. */
@@ -22,10 +19,7 @@ typedef struct {
   int input_encoding; /* INPUT_ENCODING: 0 linear x tone-map scale, 1 sRGB-encoded */
 } ls_variant;
 
-ts_vec4f luminance_smooth_f(const ls_variant *v, const ts_vec4f rec[LS_SLOTS]);
-ts_vec4d luminance_smooth_d(const ls_variant *v, const ts_vec4f rec[LS_SLOTS]);
+/* luminance_smooth_f: float32, bit-exact with llvmpipe; luminance_smooth_d: double, the accuracy reference */
+TS_TWIN_DECLARE(luminance_smooth, (const ls_variant *v, const ts_vec4f rec[LS_SLOTS]))
 
-#ifdef __cplusplus
-}
-#endif
 #endif

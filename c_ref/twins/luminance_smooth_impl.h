@@ -1,7 +1,9 @@
 /* tiershade twins: generic body of the luminance_smooth twin; mirrors
- * shaders/luminance_smooth.fs statement by statement. Instantiated by luminance_smooth.c. */
+ * shaders/luminance_smooth.fs statement by statement. Instantiated by luminance_smooth.c through twin_instances.h; gives luminance_smooth_f / luminance_smooth_d. */
+#include "common/common_math.h"
+#include "common/common_hdr.h"
 
-static V4 FN(luminance_smooth_impl)(const ls_variant *v, const ts_vec4f rec[LS_SLOTS]) {
+V4 FN(luminance_smooth)(const ls_variant *v, const ts_vec4f rec[LS_SLOTS]) {
   V3 c = FN(xyz)(rec[LS_SLOT_COLOR]);
   TS_REAL prev = (TS_REAL)rec[LS_SLOT_HISTORY].x;
   V4 params = FN(vec4_in)(rec[LS_SLOT_PARAMS]);

@@ -5,12 +5,9 @@
 #ifndef TS_MODEL_LIGHTING_H
 #define TS_MODEL_LIGHTING_H
 #include "math/ts_math.h"
+#include "twins/twin_api.h"
 #include "math/ts_sampler.h"
 #include "twins/tier_id.h"
-
-#ifdef __cplusplus
-extern "C" {
-#endif
 
 /* The input record's slots (enum ml_slot) and its counts (ML_SLOTS, ML_PIXEL_SLOTS, as #defines)
  * come from the one table shaders/model_lighting_slots.glsl. */
@@ -39,12 +36,7 @@ typedef struct {
   const ts_texcube *envmap;
 } ml_textures;
 
-/* float32, bit-exact with llvmpipe */
-ts_vec4f model_lighting_f(const ml_variant *v, const ts_vec4f rec[ML_SLOTS], const ml_textures *tex);
-/* double, the accuracy reference for the same variant */
-ts_vec4d model_lighting_d(const ml_variant *v, const ts_vec4f rec[ML_SLOTS], const ml_textures *tex);
+/* model_lighting_f: float32, bit-exact with llvmpipe; model_lighting_d: double, the accuracy reference */
+TS_TWIN_DECLARE(model_lighting, (const ml_variant *v, const ts_vec4f rec[ML_SLOTS], const ml_textures *tex))
 
-#ifdef __cplusplus
-}
-#endif
 #endif

@@ -19,23 +19,10 @@
 #include "twins/model_lighting.h"
 #include "math/ts_batch.h"
 
-#ifdef __cplusplus
-extern "C" {
-#endif
+#include "twins/twin_api.h"
 
-typedef struct {
-  const ts_vec4f *slot[ML_SLOTS]; /* slot k of pixel i: slot[k][i * stride[k]] */
-  int stride[ML_SLOTS]; /* in ts_vec4f; 0 = one value for every pixel */
-} ml_batch_input;
-
-/* out[i] = model_lighting_f(v, record of pixel i, tex), i = 0..count-1 */
-void model_lighting_f_batch(const ml_variant *v, const ml_batch_input *in, const ml_textures *tex, ts_vec4f *out,
-                            int count);
+/* ml_batch_input; model_lighting_f_batch: out[i] = model_lighting_f(v, record of pixel i, tex) */
+TS_BATCH_DECLARE(model_lighting, ml_batch_input, ML_SLOTS, ml_variant, ml_textures)
 /* The same for whole records: recs[i * ML_SLOTS + k] is slot k of pixel i. */
-void model_lighting_f_records(const ml_variant *v, const ts_vec4f *recs, const ml_textures *tex, ts_vec4f *out,
-                              int count);
-
-#ifdef __cplusplus
-}
-#endif
+TS_BATCH_DECLARE_RECORDS(model_lighting, ml_variant, ml_textures)
 #endif

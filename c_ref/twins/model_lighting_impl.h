@@ -1,5 +1,10 @@
 /* tiershade twins: generic body of the model_lighting twin; mirrors
- * shaders/model_lighting.fs statement by statement. Instantiated by model_lighting.c. */
+ * shaders/model_lighting.fs statement by statement. Instantiated by model_lighting.c through twin_instances.h; gives model_lighting_f / model_lighting_d. */
+#include "common/common_math.h"
+#include "common/common_ambient_cube.h"
+#include "common/common_lights.h"
+#include "common/common_phong.h"
+#include "common/common_output.h"
 
 static V3 FN(ml_ambient)(V3 n, const ts_vec4f rec[ML_SLOTS]) {
   V3 cube[6];
@@ -7,18 +12,18 @@ static V3 FN(ml_ambient)(V3 n, const ts_vec4f rec[ML_SLOTS]) {
   return FN(ambient_cube)(n, cube);
 }
 
-static V4 FN(model_lighting_impl)(const ml_variant *v, const ts_vec4f rec[ML_SLOTS], const ml_textures *tex) {
+V4 FN(model_lighting)(const ml_variant *v, const ts_vec4f rec[ML_SLOTS], const ml_textures *tex) {
   V3 P = FN(xyz)(rec[ML_SLOT_POSITION]);
   V4 uvw = FN(vec4_in)(rec[ML_SLOT_UV]);
   V4 params = FN(vec4_in)(rec[ML_SLOT_PARAMS]);
-  V4 base = v->albedo_texture ? FN(sample2d)(tex->albedo, uvw.x, uvw.y) : FN(vec4_in)(rec[ML_SLOT_ALBEDO]);
+  V4 base = v->albedo_texture ? M(texture2D)(tex->albedo, M(v2)(uvw.x, uvw.y)) : FN(vec4_in)(rec[ML_SLOT_ALBEDO]);
 
   V3 N, V = M(v3)(K(0.0), K(0.0), K(0.0)), R = V, spec = V, rim = V;
   V4 nmap = M(v4)(K(0.0), K(0.0), K(0.0), K(0.0)), phong = nmap, rim_params = nmap;
   V4 expmap = M(v4)(K(1.0), K(1.0), K(1.0), K(1.0));
   TS_REAL NdotV = K(0.0), k = K(0.0);
   if (v->phong) {
-    nmap = FN(sample2d)(tex->normal_map, uvw.x, uvw.y);
+    nmap = M(texture2D)(tex->normal_map, M(v2)(uvw.x, uvw.y));
     V3 tn = M(sub3)(M(scale3)(FN(xyz4)(nmap), K(2.0)), M(v3)(K(1.0), K(1.0), K(1.0)));
     V3 T = FN(xyz)(rec[ML_SLOT_TANGENT]), B = FN(xyz)(rec[ML_SLOT_BITANGENT]), Ng = FN(xyz)(rec[ML_SLOT_NORMAL]);
     N = FN(safe_normalize)(M(add3)(M(add3)(M(scale3)(T, tn.x), M(scale3)(B, tn.y)), M(scale3)(Ng, tn.z)));
@@ -27,7 +32,7 @@ static V4 FN(model_lighting_impl)(const ml_variant *v, const ts_vec4f rec[ML_SLO
     R = M(sub3)(M(scale3)(N, K(2.0) * NdotV), V);
     phong = FN(vec4_in)(rec[ML_SLOT_PHONG]);
     if (v->exponent_map) {
-      expmap = FN(sample2d)(tex->exponent_map, uvw.x, uvw.y);
+      expmap = M(texture2D)(tex->exponent_map, M(v2)(uvw.x, uvw.y));
       k = K(1.0) + phong.y * expmap.x;
     } else {
       k = phong.x;
@@ -54,7 +59,7 @@ static V4 FN(model_lighting_impl)(const ml_variant *v, const ts_vec4f rec[ML_SLO
     }
     TS_REAL NdotL = M(dot3)(N, L);
     if (v->light_warp) {
-      V4 w = FN(sample2d)(tex->light_warp, M(saturate)(K(0.5) * NdotL + K(0.5)), K(0.5));
+      V4 w = M(texture2D)(tex->light_warp, M(v2)(M(saturate)(K(0.5) * NdotL + K(0.5)), K(0.5)));
       diffuse = M(add3)(diffuse, M(scale3)(M(mul3)(FN(xyz4)(l[0]), M(scale3)(FN(xyz4)(w), K(2.0))), att));
     } else {
       TS_REAL term = v->half_lambert ? FN(half_lambert)(NdotL) : FN(lambert)(NdotL);
@@ -97,7 +102,7 @@ static V4 FN(model_lighting_impl)(const ml_variant *v, const ts_vec4f rec[ML_SLO
       V4 env = FN(vec4_in)(rec[ML_SLOT_ENVMAP]);
       TS_REAL env_mask = env.z > K(0.5) ? mask : (fr.w > K(0.5) ? K(1.0) - base.w : base.w);
       TS_REAL env_scale = env.x * FN(lerp_from_one)(F, env.y) * env_mask;
-      V4 e = FN(samplecube)(tex->envmap, R);
+      V4 e = M(textureCube)(tex->envmap, R);
       color = M(add3)(color, M(mul3)(M(scale3)(FN(xyz4)(e), env_scale), FN(xyz)(rec[ML_SLOT_ENVMAP_TINT])));
     }
     V4 si = FN(vec4_in)(rec[ML_SLOT_SELF_ILLUM]);

@@ -6,14 +6,10 @@
  * largest count of the block with the lanes past their own count masked off.
  * Included by c_ref/twins/model_lighting_batch.c after ts_simd.h and ts_simd_sampler.h. */
 
-/* Slot k of the block's pixels (pix[j] = pixel index of lane j). */
-TSV_INL V4v VFN(ml_rec)(const ml_batch_input *in, int k, const size_t *pix) {
-  return VFN(rec_load)(in->slot[k], in->stride[k], pix);
-}
+#include "twins/simd_common.h"
 
-TSV_INL V3v VFN(ml_rec3)(const ml_batch_input *in, int k, const size_t *pix) {
-  return VFN(xyz)(VFN(ml_rec)(in, k, pix));
-}
+/* Slot k of the block's pixels as a 3-vector (pix[j] = pixel index of lane j). */
+TSV_INL V3v VFN(ml_rec3)(const ml_batch_input *in, int k, const size_t *pix) { return VFN(xyz)(TSV_REC(in, k, pix)); }
 
 /* common_ambient_cube.h, with the cube read from slots ML_SLOT_AMBIENT.. */
 static V3v VFN(ml_ambient)(V3v n, const ml_batch_input *in, const size_t *pix) {
@@ -54,38 +50,12 @@ TSV_INL V3v VFN(light_direction)(const V4v l[5], V3v P) {
 
 /* common_phong.h */
 TSV_INL VF VFN(lerp_from_one)(VF b, VF t) { return (1.0f - t) + b * t; }
-TSV_INL V3v VFN(lerp3)(V3v a, V3v b, VF t) {
-  return VFN(v3)(a.x + (b.x - a.x) * t, a.y + (b.y - a.y) * t, a.z + (b.z - a.z) * t);
-}
-
-/* common_output.h final_output */
-TSV_INL VF VFN(srgb_encode)(VF x) {
-  const VF hi = 1.055f * VFN(pow)(x, VFN(splat)(1.0f / 2.4f)) - 0.055f;
-  return VFN(sel)(x <= 0.0031308f, 12.92f * x, hi);
-}
-static V3v VFN(final_output)(V3v c, VF scale, int mode) {
-  c = VFN(scale3)(c, scale);
-  if (mode == 1) {
-    const VF e = VFN(splat)(1.0f / 2.2f);
-    const V3v s = VFN(saturate3)(c);
-    return VFN(saturate3)(VFN(v3)(VFN(pow)(s.x, e), VFN(pow)(s.y, e), VFN(pow)(s.z, e)));
-  }
-  if (mode == 2) {
-    const V3v s = VFN(saturate3)(c);
-    return VFN(saturate3)(VFN(v3)(VFN(srgb_encode)(s.x), VFN(srgb_encode)(s.y), VFN(srgb_encode)(s.z)));
-  }
-  const VF z = VFN(splat)(0.0f), top = VFN(splat)(65504.0f);
-  return VFN(v3)(VFN(clamp)(c.x, z, top), VFN(clamp)(c.y, z, top), VFN(clamp)(c.z, z, top));
-}
-
-/* One block: pixels pix[0..TSV_W-1] (a short block repeats its last pixel). */
-static void VFN(ml_block)(const ml_variant *v, const ml_batch_input *in, const ml_textures *tex, const size_t *pix,
-                          V3v *out) {
+static V4v VFN(ml_block)(const ml_variant *v, const ml_batch_input *in, const ml_textures *tex, const size_t *pix) {
   const VF zero = VFN(splat)(0.0f), one = VFN(splat)(1.0f);
   const V3v P = VFN(ml_rec3)(in, ML_SLOT_POSITION, pix);
-  const V4v uvw = VFN(ml_rec)(in, ML_SLOT_UV, pix);
-  const V4v params = VFN(ml_rec)(in, ML_SLOT_PARAMS, pix);
-  const V4v base = v->albedo_texture ? VFN(texture2D)(tex->albedo, uvw.x, uvw.y) : VFN(ml_rec)(in, ML_SLOT_ALBEDO, pix);
+  const V4v uvw = TSV_REC(in, ML_SLOT_UV, pix);
+  const V4v params = TSV_REC(in, ML_SLOT_PARAMS, pix);
+  const V4v base = v->albedo_texture ? VFN(texture2D)(tex->albedo, uvw.x, uvw.y) : TSV_REC(in, ML_SLOT_ALBEDO, pix);
 
   V3v N, V = VFN(v3)(zero, zero, zero), R = V, spec = V, rim = V;
   V4v nmap = {zero, zero, zero, zero}, phong = nmap, rim_params = nmap;
@@ -100,14 +70,14 @@ static void VFN(ml_block)(const ml_variant *v, const ml_batch_input *in, const m
     V = VFN(safe_normalize)(VFN(sub3)(VFN(ml_rec3)(in, ML_SLOT_EYE, pix), P));
     NdotV = VFN(dot3)(N, V);
     R = VFN(sub3)(VFN(scale3)(N, 2.0f * NdotV), V);
-    phong = VFN(ml_rec)(in, ML_SLOT_PHONG, pix);
+    phong = TSV_REC(in, ML_SLOT_PHONG, pix);
     if (v->exponent_map) {
       expmap = VFN(texture2D)(tex->exponent_map, uvw.x, uvw.y);
       k = 1.0f + phong.y * expmap.x;
     } else {
       k = phong.x;
     }
-    if (v->rim_light) rim_params = VFN(ml_rec)(in, ML_SLOT_RIM, pix);
+    if (v->rim_light) rim_params = TSV_REC(in, ML_SLOT_RIM, pix);
   } else {
     N = VFN(safe_normalize)(VFN(ml_rec3)(in, ML_SLOT_NORMAL, pix));
   }
@@ -122,11 +92,11 @@ static void VFN(ml_block)(const ml_variant *v, const ml_batch_input *in, const m
     loop = 0;
     for (int j = 0; j < TSV_W; ++j) loop = count[j] > loop ? count[j] : loop;
   }
-  const V4v vatt = v->tier == TS_TIER_ID_PS20 ? VFN(ml_rec)(in, ML_SLOT_VERTEX_ATTEN, pix) : nmap;
+  const V4v vatt = v->tier == TS_TIER_ID_PS20 ? TSV_REC(in, ML_SLOT_VERTEX_ATTEN, pix) : nmap;
   for (int i = 0; i < loop && i < ML_MAX_LIGHTS; ++i) {
     const VI active = VFN(spliti)(i) < count;
     V4v l[5];
-    for (int j = 0; j < 5; ++j) l[j] = VFN(ml_rec)(in, ML_SLOT_LIGHT0 + 5 * i + j, pix);
+    for (int j = 0; j < 5; ++j) l[j] = TSV_REC(in, ML_SLOT_LIGHT0 + 5 * i + j, pix);
     V3v L;
     VF att;
     if (v->tier == TS_TIER_ID_PS20) {
@@ -162,7 +132,7 @@ static void VFN(ml_block)(const ml_variant *v, const ml_batch_input *in, const m
   V3v color;
   const int spec_const_zero = v->tier != TS_TIER_ID_SM3 && v->num_lights == 0;
   if (v->phong) {
-    const V4v fr = VFN(ml_rec)(in, ML_SLOT_FRESNEL, pix);
+    const V4v fr = TSV_REC(in, ML_SLOT_FRESNEL, pix);
     VF F;
     {
       VF f = VFN(saturate)(1.0f - NdotV);
@@ -174,7 +144,7 @@ static void VFN(ml_block)(const ml_variant *v, const ml_batch_input *in, const m
     mask = VFN(sel)(fr_inv, 1.0f - mask, mask);
     const VF spec_mask = mask * F;
     if (!spec_const_zero) spec = VFN(scale3)(spec, spec_mask * phong.z);
-    const V4v tint = VFN(ml_rec)(in, ML_SLOT_PHONG_TINT, pix);
+    const V4v tint = TSV_REC(in, ML_SLOT_PHONG_TINT, pix);
     V3v spec_tint = VFN(xyz)(tint);
     if (v->exponent_map) {
       const VF u = 1.0f - expmap.y;
@@ -195,30 +165,20 @@ static void VFN(ml_block)(const ml_variant *v, const ml_batch_input *in, const m
     }
     color = spec_const_zero && !v->rim_light ? spec : VFN(mul3)(spec, spec_tint);
     if (v->envmap) {
-      const V4v env = VFN(ml_rec)(in, ML_SLOT_ENVMAP, pix);
+      const V4v env = TSV_REC(in, ML_SLOT_ENVMAP, pix);
       const VF env_mask = VFN(sel)(env.z > 0.5f, mask, VFN(sel)(fr_inv, 1.0f - base.w, base.w));
       const VF env_scale = env.x * VFN(lerp_from_one)(F, env.y) * env_mask;
       const V4v e = VFN(textureCube)(tex->envmap, R);
       color =
           VFN(add3)(color, VFN(mul3)(VFN(scale3)(VFN(xyz)(e), env_scale), VFN(ml_rec3)(in, ML_SLOT_ENVMAP_TINT, pix)));
     }
-    const V4v si = VFN(ml_rec)(in, ML_SLOT_SELF_ILLUM, pix);
+    const V4v si = TSV_REC(in, ML_SLOT_SELF_ILLUM, pix);
     color = VFN(add3)(color, VFN(mul3)(VFN(xyz)(base), VFN(lerp3)(diffuse, VFN(xyz)(si), base.w * si.w)));
   } else {
     color = VFN(mul3)(VFN(xyz)(base), diffuse);
   }
-  *out = VFN(final_output)(color, params.x, v->output_mode);
+  /* common_output.h final_output */
+  return VFN(rgba)(VFN(output)(VFN(scale3)(color, params.x), v->output_mode), VFN(splat)(1.0f));
 }
 
-/* Pixels 0..count-1 of `in`, TSV_W at a time. */
-static void VFN(ml_batch)(const ml_variant *v, const ml_batch_input *in, const ml_textures *tex, ts_vec4f *out,
-                          int count) {
-  for (int first = 0; first < count; first += TSV_W) {
-    const int n = count - first < TSV_W ? count - first : TSV_W;
-    size_t pix[TSV_W];
-    for (int j = 0; j < TSV_W; ++j) pix[j] = (size_t)first + (size_t)(j < n ? j : n - 1);
-    V3v c;
-    VFN(ml_block)(v, in, tex, pix, &c);
-    for (int j = 0; j < n; ++j) out[first + j] = ts_v4f(c.x[j], c.y[j], c.z[j], 1.0f);
-  }
-}
+TSV_BATCH(ml_batch, ml_block, ml_variant, ml_batch_input, ml_textures)

@@ -5,12 +5,9 @@
 #ifndef TS_WORLD_LIGHTING_H
 #define TS_WORLD_LIGHTING_H
 #include "math/ts_math.h"
+#include "twins/twin_api.h"
 #include "math/ts_sampler.h"
 #include "twins/tier_id.h"
-
-#ifdef __cplusplus
-extern "C" {
-#endif
 
 /* The input record's slots (enum wl_slot) and its counts (WL_SLOTS, WL_PIXEL_SLOTS, as #defines)
  * come from the one table shaders/world_lighting_slots.glsl. */
@@ -37,12 +34,7 @@ typedef struct {
   const ts_texcube *envmap;
 } wl_textures;
 
-/* float32, bit-exact with llvmpipe */
-ts_vec4f world_lighting_f(const wl_variant *v, const ts_vec4f rec[WL_SLOTS], const wl_textures *t);
-/* double, the accuracy reference for the same variant */
-ts_vec4d world_lighting_d(const wl_variant *v, const ts_vec4f rec[WL_SLOTS], const wl_textures *t);
+/* world_lighting_f: float32, bit-exact with llvmpipe; world_lighting_d: double, the accuracy reference */
+TS_TWIN_DECLARE(world_lighting, (const wl_variant *v, const ts_vec4f rec[WL_SLOTS], const wl_textures *t))
 
-#ifdef __cplusplus
-}
-#endif
 #endif

@@ -10,21 +10,9 @@
 #include "math/ts_batch.h"
 #include "twins/world_lighting.h"
 
-#ifdef __cplusplus
-extern "C" {
-#endif
+#include "twins/twin_api.h"
 
-typedef struct {
-  const ts_vec4f *slot[WL_SLOTS]; /* slot k of pixel i: slot[k][i * stride[k]] */
-  int stride[WL_SLOTS]; /* in ts_vec4f; 0 = one value for every pixel */
-} wl_batch_input;
-
-void world_lighting_f_batch(const wl_variant *v, const wl_batch_input *in, const wl_textures *t, ts_vec4f *out,
-                            int count);
-void world_lighting_f_records(const wl_variant *v, const ts_vec4f *recs, const wl_textures *t, ts_vec4f *out,
-                              int count);
-
-#ifdef __cplusplus
-}
-#endif
+/* wl_batch_input; world_lighting_f_batch and world_lighting_f_records (recs[i * WL_SLOTS + k]) */
+TS_BATCH_DECLARE(world_lighting, wl_batch_input, WL_SLOTS, wl_variant, wl_textures)
+TS_BATCH_DECLARE_RECORDS(world_lighting, wl_variant, wl_textures)
 #endif

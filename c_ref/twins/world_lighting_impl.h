@@ -1,26 +1,32 @@
 /* tiershade twins: generic body of the world_lighting twin; mirrors
- * shaders/world_lighting.fs statement by statement. Instantiated by world_lighting.c. */
+ * shaders/world_lighting.fs statement by statement. Instantiated by world_lighting.c through twin_instances.h; gives world_lighting_f / world_lighting_d. */
+#include "common/common_math.h"
+#include "common/common_output.h"
+#include "common/common_rnm.h"
+#include "common/common_lightmap.h"
+#include "common/common_envmap.h"
+#include "common/common_fog.h"
 
 static V3 FN(wl_lightmap)(const wl_variant *v, const ts_tex2d *lm, V2 uv, V2 offset, TS_REAL k) {
-  V4 t = FN(sample2d)(lm, FN(lightmap_uv)(uv, offset, k));
+  V4 t = M(texture2D)(lm, FN(lightmap_uv)(uv, offset, k));
   if (v->tier == TS_TIER_ID_PS20 && v->encoding == WL_LM_LDR)
     return FN(lightmap_ldr_to_linear_fast)(M(v3)(t.x, t.y, t.z));
   return FN(lightmap_decode)(t, v->encoding);
 }
 
-static V4 FN(world_lighting_impl)(const wl_variant *v, const ts_vec4f rec[WL_SLOTS], const wl_textures *tx) {
+V4 FN(world_lighting)(const wl_variant *v, const ts_vec4f rec[WL_SLOTS], const wl_textures *tx) {
   V4 uv = FN(vec4_in)(rec[WL_SLOT_UV]);
   V4 lm_offset = FN(vec4_in)(rec[WL_SLOT_LM_OFFSET]);
   V4 tint_scale = FN(vec4_in)(rec[WL_SLOT_TINT_SCALE]);
   V2 base_uv = M(v2)(uv.x, uv.y), lm_uv = M(v2)(uv.z, uv.w), off = M(v2)(lm_offset.x, lm_offset.y);
-  V4 base = FN(sample2d)(tx->base, base_uv);
+  V4 base = M(texture2D)(tx->base, base_uv);
 
   V3 diffuse, n = M(v3)(K(0.0), K(0.0), K(1.0));
   V4 bump = M(v4)(K(0.0), K(0.0), K(0.0), K(0.0));
   if (v->bumpmap == WL_BUMP_NONE) {
     diffuse = FN(wl_lightmap)(v, tx->lightmap, lm_uv, off, K(0.0));
   } else {
-    bump = FN(sample2d)(tx->normalmap, base_uv);
+    bump = M(texture2D)(tx->normalmap, base_uv);
     V3 l0 = FN(wl_lightmap)(v, tx->lightmap, lm_uv, off, K(1.0));
     V3 l1 = FN(wl_lightmap)(v, tx->lightmap, lm_uv, off, K(2.0));
     V3 l2 = FN(wl_lightmap)(v, tx->lightmap, lm_uv, off, K(3.0));
@@ -44,11 +50,11 @@ static V4 FN(world_lighting_impl)(const wl_variant *v, const ts_vec4f rec[WL_SLO
       N = M(add3)(M(add3)(M(scale3)(T, n.x), M(scale3)(B, n.y)), M(scale3)(N, n.z));
     }
     V3 E = FN(xyz)(rec[WL_SLOT_EYE]);
-    V4 env4 = FN(samplecube)(tx->envmap, FN(reflect_unnormalized)(N, E));
+    V4 env4 = M(textureCube)(tx->envmap, FN(reflect_unnormalized)(N, E));
     V3 env = M(scale3)(M(v3)(env4.x, env4.y, env4.z), env_tint.w);
     V3 tint = FN(xyz4)(env_tint), spec;
     if (v->envmapmask == WL_MASK_TEXTURE) {
-      V4 m = FN(sample2d)(tx->envmap_mask, base_uv);
+      V4 m = M(texture2D)(tx->envmap_mask, base_uv);
       spec = M(mul3)(env, M(mul3)(M(v3)(m.x, m.y, m.z), tint));
     } else if (v->envmapmask == WL_MASK_NORMAL_ALPHA) {
       spec = M(mul3)(env, M(scale3)(tint, bump.w));

@@ -4,14 +4,7 @@
  * the record's contrast/saturation/R0 becomes a select. Included by world_lighting_batch.c after
  * ts_simd.h, ts_simd_sampler.h and ts_simd_sampler_nearest.h (VFN(tex2d): NEAREST or LINEAR). */
 
-TSV_INL V4v VFN(wl_rec)(const wl_batch_input *in, int k, const size_t *pix) {
-  return VFN(rec_load)(in->slot[k], in->stride[k], pix);
-}
-
-#define WLV_SQRT_2_OVER_3 0.816496580927726f
-#define WLV_OO_SQRT_6 0.408248290463863f
-#define WLV_OO_SQRT_2 0.707106781186548f
-#define WLV_OO_SQRT_3 0.577350269189626f
+#include "twins/simd_common.h"
 
 /* common_lightmap.h */
 static V3v VFN(wl_lightmap)(const wl_variant *v, const ts_tex2d *lm, VF u, VF w, VF ox, VF oy, float k) {
@@ -34,28 +27,9 @@ static V3v VFN(wl_lightmap)(const wl_variant *v, const ts_tex2d *lm, VF u, VF w,
   return rgb;
 }
 
-/* common_rnm.h */
-TSV_INL V3v VFN(rnm_weights)(V3v n) {
-  V3v d =
-      VFN(v3)(n.x * WLV_SQRT_2_OVER_3 + n.z * WLV_OO_SQRT_3,
-              VFN(dot3)(n, VFN(v3)(VFN(splat)(-WLV_OO_SQRT_6), VFN(splat)(WLV_OO_SQRT_2), VFN(splat)(WLV_OO_SQRT_3))),
-              VFN(dot3)(n, VFN(v3)(VFN(splat)(-WLV_OO_SQRT_6), VFN(splat)(-WLV_OO_SQRT_2), VFN(splat)(WLV_OO_SQRT_3))));
-  d = VFN(saturate3)(d);
-  const VF e = VFN(splat)(1.0e-30f); /* TS_RNM_MIN_WEIGHT: not an fp16 number (common_rnm.glsl) */
-  return VFN(add3)(VFN(mul3)(d, d), VFN(v3)(e, e, e));
-}
-TSV_INL V3v VFN(rnm_blend)(V3v d, V3v l0, V3v l1, V3v l2) {
-  const V3v s = VFN(add3)(VFN(add3)(VFN(scale3)(l0, d.x), VFN(scale3)(l1, d.y)), VFN(scale3)(l2, d.z));
-  const VF sum = d.x + (d.y + d.z);
-  return VFN(v3)(s.x / sum, s.y / sum, s.z / sum);
-}
-TSV_INL V3v VFN(ssbump_blend)(V3v t, V3v l0, V3v l1, V3v l2) {
-  return VFN(add3)(VFN(add3)(VFN(scale3)(l0, t.x), VFN(scale3)(l1, t.y)), VFN(scale3)(l2, t.z));
-}
-TSV_INL V3v VFN(ssbump_direction)(V3v t) {
-  return VFN(v3)(t.x * WLV_SQRT_2_OVER_3 - (t.y + t.z) * WLV_OO_SQRT_6, (t.y - t.z) * WLV_OO_SQRT_2,
-                 ((t.x + t.y) + t.z) * WLV_OO_SQRT_3);
-}
+/* common_rnm.h itself, on lanes */
+#include "math/ts_generic_lanes.h"
+#include "common/common_rnm.h"
 
 /* common_envmap.h */
 TSV_INL V3v VFN(reflect_unnormalized)(V3v N, V3v E) {
@@ -82,12 +56,11 @@ TSV_INL VF VFN(wl_fresnel)(VF NdotV, VF one_minus_r0, VF r0) {
   return (x2 * x2) * (x * one_minus_r0) + r0;
 }
 
-static void VFN(wl_block)(const wl_variant *v, const wl_batch_input *in, const wl_textures *tx, const size_t *pix,
-                          V3v *out) {
+static V4v VFN(wl_block)(const wl_variant *v, const wl_batch_input *in, const wl_textures *tx, const size_t *pix) {
   const VF zero = VFN(splat)(0.0f), one = VFN(splat)(1.0f);
-  const V4v uv = VFN(wl_rec)(in, WL_SLOT_UV, pix);
-  const V4v lm_offset = VFN(wl_rec)(in, WL_SLOT_LM_OFFSET, pix);
-  const V4v tint_scale = VFN(wl_rec)(in, WL_SLOT_TINT_SCALE, pix);
+  const V4v uv = TSV_REC(in, WL_SLOT_UV, pix);
+  const V4v lm_offset = TSV_REC(in, WL_SLOT_LM_OFFSET, pix);
+  const V4v tint_scale = TSV_REC(in, WL_SLOT_TINT_SCALE, pix);
   const V4v base = VFN(tex2d)(tx->base, uv.x, uv.y);
 
   V3v diffuse, n = VFN(v3)(zero, zero, one);
@@ -104,7 +77,7 @@ static void VFN(wl_block)(const wl_variant *v, const wl_batch_input *in, const w
       n = VFN(sub3)(VFN(scale3)(t, VFN(splat)(2.0f)), VFN(v3)(one, one, one));
       diffuse = VFN(rnm_blend)(VFN(rnm_weights)(n), l0, l1, l2);
     } else {
-      n = v->tier == TS_TIER_ID_PS20 ? VFN(ssbump_direction)(t) : VFN(safe_normalize)(VFN(ssbump_direction)(t));
+      n = v->tier == TS_TIER_ID_PS20 ? VFN(ssbump_direction)(t) : VFN(ssbump_normal)(t);
       diffuse = VFN(ssbump_blend)(t, l0, l1, l2);
     }
   }
@@ -112,15 +85,14 @@ static void VFN(wl_block)(const wl_variant *v, const wl_batch_input *in, const w
   V3v color;
   if (v->envmap) {
     color = VFN(mul3)(base_rgb, VFN(mul3)(diffuse, VFN(xyz)(tint_scale)));
-    const V4v env_tint = VFN(wl_rec)(in, WL_SLOT_ENV_TINT, pix);
-    const V4v env_params = VFN(wl_rec)(in, WL_SLOT_ENV_PARAMS, pix);
-    V3v N = VFN(xyz)(VFN(wl_rec)(in, WL_SLOT_NORMAL, pix));
+    const V4v env_tint = TSV_REC(in, WL_SLOT_ENV_TINT, pix);
+    const V4v env_params = TSV_REC(in, WL_SLOT_ENV_PARAMS, pix);
+    V3v N = VFN(xyz)(TSV_REC(in, WL_SLOT_NORMAL, pix));
     if (v->bumpmap != WL_BUMP_NONE) {
-      const V3v T = VFN(xyz)(VFN(wl_rec)(in, WL_SLOT_TANGENT, pix)),
-                B = VFN(xyz)(VFN(wl_rec)(in, WL_SLOT_BINORMAL, pix));
+      const V3v T = VFN(xyz)(TSV_REC(in, WL_SLOT_TANGENT, pix)), B = VFN(xyz)(TSV_REC(in, WL_SLOT_BINORMAL, pix));
       N = VFN(add3)(VFN(add3)(VFN(scale3)(T, n.x), VFN(scale3)(B, n.y)), VFN(scale3)(N, n.z));
     }
-    const V3v E = VFN(xyz)(VFN(wl_rec)(in, WL_SLOT_EYE, pix));
+    const V3v E = VFN(xyz)(TSV_REC(in, WL_SLOT_EYE, pix));
     const V4v env4 = VFN(textureCube)(tx->envmap, VFN(reflect_unnormalized)(N, E));
     const V3v env = VFN(scale3)(VFN(xyz)(env4), env_tint.w);
     const V3v tint = VFN(xyz)(env_tint);
@@ -149,33 +121,11 @@ static void VFN(wl_block)(const wl_variant *v, const wl_batch_input *in, const w
     color = VFN(mul3)(VFN(mul3)(base_rgb, diffuse), VFN(scale3)(VFN(xyz)(tint_scale), tint_scale.w));
   }
   if (v->tier != TS_TIER_ID_PS20) {
-    const V4v fc = VFN(wl_rec)(in, WL_SLOT_FOG_COLOR, pix), fp = VFN(wl_rec)(in, WL_SLOT_FOG_PARAMS, pix);
+    const V4v fc = TSV_REC(in, WL_SLOT_FOG_COLOR, pix), fp = TSV_REC(in, WL_SLOT_FOG_PARAMS, pix);
     const VF f = VFN(saturate)(VFN(min)(fc.w, lm_offset.z * fp.x - fp.y));
     color = VFN(add3)(color, VFN(scale3)(VFN(sub3)(VFN(xyz)(fc), color), f * f));
   }
-  const VF top = VFN(splat)(65504.0f);
-  *out = VFN(v3)(VFN(clamp)(color.x, zero, top), VFN(clamp)(color.y, zero, top), VFN(clamp)(color.z, zero, top));
+  return VFN(rgba)(VFN(output_linear)(color), one);
 }
 
-#undef WLV_SQRT_2_OVER_3
-#undef WLV_OO_SQRT_6
-#undef WLV_OO_SQRT_2
-#undef WLV_OO_SQRT_3
-
-static void VFN(wl_batch)(const wl_variant *v, const wl_batch_input *in, const wl_textures *tx, ts_vec4f *out,
-                          int count) {
-  for (int first = 0; first < count; first += TSV_W) {
-    const int n = count - first < TSV_W ? count - first : TSV_W;
-    size_t pix[TSV_W];
-    for (int j = 0; j < TSV_W; ++j) pix[j] = (size_t)first + (size_t)(j < n ? j : n - 1);
-    V3v c;
-    VFN(wl_block)(v, in, tx, pix, &c);
-    for (int j = 0; j < n; ++j) {
-      ts_vec4f *o = &out[first + j];
-      o->x = c.x[j];
-      o->y = c.y[j];
-      o->z = c.z[j];
-      o->w = 1.0f;
-    }
-  }
-}
+TSV_BATCH(wl_batch, wl_block, wl_variant, wl_batch_input, wl_textures)

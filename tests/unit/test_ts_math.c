@@ -10,22 +10,13 @@
 #include <stdio.h>
 #include <string.h>
 
+#include "math/ts_bits.h"
 #include "math/ts_math.h"
 #include "math/ts_sampler.h"
 
 static int g_failed, g_passed;
 
-static uint32_t fbits(float f) {
-  uint32_t u;
-  memcpy(&u, &f, 4);
-  return u;
-}
-static float bitsf(uint32_t u) {
-  float f;
-  memcpy(&f, &u, 4);
-  return f;
-}
-static int same_bits(float a, float b) { return fbits(a) == fbits(b); }
+static int same_bits(float a, float b) { return ts_fbits(a) == ts_fbits(b); }
 
 static void report(int ok, const char *name, const char *detail) {
   if (ok) {
@@ -41,7 +32,7 @@ static void report(int ok, const char *name, const char *detail) {
 static void check_f(const char *name, float got, float want) {
   char d[160];
   int ok = (got != got && want != want) || same_bits(got, want);
-  snprintf(d, sizeof d, "got %.9g (0x%08x), want %.9g (0x%08x)", got, fbits(got), want, fbits(want));
+  snprintf(d, sizeof d, "got %.9g (0x%08x), want %.9g (0x%08x)", got, ts_fbits(got), want, ts_fbits(want));
   report(ok, name, d);
 }
 
@@ -57,7 +48,7 @@ static void check_true(const char *name, int cond, const char *detail) { report(
 /* ------------------------------------------------------------------------ */
 
 static void test_state(void) {
-  volatile float den = bitsf(0x00000005u), one = 1.0f;
+  volatile float den = ts_bitsf(0x00000005u), one = 1.0f;
   float r;
   int saved = ts_math_fused();
   float a = 1.0f + 0x1p-12f, c = -1.0f;
@@ -102,7 +93,7 @@ static void test_exp_log(int fused) {
 
 static void test_specials(void) {
   const float inf = INFINITY, qnan = NAN;
-  const float den = bitsf(0x00000001u), nden = bitsf(0x80000001u);
+  const float den = ts_bitsf(0x00000001u), nden = ts_bitsf(0x80000001u);
 
   check_f("exp2(128) = +inf", ts_exp2f(128.0f), inf);
   check_f("exp2(200) = +inf", ts_exp2f(200.0f), inf);
