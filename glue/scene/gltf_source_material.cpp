@@ -185,6 +185,33 @@ bool read_source(const tinygltf::Model &m, const tinygltf::Value &src, const std
   return true;
 }
 
+// emissiveFactor (3 numbers in [0, 1]) x KHR_materials_emissive_strength's emissiveStrength (>= 0)
+// and emissiveTexture (TEXCOORD_0).
+bool read_emission(const tinygltf::Model &m, const tinygltf::Material &g, SceneMaterial *mat, Err &e) {
+  const std::string fp = mat->where + ".emissiveFactor";
+  if (g.emissiveFactor.size() != 3) return e.fail(fp, "expected 3 numbers");
+  double strength = 1;
+  const auto ext = g.extensions.find("KHR_materials_emissive_strength");
+  if (ext != g.extensions.end()) {
+    const std::string sp = mat->where + ".extensions.KHR_materials_emissive_strength";
+    if (!check_keys(ext->second, sp, {"emissiveStrength"}, e)) return false;
+    if (ext->second.Has("emissiveStrength") &&
+        !read_number(ext->second.Get("emissiveStrength"), sp + ".emissiveStrength", 0, 1e6, &strength, e))
+      return false;
+  }
+  for (int k = 0; k < 3; ++k) {
+    const double c = g.emissiveFactor[k];
+    if (!(c >= 0 && c <= 1)) return e.fail(fp, "values must be in [0, 1]");
+    mat->emission[k] = static_cast<float>(c * strength);
+  }
+  if (g.emissiveTexture.index >= 0) {
+    const std::string tp = mat->where + ".emissiveTexture";
+    if (g.emissiveTexture.texCoord != 0) return e.fail(tp + ".texCoord", "only TEXCOORD_0 is supported");
+    if (!texture_ref(m, g.emissiveTexture.index, tp + ".index", &mat->emissive_texture, e)) return false;
+  }
+  return true;
+}
+
 }  // namespace
 
 bool convert_materials(const tinygltf::Model &m, Scene *s, Err &e) {
@@ -212,6 +239,7 @@ bool convert_materials(const tinygltf::Model &m, Scene *s, Err &e) {
       if (g.normalTexture.texCoord != 0) return e.fail(tp + ".texCoord", "only TEXCOORD_0 is supported");
       if (!texture_ref(m, g.normalTexture.index, tp + ".index", &mat.normal_texture, e)) return false;
     }
+    if (!read_emission(m, g, &mat, e)) return false;
     if (g.extras.IsObject() && g.extras.Has("source") &&
         !read_source(m, g.extras.Get("source"), mat.where + ".extras.source", &mat, e))
       return false;

@@ -160,6 +160,19 @@ struct Probes {
   }
 };
 
+// The mean linear colour of a texture's image (sRGB-decoded: base colour and emissive textures are
+// sRGB); 1 without an image.
+glm::dvec3 mean_linear(const Scene &s, const SceneTextureRef &t) {
+  if (t.image < 0 || t.image >= static_cast<int>(s.images.size())) return glm::dvec3(1.0);
+  const SceneImage &im = s.images[static_cast<size_t>(t.image)];
+  glm::dvec3 sum(0.0);
+  for (size_t i = 0; i + 3 < im.rgba.size(); i += 4)
+    sum += glm::dvec3(srgb_decode<double>(im.rgba[i]), srgb_decode<double>(im.rgba[i + 1]),
+                      srgb_decode<double>(im.rgba[i + 2]));
+  const size_t n = im.rgba.size() / 4;
+  return n ? sum / static_cast<double>(n) : glm::dvec3(1.0);
+}
+
 // The index of the item (a probe, an ambient sample: anything with a `position`) nearest c, the
 // lowest index on a tie; -1 for none.
 template <class T>
@@ -385,6 +398,12 @@ bool prepare_scene(const Scene &s, const SceneSelection &sel, int w, int h, Api 
       *err = s.path + ": " + p.where + ": a world primitive whose first triangle and normal are degenerate";
       return false;
     }
+    // What the face gives the bounces: its reflectivity (the base colour times its texture's mean, as
+    // vrad takes a texture's reflectivity) and its emission (the glTF emissive terms; docs/baking.md).
+    const glm::dvec3 base = d3f(m.base_color) * mean_linear(s, m.base_texture);
+    const glm::dvec3 emit = d3f(m.emission) * mean_linear(s, m.emissive_texture);
+    f.reflectivity = ts_v3d(base.x, base.y, base.z);
+    f.emission = ts_v3d(emit.x, emit.y, emit.z);
     face_of_draw[di] = static_cast<int>(ws.faces.size());
     ws.faces.push_back(f);
     face_frame.push_back({frame_min[0], frame_min[1], 0, 0});
@@ -422,13 +441,17 @@ bool prepare_scene(const Scene &s, const SceneSelection &sel, int w, int h, Api 
     ws.page_w = s.lightmaps.page_w;
     ws.page_h = s.lightmaps.page_h;
     ws.cube_size = cube_size;
+    ws.bounce.max_bounces = s.lightmaps.bounces;
+    ws.bounce.gather_rays = s.lightmaps.gather_rays;
     const bool from_file = !s.lightmaps.image_rgba.empty();
     ws.bake_luxels = !from_file;
     // Visibility: one BVH of every triangle of the scene, world and model (glue/bake/ray_scene.h).
     RayScene rays;
     if (!from_file) {
+      // A face's triangles carry its index (bounces read its luxels), other geometry -2 (it occludes).
       for (size_t i = 0; i < s.primitives.size(); ++i)
-        if (!rays.add_mesh(s.primitives[i].position, s.primitives[i].indices, static_cast<int>(i),
+        if (!rays.add_mesh(s.primitives[i].position, s.primitives[i].indices,
+                           i < face_of_draw.size() && face_of_draw[i] >= 0 ? face_of_draw[i] : -2,
                            s.primitives[i].where, err)) {
           *err = s.path + ": " + *err;
           return false;

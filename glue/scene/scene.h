@@ -39,6 +39,10 @@ struct SceneMaterial {
   float base_color[4] = {1, 1, 1, 1};  // pbrMetallicRoughness.baseColorFactor (linear)
   SceneTextureRef base_texture;  // baseColorTexture (sRGB-encoded colour, alpha linear)
   SceneTextureRef normal_texture;  // normalTexture (tangent space; world: $bumpmap, ssbump if `ssbump`)
+  // emissiveFactor x KHR_materials_emissive_strength (linear radiance) and emissiveTexture (sRGB):
+  // World materials emit light into the bake (docs/baking.md); the shaders do not draw it.
+  float emission[3] = {0, 0, 0};
+  SceneTextureRef emissive_texture;
   // --- Model ($-keys of VertexLitGeneric, docs/scenes.md) ---
   bool half_lambert = true;  // $halflambert (Phong materials force it, as Source's skin shader)
   bool phong = false;  // $phong
@@ -147,6 +151,8 @@ struct SceneLightmaps {
   std::string encoding = "rgbe";  // "float" | "412" | "ldr" | "rgbe" (world_lighting LIGHTMAP_ENCODING),
       // or "float32": LIGHTMAP_ENCODING 0 reading the unquantised page (a reference, not a run-time format)
   int page_w = 512, page_h = 256;
+  int bounces = 0;  // diffuse interreflection passes (0: direct light only; glue/bake/bounce.h)
+  int gather_rays = 64;  // per luxel, pass and lightmap
   // "image": a baked page read from a file (EXR or Radiance HDR, relative to the scene file) in
   // tiershade's page layout (written by `tiershade bake`), instead of baking the luxels at load.
   // Empty path: baked from the scene's lights. Texels: page_w x page_h RGBA float, row 0 at the

@@ -195,8 +195,12 @@ bool select_scene_variants(const Scene &s, Tier tier, const std::string &hdr_pat
   }
   // Every variant of both families for the tier; those used are pointed at.
   for (const ShaderDecl *d : {model, world}) {
-    std::vector<Variant> v = enumerate_variants(*d, {tier}, err);
-    if (!err->empty()) return false;
+    std::string enum_err;  // (enumerate_variants reports through a non-empty message)
+    std::vector<Variant> v = enumerate_variants(*d, {tier}, &enum_err);
+    if (!enum_err.empty()) {
+      *err = enum_err;
+      return false;
+    }
     sel.all_storage.insert(sel.all_storage.end(), v.begin(), v.end());
   }
   bool used_model = false, used_world = false;

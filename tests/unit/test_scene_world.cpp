@@ -6,6 +6,8 @@
 //     "flat_lightmaps" also BUMPMAP 0 (scale 1), "final" the scene's own variants;
 //   - the "float32" lightmap encoding: LIGHTMAP_ENCODING 0 with the page exactly as baked, where
 //     "float" quantises it to half floats;
+//   - bounces and emission: lightmaps.bounces / gather_rays and the glTF emissive terms read and
+//     refused with their place; bounces and an emitting face only add light to the page;
 //   - the double reference of world draws (scene_reference_linear): 0 on the background, equal to
 //     the C fallback's float32-page sm3 frame within float rounding, and it includes the fog.
 // Prints "PASS name" / "FAIL name: detail"; exits 1 if any check failed.
@@ -87,6 +89,77 @@ void test_fog(const Scene &room, const std::string &path) {
     check(!ok && err.find(path) == 0 && err.find(b.expect) != std::string::npos,
           std::string("fog: refused with its place: ") + b.fog, ok ? "accepted" : err);
   }
+}
+
+// The room's text with `from` replaced by `to` (the first occurrence), loaded from `path`.
+bool load_edited(const std::string &path, const std::string &from, const std::string &to, Scene *s, std::string *err) {
+  std::string text = read_text(kRoom);
+  const size_t at = text.find(from);
+  if (at == std::string::npos) {
+    *err = "the room has no " + from;
+    return false;
+  }
+  text.replace(at, from.size(), to);
+  std::ofstream(path) << text;
+  const bool ok = load_scene(path, s, err);
+  unlink(path.c_str());
+  return ok;
+}
+
+// Bounce settings and emission read from the scene; bounces add light to the page.
+void test_bounces(const Scene &room, const std::string &path) {
+  const std::string lux = "\"luxels_per_unit\": 8,";
+  Scene s;
+  std::string err;
+  check(load_edited(path, lux, lux + " \"bounces\": 3, \"gather_rays\": 9,", &s, &err) && s.lightmaps.bounces == 3 &&
+            s.lightmaps.gather_rays == 9 && room.lightmaps.bounces == 0 && room.lightmaps.gather_rays == 64,
+        "bounces: lightmaps.bounces and gather_rays read (defaults 0 and 64)", err);
+  for (const char *bad : {" \"bounces\": 101,", " \"gather_rays\": 0,"}) {
+    err.clear();
+    const bool ok = load_edited(path, lux, lux + bad, &s, &err);
+    check(!ok && err.find("extras.tiershade.lightmaps.") != std::string::npos,
+          std::string("bounces: refused with its place:") + bad, ok ? "accepted" : err);
+  }
+  const std::string mat = "\"name\": \"ceiling_plaster\",";
+  err.clear();
+  const bool emits = load_edited(path, mat,
+                                 mat + " \"emissiveFactor\": [1, 0.5, 0.25], \"extensions\": "
+                                       "{\"KHR_materials_emissive_strength\": {\"emissiveStrength\": 4}},",
+                                 &s, &err);
+  int ceiling = -1;
+  for (size_t i = 0; i < s.materials.size(); ++i)
+    if (s.materials[i].name == "ceiling_plaster") ceiling = static_cast<int>(i);
+  check(emits && ceiling >= 0 && s.materials[ceiling].emission[0] == 4.f && s.materials[ceiling].emission[2] == 1.f,
+        "emission: emissiveFactor x emissiveStrength", err);
+  err.clear();
+  Scene bad;
+  const bool ok = load_edited(path, mat,
+                              mat + " \"emissiveFactor\": [1, 1, 1], \"extensions\": "
+                                    "{\"KHR_materials_emissive_strength\": {\"emissiveStrength\": -1}},",
+                              &bad, &err);
+  check(!ok && err.find("KHR_materials_emissive_strength.emissiveStrength") != std::string::npos,
+        "emission: a negative strength is refused with its place", ok ? "accepted" : err);
+  // The page: direct only, with two bounces, and with two bounces and the ceiling emitting.
+  SceneSelection s0, s2, se;
+  PreparedScene p0, p2, pe;
+  Scene b2 = room, be = s;
+  b2.lightmaps.bounces = be.lightmaps.bounces = 2;
+  b2.lightmaps.gather_rays = be.lightmaps.gather_rays = 16;
+  if (!prepared(room, Tier::SM3, 16, 8, &s0, &p0, &err) || !prepared(b2, Tier::SM3, 16, 8, &s2, &p2, &err) ||
+      !prepared(be, Tier::SM3, 16, 8, &se, &pe, &err))
+    return check(false, "bounces: prepare", err);
+  bool never_less = true;
+  double sum0 = 0, sum2 = 0, sume = 0;
+  for (size_t i = 0; i < p0.lightmap_page.size(); ++i) {
+    if (i % 4 == 3) continue;
+    never_less = never_less && p2.lightmap_page[i] >= p0.lightmap_page[i] && pe.lightmap_page[i] >= p2.lightmap_page[i];
+    sum0 += p0.lightmap_page[i];
+    sum2 += p2.lightmap_page[i];
+    sume += pe.lightmap_page[i];
+  }
+  check(never_less && sum2 > 1.05 * sum0 && sume > 1.05 * sum2,
+        "bounces: light only adds (direct <= 2 bounces <= 2 bounces + an emitting ceiling)",
+        std::to_string(sum0) + " " + std::to_string(sum2) + " " + std::to_string(sume));
 }
 
 void test_views(const Scene &room) {
@@ -205,6 +278,7 @@ int main() {
   } else {
     // The bad-fog scenes sit beside the room, so that its buffer and textures resolve.
     test_fog(room, "scenes/.test_scene_world_" + std::to_string(getpid()) + ".gltf");
+    test_bounces(room, "scenes/.test_scene_world_" + std::to_string(getpid()) + ".gltf");
     test_views(room);
     test_float32(room);
     test_reference(room);
