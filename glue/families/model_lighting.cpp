@@ -4,6 +4,9 @@
 #include <iterator>
 #include <memory>
 
+#include <glm/geometric.hpp>
+#include <glm/vec3.hpp>
+
 #include "families/model_lighting.h"
 #include "families/record_family.h"
 #include "twins/model_lighting.h"
@@ -77,7 +80,8 @@ void random_pixel(Rng &r, InputSet, ts_vec4f rec[ML_SLOTS]) {
   const ts_vec3f n = ts_normalize3f(ts_v3f(rec[ML_SLOT_NORMAL].x, rec[ML_SLOT_NORMAL].y, rec[ML_SLOT_NORMAL].z));
   const ts_vec3f a = std::fabs(n.x) < 0.9f ? ts_v3f(1, 0, 0) : ts_v3f(0, 1, 0);
   const ts_vec3f t = ts_normalize3f(ts_sub3f(a, ts_scale3f(n, ts_dot3f(a, n))));
-  const ts_vec3f b = ts_v3f(n.y * t.z - n.z * t.y, n.z * t.x - n.x * t.z, n.x * t.y - n.y * t.x);
+  const glm::vec3 g = glm::cross(glm::vec3(n.x, n.y, n.z), glm::vec3(t.x, t.y, t.z));  // bit-equal to n x t written out
+  const ts_vec3f b = ts_v3f(g.x, g.y, g.z);
   rec[ML_SLOT_TANGENT] = v4(ts_scale3f(t, r.uniform(0.8f, 1.2f)), 0.f);
   rec[ML_SLOT_BITANGENT] = v4(ts_scale3f(b, r.uniform(0.8f, 1.2f)), 0.f);
   rec[ML_SLOT_EYE] = ts_v4f(r.uniform(-6, 6), r.uniform(-6, 6), r.uniform(-6, 6), 1.f);

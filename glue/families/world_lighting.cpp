@@ -10,6 +10,9 @@
 #include <iterator>
 #include <limits>
 
+#include <glm/geometric.hpp>
+#include <glm/vec3.hpp>
+
 #include "families/record_family.h"
 #include "twins/world_lighting_batch.h"
 
@@ -194,7 +197,8 @@ void random_pixel(Rng &r, InputSet, ts_vec4f rec[WL_SLOTS]) {
   const ts_vec3f n = r.unit_vector();
   ts_vec3f t = r.unit_vector();
   t = ts_normalize3f(ts_sub3f(t, ts_scale3f(n, ts_dot3f(n, t))));
-  const ts_vec3f b = ts_v3f(n.y * t.z - n.z * t.y, n.z * t.x - n.x * t.z, n.x * t.y - n.y * t.x);
+  const glm::vec3 g = glm::cross(glm::vec3(n.x, n.y, n.z), glm::vec3(t.x, t.y, t.z));  // bit-equal to n x t written out
+  const ts_vec3f b = ts_v3f(g.x, g.y, g.z);
   rec[WL_SLOT_NORMAL] = v4(ts_scale3f(n, r.uniform(0.8f, 1.2f)), 0);
   rec[WL_SLOT_TANGENT] = v4(ts_scale3f(t, r.uniform(0.8f, 1.2f)), 0);
   rec[WL_SLOT_BINORMAL] = v4(ts_scale3f(b, r.uniform(0.8f, 1.2f)), 0);
