@@ -97,7 +97,14 @@ bool bake_world(const WorldBakeInput &in, WorldBake *out, std::string *err) {
     grids[fi].h = sizes[fi].luxels_h;
     grids[fi].v.assign(static_cast<size_t>(grids[fi].w) * grids[fi].h * 4, ts_v3d(0, 0, 0));
   }
-  for (size_t fi = 0; s.bake_luxels && fi < s.faces.size(); ++fi) {
+  const bool bake_luxels = s.page_in == nullptr;
+  if (!bake_luxels && s.page_in->size() != out->page.size()) {
+    *err = "the lightmap page holds " + std::to_string(s.page_in->size() / 4) + " texels, the layout " +
+        std::to_string(out->page.size() / 4);
+    return false;
+  }
+  if (!bake_luxels) out->page = *s.page_in;
+  for (size_t fi = 0; bake_luxels && fi < s.faces.size(); ++fi) {
     const WorldFace &f = s.faces[fi];
     const ts_vec3d n = world_face_normal(f);
     {  // every light checked once per face (a bad light is an error naming the face)
@@ -132,7 +139,7 @@ bool bake_world(const WorldBakeInput &in, WorldBake *out, std::string *err) {
     }
   }
   // The interreflected light (glue/bake/bounce.h), then the page.
-  if (s.bake_luxels) {
+  if (bake_luxels) {
     if (!bounce_light(s.faces, reinterpret_cast<const ts_vec3d(*)[3]>(bump.data()), *s.rays, s.bounce, &grids,
                       &out->bounce, err))
       return false;
@@ -151,6 +158,19 @@ bool bake_world(const WorldBakeInput &in, WorldBake *out, std::string *err) {
           }
       lm_page_fill_borders(&out->place[fi], s.page_w, out->page.data());
     }
+  }
+  // The grids as the page holds them (float32, whether baked or read): the probes see what the
+  // renderer samples, so a page read from a file gives the same probes as the bake that wrote it.
+  for (size_t fi = 0; fi < s.faces.size(); ++fi) {
+    LuxelGrid &g = grids[fi];
+    for (int j = 0; j < g.h; ++j)
+      for (int i = 0; i < g.w; ++i)
+        for (int k = 0; k < 4; ++k) {
+          int tx, ty;
+          lm_page_texel(&out->place[fi], k, i, j, &tx, &ty);
+          const float *t = &out->page[(static_cast<size_t>(ty) * s.page_w + tx) * 4];
+          g.at(i, j, k) = ts_v3d(t[0], t[1], t[2]);
+        }
   }
   // Probes: each face's, then each probe's cube, ray cast from the probe: a wall shows its
   // flat lightmap value times its mean albedo, a light shows as a small bright sphere.
@@ -178,7 +198,7 @@ bool bake_world(const WorldBakeInput &in, WorldBake *out, std::string *err) {
           glm::dvec3 rad(0.0);
           const RayScene::Hit hit = s.rays->intersect(to_glm(pos), d, 1e-6, INFINITY);
           const double t = hit.id >= 0 ? hit.t : INFINITY;
-          if (hit.id >= 0 && hit.id < static_cast<int>(s.faces.size()) && s.bake_luxels) {
+          if (hit.id >= 0 && hit.id < static_cast<int>(s.faces.size())) {
             // A face: the radiance it leaves there (emission + reflectivity x its lightmap).
             const WorldFace &f = s.faces[static_cast<size_t>(hit.id)];
             const glm::dvec3 q = to_glm(pos) + d * t - to_glm(f.origin);

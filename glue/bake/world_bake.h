@@ -21,7 +21,9 @@ struct WorldBakeInput {
   double luxels_per_unit = 6;
   int page_w = 512, page_h = 256;
   int cube_size = 64;
-  bool bake_luxels = true;  // false: the page is left black (alpha 1) for a page read from a file
+  // A page read from a file (page_w x page_h RGBA, this input's layout), used instead of baking the
+  // luxels; the probes still see it (their faces' exitant radiance comes from the page).
+  const std::vector<float> *page_in = nullptr;
   // Visibility: shadow rays through this scene (every triangle of the scene, glue/bake/ray_scene.h)
   // from each sample point to each light it faces; null: every light reaches every point it faces.
   const RayScene *rays = nullptr;

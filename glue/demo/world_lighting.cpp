@@ -3,6 +3,7 @@
 // "lightmaps only" and the final shading (the talk's "Light Maps Only" / "Final Rendered Scene"
 // pair, glue/scene/views.h), on every GL backend and by the C fallback. Each GL frame is
 // compared bit for bit with the C twins shading GL's own G-buffer (SceneRenderConfig::check).
+// Last, the room baked with direct light only and with radiosity bounces, side by side.
 #include <cmath>
 #include <cstdio>
 
@@ -125,6 +126,18 @@ bool run(const DemoOptions &opt, std::string *err) {
       "wrote %sTIER[_lightmaps]_BACKEND.png, the diffs, %sreference.exr and %stiers.png\n"
       "(top: final ps20 | ps2b | sm3 | double reference; bottom: lightmaps only, and the flat lightmap)\n",
       dir.c_str(), dir.c_str(), dir.c_str());
+  // The talk's "Direct lighting only" / "Radiosity lighting" pair: the room baked without and with
+  // diffuse bounces (docs/baking.md), sm3, the C fallback.
+  std::vector<ImageF> pair;
+  for (const int bounces : {0, 8}) {
+    Scene r = room;
+    r.lightmaps.bounces = bounces;
+    SceneRenderResult res;
+    if (!lit_frame(r, Tier::SM3, cfg, &res, err)) return false;
+    pair.push_back(srgb_display(res.lit));
+  }
+  if (!write_png(dir + "radiosity.png", hstack({&pair[0], &pair[1]}, 4, 1.f), Encode::Linear, err)) return false;
+  printf("wrote %sradiosity.png (direct light only | 8 bounces of radiosity)\n", dir.c_str());
   return demo_section_result(failures, "world_lighting GL frames differ from the C twins or failed", err);
 }
 

@@ -444,31 +444,28 @@ bool prepare_scene(const Scene &s, const SceneSelection &sel, int w, int h, Api 
     ws.bounce.max_bounces = s.lightmaps.bounces;
     ws.bounce.gather_rays = s.lightmaps.gather_rays;
     const bool from_file = !s.lightmaps.image_rgba.empty();
-    ws.bake_luxels = !from_file;
+    if (from_file) ws.page_in = &s.lightmaps.image_rgba;
     // Visibility: one BVH of every triangle of the scene, world and model (glue/bake/ray_scene.h).
     RayScene rays;
-    if (!from_file) {
-      // A face's triangles carry its index (bounces read its luxels), other geometry -2 (it occludes).
-      for (size_t i = 0; i < s.primitives.size(); ++i)
-        if (!rays.add_mesh(s.primitives[i].position, s.primitives[i].indices,
-                           i < face_of_draw.size() && face_of_draw[i] >= 0 ? face_of_draw[i] : -2,
-                           s.primitives[i].where, err)) {
-          *err = s.path + ": " + *err;
-          return false;
-        }
-      if (!rays.commit(err)) {
+    // A face's triangles carry its index (bounces and probes read its luxels), other geometry -2.
+    for (size_t i = 0; i < s.primitives.size(); ++i)
+      if (!rays.add_mesh(s.primitives[i].position, s.primitives[i].indices,
+                         i < face_of_draw.size() && face_of_draw[i] >= 0 ? face_of_draw[i] : -2,
+                         s.primitives[i].where, err)) {
         *err = s.path + ": " + *err;
         return false;
       }
-      ws.rays = &rays;
+    if (!rays.commit(err)) {
+      *err = s.path + ": " + *err;
+      return false;
     }
+    ws.rays = &rays;
     if (!bake_world(ws, &bake, err)) {
       *err = s.path + ": lightmap bake: " + *err;
       return false;
     }
     // A page from the scene's lightmaps.image: the placement above is its layout (the same
     // faces, density and page size as the bake that wrote it; docs/scenes.md).
-    if (from_file) bake.page = s.lightmaps.image_rgba;
     ps.lightmap_page = bake.page;
     ps.lightmap_places = bake.place;
     ps.lightmap_w = ws.page_w;
