@@ -60,20 +60,20 @@ bool bounce_light(const std::vector<WorldFace> &faces, const ts_vec3d bump[][3],
   const int m = side_n * side_n;
   // The radiance each face's luxels send into the next pass: emission + reflectivity x direct.
   std::vector<std::vector<ts_vec3d>> send(faces.size());
-  double largest = 0;
+  double total = 0;  // the flat light of every luxel so far (r + g + b), for the stopping rule
   for (size_t f = 0; f < faces.size(); ++f) {
     const LuxelGrid &g = (*grids)[f];
     send[f].resize(static_cast<size_t>(g.w) * g.h);
     for (int j = 0; j < g.h; ++j)
       for (int i = 0; i < g.w; ++i) {
         const glm::dvec3 e = to_glm(g.at(i, j, 0));
-        largest = std::max(largest, std::max(e.x, std::max(e.y, e.z)));
+        total += e.x + e.y + e.z;
         send[f][static_cast<size_t>(j) * g.w + i] = to_ts(to_glm(faces[f].emission) + to_glm(faces[f].reflectivity) * e);
       }
   }
   std::vector<LuxelGrid> added = *grids;
   for (int pass = 1; pass <= set.max_bounces; ++pass) {
-    double pass_max = 0;
+    double pass_max = 0, pass_sum = 0;
     for (size_t f = 0; f < faces.size(); ++f) {
       const WorldFace &face = faces[f];
       const glm::dvec3 n = to_glm(world_face_normal(face));
@@ -126,13 +126,14 @@ bool bounce_light(const std::vector<WorldFace> &faces, const ts_vec3d bump[][3],
           for (int k = 0; k < 4; ++k) g.at(i, j, k) = to_ts(to_glm(g.at(i, j, k)) + to_glm(a.at(i, j, k)));
           const glm::dvec3 e = to_glm(a.at(i, j, 0));
           pass_max = std::max(pass_max, std::max(e.x, std::max(e.y, e.z)));
-          largest = std::max(largest, std::max(e.x, std::max(e.y, e.z)));
+          pass_sum += e.x + e.y + e.z;
           send[f][static_cast<size_t>(j) * g.w + i] = to_ts(to_glm(faces[f].reflectivity) * e);
         }
     }
     report->passes = pass;
     report->added.push_back(pass_max);
-    if (pass_max <= set.threshold * largest) break;
+    total += pass_sum;
+    if (pass_sum <= set.threshold * total) break;
   }
   return true;
 }

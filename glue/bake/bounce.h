@@ -1,7 +1,7 @@
 // tiershade bake: diffuse interreflection (radiosity) on the baked luxel grids, by gathering: each
 // pass shoots the radiance the previous pass added (the first: the faces' emission plus their
 // reflection of the direct light) back into every luxel through cosine-weighted gather rays, until
-// the added light falls below a threshold or the pass count is reached (vrad's bounces, fact sheet
+// the light a pass adds falls below a share of all the light so far or the pass count is reached (vrad's bounces, fact sheet
 // section 1). Per basis vector as vrad: each bumped value takes light only from directions on the
 // face's front with a positive dot product with its basis vector.
 #pragma once
@@ -25,7 +25,7 @@ struct LuxelGrid {
 struct BounceSettings {
   int max_bounces = 0;  // 0: direct light only
   int gather_rays = 64;  // per luxel, pass and value (flat, b0, b1, b2; rounded up to a square: stratified)
-  double threshold = 1e-3;  // stop when a pass adds at most this x the largest flat value so far
+  double threshold = 1e-3;  // stop when a pass adds at most this share of the flat light so far (summed over luxels)
   int threads = 0;  // 0: all cores; the result is the same for any count
 };
 

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <array>
+#include <chrono>
 #include <cmath>
 
 #include "bake/bounce.h"
@@ -104,6 +105,9 @@ bool bake_world(const WorldBakeInput &in, WorldBake *out, std::string *err) {
     return false;
   }
   if (!bake_luxels) out->page = *s.page_in;
+  using Clock = std::chrono::steady_clock;
+  const auto t_direct = Clock::now();
+  for (const LuxelGrid &g : grids) out->luxels += static_cast<long>(g.w) * g.h;
   for (size_t fi = 0; bake_luxels && fi < s.faces.size(); ++fi) {
     const WorldFace &f = s.faces[fi];
     const ts_vec3d n = world_face_normal(f);
@@ -139,10 +143,13 @@ bool bake_world(const WorldBakeInput &in, WorldBake *out, std::string *err) {
     }
   }
   // The interreflected light (glue/bake/bounce.h), then the page.
+  const auto t_bounce = Clock::now();
+  out->direct_ms = std::chrono::duration<double, std::milli>(t_bounce - t_direct).count();
   if (bake_luxels) {
     if (!bounce_light(s.faces, reinterpret_cast<const ts_vec3d(*)[3]>(bump.data()), *s.rays, s.bounce, &grids,
                       &out->bounce, err))
       return false;
+    out->bounce_ms = std::chrono::duration<double, std::milli>(Clock::now() - t_bounce).count();
     for (size_t fi = 0; fi < s.faces.size(); ++fi) {
       const LuxelGrid &g = grids[fi];
       for (int j = 0; j < g.h; ++j)

@@ -443,6 +443,7 @@ bool prepare_scene(const Scene &s, const SceneSelection &sel, int w, int h, Api 
     ws.cube_size = cube_size;
     ws.bounce.max_bounces = s.lightmaps.bounces;
     ws.bounce.gather_rays = s.lightmaps.gather_rays;
+    ws.supersample = s.lightmaps.supersample;
     const bool from_file = !s.lightmaps.image_rgba.empty();
     if (from_file) ws.page_in = &s.lightmaps.image_rgba;
     // Visibility: one BVH of every triangle of the scene, world and model (glue/bake/ray_scene.h).
@@ -476,6 +477,11 @@ bool prepare_scene(const Scene &s, const SceneSelection &sel, int w, int h, Api 
       if (world_probe_index[i] >= 0) probes.world_cubes[i] = bake.cubes.at(world_probe_index[i]);
     ps.lightmap_texels = ws.page_w * ws.page_h;
     ps.bake_ms = std::chrono::duration<double, std::milli>(Clock::now() - t0).count();
+    ps.bake_luxels = bake.luxels;
+    ps.bake_gather_rays = bake.bounce.rays;
+    ps.bake_passes = bake.bounce.passes;
+    ps.bake_direct_ms = bake.direct_ms;
+    ps.bake_bounce_ms = bake.bounce_ms;
   }
   TextureDesc page;
   int encoding = -1;

@@ -47,6 +47,11 @@ struct PreparedScene {
   int lightmap_w = 0, lightmap_h = 0;
   std::vector<lm_face_place> lightmap_places;  // each world face's blocks on the page (c_ref/offline/lightmap_page.h)
   double bake_ms = 0;
+  // The bake's parts (glue/bake/world_bake.h): luxels, the direct pass and the bounces (ms), the
+  // bounce passes run and their gather rays.
+  long bake_luxels = 0, bake_gather_rays = 0;
+  int bake_passes = 0;
+  double bake_direct_ms = 0, bake_bounce_ms = 0;
   std::vector<std::string> notes;
 };
 

@@ -111,10 +111,11 @@ void test_bounces(const Scene &room, const std::string &path) {
   const std::string lux = "\"luxels_per_unit\": 8,";
   Scene s;
   std::string err;
-  check(load_edited(path, lux, lux + " \"bounces\": 3, \"gather_rays\": 9,", &s, &err) && s.lightmaps.bounces == 3 &&
-            s.lightmaps.gather_rays == 9 && room.lightmaps.bounces == 0 && room.lightmaps.gather_rays == 64,
-        "bounces: lightmaps.bounces and gather_rays read (defaults 0 and 64)", err);
-  for (const char *bad : {" \"bounces\": 101,", " \"gather_rays\": 0,"}) {
+  check(load_edited(path, lux, lux + " \"bounces\": 3, \"gather_rays\": 9, \"supersample\": 3,", &s, &err) &&
+            s.lightmaps.bounces == 3 && s.lightmaps.gather_rays == 9 && s.lightmaps.supersample == 3 &&
+            room.lightmaps.bounces == 0 && room.lightmaps.gather_rays == 64 && room.lightmaps.supersample == 2,
+        "bounces: lightmaps.bounces, gather_rays, supersample read (defaults 0, 64, 2)", err);
+  for (const char *bad : {" \"bounces\": 101,", " \"gather_rays\": 0,", " \"supersample\": 9,"}) {
     err.clear();
     const bool ok = load_edited(path, lux, lux + bad, &s, &err);
     check(!ok && err.find("extras.tiershade.lightmaps.") != std::string::npos,
