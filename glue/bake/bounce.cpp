@@ -83,7 +83,7 @@ bool bounce_light(const std::vector<WorldFace> &faces, const ts_vec3d bump[][3],
         long traced = 0;
         for (int i = 0; i < a.w; ++i) {
           Rng rng{(static_cast<uint64_t>(pass) << 48) ^ (static_cast<uint64_t>(f) << 32) ^
-                  (static_cast<uint64_t>(j) << 16) ^ static_cast<uint64_t>(i)};
+                  (static_cast<uint64_t>(j) << 16) ^ static_cast<uint64_t>(i) ^ (set.seed * 0xD1B54A32D192ED03ull)};
           const glm::dvec3 p = to_glm(world_face_sample(face, static_cast<double>(i) / (a.w - 1),
                                                        static_cast<double>(j) / (a.h - 1))) +
               n * 1e-4;

@@ -5,6 +5,7 @@
 // section 1). Per basis vector as vrad: each bumped value takes light only from directions on the
 // face's front with a positive dot product with its basis vector.
 #pragma once
+#include <cstdint>
 #include <string>
 #include <vector>
 
@@ -27,6 +28,7 @@ struct BounceSettings {
   int gather_rays = 64;  // per luxel, pass and value (flat, b0, b1, b2; rounded up to a square: stratified)
   double threshold = 1e-3;  // stop when a pass adds at most this share of the flat light so far (summed over luxels)
   int threads = 0;  // 0: all cores; the result is the same for any count
+  uint64_t seed = 0;  // mixed into every luxel's stream: another seed, independent noise
 };
 
 struct BounceReport {

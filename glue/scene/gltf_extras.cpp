@@ -206,9 +206,10 @@ bool read_hdr_settings(const tinygltf::Value &v, const std::string &place, const
 
 bool read_lightmaps(const tinygltf::Value &v, const std::string &place, const std::string &dir, SceneLightmaps *l,
                     Err &e) {
-  if (!check_keys(v, place, {"luxels_per_unit", "encoding", "page", "image", "bounces", "gather_rays", "supersample"}, e))
+  if (!check_keys(v, place, {"luxels_per_unit", "encoding", "page", "image", "bounces", "gather_rays", "supersample", "seed"}, e))
     return false;
   if (v.Has("bounces") && !read_int(v.Get("bounces"), place + ".bounces", 0, 100, &l->bounces, e)) return false;
+  if (v.Has("seed") && !read_int(v.Get("seed"), place + ".seed", 0, 1 << 30, &l->seed, e)) return false;
   if (v.Has("supersample") && !read_int(v.Get("supersample"), place + ".supersample", 1, 8, &l->supersample, e))
     return false;
   if (v.Has("gather_rays") && !read_int(v.Get("gather_rays"), place + ".gather_rays", 1, 1024, &l->gather_rays, e))

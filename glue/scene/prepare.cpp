@@ -444,6 +444,7 @@ bool prepare_scene(const Scene &s, const SceneSelection &sel, int w, int h, Api 
     ws.bounce.max_bounces = s.lightmaps.bounces;
     ws.bounce.gather_rays = s.lightmaps.gather_rays;
     ws.supersample = s.lightmaps.supersample;
+    ws.bounce.seed = static_cast<uint64_t>(s.lightmaps.seed);
     const bool from_file = !s.lightmaps.image_rgba.empty();
     if (from_file) ws.page_in = &s.lightmaps.image_rgba;
     // Visibility: one BVH of every triangle of the scene, world and model (glue/bake/ray_scene.h).

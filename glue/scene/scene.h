@@ -154,6 +154,7 @@ struct SceneLightmaps {
   int bounces = 0;  // diffuse interreflection passes (0: direct light only; glue/bake/bounce.h)
   int gather_rays = 64;  // per luxel, pass and lightmap
   int supersample = 2;  // direct light: supersample x supersample samples per luxel (vrad: 4)
+  int seed = 0;  // the gather rays' random streams (another seed: independent noise)
   // "image": a baked page read from a file (EXR or Radiance HDR, relative to the scene file) in
   // tiershade's page layout (written by `tiershade bake`), instead of baking the luxels at load.
   // Empty path: baked from the scene's lights. Texels: page_w x page_h RGBA float, row 0 at the
