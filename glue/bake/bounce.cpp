@@ -73,6 +73,11 @@ bool bounce_light(const std::vector<WorldFace> &faces, const ts_vec3d bump[][3],
   }
   std::vector<LuxelGrid> added = *grids;
   for (int pass = 1; pass <= set.max_bounces; ++pass) {
+    // Nothing sent (no light, or reflectivity 0 everywhere): no rays to trace.
+    bool sends = false;
+    for (const std::vector<ts_vec3d> &v : send)
+      for (const ts_vec3d &e : v) sends = sends || e.x > 0 || e.y > 0 || e.z > 0;
+    if (!sends) break;
     double pass_max = 0, pass_sum = 0;
     for (size_t f = 0; f < faces.size(); ++f) {
       const WorldFace &face = faces[f];
@@ -92,7 +97,9 @@ bool bounce_light(const std::vector<WorldFace> &faces, const ts_vec3d bump[][3],
           // sample lifted to the hemisphere), a direction behind the face counting as 0. Each lobe
           // has its own rays, so every estimate is bounded (a 1 / (n . w) weight would not be).
           glm::dvec3 sum[4] = {glm::dvec3(0.0), glm::dvec3(0.0), glm::dvec3(0.0), glm::dvec3(0.0)};
-          for (int k = 0; k < 4; ++k) {
+          // A face the shader reads flat (no normal map) gathers its flat value only; its bumped
+          // values keep the direct light (nothing samples them).
+          for (int k = 0; k < (face.bumped ? 4 : 1); ++k) {
             const glm::dvec3 ax = k == 0 ? n : to_glm(bump[f][k - 1]);
             const glm::dvec3 side = std::fabs(ax.x) < 0.9 ? glm::dvec3(1, 0, 0) : glm::dvec3(0, 1, 0);
             const glm::dvec3 au = glm::normalize(glm::cross(side, ax)), av = glm::cross(ax, au);

@@ -16,6 +16,7 @@ struct WorldFace {
   ts_vec3d normal = {0, 0, 0};  // the front normal (the lit side), not necessarily unit; bake_world refuses zero
   ts_vec3d reflectivity = {0, 0, 0};  // diffuse reflectance for bounces (the base colour's mean, linear)
   ts_vec3d emission = {0, 0, 0};  // emitted radiance (linear), in lightmap units (docs/baking.md)
+  bool bumped = true;  // the material reads the bumped lightmaps (a normal map): else bounces gather the flat one only
 };
 
 // A face from one planar quad of world-space triangles (positions xyz, normals xyz, tangents

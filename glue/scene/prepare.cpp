@@ -404,6 +404,7 @@ bool prepare_scene(const Scene &s, const SceneSelection &sel, int w, int h, Api 
     const glm::dvec3 emit = d3f(m.emission) * mean_linear(s, m.emissive_texture);
     f.reflectivity = ts_v3d(base.x, base.y, base.z);
     f.emission = ts_v3d(emit.x, emit.y, emit.z);
+    f.bumped = m.normal_texture.image >= 0;  // BUMPMAP 0 samples the flat lightmap alone
     face_of_draw[di] = static_cast<int>(ws.faces.size());
     ws.faces.push_back(f);
     face_frame.push_back({frame_min[0], frame_min[1], 0, 0});

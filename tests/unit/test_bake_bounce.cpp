@@ -4,7 +4,8 @@
 //     Le r^(k-1)), and at convergence Le / (1 - r), within 0.5 %;
 //   - the bumped values of the uniform field Le / (1 - r): each is (1/pi) of the integral of the
 //     radiance times max(0, b . w) over the face's hemisphere, the same for the three basis vectors;
-//   - the same bytes for 1 and 2 threads; a scene with no light and no emission stops at once.
+//   - the same bytes for 1 and 2 threads; a scene with no light and no emission traces nothing;
+//     faces without a normal map gather their flat value alone.
 #include <cmath>
 #include <cstdio>
 #include <string>
@@ -31,9 +32,10 @@ std::vector<WorldFace> box(double r, double le) {
           face("z1", ts_v3d(0, 0, 1), ts_v3d(1, 0, 0), ts_v3d(0, 1, 0), ts_v3d(0, 0, -1))};
 }
 
-bool bake(double r, double le, int bounces, int threads, WorldBake *out, int rays = 16) {
+bool bake(double r, double le, int bounces, int threads, WorldBake *out, int rays = 16, bool bumped = true) {
   WorldBakeInput in;
   in.faces = box(r, le);
+  for (WorldFace &f : in.faces) f.bumped = bumped;
   in.probes = {ts_v3d(0.5, 0.5, 0.5)};
   in.luxels_per_unit = 6;
   in.page_w = 256;
@@ -122,7 +124,28 @@ void closed_box() {
     if (bake(r, le, 3, 2, &two)) check(one.page == two.page, "the same page bytes for 1 and 2 threads");
   }
   WorldBake dark;
-  if (bake(r, 0, 10, 2, &dark)) check(dark.bounce.passes == 1 && worst(dark, 0, 1) == 1, "no light: one pass, black");
+  if (bake(r, 0, 10, 2, &dark))
+    check(dark.bounce.passes == 0 && dark.bounce.rays == 0 && worst(dark, 0, 1) == 1, "no light: no pass, no ray, black");
+  // Faces without a normal map gather their flat value only: under a third of the rays (a bumped
+  // lobe traces only its directions in front of the face), the same flat values bit for bit (the
+  // flat lobe draws first from each luxel's stream), the bumped values left at the direct light.
+  WorldBake flat;
+  if (bake(r, le, 3, 2, &flat, 16, false)) {
+    WorldBake full;
+    bake(r, le, 3, 2, &full);
+    bool same_flat = flat.page.size() == full.page.size();
+    for (const lm_face_place &p : flat.place)
+      for (int j = 0; same_flat && j < p.block_h - 2; ++j)
+        for (int i = 0; i < p.block_w - 2; ++i) {
+          int tx, ty;
+          lm_page_texel(&p, 0, i, j, &tx, &ty);
+          same_flat = same_flat && flat.page[(static_cast<size_t>(ty) * 256 + tx) * 4] ==
+                                       full.page[(static_cast<size_t>(ty) * 256 + tx) * 4];
+        }
+    check(flat.bounce.rays * 3 < full.bounce.rays && same_flat && worst(flat, 1, 1) == 1,
+          "unbumped faces: the flat values alone gathered, bit-equal, with under a third of the rays",
+          std::to_string(flat.bounce.rays) + " of " + std::to_string(full.bounce.rays) + " rays");
+  }
 }
 
 }  // namespace
