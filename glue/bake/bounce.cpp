@@ -43,13 +43,13 @@ ts_vec3d lookup(const std::vector<ts_vec3d> &out, const LuxelGrid &g, double a, 
 }  // namespace
 
 ts_vec3d luxel_exitant(const WorldFace &f, const LuxelGrid &g, double a, double b) {
-  return bilinear(g.w, g.h, a, b, [&](int i, int j) {
-    return to_glm(f.emission) + to_glm(f.reflectivity) * to_glm(g.at(i, j, 0));
-  });
+  return bilinear(g.w, g.h, a, b,
+                  [&](int i, int j) { return to_glm(f.emission) + to_glm(f.reflectivity) * to_glm(g.at(i, j, 0)); });
 }
 
-bool bounce_light(const std::vector<WorldFace> &faces, const ts_vec3d bump[][3], const RayScene &rays,
-                  const BounceSettings &set, std::vector<LuxelGrid> *grids, BounceReport *report, std::string *err) {
+bool bounce_light(const std::vector<WorldFace> &faces, const std::vector<std::array<ts_vec3d, 3>> &bump,
+                  const RayScene &rays, const BounceSettings &set, std::vector<LuxelGrid> *grids, BounceReport *report,
+                  std::string *err) {
   *report = BounceReport();
   if (set.max_bounces <= 0) return true;
   if (grids->size() != faces.size()) {
@@ -68,7 +68,8 @@ bool bounce_light(const std::vector<WorldFace> &faces, const ts_vec3d bump[][3],
       for (int i = 0; i < g.w; ++i) {
         const glm::dvec3 e = to_glm(g.at(i, j, 0));
         total += e.x + e.y + e.z;
-        send[f][static_cast<size_t>(j) * g.w + i] = to_ts(to_glm(faces[f].emission) + to_glm(faces[f].reflectivity) * e);
+        send[f][static_cast<size_t>(j) * g.w + i] =
+            to_ts(to_glm(faces[f].emission) + to_glm(faces[f].reflectivity) * e);
       }
   }
   std::vector<LuxelGrid> added = *grids;
@@ -89,8 +90,8 @@ bool bounce_light(const std::vector<WorldFace> &faces, const ts_vec3d bump[][3],
         for (int i = 0; i < a.w; ++i) {
           Rng rng{(static_cast<uint64_t>(pass) << 48) ^ (static_cast<uint64_t>(f) << 32) ^
                   (static_cast<uint64_t>(j) << 16) ^ static_cast<uint64_t>(i) ^ (set.seed * 0xD1B54A32D192ED03ull)};
-          const glm::dvec3 p = to_glm(world_face_sample(face, static_cast<double>(i) / (a.w - 1),
-                                                       static_cast<double>(j) / (a.h - 1))) +
+          const glm::dvec3 p =
+              to_glm(world_face_sample(face, static_cast<double>(i) / (a.w - 1), static_cast<double>(j) / (a.h - 1))) +
               n * 1e-4;
           // Value k: (1/pi) of the integral of L (a_k . w)+ over the face's front, a_0 = n, a_k = b_k: the
           // mean of L over directions drawn with the cosine lobe of a_k (Malley: a stratified disc

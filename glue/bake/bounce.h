@@ -5,6 +5,7 @@
 // section 1). Per basis vector as vrad: each bumped value takes light only from directions on the
 // face's front with a positive dot product with its basis vector.
 #pragma once
+#include <array>
 #include <cstdint>
 #include <string>
 #include <vector>
@@ -44,5 +45,6 @@ ts_vec3d luxel_exitant(const WorldFace &f, const LuxelGrid &g, double a, double 
 // Adds the interreflected light to `grids` (one per face, the direct light on entry). `rays`: every
 // triangle of the scene, a face's triangles carrying its index as id (other geometry: negative ids,
 // it occludes and reflects nothing). The faces' reflectivity and emission are WorldFace's.
-bool bounce_light(const std::vector<WorldFace> &faces, const ts_vec3d bump[][3], const RayScene &rays,
-                  const BounceSettings &set, std::vector<LuxelGrid> *grids, BounceReport *report, std::string *err);
+bool bounce_light(const std::vector<WorldFace> &faces, const std::vector<std::array<ts_vec3d, 3>> &bump,
+                  const RayScene &rays, const BounceSettings &set, std::vector<LuxelGrid> *grids, BounceReport *report,
+                  std::string *err);

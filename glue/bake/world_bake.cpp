@@ -146,9 +146,7 @@ bool bake_world(const WorldBakeInput &in, WorldBake *out, std::string *err) {
   const auto t_bounce = Clock::now();
   out->direct_ms = std::chrono::duration<double, std::milli>(t_bounce - t_direct).count();
   if (bake_luxels) {
-    if (!bounce_light(s.faces, reinterpret_cast<const ts_vec3d(*)[3]>(bump.data()), *s.rays, s.bounce, &grids,
-                      &out->bounce, err))
-      return false;
+    if (!bounce_light(s.faces, bump, *s.rays, s.bounce, &grids, &out->bounce, err)) return false;
     out->bounce_ms = std::chrono::duration<double, std::milli>(Clock::now() - t_bounce).count();
     for (size_t fi = 0; fi < s.faces.size(); ++fi) {
       const LuxelGrid &g = grids[fi];

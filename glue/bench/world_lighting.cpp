@@ -9,7 +9,6 @@
 #include <cstdio>
 #include <sstream>
 #include <thread>
-#include <tuple>
 
 #include "base/image_diff.h"
 #include "base/srgb.h"
@@ -105,8 +104,9 @@ bool timed_frame(const Scene &s, Tier tier, Backend be, Api api, int w, int h, i
   SceneRenderConfig cfg;
   cfg.backend = be;
   cfg.api = api;
+  cfg.w = w;
+  cfg.h = h;
   cfg.check = check;
-  std::tie(cfg.w, cfg.h) = std::make_pair(w, h);
   SceneRenderer r;
   if (!r.init(s, sel, cfg, err) || !r.frame(res, err)) return false;
   std::vector<double> t;
@@ -172,7 +172,9 @@ bool run(const BenchOptions &opt, std::string *md, std::string *err) {
   const Scene unmasked = room_as(room, "rgbe", false);
   const int W = opt.size, H = std::max(8, opt.size / 2);
   const unsigned cores = std::max(1u, std::thread::hardware_concurrency());
-  auto variant = [&](const std::string &name, Variant *v) { return find_variant(decls, "world_lighting", name, v, err); };
+  auto variant = [&](const std::string &name, Variant *v) {
+    return find_variant(decls, "world_lighting", name, v, err);
+  };
   // Which pixels the room covers, and the sm3 references (double, float32 page) of the room and of
   // the room without alpha masks.
   std::vector<int> draw;
@@ -210,8 +212,7 @@ bool run(const BenchOptions &opt, std::string *md, std::string *err) {
     if (!c_frame(s, Tier::SM3, &img)) return false;
     r.frame = display_error(draw, img.rgba, 4, ref32.rgba, 4);
     SceneRenderResult gl;
-    if (!timed_frame(s, Tier::SM3, Backend::OSMesa, Api::GL33, W, H, opt.runs, false, &r.gl_ms, &gl, err))
-      return false;
+    if (!timed_frame(s, Tier::SM3, Backend::OSMesa, Api::GL33, W, H, opt.runs, false, &r.gl_ms, &gl, err)) return false;
     const int e = r.value < 0 ? 0 : r.value;
     const std::string tail = ",LIGHTMAP_ENCODING=" + std::to_string(e) + ",ENVMAP=1,ENVMAPMASK=1";
     Variant v20, v2b;
@@ -267,8 +268,7 @@ bool run(const BenchOptions &opt, std::string *md, std::string *err) {
   Scene nofog = room_as(room, "float");
   nofog.fog.enabled = false;
   ImageF sm3_nofog, ps20_img;
-  if (!c_frame(nofog, Tier::SM3, &sm3_nofog) || !c_frame(room_as(room, "float"), Tier::PS20, &ps20_img))
-    return false;
+  if (!c_frame(nofog, Tier::SM3, &sm3_nofog) || !c_frame(room_as(room, "float"), Tier::PS20, &ps20_img)) return false;
   const Err fog_share = display_error(draw, sm3_nofog.rgba, 4, sm3_img.rgba, 4);
   const Err rest = display_error(draw, ps20_img.rgba, 4, sm3_nofog.rgba, 4);
 
@@ -276,18 +276,23 @@ bool run(const BenchOptions &opt, std::string *md, std::string *err) {
   char b[1024];
   o << "## world_lighting (lightmaps, RNM, cube-map specular), " << W << "x" << H << " frame of the room\n\n"
     << "Scene: `" << kWorldLightingGltf << "` (docs/scenes.md), drawn by the scene renderer: " << g.p.draws.size()
-    << " lightmapped draws (RNM, ssbump and flat walls,\nmasked envmaps, range fog), three point lights baked into RNM lightmaps "
+    << " lightmapped draws (RNM, ssbump and flat walls,\nmasked envmaps, range fog), three point lights baked into RNM "
+       "lightmaps "
     << "(`c_ref/offline/rnm_bake.c`) on a " << g.p.lightmap_w << "x" << g.p.lightmap_h
-    << " page, two cube-map probes\nrendered from the room. Errors are in 8-bit display codes (sRGB-encoded, x255) over "
+    << " page, two cube-map probes\nrendered from the room. Errors are in 8-bit display codes (sRGB-encoded, x255) "
+       "over "
        "the pixels the room covers;\ntimes are llvmpipe medians of "
     << opt.runs << " lit passes (every draw, glFinish included).\n\n"
     << "### Lightmap encodings\n\n"
     << "The scene's `lightmaps.encoding` set to each format, the alpha envmap masks off in every row (the variants\n"
-    << "cross the encodings with no mask or a mask texture only): the page is stored as the run-time format would (quantised "
+    << "cross the encodings with no mask or a mask texture only): the page is stored as the run-time format would "
+       "(quantised "
        "on\nthe CPU, uploaded as RGBA32F holding exactly the stored values; docs/world_lighting.md). **page error**: "
-       "relative\nerror of the decoded luxels against float32 (channels >= 1e-3), **clipped**: share of channels beyond "
+       "relative\nerror of the decoded luxels against float32 (channels >= 1e-3), **clipped**: share of channels "
+       "beyond "
        "the\nformat's range. **frame error**: the sm3 frame with that encoding against the sm3 frame from the float32 "
-       "page\n(`\"float32\"`), both from the C fallback, which is bit-exact with llvmpipe. **decode slots**: ps20 / ps2b "
+       "page\n(`\"float32\"`), both from the C fallback, which is bit-exact with llvmpipe. **decode slots**: ps20 / "
+       "ps2b "
        "alu+tex of\nthe bumped envmap variant with a mask texture (the float row = no decode).\n\n"
     << "| encoding | stores | page error max | page error mean | clipped | frame error max | frame error mean | >1 "
        "code | llvmpipe ms (GL 3.3) | slots ps20 | slots ps2b |\n"
@@ -302,7 +307,8 @@ bool run(const BenchOptions &opt, std::string *md, std::string *err) {
     << "The same frame (fp16 lightmaps) at each tier, every draw with the variant the selection derives for it.\n"
     << "**slots**: the most expensive of those variants. **vs sm3**: against the sm3 frame; **vs reference**: against\n"
     << "sm3 in double precision from the float32 page (glue/scene/reference.h); the LDR row, as the encodings,\n"
-    << "without the alpha envmap masks, against sm3 LDR and the reference without them. **GL = C**: channels where llvmpipe\n"
+    << "without the alpha envmap masks, against sm3 LDR and the reference without them. **GL = C**: channels where "
+       "llvmpipe\n"
     << "(GL 3.3) and the C twins on GL's G-buffer differ.\n\n"
     << "| tier | what it does | variants | slots alu+tex | llvmpipe ms (GL 3.3) | llvmpipe ms (GLES 3.0) | C ms ("
     << cores << " thr) | vs sm3 max | vs sm3 mean | vs reference max | vs reference mean | GL = C |\n"
@@ -313,12 +319,13 @@ bool run(const BenchOptions &opt, std::string *md, std::string *err) {
              t.vs_ref.max, t.vs_ref.mean, t.gl_vs_c);
     o << b;
   }
-  snprintf(b, sizeof b,
-           "\nWhere ps20's difference from sm3 comes from: the scene's range fog, which ps20 drops, accounts for a max "
-           "of %.2f\ncodes (mean %.3f; sm3 with and without the fog); the rest, N.V from one shared inversesqrt instead "
-           "of two\nnormalisations, is rounding only: ps20 against sm3 without fog differs by a max of %.2f codes "
-           "(mean %.4f).\n",
-           fog_share.max, fog_share.mean, rest.max, rest.mean);
+  snprintf(
+      b, sizeof b,
+      "\nWhere ps20's difference from sm3 comes from: the scene's range fog, which ps20 drops, accounts for a max "
+      "of %.2f\ncodes (mean %.3f; sm3 with and without the fog); the rest, N.V from one shared inversesqrt instead "
+      "of two\nnormalisations, is rounding only: ps20 against sm3 without fog differs by a max of %.2f codes "
+      "(mean %.4f).\n",
+      fog_share.max, fog_share.mean, rest.max, rest.mean);
   o << b;
   *md = o.str();
   return true;
