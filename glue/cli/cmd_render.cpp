@@ -7,6 +7,7 @@
 #include <chrono>
 #include <cstdio>
 #include <thread>
+#include <vector>
 
 #include "cli/args.h"
 #include "conform/conform.h"
@@ -89,7 +90,7 @@ bool warm_frame_ms(const Scene &s, const SceneSelection &sel, const SceneRenderC
 const char kHelp[] = R"(usage: tiershade render SCENE.gltf [--tier ps20|ps2b|sm3] [--backend egl|osmesa|cpu]
                         [--api gles3|gles2|gl33] [--hdr integer|float] [--size WxH] -o OUT
                         [--check] [--compile-all] [--threads N] [--progress] [--quiet]
-                        [--dump-draws DIR]
+                        [--dump-draws DIR] [--frames N]
 Renders a glTF 2.0 scene (docs/scenes.md) with only the shader variants it needs and writes
 OUT.exr (the lit pass, RGBA32F as the shaders wrote it) and OUT.png (the final frame).
 Defaults: sm3, EGL surfaceless GLES 3.0 (OSMesa: GL 3.3), the scene's HDR path, 1280x720.
@@ -97,11 +98,15 @@ Defaults: sm3, EGL surfaceless GLES 3.0 (OSMesa: GL 3.3), the scene's HDR path, 
 --check: on GL, also shades GL's own G-buffer with the C twin and fails unless equal bit for bit.
 --compile-all: also compiles every combo of the families used, to measure what the selection saved.
 --dump-draws DIR: GL: writes the draws (geometry, uniform values, textures) and the lit frame, for
-a bare engine to replay with a shader bundle (docs/bundles.md; tests/bundle/bare_gl_render).)";
+a bare engine to replay with a shader bundle (docs/bundles.md; tests/bundle/bare_gl_render).
+--frames N: after the first frame (the one written), renders N more with the same renderer and
+prints their median ("median frame X ms", with the lit pass and post times): a scene's warm frame
+time on a backend, without the bench.)";
 
 int cmd_render(int argc, char **argv) {
   Args a("render", argc, argv, {"--help", "--check", "--quiet", "--progress", "--compile-all", "--report-memory"},
-         {"--tier", "--backend", "--api", "--hdr", "--size", "-o", "--threads", "--exposure-frames", "--dump-draws"});
+         {"--tier", "--backend", "--api", "--hdr", "--size", "-o", "--threads", "--exposure-frames", "--dump-draws",
+          "--frames"});
   if (a.help(kHelp)) return 0;
   if (a.positional().size() != 1) a.fail("expected one scene file (tiershade render SCENE.gltf -o OUT)");
   if (!a.has("-o")) a.fail("-o OUT is required");
@@ -126,13 +131,17 @@ int cmd_render(int argc, char **argv) {
   cfg.threads = a.get_int("--threads", 0, 0, 256);
   cfg.exposure_frames = a.get_int("--exposure-frames", cfg.exposure_frames, 1, 10000);
   cfg.check = a.flag("--check");
+  const int warm_frames = a.get_int("--frames", 0, 0, 10000);
+  if (warm_frames > 0 && cfg.check) a.fail("--frames times warm frames; --check compares one frame: use one or the other");
   if (cfg.check && cfg.backend == Backend::CPU) a.fail("--check compares GL with C: it needs a GL backend");
   if (a.has("--dump-draws") && cfg.backend == Backend::CPU)
     a.fail("--dump-draws captures GL draws: it needs a GL backend");
   DumpFrame dump;
   std::string dump_err;
+  bool first_frame = true;  // the draw dump captures the first frame only (--frames renders more)
   if (a.has("--dump-draws")) {
     cfg.on_draw = [&](const GlFns &gl, const PreparedScene &ps, const PreparedDraw &d, GLuint prog) {
+      if (!first_frame) return;
       DumpDraw dd;
       dd.shader = d.variant->shader->name;
       dd.variant = d.variant->name();
@@ -147,7 +156,9 @@ int cmd_render(int argc, char **argv) {
         dump_err = "uniform capture failed";
       dump.draws.push_back(std::move(dd));
     };
-    cfg.on_lit = [&](const ImageF &lit) { dump.rgba = lit.rgba; };
+    cfg.on_lit = [&](const ImageF &lit) {
+      if (first_frame) dump.rgba = lit.rgba;
+    };
   }
   const bool quiet = a.flag("--quiet");
   const bool show_progress = a.flag("--progress") || isatty(2);
@@ -190,9 +201,24 @@ int cmd_render(int argc, char **argv) {
     }
   }
   SceneRenderResult res;
-  if (!render_scene(scene, sel, cfg, &res, &err)) {
-    fprintf(stderr, "tiershade render: %s: %s\n", scene.path.c_str(), err.c_str());
-    return 1;
+  std::vector<double> warm_frame, warm_lit, warm_post;  // --frames: the warm frames' times
+  {
+    const auto t_init = Clock::now();
+    SceneRenderer renderer;
+    bool ok = renderer.init(scene, sel, cfg, &err) && renderer.frame(&res, &err);
+    res.frame_ms = std::chrono::duration<double, std::milli>(Clock::now() - t_init).count();  // init included
+    first_frame = false;
+    for (int i = 0; ok && i < warm_frames; ++i) {
+      SceneRenderResult warm;
+      ok = renderer.frame(&warm, &err);
+      warm_frame.push_back(warm.frame_ms);
+      warm_lit.push_back(warm.lit_ms);
+      warm_post.push_back(warm.post_ms);
+    }
+    if (!ok) {
+      fprintf(stderr, "tiershade render: %s: %s\n", scene.path.c_str(), err.c_str());
+      return 1;
+    }
   }
   const double total_ms = std::chrono::duration<double, std::milli>(Clock::now() - t0).count();
   if (a.has("--dump-draws")) {
@@ -260,6 +286,9 @@ int cmd_render(int argc, char **argv) {
     if (res.auto_exposure) printf("auto exposure: tone-map scale %.4f\n", res.tone_map_scale);
     printf("wrote %s.exr (lit pass) and %s.png\n", out.c_str(), out.c_str());
   }
+  if (warm_frames > 0)  // printed with --quiet too: it is what --frames asks for
+    printf("median frame %.2f ms (lit pass %.2f ms, post %.2f ms; median of %d warm frames at %dx%d)\n",
+           median(warm_frame), median(warm_lit), median(warm_post), warm_frames, cfg.w, cfg.h);
   if (!quiet || a.flag("--report-memory")) {
     printf("peak memory: %.1f MiB\n", peak_mib());
   }

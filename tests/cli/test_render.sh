@@ -102,4 +102,17 @@ run scenes/world_lighting.gltf --backend cpu --size 32x18 -o "$TMP/w"
 if [ "$RC" -eq 0 ] && grep -q 'is constant' "$OUT" && grep -q 'BUMPMAP=0: no \$bumpmap' "$OUT"; then
   pass "world: a constant envmap mask skips the fetch, a face without a normal map skips RNM"
 else fail "world: constant mask and flat faces" "status $RC: $(grep -m1 ENVMAPMASK "$OUT")"; fi
+# --- --frames N: the first frame is the one written, then N warm frames and their median ----
+bad "frames with check" 2 "--frames times warm frames" scenes/model_lighting.gltf --frames 2 --check -o "$TMP/o"
+bad "negative frames" 2 "--frames" scenes/model_lighting.gltf --frames -1 -o "$TMP/o"
+for b in egl cpu; do
+  run scenes/model_lighting.gltf --backend $b --size 48x27 --quiet -o "$TMP/f0"
+  run scenes/model_lighting.gltf --backend $b --size 48x27 --quiet --frames 3 -o "$TMP/f3"
+  if [ "$RC" -ne 0 ]; then fail "--frames 3 ($b)" "status $RC: $(head -n 2 "$ERR")"
+  elif ! grep -qE '^median frame [0-9.]+ ms \(lit pass [0-9.]+ ms, post [0-9.]+ ms; median of 3 warm frames' "$OUT"; then
+    fail "--frames 3 ($b)" "no median frame line: $(head -n 2 "$OUT")"
+  elif ! cmp -s "$TMP/f0.png" "$TMP/f3.png" || ! cmp -s "$TMP/f0.exr" "$TMP/f3.exr"; then
+    fail "--frames 3 ($b)" "the written frame differs from a render without --frames"
+  else pass "--frames 3 ($b): median line, the written frame unchanged"; fi
+done
 cli_finish
