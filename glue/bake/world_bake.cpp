@@ -250,6 +250,14 @@ TextureDesc encode_page(const WorldBakeInput &s, const WorldBake &b, int encodin
       ts_rgbe_texel(e, o);
       continue;
     }
+    if (encoding == kPageRgbeToHalf) {  // RGBE on disk, fp16 at run time (c * 2^e / 255 is exact in double)
+      ts_rgbe e;
+      ts_rgbe_encode(in, &e);
+      double d[3];
+      ts_rgbe_decode(e, d);
+      for (int c = 0; c < 3; ++c) o[c] = ts_half_quantize(static_cast<float>(d[c]));
+      continue;
+    }
     for (int c = 0; c < 3; ++c) {
       switch (encoding) {
         case WL_LM_FLOAT:

@@ -47,8 +47,12 @@ struct WorldBake {
 bool bake_world(const WorldBakeInput &s, WorldBake *out, std::string *err);
 
 // Lightmap encodings of the page for the shader (LIGHTMAP_ENCODING 0..3, -1 = float32
-// unquantised): what each run-time format stores, uploaded as RGBA32F holding exactly
-// those values. RGBE is sampled NEAREST (it does not filter), the others LINEAR.
+// unquantised, kPageRgbeToHalf): what each run-time format stores, uploaded as RGBA32F holding
+// exactly those values. RGBE is sampled NEAREST (it does not filter), the others LINEAR.
+// kPageRgbeToHalf: the page stored as RGBE (vrad's ColorRGBExp32), decoded at load and held as
+// fp16 ("stored in RGBE ... at run time stored in a 16-bit per channel format", fact sheet
+// section 2), for LIGHTMAP_ENCODING 0 (the float path), LINEAR: what the scene encoding "rgbe" runs.
+const int kPageRgbeToHalf = -2;
 TextureDesc encode_page(const WorldBakeInput &s, const WorldBake &b, int encoding);
 // The value a texel of that encoding decodes to (double), for error measurements.
 void decode_texel(int encoding, const float texel[4], double rgb[3]);

@@ -220,9 +220,9 @@ bool read_lightmaps(const tinygltf::Value &v, const std::string &place, const st
   if (v.Has("encoding")) {
     if (!read_string(v.Get("encoding"), place + ".encoding", &l->encoding, e)) return false;
     if (l->encoding != "float" && l->encoding != "412" && l->encoding != "ldr" && l->encoding != "rgbe" &&
-        l->encoding != "float32")
-      return e.fail(place + ".encoding",
-                    quoted(l->encoding) + " is not \"float\", \"412\", \"ldr\", \"rgbe\" or \"float32\"");
+        l->encoding != "float32" && l->encoding != "rgbe_shader")
+      return e.fail(place + ".encoding", quoted(l->encoding) +
+                                             " is not \"float\", \"412\", \"ldr\", \"rgbe\", \"rgbe_shader\" or \"float32\"");
   }
   if (v.Has("page")) {
     const tinygltf::Value &p = v.Get("page");

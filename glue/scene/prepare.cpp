@@ -503,7 +503,8 @@ bool prepare_scene(const Scene &s, const SceneSelection &sel, int w, int h, Api 
     const Variant &v = *c.variant;
     const int enc = v.value("LIGHTMAP_ENCODING");
     if (enc != encoding) {
-      page = encode_page(ws, bake, s.lightmaps.encoding == "float32" ? -1 : enc);
+      page = encode_page(ws, bake,
+                         s.lightmaps.encoding == "float32" ? -1 : s.lightmaps.encoding == "rgbe" ? kPageRgbeToHalf : enc);
       encoding = enc;
     }
     const int fi = face_of_draw[di];
