@@ -22,7 +22,7 @@ static const char kUsage[] =
     "  bench      measure accuracy against time and write docs/accuracy_cost.md\n"
     "  lut        colour-correction LUTs: inspect, bake from OpenColorIO, convert .cube <-> Source .raw\n"
     "  render     render a glTF scene with only the variants it needs (GL or the C fallback)\n"
-    "  bake       write a scene's lightmap page (EXR) for its extras.tiershade.lightmaps.image\n";
+    "  bake       bake a scene's lightmaps into a bake directory (page + manifest) for extras.tiershade.lightmaps.bake\n";
 
 int main(int argc, char **argv) {
   if (argc < 2 || !strcmp(argv[1], "--help") || !strcmp(argv[1], "-h") || !strcmp(argv[1], "help")) {

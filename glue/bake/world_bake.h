@@ -31,6 +31,10 @@ struct WorldBakeInput {
   // section 1), a regular grid over the luxel's footprint on the face, clipped to the face.
   int supersample = 2;
   BounceSettings bounce;  // interreflection (glue/bake/bounce.h); max_bounces 0: direct light only
+  // Checkpoints and progress (glue/bake/bounce.h BakeHooks, glue/bake/bake_dir.h): resume from a
+  // saved pass, a call after each finished pass (the direct one included), progress per face.
+  // They change no value: a resumed bake gives the same page bytes as an uninterrupted one.
+  const BakeHooks *hooks = nullptr;
 };
 
 // The baked lighting: the page in float32 (flat, b0, b1, b2 per face, borders filled),
@@ -43,6 +47,8 @@ struct WorldBake {
   BounceReport bounce;  // what the interreflection passes did
   long luxels = 0;  // luxel grid points of every face (each with 4 values)
   double direct_ms = 0, bounce_ms = 0;  // the direct pass (samples, shadow rays) and the bounces
+  long direct_rays = 0;  // shadow rays of the direct pass
+  int resumed_after = -1;  // the saved pass the bake resumed after (hooks->resume), -1: none
 };
 bool bake_world(const WorldBakeInput &s, WorldBake *out, std::string *err);
 
