@@ -137,8 +137,10 @@ if [ "$RC" -eq 0 ] && ! cmp -s "$TMP/swapped.exr" "$TMP/load_cpu.exr"; then pass
 else fail "the frame is rendered from DIR/page.exr" "status $RC, or the frame did not change: $(head -n 2 "$ERR")"; fi
 (cd "$HERE" && exec "$TS" bake "$TMP/wl/long.gltf" -o "$TMP/wl/killed.bake" > "$TMP/k1.out" 2>&1 < /dev/null) &
 kpid=$!
-for _ in $(seq 1 300); do [ -s "$TMP/wl/killed.bake.partial/pass.bin" ] && break; sleep 0.05; done
-sleep 1.5
+# Wait until the checkpoint holds bounce 1 or later (its pass number: the int32 at byte 20 of
+# pass.bin, bake_checkpoint.cpp), then kill during the next bounce.
+saved_pass() { od -An -t d4 -j 20 -N 4 "$TMP/wl/killed.bake.partial/pass.bin" 2> /dev/null | tr -d ' '; }
+for _ in $(seq 1 1200); do p=$(saved_pass); [ -n "$p" ] && [ "$p" -ge 1 ] && break; sleep 0.05; done
 if kill -0 $kpid 2> /dev/null; then
   kill -9 $kpid
   wait $kpid 2> /dev/null
@@ -146,6 +148,7 @@ if kill -0 $kpid 2> /dev/null; then
   elif [ ! -s "$TMP/wl/killed.bake.partial/pass.bin" ]; then fail "killed bake: a checkpoint" "no DIR.partial/pass.bin"
   else pass "killed bake: no DIR, a checkpoint in DIR.partial"; fi
   cp -r "$TMP/wl/killed.bake.partial" "$TMP/wl/other.bake.partial"
+  cp "$TMP/wl/killed.bake.partial/pass.bin" "$TMP/wl/saved_pass.bin"
   in_repo bake "$TMP/wl/long.gltf" -o "$TMP/wl/killed.bake"
   pass_n=$(sed -n 's/^resumed after pass \([0-9]*\).*/\1/p' "$OUT")
   if [ "$RC" -eq 0 ] && [ -n "$pass_n" ] && [ "$pass_n" -ge 1 ] && grep -q "(from the checkpoint)" "$OUT"; then
@@ -160,6 +163,13 @@ if kill -0 $kpid 2> /dev/null; then
   if [ "$RC" -eq 0 ] && grep -q "pass.bin: from a bake of another scene, settings or seed (its hash differs); discarded" "$OUT" &&
     ! grep -q "^resumed" "$OUT"; then pass "a checkpoint of another bake is discarded"
   else fail "a checkpoint of another bake is discarded" "status $RC: $(head -n 2 "$OUT")"; fi
+  # A torn checkpoint (cut short, as a full disk would leave it) is discarded too.
+  mkdir -p "$TMP/wl/torn.bake.partial"
+  head -c 100000 "$TMP/wl/saved_pass.bin" > "$TMP/wl/torn.bake.partial/pass.bin"
+  in_repo bake "$TMP/wl/one.gltf" -o "$TMP/wl/torn.bake"
+  if [ "$RC" -eq 0 ] && grep -q "pass.bin: torn or corrupt" "$OUT" && [ -s "$TMP/wl/torn.bake/page.exr" ]; then
+    pass "a torn checkpoint is discarded, the bake completes"
+  else fail "a torn checkpoint is discarded" "status $RC: $(head -n 2 "$OUT") $(head -n 2 "$ERR")"; fi
 else
   wait $kpid
   fail "killed bake" "the bake finished before it could be killed (it is too short on this machine)"
