@@ -4,6 +4,7 @@
 // alone (for extras.tiershade.lightmaps.image). Prints what it baked and why, and what it saved
 // against baking everything (docs/baking.md).
 #include <cstdio>
+#include <filesystem>
 #include <string>
 #include <vector>
 
@@ -24,6 +25,8 @@ faces' places, the settings, each pass's rays and time). Each finished pass is s
 a bake that was killed resumes from it; DIR appears only when the bake is complete. Name DIR in the
 scene's extras.tiershade.lightmaps.bake to render from it (a stale bake is refused). With a .exr
 name, writes the page alone (for extras.tiershade.lightmaps.image). docs/baking.md.)";
+
+namespace fs = std::filesystem;
 
 namespace {
 
@@ -115,6 +118,15 @@ int cmd_bake(int argc, char **argv) {
   const std::string out = a.get("-o");
   const bool page_only = out.size() > 4 && out.compare(out.size() - 4, 4, ".exr") == 0;
   if (out.empty()) a.fail("-o: empty name");
+  if (!page_only) {  // refused before the bake, not after it: DIR is absent or a previous bake directory
+    std::error_code ec;
+    const fs::file_status st = fs::symlink_status(out, ec);
+    if (fs::exists(st) && (!fs::is_directory(st) || !fs::is_regular_file(fs::path(out) / "manifest.json", ec))) {
+      fprintf(stderr, "tiershade bake: %s: exists and is not a previous bake directory (no manifest.json); refusing to "
+              "replace it\n", out.c_str());
+      return 1;
+    }
+  }
   Scene scene;
   std::string err;
   if (!load_scene(a.positional()[0], &scene, &err)) {

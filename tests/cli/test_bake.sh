@@ -37,6 +37,10 @@ expect() {  # name, expected status, stderr pattern, file that must not exist, a
 
 # --- bad command lines and scenes without a page --------------------------------------------
 expect "no -o" 2 "-o DIR is required" "$TMP/x.exr" bake scenes/world_lighting.gltf
+mkdir -p "$TMP/mine" && echo keep > "$TMP/mine/notes.txt"
+expect "-o DIR that is not a bake directory" 1 "mine: exists and is not a previous bake directory" "$TMP/mine.partial" \
+  bake scenes/world_lighting.gltf -o "$TMP/mine"
+[ -s "$TMP/mine/notes.txt" ] || fail "-o DIR that is not a bake directory" "the directory's file is gone"
 expect "no world faces" 1 "model_lighting.gltf: no LightmappedGeneric primitive" "$TMP/x.exr" \
   bake scenes/model_lighting.gltf -o "$TMP/x.exr"
 expect "missing scene" 1 "nope\.gltf" "$TMP/x.exr" bake "$TMP/nope.gltf" -o "$TMP/x.exr"
