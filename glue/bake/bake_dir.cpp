@@ -122,16 +122,21 @@ struct Progress {
       if (tty) fprintf(stderr, "\rbake: %s: %ld / %ld luxels (%.1f s)", pass.c_str(), done, total, s);
       return;
     }
-    if (tty || s > 2.0) fprintf(stderr, "%sbake: %s: %ld / %ld luxels (%.1f s)\n", tty ? "\r" : "", pass.c_str(), done,
-                                total, s);
+    if (tty || s > 2.0)
+      fprintf(stderr, "%sbake: %s: %ld / %ld luxels (%.1f s)\n", tty ? "\r" : "", pass.c_str(), done, total, s);
   }
 };
 
 json settings_json(double luxels_per_unit, int page_w, int page_h, int supersample, const BounceSettings &b,
                    int cube_size) {
-  return {{"luxels_per_unit", luxels_per_unit}, {"page", {page_w, page_h}}, {"supersample", supersample},
-          {"bounces", b.max_bounces},          {"gather_rays", b.gather_rays}, {"threshold", b.threshold},
-          {"seed", b.seed},                    {"cube_size", cube_size}};
+  return {{"luxels_per_unit", luxels_per_unit},
+          {"page", {page_w, page_h}},
+          {"supersample", supersample},
+          {"bounces", b.max_bounces},
+          {"gather_rays", b.gather_rays},
+          {"threshold", b.threshold},
+          {"seed", b.seed},
+          {"cube_size", cube_size}};
 }
 
 }  // namespace
@@ -198,12 +203,15 @@ bool write_bake_dir(const std::string &dir, const std::string &scene_name, const
   m["format"] = "tiershade bake";
   m["version"] = kManifestVersion;
   m["scene"] = scene_name;
-  m["hash"] = {{"all", hash_hex(sum.hash.all())},       {"geometry", hash_hex(sum.hash.geometry)},
+  m["hash"] = {{"all", hash_hex(sum.hash.all())},           {"geometry", hash_hex(sum.hash.geometry)},
                {"materials", hash_hex(sum.hash.materials)}, {"lights", hash_hex(sum.hash.lights)},
-               {"probes", hash_hex(sum.hash.probes)},   {"settings", hash_hex(sum.hash.settings)}};
-  m["page"] = {{"file", kPage}, {"width", sum.page_w}, {"height", sum.page_h},
+               {"probes", hash_hex(sum.hash.probes)},       {"settings", hash_hex(sum.hash.settings)}};
+  m["page"] = {{"file", kPage},
+               {"width", sum.page_w},
+               {"height", sum.page_h},
                {"texels", "RGBA float32, row 0 at the bottom; flat, b0, b1, b2 blocks per face (docs/baking.md)"}};
-  m["settings"] = settings_json(sum.luxels_per_unit, sum.page_w, sum.page_h, sum.supersample, sum.bounce, sum.cube_size);
+  m["settings"] =
+      settings_json(sum.luxels_per_unit, sum.page_w, sum.page_h, sum.supersample, sum.bounce, sum.cube_size);
   json faces = json::array();
   for (const BakeFace &f : sum.faces)
     faces.push_back({{"material", f.name},
@@ -224,12 +232,12 @@ bool write_bake_dir(const std::string &dir, const std::string &scene_name, const
                     {"ms", sum.direct_ms},
                     {"from_checkpoint", sum.resumed_after >= 0}});
   for (int k = 0; k < sum.report.passes && k < static_cast<int>(sum.report.pass_rays.size()); ++k)
-    passes.push_back({{"pass", "bounce " + std::to_string(k + 1)},
-                      {"rays", sum.report.pass_rays[static_cast<size_t>(k)]},
-                      {"ms", k < static_cast<int>(sum.report.pass_ms.size()) ? sum.report.pass_ms[static_cast<size_t>(k)]
-                                                                              : 0.0},
-                      {"largest_flat_added", sum.report.added[static_cast<size_t>(k)]},
-                      {"from_checkpoint", k + 1 <= sum.resumed_after}});
+    passes.push_back(
+        {{"pass", "bounce " + std::to_string(k + 1)},
+         {"rays", sum.report.pass_rays[static_cast<size_t>(k)]},
+         {"ms", k < static_cast<int>(sum.report.pass_ms.size()) ? sum.report.pass_ms[static_cast<size_t>(k)] : 0.0},
+         {"largest_flat_added", sum.report.added[static_cast<size_t>(k)]},
+         {"from_checkpoint", k + 1 <= sum.resumed_after}});
   m["passes"] = passes;
   m["resumed_after_pass"] = sum.resumed_after;
   m["luxels"] = sum.luxels;

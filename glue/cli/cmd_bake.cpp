@@ -77,7 +77,8 @@ std::vector<std::string> bake_report(const BakeSummary &s) {
   if (s.bounce.max_bounces == 0) {
     r.push_back("bounces 0: direct light only");
   } else {
-    snprintf(b, sizeof b, "%d of at most %d bounces (stopped when a pass adds < %.3g of the light so far), %d gather "
+    snprintf(b, sizeof b,
+             "%d of at most %d bounces (stopped when a pass adds < %.3g of the light so far), %d gather "
              "rays per value",
              s.report.passes, s.bounce.max_bounces, s.bounce.threshold, s.bounce.gather_rays);
     r.push_back(b);
@@ -122,8 +123,10 @@ int cmd_bake(int argc, char **argv) {
     std::error_code ec;
     const fs::file_status st = fs::symlink_status(out, ec);
     if (fs::exists(st) && (!fs::is_directory(st) || !fs::is_regular_file(fs::path(out) / "manifest.json", ec))) {
-      fprintf(stderr, "tiershade bake: %s: exists and is not a previous bake directory (no manifest.json); refusing to "
-              "replace it\n", out.c_str());
+      fprintf(stderr,
+              "tiershade bake: %s: exists and is not a previous bake directory (no manifest.json); refusing to "
+              "replace it\n",
+              out.c_str());
       return 1;
     }
   }

@@ -89,7 +89,8 @@ int cmd_light(int argc, char **argv) {
     const double q[3] = {at[0] - f.origin.x, at[1] - f.origin.y, at[2] - f.origin.z};
     const double fa = std::clamp(dot3(q, f.u) / f.su, 0.0, 1.0), fb = std::clamp(dot3(q, f.v) / f.sv, 0.0, 1.0);
     const ts_vec3d p = world_face_point(f, fa, fb);
-    const double d = std::sqrt((at[0] - p.x) * (at[0] - p.x) + (at[1] - p.y) * (at[1] - p.y) + (at[2] - p.z) * (at[2] - p.z));
+    const double d =
+        std::sqrt((at[0] - p.x) * (at[0] - p.x) + (at[1] - p.y) * (at[1] - p.y) + (at[2] - p.z) * (at[2] - p.z));
     if (best < 0 || d < best_d) {
       best = static_cast<int>(i);
       best_d = d;
