@@ -2,6 +2,7 @@
 #include "bake/bounce.h"
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <cstdint>
 
@@ -49,9 +50,16 @@ ts_vec3d luxel_exitant(const WorldFace &f, const LuxelGrid &g, double a, double 
 
 bool bounce_light(const std::vector<WorldFace> &faces, const std::vector<std::array<ts_vec3d, 3>> &bump,
                   const RayScene &rays, const BounceSettings &set, std::vector<LuxelGrid> *grids, BounceReport *report,
-                  std::string *err) {
+                  std::string *err, const BakeHooks *hooks, BakePassState *state) {
   *report = BounceReport();
   if (set.max_bounces <= 0) return true;
+  BakePassState own;
+  BakePassState &st = state ? *state : own;
+  const BakePassState *resume = hooks && hooks->resume && hooks->resume->pass > 0 ? hooks->resume : nullptr;
+  if (resume && resume->stopped) {  // every pass was saved: *grids is the result
+    *report = resume->report;
+    return true;
+  }
   if (grids->size() != faces.size()) {
     *err = "bounce: " + std::to_string(grids->size()) + " luxel grids for " + std::to_string(faces.size()) + " faces";
     return false;
@@ -61,7 +69,7 @@ bool bounce_light(const std::vector<WorldFace> &faces, const std::vector<std::ar
   // The radiance each face's luxels send into the next pass: emission + reflectivity x direct.
   std::vector<std::vector<ts_vec3d>> send(faces.size());
   double total = 0;  // the flat light of every luxel so far (r + g + b), for the stopping rule
-  for (size_t f = 0; f < faces.size(); ++f) {
+  for (size_t f = 0; !resume && f < faces.size(); ++f) {
     const LuxelGrid &g = (*grids)[f];
     send[f].resize(static_cast<size_t>(g.w) * g.h);
     for (int j = 0; j < g.h; ++j)
@@ -72,8 +80,18 @@ bool bounce_light(const std::vector<WorldFace> &faces, const std::vector<std::ar
             to_ts(to_glm(faces[f].emission) + to_glm(faces[f].reflectivity) * e);
       }
   }
+  if (resume) {  // after a saved bounce: what it sends, the sums so far
+    send = resume->send;
+    total = resume->total;
+    *report = resume->report;
+  }
+  long luxels_total = 0;
+  for (const LuxelGrid &g : *grids) luxels_total += static_cast<long>(g.w) * g.h;
   std::vector<LuxelGrid> added = *grids;
-  for (int pass = 1; pass <= set.max_bounces; ++pass) {
+  for (int pass = resume ? resume->pass + 1 : 1; pass <= set.max_bounces; ++pass) {
+    const auto t_pass = std::chrono::steady_clock::now();
+    const long rays_before = report->rays;
+    long luxels_done = 0;
     // Nothing sent (no light, or reflectivity 0 everywhere): no rays to trace.
     bool sends = false;
     for (const std::vector<ts_vec3d> &v : send)
@@ -84,6 +102,13 @@ bool bounce_light(const std::vector<WorldFace> &faces, const std::vector<std::ar
       const WorldFace &face = faces[f];
       const glm::dvec3 n = to_glm(world_face_normal(face));
       LuxelGrid &a = added[f];
+      if (face.reflectivity.x == 0 && face.reflectivity.y == 0 && face.reflectivity.z == 0) {
+        // A black face shows base x lightmap = 0 whatever it gathers, and reflects nothing: no rays.
+        std::fill(a.v.begin(), a.v.end(), ts_v3d(0, 0, 0));
+        report->skipped_black += static_cast<long>(a.w) * a.h;
+        luxels_done += static_cast<long>(a.w) * a.h;
+        continue;
+      }
       std::vector<long> rows_traced(static_cast<size_t>(a.h), 0);
       parallel_rows(a.h, set.threads, [&](int j) {
         long traced = 0;
@@ -124,6 +149,8 @@ bool bounce_light(const std::vector<WorldFace> &faces, const std::vector<std::ar
         rows_traced[static_cast<size_t>(j)] = traced;
       });
       for (long t : rows_traced) report->rays += t;
+      luxels_done += static_cast<long>(a.w) * a.h;
+      if (hooks && hooks->progress) hooks->progress("bounce " + std::to_string(pass), luxels_done, luxels_total);
     }
     // Add this pass, and send its flat light on (times the reflectivity) into the next.
     for (size_t f = 0; f < faces.size(); ++f) {
@@ -140,8 +167,21 @@ bool bounce_light(const std::vector<WorldFace> &faces, const std::vector<std::ar
     }
     report->passes = pass;
     report->added.push_back(pass_max);
+    report->pass_rays.push_back(report->rays - rays_before);
+    report->pass_ms.push_back(
+        std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t_pass).count());
     total += pass_sum;
-    if (pass_sum <= set.threshold * total) break;
+    const bool stop = pass_sum <= set.threshold * total;
+    if (hooks && hooks->on_pass) {  // the state pass + 1 starts from (a checkpoint)
+      st.pass = pass;
+      st.stopped = stop || pass == set.max_bounces;
+      st.grids = *grids;
+      st.send = send;
+      st.total = total;
+      st.report = *report;
+      if (!hooks->on_pass(st, err)) return false;
+    }
+    if (stop) break;
   }
   return true;
 }

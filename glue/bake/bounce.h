@@ -7,6 +7,7 @@
 #pragma once
 #include <array>
 #include <cstdint>
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -36,6 +37,30 @@ struct BounceReport {
   int passes = 0;  // bounces computed
   long rays = 0;
   std::vector<double> added;  // per pass: the largest flat value it added
+  std::vector<long> pass_rays;  // per pass: its gather rays
+  std::vector<double> pass_ms;  // per pass: its time (from the run that computed it)
+  long skipped_black = 0;  // luxels of faces of reflectivity 0 that gathered nothing (they show black)
+};
+
+// What the bake holds after a pass (0: the direct light; k: bounce k), all that pass k + 1 needs:
+// pass k + 1 depends on pass k's state alone (docs/baking.md, "Work units and checkpoints").
+struct BakePassState {
+  int pass = 0;  // passes done (0: direct only)
+  bool stopped = false;  // no pass follows (the threshold or the count was reached)
+  std::vector<LuxelGrid> grids;  // every value so far, per face
+  std::vector<std::vector<ts_vec3d>> send;  // bounces: the radiance each luxel sends into pass + 1
+  double total = 0;  // the flat light so far (the stopping rule's sum)
+  double direct_ms = 0;  // the direct pass (from the run that computed it)
+  long direct_rays = 0;
+  BounceReport report;  // the bounces so far
+};
+
+// Hooks of a bake (all optional): a state to resume from and a call after each finished pass
+// (checkpoints: glue/bake/bake_dir.h), progress after each face of a pass, on the calling thread.
+struct BakeHooks {
+  const BakePassState *resume = nullptr;  // bounce_light: start after resume->pass (grids given as *grids)
+  std::function<bool(const BakePassState &, std::string *)> on_pass;
+  std::function<void(const std::string &pass, long done, long total)> progress;
 };
 
 // The radiance face f leaves at (a, b) in [0, 1]^2: its emission + its reflectivity x the flat value,
@@ -47,4 +72,4 @@ ts_vec3d luxel_exitant(const WorldFace &f, const LuxelGrid &g, double a, double 
 // it occludes and reflects nothing). The faces' reflectivity and emission are WorldFace's.
 bool bounce_light(const std::vector<WorldFace> &faces, const std::vector<std::array<ts_vec3d, 3>> &bump,
                   const RayScene &rays, const BounceSettings &set, std::vector<LuxelGrid> *grids, BounceReport *report,
-                  std::string *err);
+                  std::string *err, const BakeHooks *hooks = nullptr, BakePassState *state = nullptr);

@@ -1,6 +1,8 @@
 // tiershade bake: the baker's Embree scene (ray_scene.h).
 #include "bake/ray_scene.h"
 
+#include "bake/content_hash.h"
+
 #include <embree3/rtcore.h>
 
 #include <glm/geometric.hpp>
@@ -62,6 +64,11 @@ bool RayScene::add_mesh(const std::vector<float> &position, const std::vector<ui
       *err = what + ": a vertex position is not finite";
       return false;
     }
+  ContentHash ch{hash_};
+  ch.value(id);
+  ch.values(position);
+  ch.values(indices);
+  hash_ = ch.h;
   RTCGeometry g = rtcNewGeometry(impl_->device, RTC_GEOMETRY_TYPE_TRIANGLE);
   auto *v = static_cast<float *>(
       rtcSetNewGeometryBuffer(g, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3, 3 * sizeof(float), nv));

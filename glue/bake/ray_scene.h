@@ -35,6 +35,9 @@ class RayScene {
   Hit intersect(const glm::dvec3 &origin, const glm::dvec3 &dir, double tnear, double tfar) const;
 
   long triangles() const { return triangles_; }
+  // A hash of every mesh added (ids, positions, indices, in order; glue/bake/content_hash.h): what
+  // the rays see, for the bake directory's staleness check (glue/bake/bake_dir.h).
+  uint64_t content_hash() const { return hash_; }
   ~RayScene();
   RayScene(const RayScene &) = delete;
   RayScene &operator=(const RayScene &) = delete;
@@ -43,4 +46,5 @@ class RayScene {
   struct Impl;
   Impl *impl_;
   long triangles_ = 0;
+  uint64_t hash_ = 0xcbf29ce484222325ull;
 };

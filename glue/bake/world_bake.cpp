@@ -23,7 +23,8 @@ int luxels(double len, double per_unit) { return std::max(2, static_cast<int>(st
 const double kRayOffset = 1e-4;
 
 // The lights that reach p: those it faces (n . L > 0) whose segment to p nothing blocks.
-void visible_lights(const WorldBakeInput &s, const glm::dvec3 &p, const glm::dvec3 &n, std::vector<rnm_light> *out) {
+void visible_lights(const WorldBakeInput &s, const glm::dvec3 &p, const glm::dvec3 &n, std::vector<rnm_light> *out,
+                    long *rays = nullptr) {
   out->clear();
   for (const rnm_light &l : s.lights) {
     const glm::dvec3 to = l.directional ? -to_glm(l.dir) : to_glm(l.pos) - p;
@@ -31,6 +32,7 @@ void visible_lights(const WorldBakeInput &s, const glm::dvec3 &p, const glm::dve
     const glm::dvec3 o = p + n * kRayOffset;
     const glm::dvec3 d = l.directional ? to : to_glm(l.pos) - o;
     // Point and spot lights: the segment up to the light (t < 1); a sun: the whole ray.
+    if (rays) ++*rays;
     if (s.rays && s.rays->occluded(o, d, 0.0, l.directional ? INFINITY : 1.0 - 1e-9)) continue;
     out->push_back(l);
   }
@@ -38,8 +40,8 @@ void visible_lights(const WorldBakeInput &s, const glm::dvec3 &p, const glm::dve
 
 // The four values (flat, b0, b1, b2) at p with visibility.
 int lit_values(const WorldBakeInput &s, const glm::dvec3 &p, ts_vec3d n, const ts_vec3d bump[3], ts_vec3d v4[4],
-               std::vector<rnm_light> *scratch, char *msg, size_t len) {
-  visible_lights(s, p, to_glm(n), scratch);
+               std::vector<rnm_light> *scratch, char *msg, size_t len, long *rays = nullptr) {
+  visible_lights(s, p, to_glm(n), scratch, rays);
   return rnm_bake_texel(to_ts(p), n, bump, scratch->data(), static_cast<int>(scratch->size()), v4, msg, len);
 }
 
@@ -108,7 +110,22 @@ bool bake_world(const WorldBakeInput &in, WorldBake *out, std::string *err) {
   using Clock = std::chrono::steady_clock;
   const auto t_direct = Clock::now();
   for (const LuxelGrid &g : grids) out->luxels += static_cast<long>(g.w) * g.h;
-  for (size_t fi = 0; bake_luxels && fi < s.faces.size(); ++fi) {
+  // A saved pass to resume from (checkpoints, glue/bake/bake_dir.h): its grids, no direct pass.
+  const BakePassState *resume = bake_luxels && s.hooks ? s.hooks->resume : nullptr;
+  if (resume) {
+    bool fits = resume->grids.size() == grids.size();
+    for (size_t fi = 0; fits && fi < grids.size(); ++fi)
+      fits = resume->grids[fi].w == grids[fi].w && resume->grids[fi].h == grids[fi].h &&
+          resume->grids[fi].v.size() == grids[fi].v.size();
+    if (!fits) {
+      *err = "the saved pass to resume from does not fit the faces' luxel grids";
+      return false;
+    }
+    grids = resume->grids;
+    out->resumed_after = resume->pass;
+  }
+  long luxels_done = 0;
+  for (size_t fi = 0; bake_luxels && !resume && fi < s.faces.size(); ++fi) {
     const WorldFace &f = s.faces[fi];
     const ts_vec3d n = world_face_normal(f);
     {  // every light checked once per face (a bad light is an error naming the face)
@@ -131,8 +148,8 @@ bool bake_world(const WorldBakeInput &in, WorldBake *out, std::string *err) {
             const double a = std::clamp((i + (si + 0.5) / ss - 0.5) / (g.w - 1), 0.0, 1.0);
             const double b = std::clamp((j + (sj + 0.5) / ss - 0.5) / (g.h - 1), 0.0, 1.0);
             ts_vec3d s4[4];
-            if (lit_values(s, to_glm(world_face_sample(f, a, b)), n, bump[fi].data(), s4, &scratch, msg, sizeof msg) !=
-                0) {
+            if (lit_values(s, to_glm(world_face_sample(f, a, b)), n, bump[fi].data(), s4, &scratch, msg, sizeof msg,
+                           &out->direct_rays) != 0) {
               *err = std::string(f.name) + ": " + msg;
               return false;
             }
@@ -141,12 +158,24 @@ bool bake_world(const WorldBakeInput &in, WorldBake *out, std::string *err) {
         for (int k = 0; k < 4; ++k) g.at(i, j, k) = to_ts(v4[k] / static_cast<double>(ss * ss));
       }
     }
+    luxels_done += static_cast<long>(g.w) * g.h;
+    if (s.hooks && s.hooks->progress) s.hooks->progress("direct", luxels_done, out->luxels);
   }
   // The interreflected light (glue/bake/bounce.h), then the page.
   const auto t_bounce = Clock::now();
   out->direct_ms = std::chrono::duration<double, std::milli>(t_bounce - t_direct).count();
   if (bake_luxels) {
-    if (!bounce_light(s.faces, bump, *s.rays, s.bounce, &grids, &out->bounce, err)) return false;
+    BakePassState state;  // the direct pass: a state of its own (pass 0), saved before the bounces
+    state.direct_ms = resume ? resume->direct_ms : out->direct_ms;
+    state.direct_rays = resume ? resume->direct_rays : out->direct_rays;
+    out->direct_ms = state.direct_ms;
+    out->direct_rays = state.direct_rays;
+    if (!resume && s.hooks && s.hooks->on_pass) {
+      state.stopped = s.bounce.max_bounces <= 0;
+      state.grids = grids;
+      if (!s.hooks->on_pass(state, err)) return false;
+    }
+    if (!bounce_light(s.faces, bump, *s.rays, s.bounce, &grids, &out->bounce, err, s.hooks, &state)) return false;
     out->bounce_ms = std::chrono::duration<double, std::milli>(Clock::now() - t_bounce).count();
     for (size_t fi = 0; fi < s.faces.size(); ++fi) {
       const LuxelGrid &g = grids[fi];
@@ -248,6 +277,14 @@ TextureDesc encode_page(const WorldBakeInput &s, const WorldBake &b, int encodin
       ts_rgbe e;
       ts_rgbe_encode(in, &e);  // the page is finite (the baker refuses anything else)
       ts_rgbe_texel(e, o);
+      continue;
+    }
+    if (encoding == kPageRgbeToHalf) {  // RGBE on disk, fp16 at run time (c * 2^e / 255 is exact in double)
+      ts_rgbe e;
+      ts_rgbe_encode(in, &e);
+      double d[3];
+      ts_rgbe_decode(e, d);
+      for (int c = 0; c < 3; ++c) o[c] = ts_half_quantize(static_cast<float>(d[c]));
       continue;
     }
     for (int c = 0; c < 3; ++c) {

@@ -31,6 +31,10 @@ struct WorldBakeInput {
   // section 1), a regular grid over the luxel's footprint on the face, clipped to the face.
   int supersample = 2;
   BounceSettings bounce;  // interreflection (glue/bake/bounce.h); max_bounces 0: direct light only
+  // Checkpoints and progress (glue/bake/bounce.h BakeHooks, glue/bake/bake_dir.h): resume from a
+  // saved pass, a call after each finished pass (the direct one included), progress per face.
+  // They change no value: a resumed bake gives the same page bytes as an uninterrupted one.
+  const BakeHooks *hooks = nullptr;
 };
 
 // The baked lighting: the page in float32 (flat, b0, b1, b2 per face, borders filled),
@@ -43,12 +47,18 @@ struct WorldBake {
   BounceReport bounce;  // what the interreflection passes did
   long luxels = 0;  // luxel grid points of every face (each with 4 values)
   double direct_ms = 0, bounce_ms = 0;  // the direct pass (samples, shadow rays) and the bounces
+  long direct_rays = 0;  // shadow rays of the direct pass
+  int resumed_after = -1;  // the saved pass the bake resumed after (hooks->resume), -1: none
 };
 bool bake_world(const WorldBakeInput &s, WorldBake *out, std::string *err);
 
 // Lightmap encodings of the page for the shader (LIGHTMAP_ENCODING 0..3, -1 = float32
-// unquantised): what each run-time format stores, uploaded as RGBA32F holding exactly
-// those values. RGBE is sampled NEAREST (it does not filter), the others LINEAR.
+// unquantised, kPageRgbeToHalf): what each run-time format stores, uploaded as RGBA32F holding
+// exactly those values. RGBE is sampled NEAREST (it does not filter), the others LINEAR.
+// kPageRgbeToHalf: the page stored as RGBE (vrad's ColorRGBExp32), decoded at load and held as
+// fp16 ("stored in RGBE ... at run time stored in a 16-bit per channel format", fact sheet
+// section 2), for LIGHTMAP_ENCODING 0 (the float path), LINEAR: what the scene encoding "rgbe" runs.
+const int kPageRgbeToHalf = -2;
 TextureDesc encode_page(const WorldBakeInput &s, const WorldBake &b, int encoding);
 // The value a texel of that encoding decodes to (double), for error measurements.
 void decode_texel(int encoding, const float texel[4], double rgb[3]);

@@ -199,7 +199,8 @@ bool run(const BenchOptions &opt, std::string *md, std::string *err) {
       {"fp16", "float", WL_LM_FLOAT, "half float (RGBA16F, filterable where half floats are)"},
       {"4.12", "412", WL_LM_412, "16-bit unorm of radiance / 16, range [0, 16)"},
       {"LDR", "ldr", WL_LM_LDR, "8-bit, 0.5 radiance^(1/2.2), range [0, 4.59]"},
-      {"RGBE", "rgbe", WL_LM_RGBE, "ColorRGBExp32 (8-bit mantissas, shared exponent), NEAREST"},
+      {"RGBE", "rgbe_shader", WL_LM_RGBE, "ColorRGBExp32 (8-bit mantissas, shared exponent), decoded in the shader, NEAREST"},
+      {"RGBE->fp16", "rgbe", WL_LM_FLOAT, "ColorRGBExp32 on disk, decoded at load to half float, LINEAR (Source's run time)"},
   };
   ImageF ref32;
   if (!c_frame(room_as(unmasked, "float32"), Tier::SM3, &ref32)) return false;

@@ -44,5 +44,6 @@ int cmd_demo(int argc, char **argv);
 int cmd_bench(int argc, char **argv);
 int cmd_render(int argc, char **argv);
 int cmd_bake(int argc, char **argv);
+int cmd_light(int argc, char **argv);
 int cmd_fold(int argc, char **argv);
 int cmd_lut(int argc, char **argv);

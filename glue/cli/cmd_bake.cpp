@@ -1,42 +1,150 @@
-// tiershade cli: `bake` subcommand: writes the lightmap page of a scene's LightmappedGeneric faces
-// (radiosity-normal-mapped, c_ref/offline/rnm_bake.c, laid out by c_ref/offline/lightmap_page.c) as a float32
-// EXR, the page `tiershade render` bakes at load. A scene names such a page in
-// extras.tiershade.lightmaps.image to skip the bake, or to bring lightmaps baked elsewhere
-// in the same layout (docs/scenes.md, "Lightmap pages").
+// tiershade cli: `bake` subcommand: bakes a scene's LightmappedGeneric faces (glue/bake/) and writes
+// the bake directory (glue/bake/bake_dir.h: page.exr + manifest.json, atomically, each finished pass
+// checkpointed in DIR.partial so that a killed bake resumes), or, with -o PAGE.exr, the float32 page
+// alone (for extras.tiershade.lightmaps.image). Prints what it baked and why, and what it saved
+// against baking everything (docs/baking.md).
 #include <cstdio>
+#include <filesystem>
+#include <string>
+#include <vector>
 
-#include "cli/args.h"
 #include "base/image.h"
+#include "cli/args.h"
 #include "io/exr.h"
+#include "scene/prepare.h"
 #include "scene/scene.h"
 #include "scene/selection.h"
-#include "scene/prepare.h"
 
 // `tiershade bake --help`.
-const char kHelp[] = R"(usage: tiershade bake SCENE.gltf -o PAGE.exr
-Bakes the scene's lightmap page (flat and three RNM lightmaps per LightmappedGeneric face, from
-its lights) and writes it as RGBA float32 EXR, rows as GL texture rows (row 0 at the bottom).
-Name it in the scene's extras.tiershade.lightmaps.image to render without baking (docs/scenes.md).)";
+const char kHelp[] = R"(usage: tiershade bake SCENE.gltf -o DIR
+       tiershade bake SCENE.gltf -o PAGE.exr
+Bakes the scene's lightmaps (flat and three RNM lightmaps per LightmappedGeneric face: direct light
+with shadows, then extras.tiershade.lightmaps.bounces bounces) and writes the bake directory DIR:
+page.exr (RGBA float32, rows as GL texture rows) and manifest.json (the scene's content hash, the
+faces' places, the settings, each pass's rays and time). Each finished pass is saved in DIR.partial:
+a bake that was killed resumes from it; DIR appears only when the bake is complete. Name DIR in the
+scene's extras.tiershade.lightmaps.bake to render from it (a stale bake is refused). With a .exr
+name, writes the page alone (for extras.tiershade.lightmaps.image). docs/baking.md.)";
+
+namespace fs = std::filesystem;
+
+namespace {
+
+std::string base_name(const std::string &p) {
+  const size_t s = p.find_last_of('/');
+  return s == std::string::npos ? p : p.substr(s + 1);
+}
+
+// What was baked and why, and the rays and time saved against baking everything (every face with
+// four gathered values, every pass): the lines of the report and of the manifest's "baked".
+std::vector<std::string> bake_report(const BakeSummary &s) {
+  std::vector<std::string> r;
+  int bumped = 0, flat = 0, black = 0;
+  long flat_luxels = 0, black_luxels = 0;
+  for (const BakeFace &f : s.faces) {
+    const long n = static_cast<long>(f.luxels_w) * f.luxels_h;
+    const bool is_black = f.face.reflectivity.x == 0 && f.face.reflectivity.y == 0 && f.face.reflectivity.z == 0;
+    if (f.face.bumped) {
+      ++bumped;
+    } else {
+      ++flat;
+      flat_luxels += n;
+    }
+    if (is_black) {
+      ++black;
+      black_luxels += n;
+    }
+  }
+  char b[400];
+  snprintf(b, sizeof b, "%zu faces, %ld luxels on a %d x %d page (%.3g luxels per unit)", s.faces.size(), s.luxels,
+           s.page_w, s.page_h, s.luxels_per_unit);
+  r.push_back(b);
+  snprintf(b, sizeof b,
+           "%d faces with a normal map: 4 values each (flat, b0, b1, b2); %d without: the flat value gathered alone "
+           "(%ld luxels; their shader reads the flat lightmap only)",
+           bumped, flat, flat_luxels);
+  r.push_back(b);
+  snprintf(b, sizeof b, "direct: %d lights, %ld shadow rays (%d x %d samples per luxel)", s.lights, s.direct_rays,
+           s.supersample, s.supersample);
+  r.push_back(b);
+  r.push_back("no sky in the scene: no sky rays");
+  if (black)
+    snprintf(b, sizeof b, "%d faces of reflectivity 0: no bounce rays (%ld luxels; they show black)", black,
+             black_luxels);
+  else
+    snprintf(b, sizeof b, "no face of reflectivity 0: every face gathers its bounces");
+  r.push_back(b);
+  if (s.bounce.max_bounces == 0) {
+    r.push_back("bounces 0: direct light only");
+  } else {
+    snprintf(b, sizeof b,
+             "%d of at most %d bounces (stopped when a pass adds < %.3g of the light so far), %d gather "
+             "rays per value",
+             s.report.passes, s.bounce.max_bounces, s.bounce.threshold, s.bounce.gather_rays);
+    r.push_back(b);
+  }
+  snprintf(b, sizeof b, "%d probe cube maps of %d x %d texels rendered from the bake", s.probes, s.cube_size,
+           s.cube_size);
+  r.push_back(b);
+  // Baking everything: every luxel gathers 4 values of m rays in every pass (some fall behind the face
+  // and are not traced: this is an upper bound of what the bake would trace).
+  const int side = [&] {
+    int k = 1;
+    while (k * k < s.bounce.gather_rays) ++k;
+    return k;
+  }();
+  const long m = static_cast<long>(side) * side;
+  const long everything = s.luxels * 4 * m * s.report.passes;
+  double ms = 0;
+  for (double t : s.report.pass_ms) ms += t;
+  if (s.report.passes > 0 && s.report.rays > 0) {
+    const double saved = static_cast<double>(everything - s.report.rays);
+    snprintf(b, sizeof b,
+             "saved against baking everything (every face bumped and gathering, %ld rays): %.0f gather rays "
+             "(%.0f%%), about %.0f ms at this bake's %.2f Mrays/s",
+             everything, saved, 100.0 * saved / static_cast<double>(everything),
+             ms > 0 ? saved * ms / static_cast<double>(s.report.rays) : 0.0, ms > 0 ? s.report.rays / ms / 1e3 : 0.0);
+    r.push_back(b);
+  }
+  return r;
+}
+
+}  // namespace
 
 int cmd_bake(int argc, char **argv) {
   Args a("bake", argc, argv, {"--help"}, {"-o"});
   if (a.help(kHelp)) return 0;
-  if (a.positional().size() != 1) a.fail("expected one scene file (tiershade bake SCENE.gltf -o PAGE.exr)");
-  if (!a.has("-o")) a.fail("-o PAGE.exr is required");
+  if (a.positional().size() != 1) a.fail("expected one scene file (tiershade bake SCENE.gltf -o DIR)");
+  if (!a.has("-o")) a.fail("-o DIR is required (the bake directory; or -o PAGE.exr for the page alone)");
   const std::string out = a.get("-o");
-  if (out.size() <= 4 || out.compare(out.size() - 4, 4, ".exr") != 0) a.fail("-o '" + out + "': expected a .exr file");
+  const bool page_only = out.size() > 4 && out.compare(out.size() - 4, 4, ".exr") == 0;
+  if (out.empty()) a.fail("-o: empty name");
+  if (!page_only) {  // refused before the bake, not after it: DIR is absent or a previous bake directory
+    std::error_code ec;
+    const fs::file_status st = fs::symlink_status(out, ec);
+    if (fs::exists(st) && (!fs::is_directory(st) || !fs::is_regular_file(fs::path(out) / "manifest.json", ec))) {
+      fprintf(stderr,
+              "tiershade bake: %s: exists and is not a previous bake directory (no manifest.json); refusing to "
+              "replace it\n",
+              out.c_str());
+      return 1;
+    }
+  }
   Scene scene;
   std::string err;
   if (!load_scene(a.positional()[0], &scene, &err)) {
     fprintf(stderr, "tiershade bake: %s\n", err.c_str());
     return 1;
   }
-  if (!scene.lightmaps.image.empty()) {  // bake from the lights all the same
+  if (!scene.lightmaps.image.empty() || !scene.lightmaps.bake.empty()) {  // bake from the lights all the same
     printf("note: %s reads its page from %s; this bakes the page from the scene's lights\n", scene.path.c_str(),
-           scene.lightmaps.image.c_str());
+           scene.lightmaps.image.empty() ? scene.lightmaps.bake.c_str() : scene.lightmaps.image.c_str());
     scene.lightmaps.image.clear();
     scene.lightmaps.image_rgba.clear();
+    scene.lightmaps.bake.clear();
   }
+  if (!page_only) scene.lightmaps.bake_checkpoint = out;
+  scene.lightmaps.bake_progress = true;
   SceneSelection sel;
   PreparedScene ps;
   // The page does not depend on the tier or the frame size: faces, density and page size only.
@@ -50,14 +158,33 @@ int cmd_bake(int argc, char **argv) {
             scene.path.c_str());
     return 1;
   }
-  ImageF img;
-  img.w = ps.lightmap_w;
-  img.h = ps.lightmap_h;
-  img.rgba = ps.lightmap_page;
-  if (!write_exr(out, img, &err)) {
+  const BakeSummary &sum = ps.bake_summary;
+  if (!sum.resume_note.empty()) printf("note: %s\n", sum.resume_note.c_str());
+  if (sum.resumed_after >= 0)
+    printf("resumed after pass %d (%s) from %s: the finished passes were not baked again\n", sum.resumed_after,
+           sum.resumed_after == 0 ? "direct" : ("bounce " + std::to_string(sum.resumed_after)).c_str(),
+           bake_checkpoint_dir(out).c_str());
+  const std::vector<std::string> why = bake_report(sum);
+  if (page_only) {
+    ImageF img;
+    img.w = ps.lightmap_w;
+    img.h = ps.lightmap_h;
+    img.rgba = ps.lightmap_page;
+    if (!write_exr(out, img, &err)) {
+      fprintf(stderr, "tiershade bake: %s\n", err.c_str());
+      return 1;
+    }
+  } else if (!write_bake_dir(out, base_name(scene.path), sum, ps.lightmap_page, why, &err)) {
     fprintf(stderr, "tiershade bake: %s\n", err.c_str());
     return 1;
   }
-  printf("wrote %s: %d x %d lightmap page, %.1f ms to bake\n", out.c_str(), img.w, img.h, ps.bake_ms);
+  for (const std::string &l : why) printf("baked: %s\n", l.c_str());
+  printf("direct: %ld shadow rays, %.1f ms\n", sum.direct_rays, sum.direct_ms);
+  for (size_t k = 0; k < sum.report.pass_rays.size(); ++k)
+    printf("bounce %zu: %ld gather rays, %.1f ms%s\n", k + 1, sum.report.pass_rays[k],
+           k < sum.report.pass_ms.size() ? sum.report.pass_ms[k] : 0.0,
+           static_cast<int>(k) + 1 <= sum.resumed_after ? " (from the checkpoint)" : "");
+  printf("wrote %s: %d x %d lightmap page%s, %.1f ms to bake\n", out.c_str(), ps.lightmap_w, ps.lightmap_h,
+         page_only ? "" : " and manifest.json", ps.bake_ms);
   return 0;
 }

@@ -183,6 +183,7 @@ int cmd_render(int argc, char **argv) {
     fprintf(stderr, "tiershade render: %s\n", err.c_str());
     return 1;
   }
+  scene.lightmaps.bake_progress = !quiet;  // a long bake at load shows its passes (docs/baking.md)
   SceneSelection sel;
   if (!select_scene_variants(scene, tier, hdr, &sel, &err)) {
     fprintf(stderr, "tiershade render: %s: %s\n", scene.path.c_str(), err.c_str());

@@ -206,7 +206,7 @@ bool read_hdr_settings(const tinygltf::Value &v, const std::string &place, const
 
 bool read_lightmaps(const tinygltf::Value &v, const std::string &place, const std::string &dir, SceneLightmaps *l,
                     Err &e) {
-  if (!check_keys(v, place, {"luxels_per_unit", "encoding", "page", "image", "bounces", "gather_rays", "supersample", "seed"}, e))
+  if (!check_keys(v, place, {"luxels_per_unit", "encoding", "page", "image", "bounces", "gather_rays", "supersample", "seed", "bake"}, e))
     return false;
   if (v.Has("bounces") && !read_int(v.Get("bounces"), place + ".bounces", 0, 100, &l->bounces, e)) return false;
   if (v.Has("seed") && !read_int(v.Get("seed"), place + ".seed", 0, 1 << 30, &l->seed, e)) return false;
@@ -220,9 +220,9 @@ bool read_lightmaps(const tinygltf::Value &v, const std::string &place, const st
   if (v.Has("encoding")) {
     if (!read_string(v.Get("encoding"), place + ".encoding", &l->encoding, e)) return false;
     if (l->encoding != "float" && l->encoding != "412" && l->encoding != "ldr" && l->encoding != "rgbe" &&
-        l->encoding != "float32")
-      return e.fail(place + ".encoding",
-                    quoted(l->encoding) + " is not \"float\", \"412\", \"ldr\", \"rgbe\" or \"float32\"");
+        l->encoding != "float32" && l->encoding != "rgbe_shader")
+      return e.fail(place + ".encoding", quoted(l->encoding) +
+                                             " is not \"float\", \"412\", \"ldr\", \"rgbe\", \"rgbe_shader\" or \"float32\"");
   }
   if (v.Has("page")) {
     const tinygltf::Value &p = v.Get("page");
@@ -267,6 +267,12 @@ bool read_lightmaps(const tinygltf::Value &v, const std::string &place, const st
     l->page_h = img.h;
     l->image = path;
     l->image_rgba = std::move(img.rgba);
+  }
+  if (v.Has("bake")) {  // a bake directory (docs/baking.md): checked against the scene when prepared
+    std::string rel;
+    if (!read_string(v.Get("bake"), place + ".bake", &rel, e)) return false;
+    if (v.Has("image")) return e.fail(place + ".bake", "give \"bake\" or \"image\", not both");
+    l->bake = join_path(dir, rel);
   }
   return true;
 }

@@ -386,6 +386,7 @@ bool prepare_scene(const Scene &s, const SceneSelection &sel, int w, int h, Api 
   std::vector<int> face_of_draw(sel.draws.size(), -1);
   std::vector<std::array<double, 4>> face_frame;  // min a, min b (projection offsets)
   std::vector<int> world_probe_index(s.probes.size(), -1);
+  std::vector<std::string> face_where;  // each face's primitive, for the bake directory
   for (size_t di = 0; di < sel.draws.size(); ++di) {
     const SceneDrawChoice &c = sel.draws[di];
     if (c.family != "world_lighting") continue;
@@ -405,6 +406,7 @@ bool prepare_scene(const Scene &s, const SceneSelection &sel, int w, int h, Api 
     f.reflectivity = ts_v3d(base.x, base.y, base.z);
     f.emission = ts_v3d(emit.x, emit.y, emit.z);
     f.bumped = m.normal_texture.image >= 0;  // BUMPMAP 0 samples the flat lightmap alone
+    face_where.push_back(p.where);
     face_of_draw[di] = static_cast<int>(ws.faces.size());
     ws.faces.push_back(f);
     face_frame.push_back({frame_min[0], frame_min[1], 0, 0});
@@ -463,7 +465,8 @@ bool prepare_scene(const Scene &s, const SceneSelection &sel, int w, int h, Api 
       return false;
     }
     ws.rays = &rays;
-    if (!bake_world(ws, &bake, err)) {
+    const BakeDirUse use{s.lightmaps.bake, s.lightmaps.bake_checkpoint, s.lightmaps.bake_progress};
+    if (!bake_world_dir(use, ws, face_where, &bake, &ps.bake_summary, err)) {
       *err = s.path + ": lightmap bake: " + *err;
       return false;
     }
@@ -503,7 +506,8 @@ bool prepare_scene(const Scene &s, const SceneSelection &sel, int w, int h, Api 
     const Variant &v = *c.variant;
     const int enc = v.value("LIGHTMAP_ENCODING");
     if (enc != encoding) {
-      page = encode_page(ws, bake, s.lightmaps.encoding == "float32" ? -1 : enc);
+      page = encode_page(ws, bake,
+                         s.lightmaps.encoding == "float32" ? -1 : s.lightmaps.encoding == "rgbe" ? kPageRgbeToHalf : enc);
       encoding = enc;
     }
     const int fi = face_of_draw[di];

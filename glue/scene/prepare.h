@@ -12,6 +12,7 @@
 #include "scene/scene.h"
 #include "scene/selection.h"
 #include "math/ts_math.h"
+#include "bake/bake_dir.h"
 #include "offline/lightmap_page.h"
 
 struct PreparedDraw {
@@ -52,6 +53,7 @@ struct PreparedScene {
   long bake_luxels = 0, bake_gather_rays = 0;
   int bake_passes = 0;
   double bake_direct_ms = 0, bake_bounce_ms = 0;
+  BakeSummary bake_summary;  // what the bake was (glue/bake/bake_dir.h): hash, faces, passes
   std::vector<std::string> notes;
 };
 

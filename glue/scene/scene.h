@@ -161,6 +161,13 @@ struct SceneLightmaps {
   // bottom (GL texture rows), alpha 1; finite and >= 0 (checked at load).
   std::string image;
   std::vector<float> image_rgba;
+  // "bake": a bake directory (`tiershade bake SCENE -o DIR`, relative to the scene file) to render
+  // from; its manifest's hash must match the scene (a stale bake is refused; docs/baking.md).
+  std::string bake;
+  // Set by `tiershade bake -o DIR` (not a scene key): the bake checkpoints into DIR.partial and
+  // resumes from it; progress: a progress line on stderr.
+  std::string bake_checkpoint;
+  bool bake_progress = false;
 };
 
 // Range fog ("fog" in the scene's extras) on World draws, as Source's pixel fog: f = saturate(min(max_density,

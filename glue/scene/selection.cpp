@@ -130,6 +130,10 @@ void world_choice(const Scene &s, const SceneMaterial &m, Wanted *w, SceneDrawCh
   for (int i = 0; i < 4; ++i)
     if (s.lightmaps.encoding == kEnc[i]) enc = i;
   if (s.lightmaps.encoding == "float32") enc = 0;  // the float path, fed the unquantised page
+  // "rgbe": stored RGBE, decoded at load to fp16 and sampled LINEAR (Source's run-time 16-bit format, fact
+  // sheet section 2): the float path; "rgbe_shader": RGBE texels decoded in the shader, NEAREST.
+  if (s.lightmaps.encoding == "rgbe") enc = 0;
+  if (s.lightmaps.encoding == "rgbe_shader") enc = 3;
   w->set("LIGHTMAP_ENCODING", enc, "the scene's lightmap encoding \"" + s.lightmaps.encoding + "\"");
   const bool env = m.envmap && !s.probes.empty();
   w->set("ENVMAP", env ? 1 : 0,
