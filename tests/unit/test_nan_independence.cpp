@@ -13,6 +13,7 @@
 // Tolerance: |a - b| <= 2^-20 max(1, |a|) per channel. The two models differ on finite inputs only
 // in pow(0, y), 0 against 2^(-127 y): for the y the shaders use (>= 1/2.4) that is below 2^-52, times
 // colours up to 65504 (2^16), far below 2^-20. Any NaN in an output fails.
+// Also: world_lighting's sm3 fast path and ps2b agree on Inf/NaN cube texels (check_cube_fast_path).
 //
 // Usage: build/tests/test_nan_independence   Prints PASS/FAIL lines and "N passed, N failed".
 #include <cmath>
@@ -112,6 +113,52 @@ void check_family(const ShaderFamily &fam, const std::vector<Variant> &variants)
   }
 }
 
+// world_lighting's sm3 fast path (contrast 0, saturation 1, R0 1: the envmap terms skipped) and the
+// ps2b path that computes them agree on the hard grid's special cube texels (65504, Inf, 1e30,
+// NaN; not sanitised here): both clamp the texel to 65504 first. Before, an Inf texel gave 65504
+// on sm3 and 0 on ps2b (Inf * (1 + Inf * 0) = NaN, clamped to 0). Bit for bit (same arithmetic).
+void check_cube_fast_path(const std::vector<Variant> &variants) {
+  const ShaderFamily *fam = find_family("world_lighting");
+  const HardCases *cases = nullptr;
+  std::string err;
+  if (!fam || !family_hard_cases(*fam, &cases, &err)) {
+    check(false, "world_lighting: hard cases for the cube fast-path check", err);
+    return;
+  }
+  int env_params = -1;
+  for (size_t k = 0; k < fam->slot_names.size(); ++k)
+    if (fam->slot_names[k] == "env_params") env_params = static_cast<int>(k);
+  const int n = 24;
+  FamilyInputs in;
+  fam->make_inputs(InputSet::Hard, n, n, 4242u, &in);
+  long pixels = 0, bad = 0;
+  std::string first;
+  for (const Variant &sm3 : variants) {
+    if (sm3.tier != Tier::SM3 || !sm3.value("ENVMAP")) continue;
+    const Variant *ps2b = nullptr;
+    for (const Variant &v : variants)
+      if (v.tier == Tier::PS2B && v.values == sm3.values) ps2b = &v;
+    if (!ps2b) continue;
+    for (int y = 0; y < n; ++y)
+      for (int x = 0; x < n; ++x) {
+        const size_t i = static_cast<size_t>(y) * n + x;
+        if (cases->cases[i % cases->cases.size()].name != "cube texel 65504/Inf/NaN") continue;
+        ts_vec4f p = in.slot(x, y, env_params);
+        p.x = 0.0f, p.y = 1.0f, p.w = 1.0f;
+        in.set_slot(x, y, env_params, p);
+        const ts_vec4f a = fam->eval_f(sm3, in, x, y), b = fam->eval_f(*ps2b, in, x, y);
+        ++pixels;
+        if (unit_check::bits_of(a.x) == unit_check::bits_of(b.x) && unit_check::bits_of(a.y) == unit_check::bits_of(b.y) &&
+            unit_check::bits_of(a.z) == unit_check::bits_of(b.z))
+          continue;
+        if (bad++ == 0) first = sm3.name() + " (" + std::to_string(x) + "," + std::to_string(y) + "): sm3 " + show(a) + ", ps2b " + show(b);
+      }
+  }
+  check(env_params >= 0 && pixels > 0 && bad == 0,
+        "world_lighting: sm3 fast path = ps2b on special cube texels (" + std::to_string(pixels) + " pixels)",
+        std::to_string(bad) + " differ; first " + first);
+}
+
 }  // namespace
 
 int main() {
@@ -129,6 +176,7 @@ int main() {
     const std::vector<Variant> variants = enumerate_variants(*decl, all_tiers(), &err);
     check(!variants.empty(), std::string(fam->name) + ": variants enumerated", err);
     check_family(*fam, variants);
+    if (std::string(fam->name) == "world_lighting") check_cube_fast_path(variants);
   }
   return unit_check::finish();
 }
