@@ -36,7 +36,9 @@ float ts_light_attenuation(TsLight l, vec3 P, out vec3 L) {
     bool directional = l.color.w > 0.5;
     L = directional ? -l.dir.xyz : Lv * rinv;
     // Written out, not dot(atten, vec3(1, d, d*d)): NIR reorders a dot with a constant 1.0 lane.
-    float dist_att = 1.0 / (l.atten.x + l.atten.y * d + l.atten.z * (d * d));
+    // The denominator is kept >= TS_MIN_LENGTH2: all-zero coefficients give 1e30, not 1/0 = Inf,
+    // whose product with a zero N.L term would be NaN (issue 14: no NaN from finite inputs).
+    float dist_att = 1.0 / max(l.atten.x + l.atten.y * d + l.atten.z * (d * d), TS_MIN_LENGTH2);
     dist_att = directional ? 1.0 : dist_att;
     float cos_a = dot(-L, l.dir.xyz);
     float spot = saturate(pow(max(1.0e-4, (cos_a - l.spot.z) * l.spot.w), l.spot.x));

@@ -6,7 +6,7 @@
 //   Fresnel ranges: f = saturate(1 - N.V)^2, piecewise linear through (0, min),
 //     (0.5, mid), (1, max); uploaded as ((mid-min)*2, mid, (max-mid)*2)
 //   rim_i = saturate(R.L)^rimexp * saturate(N.L) * color_i * atten_i, times
-//     rimMask * Fresnel4, Fresnel4 = (1 - N.V)^4; spec = max(spec, rim)
+//     rimMask * Fresnel4, Fresnel4 = saturate(1 - N.V)^4; spec = max(spec, rim)
 // Lerps are mix(). llvmpipe lowers NIR's flrp (lower_flrp32, nir_lower_flrp.c), and
 // the form depends on the operands; measured on Mesa 22.3:
 //   mix(a, b, t), nothing constant  ->  a + (b - a) * t
@@ -24,9 +24,10 @@ float ts_fresnel_ranges(float NdotV, vec3 ranges) {
     return ranges.y + (f - 0.5) * (f >= 0.5 ? ranges.z : ranges.x);
 }
 
-// (1 - N.V)^4, not clamped (fact sheet section 5, Fresnel4): slightly above 1 when N.V < 0.
+// saturate(1 - N.V)^4 (fact sheet section 5: Source's Fresnel4 saturates f like Fresnel): at most
+// 1, so a back-facing shading normal (N.V = -1) cannot make the rim 16 times brighter.
 float ts_fresnel4(float NdotV) {
-    float f = 1.0 - NdotV;
+    float f = saturate(1.0 - NdotV);
     f = f * f;
     return f * f;
 }

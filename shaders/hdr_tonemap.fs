@@ -29,7 +29,9 @@ void main() {
     vec3 fb = TS_PIXEL_INPUT(HT_SLOT_FRAME, ts_frame_texel(u_frame, gl_FragCoord.xy, u_frame_size)).rgb;
     vec4 params = TS_UNIFORM_INPUT(HT_SLOT_PARAMS, u_params);
     vec3 bloom = TS_TEX2D(u_bloom, pos * size.zw).rgb;
-    bloom = min(bloom * sqrt(params.x), 1.0);
+    // max(): a negative tone-map scale gives sqrt(0), not sqrt(-x) = NaN, whose min() with 1 is 1 on
+    // llvmpipe and NaN where min returns its first operand (issue 14).
+    bloom = min(bloom * sqrt(max(params.x, 0.0)), 1.0);
     vec3 c = fb * params.x + (params.y * pow(ts_luminance(bloom), params.z)) * bloom;
 #if OUTPUT_MODE == TS_OUTPUT_GAMMA22
     c = ts_output_gamma22(c);

@@ -82,7 +82,10 @@ void main() {
       + n.y * TS_PIXEL_INPUT(WL_SLOT_BINORMAL, v_binormal).xyz + n.z * N;
 #endif
     vec3 E = TS_PIXEL_INPUT(WL_SLOT_EYE, v_eye).xyz;
-    vec3 env = TS_TEXCUBE(u_envmap, ts_reflect_unnormalized(N, E)).rgb;
+    // The texel clamped to the fp16 range: an Inf texel gives 65504 on every tier (the sm3 fast
+    // path and the full contrast/saturation/Fresnel path agree; before, Inf * (1 + Inf * 0) made the
+    // full path NaN, 0 after the output clamp, against 65504 on the fast path).
+    vec3 env = min(TS_TEXCUBE(u_envmap, ts_reflect_unnormalized(N, E)).rgb, TS_FP16_MAX);
 #if ENVMAPMASK == 1
     vec3 spec = (env * env_tint.w) * (TS_TEX2D(u_envmap_mask, uv.xy).rgb * env_tint.rgb);
 #elif ENVMAPMASK == 2
@@ -112,7 +115,8 @@ void main() {
     vec3 color = (base.rgb * diffuse) * (tint_scale.rgb * tint_scale.w);
 #endif
 #ifndef TS_TIER_PS20
-    color = ts_range_fog(color, lm_offset.z, TS_UNIFORM_INPUT(WL_SLOT_FOG_COLOR, u_fog_color),
+    // Clamped before the fog: an overflowed (Inf) colour would make c + (fog - c) f^2 NaN.
+    color = ts_range_fog(min(color, TS_FP16_MAX), lm_offset.z, TS_UNIFORM_INPUT(WL_SLOT_FOG_COLOR, u_fog_color),
                          TS_UNIFORM_INPUT(WL_SLOT_FOG_PARAMS, u_fog_params));
 #endif
     TS_FRAG_COLOR = vec4(ts_output_linear(color), 1.0);

@@ -13,7 +13,7 @@ static inline TS_REAL FN(light_attenuation)(const V4 l[5], V3 P, V3 *L) {
   TS_REAL d = M(min)(d2 * rinv, K(1.0e18));
   int directional = l[0].w > K(0.5);
   *L = directional ? M(neg3)(FN(xyz4)(l[1])) : M(scale3)(Lv, rinv);
-  TS_REAL dist_att = K(1.0) / ((l[4].x + l[4].y * d) + l[4].z * (d * d));
+  TS_REAL dist_att = K(1.0) / M(max)((l[4].x + l[4].y * d) + l[4].z * (d * d), K(1.0e-30));
   dist_att = directional ? K(1.0) : dist_att;
   TS_REAL cos_a = M(dot3)(M(neg3)(*L), FN(xyz4)(l[1]));
   TS_REAL spot = M(saturate)(M(pow)(M(max)(K(1.0e-4), (cos_a - l[3].z) * l[3].w), l[3].x));

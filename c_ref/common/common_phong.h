@@ -8,7 +8,7 @@ static inline TS_REAL FN(fresnel_ranges)(TS_REAL NdotV, V3 ranges) {
 }
 
 static inline TS_REAL FN(fresnel4)(TS_REAL NdotV) {
-  TS_REAL f = K(1.0) - NdotV;
+  TS_REAL f = M(saturate)(K(1.0) - NdotV);
   f = f * f;
   return f * f;
 }

@@ -125,9 +125,13 @@ const float ts_lp_log2_coeffs[5] = {0x1.715476p+1f, 0x1.ec6ff2p-1f, 0x1.27a642p-
 /* gallivm lp_build_exp2: x = minps(128,x); x = maxps(-126.99999,x) (a NaN x is
  * the second operand, so it passes); ipart = floor, fpart = x - ipart;
  * 2^ipart built in the exponent field; result = 2^ipart * P(fpart). */
+static int g_nan_model = TS_NAN_LLVMPIPE;
+void ts_set_nan_model(int model) { g_nan_model = model; }
+
 float ts_exp2f(float x) {
   float fl, fr, scale;
   int i;
+  if (g_nan_model == TS_NAN_PROPAGATE && is_nanf(x)) return x;
   x = ts_lp_minf(128.0f, x);
   x = ts_lp_maxf(-126.99999f, x);
   fl = lp_floor(x);
@@ -150,6 +154,7 @@ float ts_log2f(float x) {
   if (!(xd < INFINITY)) r = INFINITY; /* UGE +inf  */
   if (!(xd != 0.0f)) r = -INFINITY; /* UEQ 0     */
   if (!(xd >= 0.0f)) r = NAN; /* ULT 0     */
+  if (g_nan_model == TS_NAN_PROPAGATE && xd == 0.0f) r = -127.0f;
   return r;
 }
 
@@ -157,6 +162,7 @@ float ts_log2f(float x) {
 float ts_powf(float x, float y) {
   float r = ts_exp2f(ts_log2f(x) * y);
   float xd = ts_daz(x);
+  if (g_nan_model == TS_NAN_PROPAGATE) return r;
   return (xd == 0.0f || is_nanf(xd)) ? 0.0f : r;
 }
 
@@ -172,12 +178,21 @@ float ts_inversesqrtf(float x) { return 1.0f / sqrtf(x); }
  * (lp_build_min/max_simple): r = minps(a,b); if b is NaN, r = a.  Measured:
  * both argument orders, +-0 ties, denormals, NaN. NB: NIR moves a constant
  * operand second, so GLSL max(0.0, x) == ts_maxf(x, 0.0f). */
-float ts_minf(float a, float b) { return is_nanf(b) ? a : ts_lp_minf(a, b); }
-float ts_maxf(float a, float b) { return is_nanf(b) ? a : ts_lp_maxf(a, b); }
+float ts_minf(float a, float b) {
+  if (g_nan_model == TS_NAN_PROPAGATE && (is_nanf(a) || is_nanf(b))) return NAN;
+  return is_nanf(b) ? a : ts_lp_minf(a, b);
+}
+float ts_maxf(float a, float b) {
+  if (g_nan_model == TS_NAN_PROPAGATE && (is_nanf(a) || is_nanf(b))) return NAN;
+  return is_nanf(b) ? a : ts_lp_maxf(a, b);
+}
 /* GLSL clamp -> fmin(fmax(x, lo), hi). */
 float ts_clampf(float x, float lo, float hi) { return ts_minf(ts_maxf(x, lo), hi); }
 /* NIR fsat -> lp_build_clamp_zero_one_nanzero: minps(maxps(x, 0), 1). */
-float ts_saturatef(float x) { return ts_lp_minf(ts_lp_maxf(x, 0.0f), 1.0f); }
+float ts_saturatef(float x) {
+  if (g_nan_model == TS_NAN_PROPAGATE && is_nanf(x)) return x;
+  return ts_lp_minf(ts_lp_maxf(x, 0.0f), 1.0f);
+}
 float ts_floorf(float x) { return lp_floor(x); }
 float ts_fractf(float x) { return x - lp_floor(x); } /* not clamped: fract(-tiny) = 1 */
 float ts_absf(float x) { return ts_bitsf(ts_fbits(x) & 0x7fffffffu); }

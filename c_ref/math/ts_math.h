@@ -81,6 +81,16 @@ void ts_math_set_ftz(void); /* MXCSR |= 0x8040 on the calling thread only     */
  * NOT what GLSL a*b+c or fma() give (those are always unfused): use a*b+c. */
 float ts_madf(float a, float b, float c);
 
+/* NaN model of the scalar float32 builtins below (min, max, clamp, saturate, exp2, log2, pow).
+ * TS_NAN_LLVMPIPE (the default) is llvmpipe's, bit for bit. TS_NAN_PROPAGATE is a test model of
+ * another conformant implementation: a NaN operand of min/max/clamp/saturate/exp2/pow gives NaN
+ * (SwiftShader returns one operand or the other, by position), log2(0) = -127 and pow(0, y) =
+ * exp2(-127 y) (SwiftShader, measured in issue 14). tests/unit/test_nan_independence.cpp renders
+ * the finite hard cases in both models: the shaders must not depend on which one runs. Only the
+ * scalar twins (eval_f) see it; the SIMD and batch twins are llvmpipe's always. */
+enum { TS_NAN_LLVMPIPE = 0, TS_NAN_PROPAGATE = 1 };
+void ts_set_nan_model(int model);
+
 /* Raw x86/gallivm primitives (also used by ts_sampler.c):
  *   ts_lp_minf(a,b) = SSE minps(a,b): a<b ? a : b (b if either is NaN), DAZ applied
  *   ts_lp_maxf(a,b) = SSE maxps(a,b): a>b ? a : b (b if either is NaN), DAZ applied

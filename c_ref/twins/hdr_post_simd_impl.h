@@ -60,7 +60,7 @@ static V4v VFN(ht_block)(const ht_variant *v, const ht_batch_input *in, const ts
   const V4v size = TSV_REC(in, HT_SLOT_SIZE, pix);
   const V3v fb = VFN(xyz)(TSV_REC(in, HT_SLOT_FRAME, pix));
   const V4v params = TSV_REC(in, HT_SLOT_PARAMS, pix);
-  V3v bloom = VFN(scale3)(VFN(hp_fetch)(bloom_tex, pos.x * size.z, pos.y * size.w), VFN(sqrt)(params.x));
+  V3v bloom = VFN(scale3)(VFN(hp_fetch)(bloom_tex, pos.x * size.z, pos.y * size.w), VFN(sqrt)(VFN(max)(params.x, VFN(splat)(0.0f))));
   const VF one = VFN(splat)(1.0f);
   bloom = VFN(v3)(VFN(min)(bloom.x, one), VFN(min)(bloom.y, one), VFN(min)(bloom.z, one));
   const VF lum = VFN(dot3)(bloom, VFN(v3)(VFN(splat)(0.2125f), VFN(splat)(0.7154f), VFN(splat)(0.0721f)));

@@ -10,7 +10,7 @@ V4 FN(hdr_tonemap)(const ht_variant *v, const ts_vec4f rec[HT_SLOTS], const ts_t
   V3 fb = FN(xyz)(rec[HT_SLOT_FRAME]);
   V4 params = FN(vec4_in)(rec[HT_SLOT_PARAMS]);
   V4 s = M(texture2D)(bloom_tex, M(v2)(pos.x * size.z, pos.y * size.w));
-  V3 bloom = M(scale3)(M(v3)(s.x, s.y, s.z), M(sqrt)(params.x));
+  V3 bloom = M(scale3)(M(v3)(s.x, s.y, s.z), M(sqrt)(M(max)(params.x, K(0.0))));
   bloom = M(v3)(M(min)(bloom.x, K(1.0)), M(min)(bloom.y, K(1.0)), M(min)(bloom.z, K(1.0)));
   TS_REAL k = params.y * M(pow)(FN(luminance)(bloom), params.z);
   V3 c = M(add3)(M(scale3)(fb, params.x), M(scale3)(bloom, k));

@@ -33,7 +33,7 @@ TSV_INL VF VFN(light_attenuation)(const V4v l[5], V3v P, V3v *L) {
   const VF d = VFN(min)(d2 * rinv, VFN(splat)(1.0e18f));
   const VI directional = l[0].w > 0.5f;
   *L = VFN(sel3)(directional, VFN(neg3)(VFN(xyz)(l[1])), VFN(scale3)(Lv, rinv));
-  VF dist_att = 1.0f / ((l[4].x + l[4].y * d) + l[4].z * (d * d));
+  VF dist_att = 1.0f / VFN(max)((l[4].x + l[4].y * d) + l[4].z * (d * d), VFN(splat)(1.0e-30f));
   dist_att = VFN(sel)(directional, VFN(splat)(1.0f), dist_att);
   const VF cos_a = VFN(dot3)(VFN(neg3)(*L), VFN(xyz)(l[1]));
   VF spot = VFN(saturate)(VFN(pow)(VFN(max)(VFN(splat)(1.0e-4f), (cos_a - l[3].z) * l[3].w), l[3].x));
@@ -152,7 +152,7 @@ static V4v VFN(ml_block)(const ml_variant *v, const ml_batch_input *in, const ml
       spec_tint = VFN(sel3)(tint.w > 0.5f, from_one, spec_tint);
     }
     if (v->rim_light) {
-      VF fresnel4 = 1.0f - NdotV;
+      VF fresnel4 = VFN(saturate)(1.0f - NdotV);
       fresnel4 = fresnel4 * fresnel4;
       fresnel4 = fresnel4 * fresnel4;
       const VF rim_mask = VFN(lerp_from_one)(expmap.w, rim_params.z);

@@ -51,7 +51,8 @@ V4 FN(world_lighting)(const wl_variant *v, const ts_vec4f rec[WL_SLOTS], const w
     }
     V3 E = FN(xyz)(rec[WL_SLOT_EYE]);
     V4 env4 = M(textureCube)(tx->envmap, FN(reflect_unnormalized)(N, E));
-    V3 env = M(scale3)(M(v3)(env4.x, env4.y, env4.z), env_tint.w);
+    V3 env = M(scale3)(M(v3)(M(min)(env4.x, K(65504.0)), M(min)(env4.y, K(65504.0)), M(min)(env4.z, K(65504.0))),
+                       env_tint.w);
     V3 tint = FN(xyz4)(env_tint), spec;
     if (v->envmapmask == WL_MASK_TEXTURE) {
       V4 m = M(texture2D)(tx->envmap_mask, base_uv);
@@ -77,7 +78,8 @@ V4 FN(world_lighting)(const wl_variant *v, const ts_vec4f rec[WL_SLOTS], const w
 
   if (v->tier != TS_TIER_ID_PS20)
     color =
-        FN(range_fog)(color, lm_offset.z, FN(vec4_in)(rec[WL_SLOT_FOG_COLOR]), FN(vec4_in)(rec[WL_SLOT_FOG_PARAMS]));
+        FN(range_fog)(M(v3)(M(min)(color.x, K(65504.0)), M(min)(color.y, K(65504.0)), M(min)(color.z, K(65504.0))),
+                      lm_offset.z, FN(vec4_in)(rec[WL_SLOT_FOG_COLOR]), FN(vec4_in)(rec[WL_SLOT_FOG_PARAMS]));
   /* Not FN(final_output): Source's range fog sits between its scale and its clamp. */
   (void)FN(final_output);
   V3 c = FN(output_linear)(color);

@@ -94,7 +94,9 @@ static V4v VFN(wl_block)(const wl_variant *v, const wl_batch_input *in, const wl
     }
     const V3v E = VFN(xyz)(TSV_REC(in, WL_SLOT_EYE, pix));
     const V4v env4 = VFN(textureCube)(tx->envmap, VFN(reflect_unnormalized)(N, E));
-    const V3v env = VFN(scale3)(VFN(xyz)(env4), env_tint.w);
+    const VF fp16_max = VFN(splat)(65504.0f);
+    const V3v env = VFN(scale3)(
+        VFN(v3)(VFN(min)(env4.x, fp16_max), VFN(min)(env4.y, fp16_max), VFN(min)(env4.z, fp16_max)), env_tint.w);
     const V3v tint = VFN(xyz)(env_tint);
     V3v spec;
     if (v->envmapmask == WL_MASK_TEXTURE) {
@@ -123,6 +125,8 @@ static V4v VFN(wl_block)(const wl_variant *v, const wl_batch_input *in, const wl
   if (v->tier != TS_TIER_ID_PS20) {
     const V4v fc = TSV_REC(in, WL_SLOT_FOG_COLOR, pix), fp = TSV_REC(in, WL_SLOT_FOG_PARAMS, pix);
     const VF f = VFN(saturate)(VFN(min)(fc.w, lm_offset.z * fp.x - fp.y));
+    const VF m = VFN(splat)(65504.0f);
+    color = VFN(v3)(VFN(min)(color.x, m), VFN(min)(color.y, m), VFN(min)(color.z, m));
     color = VFN(add3)(color, VFN(scale3)(VFN(sub3)(VFN(xyz)(fc), color), f * f));
   }
   return VFN(rgba)(VFN(output_linear)(color), one);

@@ -279,6 +279,15 @@ void eval_expr(const CaseExpr &e, const CaseEval &env, const ts_vec4f *rec, floa
   }
 }
 
+// Whether a value expression holds a NaN or Inf number literal (anywhere in its calls).
+bool has_nonfinite_number(const std::vector<CaseExpr> &values) {
+  for (const auto &v : values) {
+    if (v.kind == CaseExpr::Number && !std::isfinite(v.number)) return true;
+    if (v.kind == CaseExpr::Call && has_nonfinite_number(v.args)) return true;
+  }
+  return false;
+}
+
 // The combo of the [repeat] an expression reads (through a family function), if any.
 bool uses_repeat(const CaseExpr &e, std::string *combo) {
   if (e.family_fn && !e.family_fn->repeat_combo.empty()) {
@@ -427,8 +436,17 @@ bool parse_hard_cases(const ShaderFamily &fam, const std::string &file, const st
       c.random = true;
       continue;
     }
+    if (line == "llvmpipe_only") {
+      if (c.llvmpipe_only) return fail(lineno, "'llvmpipe_only' twice in case '" + c.name + "'");
+      c.llvmpipe_only = true;
+      continue;
+    }
     CaseAssignment a;
     if (!parse_case_assignment(fam, line, file + ":" + std::to_string(lineno), false, &a, err)) return false;
+    if (!c.llvmpipe_only && has_nonfinite_number(a.values))
+      return fail(lineno, "case '" + c.name +
+                              "' writes NaN or Inf: such inputs are outside the portable contract, so the case "
+                              "must say 'llvmpipe_only' (before this line)");
     std::string combo;
     for (const auto &v : a.values)
       if (uses_repeat(v, &combo) && combo != out->repeat_combo)

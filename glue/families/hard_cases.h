@@ -49,6 +49,10 @@ struct HardCase {
   std::string name;
   int line = 0;
   bool random = false;  // slots the case does not set keep the random record's values
+  // 'llvmpipe_only': the case puts NaN or Inf into the inputs, outside the portable contract
+  // (GLSL ES leaves NaN/Inf undefined: docs/conformance.md "The portable contract"); its output
+  // is only required to be what llvmpipe gives (still checked finite, in range and 0 ULP there).
+  bool llvmpipe_only = false;
   std::vector<CaseAssignment> body;
 };
 

@@ -8,6 +8,7 @@
 #include "conform/conform.h"
 #include "families/family.h"
 #include "gl/errors.h"
+#include "scene/finite_check.h"
 
 namespace {
 using Clock = std::chrono::steady_clock;
@@ -105,6 +106,9 @@ bool SceneGl::bind_draw(size_t i, GLuint program, bool production, std::string *
     *err = "no family " + d.variant->shader->name;
     return false;
   }
+  // The host contract (scene/finite_check.h): no NaN or Inf reaches a shader's uniforms.
+  if (!check_finite(&d.shared.data()->x, d.shared.size() * 4, "draw " + std::to_string(i) + " (" + d.variant->name() + ") uniforms", err))
+    return false;
   f->bind_uniforms(g, program, d.shared);
   if (production) {
     for (size_t t = 0; t < d.tex.size(); ++t) {

@@ -11,6 +11,7 @@
 #include "base/image.h"
 #include "families/family.h"
 #include "io/radiance_hdr.h"
+#include "scene/finite_check.h"
 
 TextureDesc make_bump_normal_map(const char *sampler, int n) {
   // A grid of round dimples (height h = -cos^2 bumps), normals from the height gradient;
@@ -142,5 +143,8 @@ bool cube_from_probe(const std::string &path, const char *sampler, int size, Tex
   }
   for (int a = 0; a < 6; ++a)
     for (int k = 0; k < 3; ++k) ambient[a][k] = static_cast<float>(sum[a][k] / wsum[a]);
-  return true;
+  // The host contract (scene/finite_check.h): RGBE reaches 2^127, beyond fp16; clamped to 65504.
+  return clamp_texels_to_fp16(cube->rgba.data(), cube->rgba.size(), path + ": the cube map from the probe", nullptr,
+                              err) &&
+         clamp_texels_to_fp16(&ambient[0][0], 18, path + ": the ambient cube from the probe", nullptr, err);
 }

@@ -59,7 +59,7 @@ else fail probe_case_repeat_value "status $RC; $(head -n 2 "$OUT") $(head -n 1 "
 # --- a user's case file ---------------------------------------------------------------------
 mkdir -p "$TMP/mine"
 MINE="$TMP/mine/model_lighting.cases"
-printf '# mine\n[case my zero normal]\nrandom\nnormal 0 0 0 0\n\n[case my NaN eye]\nrandom\neye.xz nan 0x1p-3\n' > "$MINE"
+printf '# mine\n[case my zero normal]\nrandom\nnormal 0 0 0 0\n\n[case my NaN eye]\nllvmpipe_only\nrandom\neye.xz nan 0x1p-3\n' > "$MINE"
 run conform --list-cases --shader model_lighting --cases "$MINE"
 if [ "$RC" -eq 0 ] && head -n 1 "$OUT" | grep -qF "model_lighting: 2 hard cases ($MINE)"; then pass user_file_listed
 else fail user_file_listed "status $RC; $(head -n 1 "$OUT") $(head -n 1 "$ERR")"; fi
@@ -87,6 +87,8 @@ bad() {
   for p in $patterns; do grep -qF -- "$p" "$ERR" || problems+="message lacks '$p'; "; done
   if [ -z "$problems" ]; then pass "$name"; else fail "$name" "${problems}stderr: $(head -n 1 "$ERR")"; fi
 }
+bad error_nonfinite_untagged "model_lighting.cases:3:|'a' writes NaN or Inf|llvmpipe_only" '[case a]\nrandom\nnormal.x inf\n'
+bad error_llvmpipe_only_twice "model_lighting.cases:3:|'llvmpipe_only' twice" '[case a]\nllvmpipe_only\nllvmpipe_only\nrandom\nnormal.x inf\n'
 bad error_unknown_slot "model_lighting.cases:3:|'bogus'" '[case a]\nrandom\nbogus 1 2 3 4\n'
 bad error_unknown_swizzle "model_lighting.cases:3:|'normal.q'" '[case a]\nrandom\nnormal.q 1\n'
 bad error_bad_number "model_lighting.cases:4:|'1x'" '[case a]\nrandom\n\nnormal 0 0 1x 0\n'
