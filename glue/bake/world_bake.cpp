@@ -9,6 +9,7 @@
 
 #include "bake/bounce.h"
 #include "bake/glm_ts.h"
+#include "bake/luxel_rng.h"
 #include "bake/ray_scene.h"
 #include "base/cube_faces.h"
 #include "offline/envmap_probes.h"
@@ -22,15 +23,45 @@ int luxels(double len, double per_unit) { return std::max(2, static_cast<int>(st
 // Embree's float precision at room scale (~1e-6 m), below any contact a lightmap resolves.
 const double kRayOffset = 1e-4;
 
-// The lights that reach p: those it faces (n . L > 0) whose segment to p nothing blocks.
-void visible_lights(const WorldBakeInput &s, const glm::dvec3 &p, const glm::dvec3 &n, std::vector<rnm_light> *out) {
+// The lights that reach p: those it faces (n . L > 0) whose segment to p nothing blocks. A sun with
+// an angular spread (WorldBakeInput::light_spread, vrad's _sunspreadangle) sends its shadow rays
+// jittered within its cone, stratified from the sample's own stream `rng`, and reaches p scaled by
+// the share of them that nothing blocks (a ray below the face's plane counting as blocked); its
+// cosines stay those of its central direction (vrad's emit_skylight: the dots times the visible
+// fraction). `rays` counts the shadow rays.
+void visible_lights(const WorldBakeInput &s, const glm::dvec3 &p, const glm::dvec3 &n, std::vector<rnm_light> *out,
+                    LuxelRng *rng, long *rays) {
   out->clear();
-  for (const rnm_light &l : s.lights) {
+  for (size_t li = 0; li < s.lights.size(); ++li) {
+    const rnm_light &l = s.lights[li];
     const glm::dvec3 to = l.directional ? -to_glm(l.dir) : to_glm(l.pos) - p;
     if (!(glm::dot(to, n) > 0)) continue;  // behind the face: it feeds no value (rnm_bake_texel)
     const glm::dvec3 o = p + n * kRayOffset;
+    const double spread = li < s.light_spread.size() ? s.light_spread[li] : 0.0;
+    if (l.directional && spread > 0 && s.rays) {
+      const int side = std::max(1, static_cast<int>(std::ceil(std::sqrt(static_cast<double>(s.spread_samples)))));
+      const glm::dvec3 a = glm::normalize(to);
+      glm::dvec3 au, av;
+      frame_of(a, &au, &av);
+      int seen = 0;
+      for (int k = 0; k < side * side; ++k) {
+        double r1, r2;
+        stratum(k, side, rng, &r1, &r2);
+        const glm::dvec3 d = cone_dir(a, au, av, std::cos(spread), r1, r2);
+        if (!(glm::dot(d, n) > 0)) continue;
+        ++*rays;
+        seen += !s.rays->occluded(o, d, 0.0, INFINITY);
+      }
+      if (seen == 0) continue;
+      rnm_light part = l;
+      const double share = static_cast<double>(seen) / (side * side);
+      part.color = ts_v3d(l.color.x * share, l.color.y * share, l.color.z * share);
+      out->push_back(part);
+      continue;
+    }
     const glm::dvec3 d = l.directional ? to : to_glm(l.pos) - o;
     // Point and spot lights: the segment up to the light (t < 1); a sun: the whole ray.
+    if (s.rays) ++*rays;
     if (s.rays && s.rays->occluded(o, d, 0.0, l.directional ? INFINITY : 1.0 - 1e-9)) continue;
     out->push_back(l);
   }
@@ -38,8 +69,8 @@ void visible_lights(const WorldBakeInput &s, const glm::dvec3 &p, const glm::dve
 
 // The four values (flat, b0, b1, b2) at p with visibility.
 int lit_values(const WorldBakeInput &s, const glm::dvec3 &p, ts_vec3d n, const ts_vec3d bump[3], ts_vec3d v4[4],
-               std::vector<rnm_light> *scratch, char *msg, size_t len) {
-  visible_lights(s, p, to_glm(n), scratch);
+               std::vector<rnm_light> *scratch, LuxelRng *rng, long *rays, char *msg, size_t len) {
+  visible_lights(s, p, to_glm(n), scratch, rng, rays);
   return rnm_bake_texel(to_ts(p), n, bump, scratch->data(), static_cast<int>(scratch->size()), v4, msg, len);
 }
 
@@ -131,8 +162,10 @@ bool bake_world(const WorldBakeInput &in, WorldBake *out, std::string *err) {
             const double a = std::clamp((i + (si + 0.5) / ss - 0.5) / (g.w - 1), 0.0, 1.0);
             const double b = std::clamp((j + (sj + 0.5) / ss - 0.5) / (g.h - 1), 0.0, 1.0);
             ts_vec3d s4[4];
-            if (lit_values(s, to_glm(world_face_sample(f, a, b)), n, bump[fi].data(), s4, &scratch, msg, sizeof msg) !=
-                0) {
+            LuxelRng rng = LuxelRng::of(0x53756E /* "Sun" */, fi, static_cast<uint64_t>(j), static_cast<uint64_t>(i),
+                                        static_cast<uint64_t>(sj * ss + si), s.bounce.seed);
+            if (lit_values(s, to_glm(world_face_sample(f, a, b)), n, bump[fi].data(), s4, &scratch, &rng,
+                           &out->direct_rays, msg, sizeof msg) != 0) {
               *err = std::string(f.name) + ": " + msg;
               return false;
             }
@@ -142,9 +175,22 @@ bool bake_world(const WorldBakeInput &in, WorldBake *out, std::string *err) {
       }
     }
   }
+  out->direct_ms = std::chrono::duration<double, std::milli>(Clock::now() - t_direct).count();
+  // The sky (glue/bake/sky.h) and the emitters as area lights (glue/bake/area_lights.h), added like
+  // the direct light: the first bounce reflects them; emission the area lights sampled is not sent
+  // again by the bounces (docs/baking.md, "Emitters").
+  if (bake_luxels) {
+    if (!sky_light(s.faces, bump, *s.rays, s.sky, s.bounce.threads, s.bounce.seed, &grids, &out->sky, err))
+      return false;
+    AreaLightSettings as;
+    as.samples = s.area_samples;
+    as.threads = s.bounce.threads;
+    as.seed = s.bounce.seed;
+    if (!area_lights(s.faces, bump, *s.rays, as, &grids, &out->area, err)) return false;
+    s.bounce.emission_sampled = s.area_samples > 0;
+  }
   // The interreflected light (glue/bake/bounce.h), then the page.
   const auto t_bounce = Clock::now();
-  out->direct_ms = std::chrono::duration<double, std::milli>(t_bounce - t_direct).count();
   if (bake_luxels) {
     if (!bounce_light(s.faces, bump, *s.rays, s.bounce, &grids, &out->bounce, err)) return false;
     out->bounce_ms = std::chrono::duration<double, std::milli>(Clock::now() - t_bounce).count();
@@ -216,8 +262,14 @@ bool bake_world(const WorldBakeInput &in, WorldBake *out, std::string *err) {
             ts_vec3d b3[3], v4[4];
             std::vector<rnm_light> scratch;
             rnm_bump_basis(to_ts(su), to_ts(sv), to_ts(n), to_ts(n), b3, msg, sizeof msg);
-            lit_values(s, to_glm(pos) + d * t, to_ts(n), b3, v4, &scratch, msg, sizeof msg);
+            LuxelRng rng = LuxelRng::of(0x50726F /* "Pro" */, static_cast<uint64_t>(&pos - s.probes.data()),
+                                        static_cast<uint64_t>(face), static_cast<uint64_t>(j), static_cast<uint64_t>(i),
+                                        s.bounce.seed);
+            long probe_rays = 0;
+            lit_values(s, to_glm(pos) + d * t, to_ts(n), b3, v4, &scratch, &rng, &probe_rays, msg, sizeof msg);
             rad = to_glm(v4[0]) * 0.6;
+          } else if (s.sky.present()) {  // nothing: the sky
+            rad = to_glm(sky_radiance(s.sky, to_ts(d)));
           }
           for (const rnm_light &l : s.lights) {  // a light bulb of radius 0.08 (not for a sun)
             if (l.directional) continue;

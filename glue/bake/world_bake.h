@@ -6,7 +6,9 @@
 #include <string>
 #include <vector>
 
+#include "bake/area_lights.h"
 #include "bake/bounce.h"
+#include "bake/sky.h"
 #include "bake/world_faces.h"
 #include "families/world_lighting.h"
 #include "offline/lightmap_page.h"
@@ -31,6 +33,16 @@ struct WorldBakeInput {
   // section 1), a regular grid over the luxel's footprint on the face, clipped to the face.
   int supersample = 2;
   BounceSettings bounce;  // interreflection (glue/bake/bounce.h); max_bounces 0: direct light only
+  // The sky (glue/bake/sky.h): absent (the default), no sky pass.
+  BakeSky sky;
+  // Emitting faces sampled as area lights (glue/bake/area_lights.h): points per luxel and emitter;
+  // 0: the emission reaches the luxels through the bounces' gather alone.
+  int area_samples = 16;
+  // Per light (empty, or one per light): a sun's angular radius in radians (vrad's
+  // _sunspreadangle): its shadow rays are jittered within that cone, `spread_samples` per sample
+  // point (vrad: 30; rounded up to a square, stratified), so its shadows are soft. 0: one ray.
+  std::vector<double> light_spread;
+  int spread_samples = 30;
 };
 
 // The baked lighting: the page in float32 (flat, b0, b1, b2 per face, borders filled),
@@ -43,6 +55,9 @@ struct WorldBake {
   BounceReport bounce;  // what the interreflection passes did
   long luxels = 0;  // luxel grid points of every face (each with 4 values)
   double direct_ms = 0, bounce_ms = 0;  // the direct pass (samples, shadow rays) and the bounces
+  long direct_rays = 0;  // shadow rays of the direct pass
+  SkyReport sky;  // the sky pass (rays 0 without a sky)
+  AreaLightReport area;  // the area-light pass
 };
 bool bake_world(const WorldBakeInput &s, WorldBake *out, std::string *err);
 

@@ -427,6 +427,15 @@ bool prepare_scene(const Scene &s, const SceneSelection &sel, int w, int h, Api 
         r.exponent = l.light.spot_exponent;
       }
       ws.lights.push_back(r);
+      ws.light_spread.push_back(l.spread);  // a sun's angular radius: soft shadows (glue/bake/world_bake.h)
+    }
+    if (s.sky.image >= 0) {  // the sky pass (glue/bake/sky.h)
+      const SceneImage &si = s.images.at(static_cast<size_t>(s.sky.image));
+      ws.sky.rgba = si.rgba.data();
+      ws.sky.w = si.w;
+      ws.sky.h = si.h;
+      ws.sky.scale = s.sky.scale;
+      ws.sky.samples = s.sky.samples;
     }
     int cube_size = 16;
     for (size_t i = 0; i < s.probes.size(); ++i) {

@@ -32,7 +32,10 @@ std::vector<WorldFace> box(double r, double le) {
           face("z1", ts_v3d(0, 0, 1), ts_v3d(1, 0, 0), ts_v3d(0, 1, 0), ts_v3d(0, 0, -1))};
 }
 
-bool bake(double r, double le, int bounces, int threads, WorldBake *out, int rays = 16, bool bumped = true) {
+// area: points per luxel and emitter when the walls are sampled as area lights; 0 (these tests'
+// default): the emission reaches the luxels through the gather alone, the first pass sending it.
+bool bake(double r, double le, int bounces, int threads, WorldBake *out, int rays = 16, bool bumped = true,
+          int area = 0) {
   WorldBakeInput in;
   in.faces = box(r, le);
   for (WorldFace &f : in.faces) f.bumped = bumped;
@@ -45,6 +48,7 @@ bool bake(double r, double le, int bounces, int threads, WorldBake *out, int ray
   in.bounce.gather_rays = rays;
   in.bounce.threshold = 0;
   in.bounce.threads = threads;
+  in.area_samples = area;
   std::string err;
   if (!bake_world(in, out, &err)) {
     check(false, "bake the box", err);
@@ -70,6 +74,21 @@ double worst(const WorldBake &b, int k, double expect, double *mean = nullptr) {
       }
   if (mean) *mean = n ? sum / n : 0;
   return w;
+}
+
+// The walls sampled as area lights (glue/bake/area_lights.h): the direct pass alone gives every
+// luxel the whole box's emission Le (the five other walls fill its hemisphere), and the bounces
+// then add Le r + Le r^2 + ...: after k bounces Le (1 - r^(k+1)) / (1 - r), converged Le / (1 - r).
+void closed_box_area_lights() {
+  const double r = 0.5, le = 1.0;
+  for (int k : {0, 1, 3}) {
+    WorldBake b;
+    if (!bake(r, le, k, 2, &b, 16, true, 16)) return;
+    const double expect = le * (1 - std::pow(r, k + 1)) / (1 - r);
+    double mean = 0;
+    const double w = worst(b, 0, expect, &mean);
+    printf("area k=%d worst %g mean %g rays %ld\n", k, w, mean, b.area.rays);
+  }
 }
 
 void closed_box() {
@@ -153,6 +172,7 @@ void closed_box() {
 int main() {
   ts_math_init();
   closed_box();
+  closed_box_area_lights();
   printf("%d passed, %d failed\n", g_passed, g_failed);
   return g_failed ? 1 : 0;
 }
