@@ -61,6 +61,40 @@ glm::dvec3 spherical_rect_point(const SphericalRect &r, double u, double v) {
   return r.o + r.x * xu + r.y * yv + r.z * r.z0;
 }
 
+namespace {
+
+// The polygon (vertices relative to the luxel) clipped to the half-space a . x >= 0 (Sutherland and
+// Hodgman 1974, one plane through the origin).
+std::vector<glm::dvec3> clip(const std::vector<glm::dvec3> &poly, const glm::dvec3 &a) {
+  std::vector<glm::dvec3> out;
+  for (size_t i = 0; i < poly.size(); ++i) {
+    const glm::dvec3 &p = poly[i], &q = poly[(i + 1) % poly.size()];
+    const double dp = glm::dot(a, p), dq = glm::dot(a, q);
+    if (dp >= 0) out.push_back(p);
+    if ((dp >= 0) != (dq >= 0)) out.push_back(p + (q - p) * (dp / (dp - dq)));
+  }
+  return out;
+}
+
+// (1/pi) integral over the polygon's solid angle of (a . w) dw, for a polygon on a's side: Lambert's
+// formula for the form factor of a polygon (the vector irradiance (1/2pi) sum_i theta_i u_i, theta_i
+// the angle an edge subtends, u_i its plane's unit normal; Arvo, "Applications of irradiance
+// tensors", SIGGRAPH 1995, eq. 9), its sign set by the winding.
+double polygon_factor(const std::vector<glm::dvec3> &poly, const glm::dvec3 &a) {
+  if (poly.size() < 3) return 0;
+  double sum = 0;
+  for (size_t i = 0; i < poly.size(); ++i) {
+    const glm::dvec3 p = glm::normalize(poly[i]), q = glm::normalize(poly[(i + 1) % poly.size()]);
+    const glm::dvec3 c = glm::cross(p, q);
+    const double len = glm::length(c);
+    if (!(len > 1e-15)) continue;  // a vanishing edge subtends nothing
+    sum += std::acos(std::clamp(glm::dot(p, q), -1.0, 1.0)) * glm::dot(a, c / len);
+  }
+  return std::fabs(sum) / (2 * M_PI);
+}
+
+}  // namespace
+
 bool area_lights(const std::vector<WorldFace> &faces, const std::vector<std::array<ts_vec3d, 3>> &bump,
                  const RayScene &rays, const AreaLightSettings &set, std::vector<LuxelGrid> *grids,
                  AreaLightReport *report, std::string *err) {
@@ -83,7 +117,7 @@ bool area_lights(const std::vector<WorldFace> &faces, const std::vector<std::arr
   for (size_t f = 0; f < faces.size(); ++f) {
     const WorldFace &face = faces[f];
     const glm::dvec3 n = to_glm(world_face_normal(face));
-    glm::dvec3 ax[4] = {n, to_glm(bump[f][0]), to_glm(bump[f][1]), to_glm(bump[f][2])};
+    const glm::dvec3 ax[4] = {n, to_glm(bump[f][0]), to_glm(bump[f][1]), to_glm(bump[f][2])};
     LuxelGrid &g = (*grids)[f];
     std::vector<long> traced_rows(static_cast<size_t>(g.h), 0);
     parallel_rows(g.h, set.threads, [&](int j) {
@@ -97,16 +131,23 @@ bool area_lights(const std::vector<WorldFace> &faces, const std::vector<std::arr
           if (e == f) continue;  // a face does not light itself (a plane sees none of itself)
           const WorldFace &ef = faces[e];
           const glm::dvec3 en = to_glm(world_face_normal(ef)), c = to_glm(ef.origin);
-          (void)en;
           if (!(glm::dot(p - c, en) > 1e-9)) continue;  // behind the emitter: its back sends nothing
-          const SphericalRect r = spherical_rect(p, c, to_glm(ef.u) * ef.su, to_glm(ef.v) * ef.sv);
+          const glm::dvec3 eu = to_glm(ef.u) * ef.su, ev = to_glm(ef.v) * ef.sv;
+          const SphericalRect r = spherical_rect(p, c, eu, ev);
           if (!r.ok) continue;
+          // Value k = (1/pi) integral over the emitter of Le V(w) (a_k . w)+ dw, w in front of the
+          // face (docs/baking.md). Unoccluded, it is Le times the form factor of the emitter clipped
+          // to the front of the face and of a_k (Lambert's formula, exact); the shadow rays estimate
+          // only the visible share of it (Heitz, Hill, McGuire, "Combining analytic direct
+          // illumination and stochastic shadows", I3D 2018: the ratio of the sampled integrals with
+          // and without visibility), so an unoccluded emitter adds no noise at all.
+          const std::vector<glm::dvec3> front = clip({c - p, c + eu - p, c + eu + ev - p, c + ev - p}, n);
+          double exact[4], with[4] = {0, 0, 0, 0}, without[4] = {0, 0, 0, 0};
+          for (int k = 0; k < 4; ++k) exact[k] = polygon_factor(k == 0 ? front : clip(front, ax[k]), ax[k]);
+          if (!(exact[0] > 0)) continue;
           LuxelRng rng = LuxelRng::of(0x417265 /* "Are" */, f, static_cast<uint64_t>(j), static_cast<uint64_t>(i), e,
                                       set.seed);
-          // Value k = (1/pi) integral over the emitter's solid angle of Le (a_k . w)+ (docs/baking.md):
-          // the mean over points uniform in that solid angle of Le S (a_k . w)+ / pi, each point
-          // visible or not by its shadow ray (stopped 1e-4 short of the emitter).
-          const glm::dvec3 le = to_glm(ef.emission) * (r.solid_angle / M_PI / m);
+          int seen = 0, sent = 0;
           for (int s = 0; s < m; ++s) {
             double r1, r2;
             stratum(s, side, &rng, &r1, &r2);
@@ -115,8 +156,21 @@ bool area_lights(const std::vector<WorldFace> &faces, const std::vector<std::arr
             const glm::dvec3 w = to / len;
             if (!(glm::dot(w, n) > 0)) continue;  // behind the face: it feeds none of the values
             ++traced;
-            if (rays.occluded(p, to, 0.0, 1.0 - std::min(0.5, 1e-4 / len))) continue;
-            for (int k = 0; k < 4; ++k) sum[k] += le * std::max(0.0, glm::dot(ax[k], w));
+            ++sent;
+            // Stopped 1e-4 short of the emitter, which would block its own light.
+            const bool vis = !rays.occluded(p, to, 0.0, 1.0 - std::min(0.5, 1e-4 / len));
+            seen += vis;
+            for (int k = 0; k < 4; ++k) {
+              const double cw = std::max(0.0, glm::dot(ax[k], w));
+              without[k] += cw;
+              if (vis) with[k] += cw;
+            }
+          }
+          if (seen == 0) continue;
+          for (int k = 0; k < 4; ++k) {
+            // No sample in a_k's lobe: the share of the rays that reached the emitter.
+            const double share = without[k] > 0 ? with[k] / without[k] : static_cast<double>(seen) / sent;
+            sum[k] += to_glm(ef.emission) * (exact[k] * share);
           }
         }
         for (int k = 0; k < 4; ++k) g.at(i, j, k) = to_ts(to_glm(g.at(i, j, k)) + sum[k]);
