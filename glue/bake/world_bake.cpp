@@ -12,6 +12,7 @@
 #include "bake/luxel_rng.h"
 #include "bake/ray_scene.h"
 #include "base/cube_faces.h"
+#include "base/parallel_rows.h"
 #include "offline/envmap_probes.h"
 #include "offline/lightmap_encoding.h"
 
@@ -39,7 +40,10 @@ void visible_lights(const WorldBakeInput &s, const glm::dvec3 &p, const glm::dve
     const glm::dvec3 o = p + n * kRayOffset;
     const double spread = li < s.light_spread.size() ? s.light_spread[li] : 0.0;
     if (l.directional && spread > 0 && s.rays) {
-      const int side = std::max(1, static_cast<int>(std::ceil(std::sqrt(static_cast<double>(s.spread_samples)))));
+      // spread_samples per luxel, shared among its ss x ss samples (each a square of strata).
+      const int ss = std::max(1, s.supersample);
+      const int per = std::max(1, (s.spread_samples + ss * ss - 1) / (ss * ss));
+      const int side = std::max(1, static_cast<int>(std::ceil(std::sqrt(static_cast<double>(per)))));
       const glm::dvec3 a = glm::normalize(to);
       glm::dvec3 au, av;
       frame_of(a, &au, &av);
@@ -151,10 +155,15 @@ bool bake_world(const WorldBakeInput &in, WorldBake *out, std::string *err) {
       }
     }
     const int ss = std::max(1, s.supersample);
-    std::vector<rnm_light> scratch;
     LuxelGrid &g = grids[fi];
-    for (int j = 0; j < g.h; ++j) {
-      for (int i = 0; i < g.w; ++i) {
+    // Rows on the bake's threads (each luxel's samples and streams its own: the same bytes on any
+    // count); a row's first error is reported, the lowest row's first.
+    std::vector<std::string> row_err(static_cast<size_t>(g.h));
+    std::vector<long> row_rays(static_cast<size_t>(g.h), 0);
+    parallel_rows(g.h, s.bounce.threads, [&](int j) {
+      std::vector<rnm_light> scratch;
+      char rmsg[256];
+      for (int i = 0; i < g.w && row_err[static_cast<size_t>(j)].empty(); ++i) {
         // The luxel's footprint is one luxel spacing wide, centred on its grid point; ss x ss samples.
         glm::dvec3 v4[4] = {glm::dvec3(0.0), glm::dvec3(0.0), glm::dvec3(0.0), glm::dvec3(0.0)};
         for (int sj = 0; sj < ss; ++sj)
@@ -165,13 +174,20 @@ bool bake_world(const WorldBakeInput &in, WorldBake *out, std::string *err) {
             LuxelRng rng = LuxelRng::of(0x53756E /* "Sun" */, fi, static_cast<uint64_t>(j), static_cast<uint64_t>(i),
                                         static_cast<uint64_t>(sj * ss + si), s.bounce.seed);
             if (lit_values(s, to_glm(world_face_sample(f, a, b)), n, bump[fi].data(), s4, &scratch, &rng,
-                           &out->direct_rays, msg, sizeof msg) != 0) {
-              *err = std::string(f.name) + ": " + msg;
-              return false;
+                           &row_rays[static_cast<size_t>(j)], rmsg, sizeof rmsg) != 0) {
+              row_err[static_cast<size_t>(j)] = std::string(f.name) + ": " + rmsg;
+              return;
             }
             for (int k = 0; k < 4; ++k) v4[k] += to_glm(s4[k]);
           }
         for (int k = 0; k < 4; ++k) g.at(i, j, k) = to_ts(v4[k] / static_cast<double>(ss * ss));
+      }
+    });
+    for (int j = 0; j < g.h; ++j) {
+      out->direct_rays += row_rays[static_cast<size_t>(j)];
+      if (!row_err[static_cast<size_t>(j)].empty()) {
+        *err = row_err[static_cast<size_t>(j)];
+        return false;
       }
     }
   }

@@ -39,8 +39,9 @@ struct WorldBakeInput {
   // 0: the emission reaches the luxels through the bounces' gather alone.
   int area_samples = 16;
   // Per light (empty, or one per light): a sun's angular radius in radians (vrad's
-  // _sunspreadangle): its shadow rays are jittered within that cone, `spread_samples` per sample
-  // point (vrad: 30; rounded up to a square, stratified), so its shadows are soft. 0: one ray.
+  // _sunspreadangle): its shadow rays are jittered within that cone, `spread_samples` per luxel
+  // (vrad: 30 per sample point) shared among its supersamples, each taking a square of strata
+  // (2 x 2 supersamples: 3 x 3 rays each), so its shadows are soft. 0: one ray.
   std::vector<double> light_spread;
   int spread_samples = 30;
 };

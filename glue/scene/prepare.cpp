@@ -493,6 +493,11 @@ bool prepare_scene(const Scene &s, const SceneSelection &sel, int w, int h, Api 
     ps.bake_passes = bake.bounce.passes;
     ps.bake_direct_ms = bake.direct_ms;
     ps.bake_bounce_ms = bake.bounce_ms;
+    ps.bake_direct_rays = bake.direct_rays;
+    ps.bake_sky_rays = bake.sky.rays;
+    ps.bake_sky_ms = bake.sky.ms;
+    ps.bake_area_rays = bake.area.rays;
+    ps.bake_area_ms = bake.area.ms;
   }
   TextureDesc page;
   int encoding = -1;

@@ -52,6 +52,10 @@ struct PreparedScene {
   long bake_luxels = 0, bake_gather_rays = 0;
   int bake_passes = 0;
   double bake_direct_ms = 0, bake_bounce_ms = 0;
+  // The direct pass's shadow rays, the sky pass and the area lights (rays, ms; glue/bake/sky.h,
+  // area_lights.h).
+  long bake_direct_rays = 0, bake_sky_rays = 0, bake_area_rays = 0;
+  double bake_sky_ms = 0, bake_area_ms = 0;
   std::vector<std::string> notes;
 };
 

@@ -222,9 +222,10 @@ void soft_shadow() {
   check(umbra > 3 && lit > 3 && bad == 0,
         "soft shadow: luxels in the umbra are 0, those past the penumbra fully lit (the cone ends where geometry puts it)",
         std::to_string(bad) + " off of " + std::to_string(umbra) + " dark, " + std::to_string(lit) + " lit");
-  // 36 stratified shadow rays per sample (vrad's 30 rounded up to a square), 4 samples per luxel:
-  // measured 0.03 of the full light at most; tolerance 0.06.
-  check(partial >= 6 && worst < 0.06, "soft shadow: the penumbra's luxels = the share of the sun's cone the occluder leaves",
+  // 36 stratified shadow rays per luxel (vrad's 30 rounded up), 3 x 3 for each of its 4 samples: a
+  // sample's share moves in steps of 1/9 and its strata straddling the occluder's edge are a coin
+  // toss each: measured 0.089 of the full light at most; tolerance 0.12.
+  check(partial >= 6 && worst < 0.12, "soft shadow: the penumbra's luxels = the share of the sun's cone the occluder leaves",
         std::to_string(partial) + " luxels, worst " + std::to_string(worst));
   // The penumbra's width: from the last dark luxel to the first fully lit one, 2 h tan a plus the
   // luxel's own footprint (1/8), within one luxel (1/8) each side.
