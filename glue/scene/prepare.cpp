@@ -431,11 +431,7 @@ bool prepare_scene(const Scene &s, const SceneSelection &sel, int w, int h, Api 
     }
     if (s.sky.image >= 0) {  // the sky pass (glue/bake/sky.h)
       const SceneImage &si = s.images.at(static_cast<size_t>(s.sky.image));
-      ws.sky.rgba = si.rgba.data();
-      ws.sky.w = si.w;
-      ws.sky.h = si.h;
-      ws.sky.scale = s.sky.scale;
-      ws.sky.samples = s.sky.samples;
+      ws.sky = BakeSky{si.rgba.data(), si.w, si.h, s.sky.scale, s.sky.samples};
     }
     int cube_size = 16;
     for (size_t i = 0; i < s.probes.size(); ++i) {
@@ -494,10 +490,8 @@ bool prepare_scene(const Scene &s, const SceneSelection &sel, int w, int h, Api 
     ps.bake_direct_ms = bake.direct_ms;
     ps.bake_bounce_ms = bake.bounce_ms;
     ps.bake_direct_rays = bake.direct_rays;
-    ps.bake_sky_rays = bake.sky.rays;
-    ps.bake_sky_ms = bake.sky.ms;
-    ps.bake_area_rays = bake.area.rays;
-    ps.bake_area_ms = bake.area.ms;
+    ps.bake_sky_rays = bake.sky.rays, ps.bake_area_rays = bake.area.rays;
+    ps.bake_sky_ms = bake.sky.ms, ps.bake_area_ms = bake.area.ms;
   }
   TextureDesc page;
   int encoding = -1;
