@@ -219,6 +219,48 @@ def quad(o, U, V, su=1.0, sv=1.0):
                                          idx=[0, 1, 2, 0, 2, 3]))
 
 
+def wall_with_window(o, U, V, su, sv, a0, a1, b0, b1):
+    """The rectangle o + a U + b V (as quad()) less the window a0 < a < a1, b0 < b < b1: four quads
+    (below, above, left, right of it) whose texture continues across them as quad()'s would."""
+    def part(pa0, pa1, pb0, pb1):
+        q = quad([o[k] + pa0 * U[k] + pb0 * V[k] for k in range(3)], [(pa1 - pa0) * U[k] for k in range(3)],
+                 [(pb1 - pb0) * V[k] for k in range(3)])
+        for uv, (a, b) in zip(q["uv"], ((pa0, pb0), (pa1, pb0), (pa1, pb1), (pa0, pb1))):
+            uv[0], uv[1] = a * su, (1 - b) * sv
+        return q
+    return [part(0, 1, 0, b0), part(0, 1, b1, 1), part(0, a0, b0, b1), part(a1, 1, b0, b1)]
+
+
+def write_sky_hdr(path, w, h, fn):
+    """A lat-long Radiance RGBE image (flat scanlines, row 0 at the top: v = acos(y) / pi down, u =
+    atan2(x, -z) / 2pi + 0.5 across, glue's probe convention) of the linear radiance fn(x, y, z)."""
+    out = bytearray(b"#?RADIANCE\nFORMAT=32-bit_rle_rgbe\n\n-Y %d +X %d\n" % (h, w))
+    for j in range(h):
+        theta = (j + 0.5) / h * math.pi
+        for i in range(w):
+            phi = ((i + 0.5) / w - 0.5) * 2 * math.pi
+            x, y, z = math.sin(theta) * math.sin(phi), math.cos(theta), -math.sin(theta) * math.cos(phi)
+            rgb = fn(x, y, z)
+            m = max(rgb)
+            if m < 1e-32:
+                out += bytes(4)
+                continue
+            e = math.frexp(m)[1]
+            out += bytes([min(255, int(c / 2.0 ** e * 256)) for c in rgb] + [e + 128])
+    with open(path, "wb") as f:
+        f.write(out)
+
+
+def day_sky(x, y, z):
+    """A smooth daylight sky (linear radiance): blue at the zenith, bright at the horizon, a warm
+    glow towards the sun's side (-z, up), a dim brown ground below the horizon."""
+    if y < 0:
+        return (0.25, 0.2, 0.15)
+    glow = max(0.0, 0.3 * x + 0.5 * y - 0.8 * z) ** 4
+    h = 1 - y
+    return (1.2 + 1.6 * h + 2.0 * glow, 1.6 + 1.4 * h + 1.6 * glow, 2.6 + 0.6 * h + 1.0 * glow)
+
+
 def box_quads(center, size, tiles=1.0):
     """Five faces (no bottom) of an axis-aligned box standing on y = center[1]."""
     cx, cy, cz = center
@@ -479,6 +521,7 @@ def model_lighting():
 
 
 def world_lighting():
+    write_sky_hdr(os.path.join(SCENES, "textures", "day_sky.hdr"), 64, 32, day_sky)
     g = Gltf("world_lighting")
     W = "LightmappedGeneric"
     floor = g.material("floor_tiles", {"shader": W, "$envmap": 1, "$normalmapalphaenvmapmask": 1,
@@ -497,7 +540,9 @@ def world_lighting():
     X, Y, Z = 4.0, 3.0, 3.0
     g.mesh("floor", [(quad([-X, 0, Z], [2 * X, 0, 0], [0, 0, -2 * Z], 2 * X / 2, 2 * Z / 2), floor)])
     g.mesh("ceiling", [(quad([-X, Y, -Z], [2 * X, 0, 0], [0, 0, 2 * Z], 2 * X / 2, 2 * Z / 2), ceiling)])
-    g.mesh("wall_back", [(quad([-X, 0, -Z], [2 * X, 0, 0], [0, Y, 0], 2 * X / 2, Y / 2), brick)])
+    # the back wall has a window (x -0.4..2.6, y 0.9..2.6) onto the sky (extras.tiershade.sky)
+    g.mesh("wall_back", [(q, brick) for q in wall_with_window([-X, 0, -Z], [2 * X, 0, 0], [0, Y, 0], 2 * X / 2,
+                                                             Y / 2, 3.6 / 8, 6.6 / 8, 0.9 / 3, 2.6 / 3)])
     g.mesh("wall_front", [(quad([X, 0, Z], [-2 * X, 0, 0], [0, Y, 0], 2 * X / 2, Y / 2), brick)])
     g.mesh("wall_left_ssbump", [(quad([-X, 0, Z], [0, 0, -2 * Z], [0, Y, 0], 2 * Z / 1.5, Y / 1.5), stone)])
     g.mesh("wall_right", [(quad([X, 0, -Z], [0, 0, 2 * Z], [0, Y, 0], 2 * Z / 2, Y / 2), brick)])
@@ -512,6 +557,11 @@ def world_lighting():
              "probes": [{"name": "room_centre", "position": [0, 1.5, 0], "size": 64},
                         {"name": "by_the_crate", "position": [-2.6, 1.0, -1.0], "size": 32}],
              "lightmaps": {"luxels_per_unit": 8, "encoding": "rgbe", "page": [512, 256]},
+             # the sky seen through the window: a small smooth lat-long HDR written here, few rays
+             # per luxel (the scene is baked at every load); its sun through the window, soft-edged
+             "sky": {"image": "textures/day_sky.hdr", "scale": 0.6, "samples": 16,
+                     "sun": {"direction": [0.35, 0.55, -1.0], "color": [1.0, 0.93, 0.8], "intensity": 1.5,
+                             "spread_degrees": 4.0}},
              # a faint range fog: the pixel fog ps2b/sm3 apply and ps20 drops (docs/world_lighting.md)
              "fog": {"color": [0.05, 0.05, 0.06], "start": 3.0, "end": 15.0, "max_density": 0.5},
              "hdr": {"path": "integer", "tone_map_scale": 1.0}})

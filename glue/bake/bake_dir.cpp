@@ -32,8 +32,9 @@ const long kManifestMaxBytes = 64l << 20;  // bounded: a face is ~300 bytes of m
 // below (and its size here updated), else a stale bake would pass for a current one.
 static_assert(sizeof(WorldFace) == 184, "WorldFace changed: hash the new field in bake_input_hash");
 static_assert(sizeof(rnm_light) == 160, "rnm_light changed: hash the new field in bake_input_hash");
-static_assert(sizeof(BounceSettings) == 32, "BounceSettings changed: hash the new field in bake_input_hash");
-static_assert(sizeof(WorldBakeInput) == 160, "WorldBakeInput changed: hash the new field in bake_input_hash");
+// (BounceSettings::emission_sampled is set by bake_world from area_samples, which is hashed.)
+static_assert(sizeof(BounceSettings) == 40, "BounceSettings changed: hash the new field in bake_input_hash");
+static_assert(sizeof(WorldBakeInput) == 240, "WorldBakeInput changed: hash the new field in bake_input_hash");
 
 void vec(ContentHash &h, const ts_vec3d &v) {
   h.value(v.x);
@@ -95,8 +96,20 @@ BakeHash bake_input_hash(const WorldBakeInput &in) {
     l.value(r.cos_outer);
     l.value(r.exponent);
   }
+  // The sky and the suns' spread (glue/bake/sky.h, world_bake.h) light the scene like the lights.
+  for (double a : in.light_spread) l.value(a);
+  l.value(in.sky.present());
+  if (in.sky.present()) {
+    l.value(in.sky.w);
+    l.value(in.sky.h);
+    l.value(in.sky.scale);
+    for (size_t i = 0; i < static_cast<size_t>(in.sky.w) * in.sky.h * 4; ++i) l.value(in.sky.rgba[i]);
+  }
   for (const ts_vec3d &q : in.probes) vec(p, q);
   s.value(kManifestVersion);
+  s.value(in.sky.samples);
+  s.value(in.area_samples);
+  s.value(in.spread_samples);
   s.value(in.luxels_per_unit);
   s.value(in.page_w);
   s.value(in.page_h);
@@ -176,6 +189,12 @@ bool bake_world_dir(const BakeDirUse &use, WorldBakeInput in, const std::vector<
   sum->direct_rays = out->direct_rays;
   sum->direct_ms = out->direct_ms;
   sum->report = out->bounce;
+  sum->sky = in.sky.present();
+  sum->area_samples = in.area_samples;
+  for (const WorldFace &f : in.faces)
+    sum->emitters += f.emission.x > 0 || f.emission.y > 0 || f.emission.z > 0;
+  sum->sky_pass = out->sky;
+  sum->area_pass = out->area;
   for (size_t i = 0; i < in.faces.size(); ++i) {
     BakeFace f;
     f.name = in.faces[i].name ? in.faces[i].name : "";

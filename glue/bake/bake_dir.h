@@ -45,6 +45,10 @@ struct BakeSummary {
   std::vector<BakeFace> faces;
   long luxels = 0, direct_rays = 0;
   double direct_ms = 0;
+  bool sky = false;  // the scene has a sky (glue/bake/sky.h)
+  int emitters = 0, area_samples = 0;  // faces with emission, sampled as area lights
+  SkyReport sky_pass;  // rays 0 on a resumed bake (the saved pass 0 holds it)
+  AreaLightReport area_pass;
   BounceReport report;
 };
 

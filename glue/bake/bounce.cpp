@@ -76,8 +76,8 @@ bool bounce_light(const std::vector<WorldFace> &faces, const std::vector<std::ar
       for (int i = 0; i < g.w; ++i) {
         const glm::dvec3 e = to_glm(g.at(i, j, 0));
         total += e.x + e.y + e.z;
-        send[f][static_cast<size_t>(j) * g.w + i] =
-            to_ts(to_glm(faces[f].emission) + to_glm(faces[f].reflectivity) * e);
+        const glm::dvec3 le = set.emission_sampled ? glm::dvec3(0.0) : to_glm(faces[f].emission);
+        send[f][static_cast<size_t>(j) * g.w + i] = to_ts(le + to_glm(faces[f].reflectivity) * e);
       }
   }
   if (resume) {  // after a saved bounce: what it sends, the sums so far

@@ -31,6 +31,9 @@ struct BounceSettings {
   double threshold = 1e-3;  // stop when a pass adds at most this share of the flat light so far (summed over luxels)
   int threads = 0;  // 0: all cores; the result is the same for any count
   uint64_t seed = 0;  // mixed into every luxel's stream: another seed, independent noise
+  // The faces' emission already reached the luxels as area lights (glue/bake/area_lights.h): the
+  // first pass sends only the light the faces reflect (set by bake_world; docs/baking.md).
+  bool emission_sampled = false;
 };
 
 struct BounceReport {

@@ -9,8 +9,10 @@
 
 #include "bake/bounce.h"
 #include "bake/glm_ts.h"
+#include "bake/luxel_rng.h"
 #include "bake/ray_scene.h"
 #include "base/cube_faces.h"
+#include "base/parallel_rows.h"
 #include "offline/envmap_probes.h"
 #include "offline/lightmap_encoding.h"
 
@@ -22,17 +24,48 @@ int luxels(double len, double per_unit) { return std::max(2, static_cast<int>(st
 // Embree's float precision at room scale (~1e-6 m), below any contact a lightmap resolves.
 const double kRayOffset = 1e-4;
 
-// The lights that reach p: those it faces (n . L > 0) whose segment to p nothing blocks.
+// The lights that reach p: those it faces (n . L > 0) whose segment to p nothing blocks. A sun with
+// an angular spread (WorldBakeInput::light_spread, vrad's _sunspreadangle) sends its shadow rays
+// jittered within its cone, stratified from the sample's own stream `rng`, and reaches p scaled by
+// the share of them that nothing blocks (a ray below the face's plane counting as blocked); its
+// cosines stay those of its central direction (vrad's emit_skylight: the dots times the visible
+// fraction). `rays` counts the shadow rays.
 void visible_lights(const WorldBakeInput &s, const glm::dvec3 &p, const glm::dvec3 &n, std::vector<rnm_light> *out,
-                    long *rays = nullptr) {
+                    LuxelRng *rng, long *rays) {
   out->clear();
-  for (const rnm_light &l : s.lights) {
+  for (size_t li = 0; li < s.lights.size(); ++li) {
+    const rnm_light &l = s.lights[li];
     const glm::dvec3 to = l.directional ? -to_glm(l.dir) : to_glm(l.pos) - p;
     if (!(glm::dot(to, n) > 0)) continue;  // behind the face: it feeds no value (rnm_bake_texel)
     const glm::dvec3 o = p + n * kRayOffset;
+    const double spread = li < s.light_spread.size() ? s.light_spread[li] : 0.0;
+    if (l.directional && spread > 0 && s.rays) {
+      // spread_samples per luxel, shared among its ss x ss samples (each a square of strata).
+      const int ss = std::max(1, s.supersample);
+      const int per = std::max(1, (s.spread_samples + ss * ss - 1) / (ss * ss));
+      const int side = std::max(1, static_cast<int>(std::ceil(std::sqrt(static_cast<double>(per)))));
+      const glm::dvec3 a = glm::normalize(to);
+      glm::dvec3 au, av;
+      frame_of(a, &au, &av);
+      int seen = 0;
+      for (int k = 0; k < side * side; ++k) {
+        double r1, r2;
+        stratum(k, side, rng, &r1, &r2);
+        const glm::dvec3 d = cone_dir(a, au, av, std::cos(spread), r1, r2);
+        if (!(glm::dot(d, n) > 0)) continue;
+        ++*rays;
+        seen += !s.rays->occluded(o, d, 0.0, INFINITY);
+      }
+      if (seen == 0) continue;
+      rnm_light part = l;
+      const double share = static_cast<double>(seen) / (side * side);
+      part.color = ts_v3d(l.color.x * share, l.color.y * share, l.color.z * share);
+      out->push_back(part);
+      continue;
+    }
     const glm::dvec3 d = l.directional ? to : to_glm(l.pos) - o;
     // Point and spot lights: the segment up to the light (t < 1); a sun: the whole ray.
-    if (rays) ++*rays;
+    if (s.rays) ++*rays;
     if (s.rays && s.rays->occluded(o, d, 0.0, l.directional ? INFINITY : 1.0 - 1e-9)) continue;
     out->push_back(l);
   }
@@ -40,8 +73,8 @@ void visible_lights(const WorldBakeInput &s, const glm::dvec3 &p, const glm::dve
 
 // The four values (flat, b0, b1, b2) at p with visibility.
 int lit_values(const WorldBakeInput &s, const glm::dvec3 &p, ts_vec3d n, const ts_vec3d bump[3], ts_vec3d v4[4],
-               std::vector<rnm_light> *scratch, char *msg, size_t len, long *rays = nullptr) {
-  visible_lights(s, p, to_glm(n), scratch, rays);
+               std::vector<rnm_light> *scratch, LuxelRng *rng, long *rays, char *msg, size_t len) {
+  visible_lights(s, p, to_glm(n), scratch, rng, rays);
   return rnm_bake_texel(to_ts(p), n, bump, scratch->data(), static_cast<int>(scratch->size()), v4, msg, len);
 }
 
@@ -137,10 +170,15 @@ bool bake_world(const WorldBakeInput &in, WorldBake *out, std::string *err) {
       }
     }
     const int ss = std::max(1, s.supersample);
-    std::vector<rnm_light> scratch;
     LuxelGrid &g = grids[fi];
-    for (int j = 0; j < g.h; ++j) {
-      for (int i = 0; i < g.w; ++i) {
+    // Rows on the bake's threads (each luxel's samples and streams its own: the same bytes on any
+    // count); a row's first error is reported, the lowest row's first.
+    std::vector<std::string> row_err(static_cast<size_t>(g.h));
+    std::vector<long> row_rays(static_cast<size_t>(g.h), 0);
+    parallel_rows(g.h, s.bounce.threads, [&](int j) {
+      std::vector<rnm_light> scratch;
+      char rmsg[256];
+      for (int i = 0; i < g.w && row_err[static_cast<size_t>(j)].empty(); ++i) {
         // The luxel's footprint is one luxel spacing wide, centred on its grid point; ss x ss samples.
         glm::dvec3 v4[4] = {glm::dvec3(0.0), glm::dvec3(0.0), glm::dvec3(0.0), glm::dvec3(0.0)};
         for (int sj = 0; sj < ss; ++sj)
@@ -148,22 +186,45 @@ bool bake_world(const WorldBakeInput &in, WorldBake *out, std::string *err) {
             const double a = std::clamp((i + (si + 0.5) / ss - 0.5) / (g.w - 1), 0.0, 1.0);
             const double b = std::clamp((j + (sj + 0.5) / ss - 0.5) / (g.h - 1), 0.0, 1.0);
             ts_vec3d s4[4];
-            if (lit_values(s, to_glm(world_face_sample(f, a, b)), n, bump[fi].data(), s4, &scratch, msg, sizeof msg,
-                           &out->direct_rays) != 0) {
-              *err = std::string(f.name) + ": " + msg;
-              return false;
+            LuxelRng rng = LuxelRng::of(0x53756E /* "Sun" */, fi, static_cast<uint64_t>(j), static_cast<uint64_t>(i),
+                                        static_cast<uint64_t>(sj * ss + si), s.bounce.seed);
+            if (lit_values(s, to_glm(world_face_sample(f, a, b)), n, bump[fi].data(), s4, &scratch, &rng,
+                           &row_rays[static_cast<size_t>(j)], rmsg, sizeof rmsg) != 0) {
+              row_err[static_cast<size_t>(j)] = std::string(f.name) + ": " + rmsg;
+              return;
             }
             for (int k = 0; k < 4; ++k) v4[k] += to_glm(s4[k]);
           }
         for (int k = 0; k < 4; ++k) g.at(i, j, k) = to_ts(v4[k] / static_cast<double>(ss * ss));
       }
+    });
+    for (int j = 0; j < g.h; ++j) {
+      out->direct_rays += row_rays[static_cast<size_t>(j)];
+      if (!row_err[static_cast<size_t>(j)].empty()) {
+        *err = row_err[static_cast<size_t>(j)];
+        return false;
+      }
     }
     luxels_done += static_cast<long>(g.w) * g.h;
     if (s.hooks && s.hooks->progress) s.hooks->progress("direct", luxels_done, out->luxels);
   }
+  out->direct_ms = std::chrono::duration<double, std::milli>(Clock::now() - t_direct).count();
+  // The sky (glue/bake/sky.h) and the emitters as area lights (glue/bake/area_lights.h), added like
+  // the direct light: the first bounce reflects them; emission the area lights sampled is not sent
+  // again by the bounces (docs/baking.md, "Emitters").
+  // A resumed bake's saved pass 0 already holds them (checkpoints, glue/bake/bake_dir.h).
+  if (bake_luxels && !resume) {
+    if (!sky_light(s.faces, bump, *s.rays, s.sky, s.bounce.threads, s.bounce.seed, &grids, &out->sky, err))
+      return false;
+    AreaLightSettings as;
+    as.samples = s.area_samples;
+    as.threads = s.bounce.threads;
+    as.seed = s.bounce.seed;
+    if (!area_lights(s.faces, bump, *s.rays, as, &grids, &out->area, err)) return false;
+  }
+  s.bounce.emission_sampled = bake_luxels && s.area_samples > 0;
   // The interreflected light (glue/bake/bounce.h), then the page.
   const auto t_bounce = Clock::now();
-  out->direct_ms = std::chrono::duration<double, std::milli>(t_bounce - t_direct).count();
   if (bake_luxels) {
     BakePassState state;  // the direct pass: a state of its own (pass 0), saved before the bounces
     state.direct_ms = resume ? resume->direct_ms : out->direct_ms;
@@ -245,8 +306,14 @@ bool bake_world(const WorldBakeInput &in, WorldBake *out, std::string *err) {
             ts_vec3d b3[3], v4[4];
             std::vector<rnm_light> scratch;
             rnm_bump_basis(to_ts(su), to_ts(sv), to_ts(n), to_ts(n), b3, msg, sizeof msg);
-            lit_values(s, to_glm(pos) + d * t, to_ts(n), b3, v4, &scratch, msg, sizeof msg);
+            LuxelRng rng = LuxelRng::of(0x50726F /* "Pro" */, static_cast<uint64_t>(&pos - s.probes.data()),
+                                        static_cast<uint64_t>(face), static_cast<uint64_t>(j), static_cast<uint64_t>(i),
+                                        s.bounce.seed);
+            long probe_rays = 0;
+            lit_values(s, to_glm(pos) + d * t, to_ts(n), b3, v4, &scratch, &rng, &probe_rays, msg, sizeof msg);
             rad = to_glm(v4[0]) * 0.6;
+          } else if (s.sky.present()) {  // nothing: the sky
+            rad = to_glm(sky_radiance(s.sky, to_ts(d)));
           }
           for (const rnm_light &l : s.lights) {  // a light bulb of radius 0.08 (not for a sun)
             if (l.directional) continue;

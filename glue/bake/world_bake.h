@@ -6,7 +6,9 @@
 #include <string>
 #include <vector>
 
+#include "bake/area_lights.h"
 #include "bake/bounce.h"
+#include "bake/sky.h"
 #include "bake/world_faces.h"
 #include "families/world_lighting.h"
 #include "offline/lightmap_page.h"
@@ -35,6 +37,17 @@ struct WorldBakeInput {
   // saved pass, a call after each finished pass (the direct one included), progress per face.
   // They change no value: a resumed bake gives the same page bytes as an uninterrupted one.
   const BakeHooks *hooks = nullptr;
+  // The sky (glue/bake/sky.h): absent (the default), no sky pass.
+  BakeSky sky;
+  // Emitting faces sampled as area lights (glue/bake/area_lights.h): points per luxel and emitter;
+  // 0: the emission reaches the luxels through the bounces' gather alone.
+  int area_samples = 16;
+  // Per light (empty, or one per light): a sun's angular radius in radians (vrad's
+  // _sunspreadangle): its shadow rays are jittered within that cone, `spread_samples` per luxel
+  // (vrad: 30 per sample point) shared among its supersamples, each taking a square of strata
+  // (2 x 2 supersamples: 3 x 3 rays each), so its shadows are soft. 0: one ray.
+  std::vector<double> light_spread;
+  int spread_samples = 30;
 };
 
 // The baked lighting: the page in float32 (flat, b0, b1, b2 per face, borders filled),
@@ -49,6 +62,8 @@ struct WorldBake {
   double direct_ms = 0, bounce_ms = 0;  // the direct pass (samples, shadow rays) and the bounces
   long direct_rays = 0;  // shadow rays of the direct pass
   int resumed_after = -1;  // the saved pass the bake resumed after (hooks->resume), -1: none
+  SkyReport sky;  // the sky pass (rays 0 without a sky)
+  AreaLightReport area;  // the area-light pass
 };
 bool bake_world(const WorldBakeInput &s, WorldBake *out, std::string *err);
 

@@ -67,7 +67,23 @@ std::vector<std::string> bake_report(const BakeSummary &s) {
   snprintf(b, sizeof b, "direct: %d lights, %ld shadow rays (%d x %d samples per luxel)", s.lights, s.direct_rays,
            s.supersample, s.supersample);
   r.push_back(b);
-  r.push_back("no sky in the scene: no sky rays");
+  if (!s.sky)
+    r.push_back("no sky in the scene: no sky rays");
+  else if (s.resumed_after >= 0)
+    r.push_back("sky: in the saved direct pass (resumed)");
+  else {
+    snprintf(b, sizeof b, "sky: %ld rays through the openings (%.0f ms)", s.sky_pass.rays, s.sky_pass.ms);
+    r.push_back(b);
+  }
+  if (s.emitters == 0)
+    r.push_back("no emissive face: no area-light rays");
+  else if (s.area_samples == 0)
+    r.push_back("emissive faces reach the luxels through the bounces alone (area lights off)");
+  else if (s.resumed_after < 0) {
+    snprintf(b, sizeof b, "%d emissive faces as area lights: %ld shadow rays (%.0f ms)", s.emitters,
+             s.area_pass.rays, s.area_pass.ms);
+    r.push_back(b);
+  }
   if (black)
     snprintf(b, sizeof b, "%d faces of reflectivity 0: no bounce rays (%ld luxels; they show black)", black,
              black_luxels);

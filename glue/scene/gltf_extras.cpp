@@ -59,6 +59,16 @@ bool convert_light(const tinygltf::Model &m, int li, const glm::dmat4 &world, co
       if (!read_number(src.Get("exponent"), sp + ".exponent", 0, 1000, &exponent, e)) return false;
     }
   }
+  double spread_degrees = 0;  // extras.tiershade.spread_degrees: a sun's angular radius (docs/scenes.md)
+  if (L.extras.IsObject() && L.extras.Has("tiershade")) {
+    const std::string tp = place + ".extras.tiershade";
+    const tinygltf::Value &t = L.extras.Get("tiershade");
+    if (!check_keys(t, tp, {"spread_degrees"}, e)) return false;
+    if (t.Has("spread_degrees")) {
+      if (l.type != TS_LIGHT_DIRECTIONAL) return e.fail(tp + ".spread_degrees", "only directional lights have a spread");
+      if (!read_number(t.Get("spread_degrees"), tp + ".spread_degrees", 0, 45, &spread_degrees, e)) return false;
+    }
+  }
   if (l.type == TS_LIGHT_DIRECTIONAL) atten[0] = 1, atten[1] = 0, atten[2] = 0;
   for (int k = 0; k < 3; ++k) l.atten[k] = static_cast<float>(atten[k]);
   if (l.type == TS_LIGHT_SPOT) {
@@ -75,6 +85,7 @@ bool convert_light(const tinygltf::Model &m, int li, const glm::dmat4 &world, co
   SceneLight sl;
   sl.name = L.name.empty() ? "lights[" + std::to_string(li) + "]" : L.name;
   sl.light = l;
+  sl.spread = spread_degrees * glm::pi<double>() / 180;
   s->lights.push_back(sl);
   return true;
 }
@@ -277,6 +288,66 @@ bool read_lightmaps(const tinygltf::Value &v, const std::string &place, const st
   return true;
 }
 
+// extras.tiershade.sky (docs/scenes.md, "Sky"): {"image", "scale", "samples", "sun": {"direction",
+// "color", "intensity", "spread_degrees"}}; the sun becomes one more directional light.
+bool read_sky(const tinygltf::Value &v, const std::string &place, const std::string &dir, Scene *s, Err &e) {
+  if (!check_keys(v, place, {"image", "scale", "samples", "sun"}, e)) return false;
+  if (!v.Has("image")) return e.fail(place, "missing \"image\"");
+  std::string rel, msg;
+  if (!read_string(v.Get("image"), place + ".image", &rel, e)) return false;
+  const std::string path = join_path(dir, rel);
+  if (!file_exists(path)) return e.fail(place + ".image", "file not found: " + path);
+  const bool exr = ends_with(path, ".exr"), hdr = ends_with(path, ".hdr");
+  if (!exr && !hdr) return e.fail(place + ".image", path + ": expected a .hdr or .exr file");
+  ImageF img;
+  if (!(exr ? read_exr(path, &img, &msg) : read_hdr(path, &img, &msg))) return e.fail(place + ".image", msg);
+  for (size_t i = 0; i < img.rgba.size(); ++i)
+    if (i % 4 != 3 && !(std::isfinite(img.rgba[i]) && img.rgba[i] >= 0))
+      return e.fail(place + ".image", path + ": texel " + std::to_string(i / 4) + ": radiance must be finite and >= 0");
+  double d = 1;
+  if (v.Has("scale")) {
+    if (!read_number(v.Get("scale"), place + ".scale", 0, 1e6, &d, e)) return false;
+    s->sky.scale = static_cast<float>(d);
+  }
+  if (v.Has("samples") && !read_int(v.Get("samples"), place + ".samples", 1, 4096, &s->sky.samples, e)) return false;
+  if (v.Has("sun")) {
+    const std::string sp = place + ".sun";
+    const tinygltf::Value &o = v.Get("sun");
+    if (!check_keys(o, sp, {"direction", "color", "intensity", "spread_degrees"}, e)) return false;
+    if (!o.Has("direction")) return e.fail(sp, "missing \"direction\"");
+    double to_sun[3], color[3] = {1, 1, 1}, intensity = 1, spread = 0;
+    if (!read_vec(o.Get("direction"), sp + ".direction", 3, -1e6, 1e6, to_sun, e)) return false;
+    const double len = std::sqrt(to_sun[0] * to_sun[0] + to_sun[1] * to_sun[1] + to_sun[2] * to_sun[2]);
+    if (!(len > 0)) return e.fail(sp + ".direction", "must not be zero");
+    if ((o.Has("color") && !read_vec(o.Get("color"), sp + ".color", 3, 0, 1e6, color, e)) ||
+        (o.Has("intensity") && !read_number(o.Get("intensity"), sp + ".intensity", 0, 1e9, &intensity, e)) ||
+        (o.Has("spread_degrees") && !read_number(o.Get("spread_degrees"), sp + ".spread_degrees", 0, 45, &spread, e)))
+      return false;
+    SceneLight sun;
+    sun.name = "extras.tiershade.sky.sun";
+    memset(&sun.light, 0, sizeof sun.light);
+    sun.light.type = TS_LIGHT_DIRECTIONAL;
+    for (int k = 0; k < 3; ++k) {
+      sun.light.dir[k] = static_cast<float>(-to_sun[k] / len);  // the direction the light travels
+      sun.light.color[k] = static_cast<float>(color[k] * intensity);
+    }
+    sun.light.atten[0] = 1;
+    float packed[5][4];
+    char m[256] = {0};
+    if (!ts_light_pack(&sun.light, packed, m, sizeof m)) return e.fail(sp, m);
+    sun.spread = spread * glm::pi<double>() / 180;
+    s->lights.push_back(sun);
+  }
+  SceneImage si;
+  si.path = path;
+  si.w = img.w;
+  si.h = img.h;
+  si.rgba = std::move(img.rgba);
+  s->sky.image = static_cast<int>(s->images.size());
+  s->images.push_back(std::move(si));
+  return true;
+}
+
 bool read_fog(const tinygltf::Value &v, const std::string &place, SceneFog *f, Err &e) {
   if (!check_keys(v, place, {"color", "start", "end", "max_density"}, e)) return false;
   for (const char *k : {"color", "start", "end"})
@@ -302,7 +373,7 @@ bool convert_tiershade_extras(const tinygltf::Model &m, const std::string &dir, 
   const std::string place = "extras.tiershade";
   if (m.extras.IsObject() && m.extras.Has("tiershade")) {
     const tinygltf::Value &t = m.extras.Get("tiershade");
-    if (!check_keys(t, place, {"camera", "probes", "ambient", "hdr", "lightmaps", "fog"}, e)) return false;
+    if (!check_keys(t, place, {"camera", "probes", "ambient", "hdr", "lightmaps", "fog", "sky"}, e)) return false;
     if (t.Has("camera") &&
         !read_int(t.Get("camera"), place + ".camera", 0, static_cast<int>(s->cameras.size()) - 1, &s->camera, e))
       return false;
@@ -312,6 +383,7 @@ bool convert_tiershade_extras(const tinygltf::Model &m, const std::string &dir, 
     if (t.Has("lightmaps") && !read_lightmaps(t.Get("lightmaps"), place + ".lightmaps", dir, &s->lightmaps, e))
       return false;
     if (t.Has("fog") && !read_fog(t.Get("fog"), place + ".fog", &s->fog, e)) return false;
+    if (t.Has("sky") && !read_sky(t.Get("sky"), place + ".sky", dir, s, e)) return false;
   }
   for (const SceneMaterial &mat : s->materials)
     if (mat.probe >= static_cast<int>(s->probes.size()))

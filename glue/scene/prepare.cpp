@@ -429,6 +429,11 @@ bool prepare_scene(const Scene &s, const SceneSelection &sel, int w, int h, Api 
         r.exponent = l.light.spot_exponent;
       }
       ws.lights.push_back(r);
+      ws.light_spread.push_back(l.spread);  // a sun's angular radius: soft shadows (glue/bake/world_bake.h)
+    }
+    if (s.sky.image >= 0) {  // the sky pass (glue/bake/sky.h)
+      const SceneImage &si = s.images.at(static_cast<size_t>(s.sky.image));
+      ws.sky = BakeSky{si.rgba.data(), si.w, si.h, s.sky.scale, s.sky.samples};
     }
     int cube_size = 16;
     for (size_t i = 0; i < s.probes.size(); ++i) {
@@ -487,6 +492,9 @@ bool prepare_scene(const Scene &s, const SceneSelection &sel, int w, int h, Api 
     ps.bake_passes = bake.bounce.passes;
     ps.bake_direct_ms = bake.direct_ms;
     ps.bake_bounce_ms = bake.bounce_ms;
+    ps.bake_direct_rays = bake.direct_rays;
+    ps.bake_sky_rays = bake.sky.rays, ps.bake_area_rays = bake.area.rays;
+    ps.bake_sky_ms = bake.sky.ms, ps.bake_area_ms = bake.area.ms;
   }
   TextureDesc page;
   int encoding = -1;

@@ -54,6 +54,10 @@ struct PreparedScene {
   int bake_passes = 0;
   double bake_direct_ms = 0, bake_bounce_ms = 0;
   BakeSummary bake_summary;  // what the bake was (glue/bake/bake_dir.h): hash, faces, passes
+  // The direct pass's shadow rays, the sky pass and the area lights (rays, ms; glue/bake/sky.h,
+  // area_lights.h).
+  long bake_direct_rays = 0, bake_sky_rays = 0, bake_area_rays = 0;
+  double bake_sky_ms = 0, bake_area_ms = 0;
   std::vector<std::string> notes;
 };
 

@@ -98,6 +98,7 @@ struct SceneInstance {
 struct SceneLight {
   std::string name;  // KHR_lights_punctual light name or "lights[i]"
   ts_light light;  // world space; colour = glTF colour x intensity
+  double spread = 0;  // a directional light's angular radius (radians): soft shadows in the bake (docs/baking.md)
 };
 
 struct SceneCamera {
@@ -179,6 +180,14 @@ struct SceneFog {
   float max_density = 1.f;
 };
 
+// The sky ("sky" in the scene's extras): a lat-long HDR radiance image lighting the bake through the
+// scene's openings (docs/baking.md, "The sky"); its optional sun is one more directional light.
+struct SceneSky {
+  int image = -1;  // index into images (.hdr/.exr lat-long, the probes' convention); -1: no sky
+  float scale = 1.f;  // radiance multiplier
+  int samples = 64;  // bake rays per luxel and lightmap value
+};
+
 struct Scene {
   std::string path;  // the .gltf/.glb file
   std::vector<SceneImage> images;
@@ -193,6 +202,7 @@ struct Scene {
   SceneHdr hdr;
   SceneLightmaps lightmaps;
   SceneFog fog;
+  SceneSky sky;
 };
 
 // Loads a glTF 2.0 scene (.gltf with external or data-URI buffers and images, or .glb).

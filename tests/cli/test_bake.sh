@@ -99,7 +99,8 @@ expect "page of the wrong size" 1 "small\.gltf: extras\.tiershade\.lightmaps\.im
 in_repo bake scenes/world_lighting.gltf -o "$TMP/wl/world.bake"
 if [ "$RC" -eq 0 ] && [ -s "$TMP/wl/world.bake/page.exr" ] && grep -q '"format": "tiershade bake"' "$TMP/wl/world.bake/manifest.json" &&
   grep -q '"all": "[0-9a-f]\{16\}"' "$TMP/wl/world.bake/manifest.json" && grep -q '"block_w"' "$TMP/wl/world.bake/manifest.json" &&
-  [ ! -e "$TMP/wl/world.bake.partial" ] && grep -q '^baked: 10 faces with a normal map: 4 values' "$OUT"; then
+  [ ! -e "$TMP/wl/world.bake.partial" ] && grep -q '^baked: 13 faces with a normal map: 4 values' "$OUT" &&
+  grep -q '^baked: sky: [1-9][0-9]* rays through the openings' "$OUT"; then
   pass "bake -o DIR: page.exr and manifest.json (hash, places), no checkpoints left, the report"
 else fail "bake -o DIR" "status $RC: $(head -n 3 "$ERR") $(ls "$TMP/wl")"; fi
 cmp -s "$TMP/wl/world.bake/page.exr" "$TMP/wl/page.exr" && pass "DIR/page.exr == the -o PAGE.exr page" ||

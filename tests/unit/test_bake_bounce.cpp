@@ -4,6 +4,8 @@
 //     Le r^(k-1)), and at convergence Le / (1 - r), within 0.5 %;
 //   - the bumped values of the uniform field Le / (1 - r): each is (1/pi) of the integral of the
 //     radiance times max(0, b . w) over the face's hemisphere, the same for the three basis vectors;
+//   - the same with the walls sampled as area lights (glue/bake/area_lights.h): the direct pass gives
+//     Le, k bounces Le (1 - r^(k+1)) / (1 - r), the first bounce adds Le r (no emission twice);
 //   - the same bytes for 1 and 2 threads; a scene with no light and no emission traces nothing;
 //     faces without a normal map gather their flat value alone.
 #include <cmath>
@@ -32,7 +34,10 @@ std::vector<WorldFace> box(double r, double le) {
           face("z1", ts_v3d(0, 0, 1), ts_v3d(1, 0, 0), ts_v3d(0, 1, 0), ts_v3d(0, 0, -1))};
 }
 
-bool bake(double r, double le, int bounces, int threads, WorldBake *out, int rays = 16, bool bumped = true) {
+// area: points per luxel and emitter when the walls are sampled as area lights; 0 (these tests'
+// default): the emission reaches the luxels through the gather alone, the first pass sending it.
+bool bake(double r, double le, int bounces, int threads, WorldBake *out, int rays = 16, bool bumped = true,
+          int area = 0) {
   WorldBakeInput in;
   in.faces = box(r, le);
   for (WorldFace &f : in.faces) f.bumped = bumped;
@@ -45,6 +50,7 @@ bool bake(double r, double le, int bounces, int threads, WorldBake *out, int ray
   in.bounce.gather_rays = rays;
   in.bounce.threshold = 0;
   in.bounce.threads = threads;
+  in.area_samples = area;
   std::string err;
   if (!bake_world(in, out, &err)) {
     check(false, "bake the box", err);
@@ -70,6 +76,33 @@ double worst(const WorldBake &b, int k, double expect, double *mean = nullptr) {
       }
   if (mean) *mean = n ? sum / n : 0;
   return w;
+}
+
+// The walls sampled as area lights (glue/bake/area_lights.h): the direct pass alone gives every
+// luxel the whole box's emission Le (the five other walls fill its hemisphere; each wall's share is
+// its exact form factor, Lambert's formula, the shadow rays finding it unoccluded), and the bounces
+// then add only reflected light, Le r + Le r^2 + ... (the emission is not sent twice): after k
+// bounces Le (1 - r^(k+1)) / (1 - r), converged Le / (1 - r).
+void closed_box_area_lights() {
+  const double r = 0.5, le = 1.0;
+  for (int k : {0, 1, 3}) {
+    WorldBake b;
+    if (!bake(r, le, k, 2, &b, 16, true, 16)) return;
+    const double expect = le * (1 - std::pow(r, k + 1)) / (1 - r);
+    const double w = worst(b, 0, expect);
+    // As the gather-only box above: rays slipping through the box's float seams, 1e-3.
+    check(w < 1e-3 && b.area.emitters == 6 && b.area.rays > 0,
+          "closed box, emitters as area lights, " + std::to_string(k) + " bounces: Le (1 - r^(k+1)) / (1 - r)",
+          "worst relative " + std::to_string(w) + ", " + std::to_string(b.area.rays) + " area-light rays");
+    if (k == 3 && b.bounce.added.size() == 3)
+      check(std::fabs(b.bounce.added[0] - le * r) < 1e-3 && std::fabs(b.bounce.added[2] - le * r * r * r) < 1e-3,
+            "closed box, area lights: the first bounce adds Le r (the emission is not counted twice)",
+            std::to_string(b.bounce.added[0]));
+  }
+  WorldBake conv;
+  if (!bake(r, le, 40, 2, &conv, 16, true, 16)) return;
+  const double w = worst(conv, 0, le / (1 - r));
+  check(w < 5e-3, "closed box, area lights, converged: Le / (1 - r) within 0.5 %", "worst relative " + std::to_string(w));
 }
 
 void closed_box() {
@@ -153,6 +186,7 @@ void closed_box() {
 int main() {
   ts_math_init();
   closed_box();
+  closed_box_area_lights();
   printf("%d passed, %d failed\n", g_passed, g_failed);
   return g_failed ? 1 : 0;
 }

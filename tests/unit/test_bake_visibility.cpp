@@ -4,7 +4,9 @@
 //     shadow (its projection from the light, where geometry puts it) holds the mean over its
 //     samples of I cos(theta) / d^2 to 1e-6 relative; every luxel whose samples all lie inside
 //     holds 0; the luxels across the boundary lie in between;
-//   - a sun straight down: the shadow is the occluder's footprint;
+//   - a sun straight down: the shadow is the occluder's footprint; with an angular spread a, the
+//     umbra and the full light end where the sun's cone does (a penumbra 2 h tan a wide), the
+//     penumbra's luxels take the share of the cone the occluder leaves; spread 0: the same bytes;
 //   - basis values: a light on the face normal gives each bumped value the flat value times the
 //     basis vector's z (1/sqrt(3)); a light behind the face gives zero everywhere;
 //   - the ray scene itself: hits and misses, the nearest hit's t and mesh id, a bad index refused.
@@ -38,7 +40,8 @@ struct Floor {
 };
 
 // The floor x, z in [-2, 2] at y = 0, facing +y, 8 luxels per unit (33 x 33), lit by `lights`.
-void bake_floor(const std::vector<rnm_light> &lights, const RayScene *rays, Floor *f) {
+void bake_floor(const std::vector<rnm_light> &lights, const RayScene *rays, Floor *f,
+                const std::vector<double> &spread = {}) {
   f->in.faces = {{"floor", ts_v3d(-2, 0, 2), ts_v3d(1, 0, 0), ts_v3d(0, 0, -1), 4, 4, -1, ts_v3d(0, 1, 0)}};
   f->in.lights = lights;
   f->in.probes = {ts_v3d(0, 1, 0)};
@@ -47,6 +50,7 @@ void bake_floor(const std::vector<rnm_light> &lights, const RayScene *rays, Floo
   f->in.page_h = 64;
   f->in.cube_size = 4;
   f->in.rays = rays;
+  f->in.light_spread = spread;
   std::string err;
   f->ok = bake_world(f->in, &f->out, &err);
   if (!f->ok) check(false, "bake the floor", err);
@@ -158,6 +162,83 @@ void shadows() {
   check(again.ok && again.out.page == pf.out.page, "the bake is deterministic");
 }
 
+// A sun straight down of angular radius a (WorldBakeInput::light_spread, vrad's _sunspreadangle)
+// over the occluder at height h = 2: from a floor point the sun's cone meets the occluder's plane in
+// a disc of radius R = h tan a, so the umbra ends R inside the occluder's footprint's edge and the
+// full light starts R outside it: a penumbra 2 h tan a wide. The share of the cone (uniform in solid
+// angle) that misses the occluder, by quadrature, is what each sample sees.
+double sun_share(double x, double z, double a) {
+  const int nt = 200, np = 400;
+  double seen = 0;
+  for (int it = 0; it < nt; ++it)
+    for (int ip = 0; ip < np; ++ip) {
+      const double ct = 1 - (it + 0.5) / nt * (1 - std::cos(a)), st = std::sqrt(1 - ct * ct);
+      const double ph = (ip + 0.5) / np * 2 * M_PI;
+      const double hx = x + kOccY * st * std::cos(ph) / ct, hz = z + kOccY * st * std::sin(ph) / ct;
+      seen += std::max(std::fabs(hx), std::fabs(hz)) > kOcc;
+    }
+  return seen / (nt * np);
+}
+
+void soft_shadow() {
+  RayScene rays;
+  add_quad(&rays, 0.0, 2.0, 0, "floor");
+  add_quad(&rays, kOccY, kOcc, 1, "occluder");
+  std::string err;
+  if (!rays.commit(&err)) return check(false, "commit", err);
+  const double a = 8 * M_PI / 180, R = kOccY * std::tan(a), I = 3;
+  Floor f;
+  bake_floor({sun(-1, I)}, &rays, &f, {a});
+  if (!f.ok) return;
+  // The rows j = 15..17 (|z| <= 0.16 + R < 0.5: only the occluder's x edges shadow them).
+  long umbra = 0, lit = 0, partial = 0, bad = 0;
+  double worst = 0, last_dark = -1, first_lit = 3;
+  for (int j = 15; j <= 17; ++j)
+    for (int i = 16; i < f.w; ++i) {
+      double expect = 0, lo = 1, hi = 0;
+      for (int sj = 0; sj < 2; ++sj)
+        for (int si = 0; si < 2; ++si) {
+          double x, z;
+          sample_xz(i, j, si, sj, &x, &z);
+          const double sh = sun_share(x, z, a);
+          expect += sh / 4;
+          lo = std::min(lo, sh);
+          hi = std::max(hi, sh);
+        }
+      const double v = value(f, 0, i, j).x / I, x = -2 + 4.0 * i / 32;
+      if (hi == 0) {
+        ++umbra;
+        bad += v != 0;
+      } else if (lo == 1) {
+        ++lit;
+        bad += std::fabs(v - 1) > 1e-6;
+      } else {
+        ++partial;
+        worst = std::max(worst, std::fabs(v - expect));
+      }
+      if (v == 0) last_dark = std::max(last_dark, x);
+      if (std::fabs(v - 1) < 1e-6) first_lit = std::min(first_lit, x);
+    }
+  check(umbra > 3 && lit > 3 && bad == 0,
+        "soft shadow: luxels in the umbra are 0, those past the penumbra fully lit (the cone ends where geometry puts it)",
+        std::to_string(bad) + " off of " + std::to_string(umbra) + " dark, " + std::to_string(lit) + " lit");
+  // 36 stratified shadow rays per luxel (vrad's 30 rounded up), 3 x 3 for each of its 4 samples: a
+  // sample's share moves in steps of 1/9 and its strata straddling the occluder's edge are a coin
+  // toss each: measured 0.089 of the full light at most; tolerance 0.12.
+  check(partial >= 6 && worst < 0.12, "soft shadow: the penumbra's luxels = the share of the sun's cone the occluder leaves",
+        std::to_string(partial) + " luxels, worst " + std::to_string(worst));
+  // The penumbra's width: from the last dark luxel to the first fully lit one, 2 h tan a plus the
+  // luxel's own footprint (1/8), within one luxel (1/8) each side.
+  const double width = first_lit - last_dark;
+  check(std::fabs(width - (2 * R + 0.125)) <= 2 * 0.125, "soft shadow: the penumbra is 2 h tan(spread) wide, within a luxel",
+        "measured " + std::to_string(width) + ", geometry " + std::to_string(2 * R) + " + 0.125");
+  // Spread 0 is the hard shadow, byte for byte.
+  Floor hard, zero;
+  bake_floor({sun(-1, I)}, &rays, &hard);
+  bake_floor({sun(-1, I)}, &rays, &zero, {0.0});
+  check(hard.ok && zero.ok && hard.out.page == zero.out.page, "soft shadow: spread 0 gives the hard shadow's page bytes");
+}
+
 void basis_values() {
   RayScene rays;
   add_quad(&rays, 0.0, 2.0, 0, "floor");
@@ -209,7 +290,7 @@ void ray_scene() {
 
 int main() {
   ts_math_init();
-  for (void (*test)() : {ray_scene, shadows, basis_values}) test();
+  for (void (*test)() : {ray_scene, shadows, soft_shadow, basis_values}) test();
   printf("%d passed, %d failed\n", g_passed, g_failed);
   return g_failed ? 1 : 0;
 }

@@ -179,8 +179,13 @@ void test_world_lighting() {
   const bool ok = load_scene("scenes/world_lighting.gltf", &s, &err);
   check(ok, "world_lighting loads", err);
   if (!ok) return;
-  check(s.materials.size() == 7 && s.primitives.size() == 21 && s.lights.size() == 3 && s.probes.size() == 2,
-        "world_lighting: 7 materials, 21 quads, 3 lights, 2 probes");
+  // The back wall is four quads around its window; the sky's sun is the fourth light
+  // (extras.tiershade.sky.sun, its spread in radians).
+  check(s.materials.size() == 7 && s.primitives.size() == 24 && s.lights.size() == 4 && s.probes.size() == 2,
+        "world_lighting: 7 materials, 24 quads, 4 lights, 2 probes");
+  check(s.sky.image >= 0 && s.sky.samples == 16 && s.lights.back().light.type == TS_LIGHT_DIRECTIONAL &&
+            std::fabs(s.lights.back().spread - 4 * M_PI / 180) < 1e-12,
+        "world_lighting: the sky and its soft sun");
   std::string why;
   check(well_formed(s, &why), "world_lighting: well formed", why);
   bool quads = true, world = true;
