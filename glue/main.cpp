@@ -22,7 +22,10 @@ static const char kUsage[] =
     "  bench      measure accuracy against time and write docs/accuracy_cost.md\n"
     "  lut        colour-correction LUTs: inspect, bake from OpenColorIO, convert .cube <-> Source .raw\n"
     "  render     render a glTF scene with only the variants it needs (GL or the C fallback)\n"
-    "  bake       write a scene's lightmap page (EXR) for its extras.tiershade.lightmaps.image\n";
+    "  bake       write a scene's lightmap page (EXR) for its extras.tiershade.lightmaps.image\n"
+    "  ambient    fit an ambient cube (six colours) to a lat-long light probe\n";
+
+int cmd_ambient(int argc, char **argv);  // glue/cli/cmd_ambient.cpp
 
 int main(int argc, char **argv) {
   if (argc < 2 || !strcmp(argv[1], "--help") || !strcmp(argv[1], "-h") || !strcmp(argv[1], "help")) {
@@ -37,7 +40,8 @@ int main(int argc, char **argv) {
   } const table[] = {{"variants", cmd_variants}, {"assemble", cmd_assemble}, {"budget", cmd_budget},
                      {"conform", cmd_conform},   {"probe", cmd_probe},       {"fold", cmd_fold},
                      {"demo", cmd_demo},         {"bench", cmd_bench},       {"lut", cmd_lut},
-                     {"render", cmd_render},     {"bake", cmd_bake}};
+                     {"render", cmd_render},     {"bake", cmd_bake},
+                     {"ambient", cmd_ambient}};
   for (const auto &c : table)
     if (cmd == c.name) return c.fn(argc - 2, argv + 2);
   fprintf(stderr, "tiershade: unknown command '%s'\n\n%s", cmd.c_str(), kUsage);
