@@ -119,6 +119,8 @@ void ts_ac_accum_add(ts_ac_accum *acc, const double d[3], const double rgb[3], d
         hp += acc->kernel[l] * p[l];
         hn += (l & 1) ? -acc->kernel[l] * p[l] : acc->kernel[l] * p[l];
       }
+      acc->w[2 * a] += hp * dw;
+      acc->w[2 * a + 1] += hn * dw;
       for (int k = 0; k < 3; ++k) {
         acc->b[2 * a][k] += hp * dw * rgb[k];
         acc->b[2 * a + 1][k] += hn * dw * rgb[k];
@@ -228,9 +230,15 @@ void ts_ac_accum_solve(const ts_ac_accum *acc, float cube[6][3]) {
       for (int k = 0; k < 3; ++k) cube[f][k] = acc->w[f] > 0 ? (float)(acc->b[f][k] / acc->w[f]) : 0.f;
     return;
   }
+  /* lsq: the samples' quadrature of int h_f = 2pi/3 (the face's b for unit radiance) is w[f]; scaling
+   * b_f by (2pi/3) / w[f] makes the rule exact on a constant radiance (162 ray directions would
+   * otherwise leave an error of order 1e-3 on a uniform sky). */
+  double norm[6];
+  for (int f = 0; f < 6; ++f)
+    norm[f] = (acc->fit == TS_AC_FIT_LSQ && acc->w[f] > 0) ? (2 * k_pi / 3) / acc->w[f] : 1.0;
   for (int k = 0; k < 3; ++k) {
     double b[6], x[6];
-    for (int f = 0; f < 6; ++f) b[f] = acc->b[f][k];
+    for (int f = 0; f < 6; ++f) b[f] = acc->b[f][k] * norm[f];
     ts_ac_nnls6(acc->gram, b, x);
     for (int f = 0; f < 6; ++f) cube[f][k] = (float)x[f];
   }

@@ -30,7 +30,7 @@ enum { TS_AC_FIT_MEAN = 0, TS_AC_FIT_LSQ = 1, TS_AC_FIT_LSQ_RADIANCE = 2 };
 typedef struct ts_ac_accum {
   int fit;
   double b[6][3];  /* right-hand side (lsq) or cosine-weighted sums (mean) */
-  double w[6];     /* mean: cosine weight sums; lsq_radiance: unused */
+  double w[6];     /* mean: cosine weight sums; lsq: the kernel's quadrature sum (normalises b) */
   double gram[6][6];
   double kernel[TS_AC_KERNEL_DEGREE + 1]; /* lsq: coefficient of P_l in h(t) */
 } ts_ac_accum;
