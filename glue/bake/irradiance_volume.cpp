@@ -84,6 +84,23 @@ std::vector<LuxelGrid> flat_grids_from_page(const std::vector<lm_face_place> &pl
   return grids;
 }
 
+void world_faces_bounds(const std::vector<WorldFace> &faces, double lo[3], double hi[3]) {
+  for (int k = 0; k < 3; ++k) {
+    lo[k] = faces.empty() ? 0 : INFINITY;
+    hi[k] = faces.empty() ? 0 : -INFINITY;
+  }
+  for (const WorldFace &f : faces)
+    for (double a : {0.0, 1.0})
+      for (double b : {0.0, 1.0}) {
+        const ts_vec3d q = world_face_point(f, a, b);
+        const double qq[3] = {q.x, q.y, q.z};
+        for (int k = 0; k < 3; ++k) {
+          lo[k] = std::fmin(lo[k], qq[k]);
+          hi[k] = std::fmax(hi[k], qq[k]);
+        }
+      }
+}
+
 double volume_sample_cube(const glm::dvec3 &p, const std::vector<WorldFace> &faces,
                           const std::vector<LuxelGrid> &grids, const RayScene &rays, const VolumeSettings &set,
                           float cube[6][3]) {

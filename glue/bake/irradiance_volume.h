@@ -60,6 +60,9 @@ const std::vector<glm::dvec3> &volume_ray_directions();
 std::vector<LuxelGrid> flat_grids_from_page(const std::vector<lm_face_place> &place, const std::vector<float> &page,
                                             int page_w);
 
+// The box of the world faces' corners (the volume's default bounds).
+void world_faces_bounds(const std::vector<WorldFace> &faces, double lo[3], double hi[3]);
+
 // Bakes the volume over the box [lo, hi]: n = max(1, round(extent / spacing)) cells per axis, one
 // sample at each cell's centre. `faces` and `grids` (flat_grids_from_page) are the world; `rays` has
 // every triangle, a face's triangles carrying its index as id (glue/scene/prepare.cpp's scene).

@@ -3,6 +3,7 @@
 // used, a point moving in small steps changes its cube by a bounded amount per step, and the
 // inverse-square option reproduces Source's 1/(d^2 + 1) on a hand case.
 #include <cmath>
+#include <cstring>
 #include <cstdio>
 #include <string>
 #include <vector>
@@ -12,6 +13,9 @@
 #include "bake/irradiance_volume.h"
 #include "bake/ray_scene.h"
 #include "bake/world_faces.h"
+#include "scene/prepare.h"
+#include "scene/scene.h"
+#include "scene/selection.h"
 #include "unit_check.h"
 
 namespace {
@@ -55,6 +59,13 @@ bool build_rays(const std::vector<WorldFace> &faces, RayScene *rays, std::string
     if (!rays->add_mesh(p, {0, 1, 2, 0, 2, 3}, static_cast<int>(i), f.name, err)) return false;
   }
   return rays->commit(err);
+}
+
+std::string cube_sum_text(const float c[6][3]) {
+  char b[200];
+  snprintf(b, sizeof b, "+X %.4g %.4g %.4g, +Y %.4g %.4g %.4g, -Y %.4g %.4g %.4g", c[0][0], c[0][1], c[0][2], c[2][0],
+           c[2][1], c[2][2], c[3][0], c[3][1], c[3][2]);
+  return b;
 }
 
 // Dark luxel grids (2 x 2 luxels per face): a face's radiosity is then its emission alone.
@@ -237,6 +248,74 @@ int main() {
     const double rel = std::fabs(cube[2][1] - want) / want;
     check(used.size() == 7 && rel < 1e-6, "inverse-square lookup is 1/(d^2+1) in inches over the valid samples",
           "got " + std::to_string(cube[2][1]) + " want " + std::to_string(want));
+  }
+  // 6. The scene hook (glue/scene/scene_volume.cpp via prepare.cpp): world_lighting's room with a
+  //    small model added gets a volume cube (non-zero: the room is lit); a hand-typed ambient sample
+  //    overrides it; "enabled": false leaves the cube zero.
+  {
+    Scene room;
+    if (!load_scene("scenes/world_lighting.gltf", &room, &err)) {
+      check(false, "load world_lighting", err);
+    } else {
+      SceneMaterial mm;
+      mm.name = "volume_probe_model";
+      mm.where = "materials[test]";
+      mm.shader = SceneShader::Model;
+      room.materials.push_back(mm);
+      ScenePrimitive model = room.primitives[0];
+      model.material = static_cast<int>(room.materials.size()) - 1;
+      model.instance = -1;
+      model.where = "test model";
+      double c[3];
+      for (int k = 0; k < 3; ++k) {
+        double lo = 1e30, hi = -1e30;
+        for (size_t i = k; i < model.position.size(); i += 3) {
+          lo = std::fmin(lo, model.position[i]);
+          hi = std::fmax(hi, model.position[i]);
+        }
+        c[k] = 0.5 * (lo + hi);
+      }
+      const double at[3] = {0.5, 1.0, 0.3};
+      for (size_t i = 0; i < model.position.size(); ++i)
+        model.position[i] = static_cast<float>((model.position[i] - c[i % 3]) * 0.05 + at[i % 3]);
+      room.primitives.push_back(model);
+      auto model_cube = [&](const Scene &sc, float out[6][3]) {
+        SceneSelection sel;
+        PreparedScene ps;
+        if (!select_scene_variants(sc, Tier::SM3, "", &sel, &err) ||
+            !prepare_scene(sc, sel, 32, 32, Api::GL33, 1.f, &ps, &err))
+          return false;
+        for (const PreparedDraw &d : ps.draws)
+          if (!d.world) {
+            std::memcpy(out, d.ambient, sizeof d.ambient);
+            return true;
+          }
+        err = "no model draw";
+        return false;
+      };
+      float vol[6][3], hand[6][3], off[6][3];
+      const bool ok1 = model_cube(room, vol);
+      double sum = 0;
+      for (int f = 0; f < 6; ++f)
+        for (int k = 0; k < 3; ++k) sum += vol[f][k];
+      printf("model cube from the volume: %s\n", cube_sum_text(vol).c_str());
+      check(ok1 && sum > 0, "a model in a world scene takes its cube from the volume", ok1 ? cube_sum_text(vol) : err);
+      Scene with_hand = room;
+      SceneAmbientSample a{};
+      for (int k = 0; k < 3; ++k) a.position[k] = at[k];
+      for (int f = 0; f < 6; ++f)
+        for (int k = 0; k < 3; ++k) a.cube[f][k] = 0.125f * (f + 1);
+      with_hand.ambient.push_back(a);
+      const bool ok2 = model_cube(with_hand, hand);
+      check(ok2 && std::memcmp(hand, a.cube, sizeof hand) == 0, "a hand-typed ambient sample overrides the volume", err);
+      Scene disabled = room;
+      disabled.volume.enabled = false;
+      const bool ok3 = model_cube(disabled, off);
+      double osum = 0;
+      for (int f = 0; f < 6; ++f)
+        for (int k = 0; k < 3; ++k) osum += off[f][k];
+      check(ok3 && osum == 0, "volume.enabled false: no volume", err);
+    }
   }
   return finish();
 }
