@@ -56,7 +56,7 @@ static void gauss_legendre01(double *xs, double *ws) {
 /* h(t) = (1/pi) sum_l A_l g_l P_l(t) (Funk-Hecke): A_l = 2pi int_0^1 s P_l(s) ds is the clamped
  * cosine's coefficient (Ramamoorthi and Hanrahan 2001, eq. 8: A_0 = pi, A_1 = 2pi/3, A_2 = pi/4,
  * odd l > 1 zero), g_l = (2l+1)/2 int_0^1 s^2 P_l(s) ds the face basis' Legendre coefficient. Both
- * integrands are polynomials of degree <= 66, integrated exactly by 64-point Gauss-Legendre. */
+ * integrands are polynomials of degree <= 34, integrated exactly by 64-point Gauss-Legendre. */
 static void kernel_coefficients(double *c) {
   double xs[GL_N], ws[GL_N], p[TS_AC_KERNEL_DEGREE + 1];
   double a[TS_AC_KERNEL_DEGREE + 1], g[TS_AC_KERNEL_DEGREE + 1];
@@ -90,6 +90,10 @@ int ts_ac_accum_init(ts_ac_accum *acc, int fit) {
   acc->fit = fit;
   if (fit == TS_AC_FIT_LSQ) {
     kernel_coefficients(acc->kernel);
+    for (int l = 0; l <= TS_AC_KERNEL_DEGREE; ++l) {
+      acc->rec_a[l] = (2.0 * l + 1) / (l + 1);
+      acc->rec_b[l] = (double)l / (l + 1);
+    }
     /* Gram matrix of the basis over the whole sphere (solid angle): int_{x>0} x^4 = 2pi/5; opposite
      * faces of one axis are disjoint; faces of two axes share a quadrant: int x^2 y^2 / 4 = pi/15. */
     for (int i = 0; i < 6; ++i)
@@ -111,13 +115,18 @@ void ts_ac_accum_add(ts_ac_accum *acc, const double d[3], const double rgb[3], d
     }
   } else if (acc->fit == TS_AC_FIT_LSQ) {
     /* b_f = int a_f(n) E(n)/pi dn = int L(w) h(w . axis_f) dw; the negative face is h(-t). */
-    double p[TS_AC_KERNEL_DEGREE + 1];
     for (int a = 0; a < 3; ++a) {
-      legendre_all(d[a], TS_AC_KERNEL_DEGREE, p);
-      double hp = 0, hn = 0;
-      for (int l = TS_AC_KERNEL_DEGREE; l >= 0; --l) {
-        hp += acc->kernel[l] * p[l];
-        hn += (l & 1) ? -acc->kernel[l] * p[l] : acc->kernel[l] * p[l];
+      /* h(t) and h(-t) in one pass of the Legendre recurrence (P_l(-t) = (-1)^l P_l(t)). */
+      const double t = d[a];
+      double p0 = 1, p1 = t;
+      double hp = acc->kernel[0] + acc->kernel[1] * t, hn = acc->kernel[0] - acc->kernel[1] * t;
+      for (int l = 1; l < TS_AC_KERNEL_DEGREE; ++l) {
+        const double p2 = acc->rec_a[l] * t * p1 - acc->rec_b[l] * p0;
+        const double c = acc->kernel[l + 1] * p2;
+        hp += c;
+        hn += ((l + 1) & 1) ? -c : c;
+        p0 = p1;
+        p1 = p2;
       }
       acc->w[2 * a] += hp * dw;
       acc->w[2 * a + 1] += hn * dw;

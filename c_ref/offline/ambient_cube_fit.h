@@ -24,8 +24,8 @@ extern "C" {
 
 enum { TS_AC_FIT_MEAN = 0, TS_AC_FIT_LSQ = 1, TS_AC_FIT_LSQ_RADIANCE = 2 };
 
-/* Highest Legendre degree of the irradiance kernel's series (even terms; the tail is below 1e-7). */
-#define TS_AC_KERNEL_DEGREE 64
+/* Highest Legendre degree of the irradiance kernel series (its terms fall as l^-5: the tail is about 1e-6). */
+#define TS_AC_KERNEL_DEGREE 32
 
 typedef struct ts_ac_accum {
   int fit;
@@ -33,6 +33,7 @@ typedef struct ts_ac_accum {
   double w[6];     /* mean: cosine weight sums; lsq: the kernel's quadrature sum (normalises b) */
   double gram[6][6];
   double kernel[TS_AC_KERNEL_DEGREE + 1]; /* lsq: coefficient of P_l in h(t) */
+  double rec_a[TS_AC_KERNEL_DEGREE + 1], rec_b[TS_AC_KERNEL_DEGREE + 1]; /* (2l+1)/(l+1), l/(l+1) */
 } ts_ac_accum;
 
 /* The six basis weights of direction d (unit): index 2*axis + (d[axis] < 0). */

@@ -220,7 +220,7 @@ void copy_geometry(const ScenePrimitive &p, PreparedDraw *d) {
 }
 
 bool model_draw(const Scene &s, const PreparedScene &ps, const SceneDrawChoice &c, Tier tier, Probes *probes, Api api,
-                TexturePool *pool, PreparedDraw *d, std::string *err, const IrradianceVolume *volume = nullptr) {
+                TexturePool *pool, PreparedDraw *d, std::string *err) {
   const ScenePrimitive &p = s.primitives[c.primitive];
   const SceneMaterial &m = s.materials[p.material];
   const Variant &v = *c.variant;
@@ -243,8 +243,8 @@ bool model_draw(const Scene &s, const PreparedScene &ps, const SceneDrawChoice &
       for (int f = 0; f < 6; ++f)
         for (int k = 0; k < 3; ++k) cube[f][k] = a.cube[f][k];
     }
-  } else if (volume) {
-    scene_volume_cube(s, *volume, center, cube);  // no hand-typed samples: the baked irradiance volume
+  } else if (!ps.volume.cube.empty()) {
+    scene_volume_cube(s, ps.volume, center, cube);  // no hand-typed samples: the baked irradiance volume
   }
   std::memcpy(d->ambient, cube, sizeof cube);
   // Lights: the tier's limit per pixel, the rest folded into the cube (docs/light_folding.md).
@@ -413,7 +413,6 @@ bool prepare_scene(const Scene &s, const SceneSelection &sel, int w, int h, Api 
     face_frame.push_back({frame_min[0], frame_min[1], 0, 0});
   }
   WorldBake bake;
-  IrradianceVolume volume;  // docs/irradiance_volume.md: baked only for scenes with models and world faces
   if (!ws.faces.empty()) {
     const auto t0 = Clock::now();
     for (const SceneLight &l : s.lights) {
@@ -488,7 +487,7 @@ bool prepare_scene(const Scene &s, const SceneSelection &sel, int w, int h, Api 
     ps.bake_passes = bake.bounce.passes;
     ps.bake_direct_ms = bake.direct_ms;
     ps.bake_bounce_ms = bake.bounce_ms;
-    if (!bake_scene_volume(s, sel, ws.faces, bake, ws.page_w, rays, &volume, err)) return false;
+    if (!bake_scene_volume(s, sel, ws.faces, bake, ws.page_w, rays, &ps.volume, err)) return false;
   }
   TextureDesc page;
   int encoding = -1;
@@ -498,7 +497,7 @@ bool prepare_scene(const Scene &s, const SceneSelection &sel, int w, int h, Api 
     d.choice = &c;
     d.variant = c.variant;
     if (c.family == "model_lighting") {
-      if (!model_draw(s, ps, c, tier, &probes, api, &pool, &d, err, volume.cube.empty() ? nullptr : &volume)) return false;
+      if (!model_draw(s, ps, c, tier, &probes, api, &pool, &d, err)) return false;
       ps.draws.push_back(std::move(d));
       continue;
     }

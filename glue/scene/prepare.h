@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "bake/irradiance_volume.h"
 #include "gl/context.h"
 #include "gl/float_target.h"
 #include "scene/scene.h"
@@ -52,6 +53,7 @@ struct PreparedScene {
   long bake_luxels = 0, bake_gather_rays = 0;
   int bake_passes = 0;
   double bake_direct_ms = 0, bake_bounce_ms = 0;
+  IrradianceVolume volume;  // the models' irradiance volume (docs/irradiance_volume.md); no samples: none
   std::vector<std::string> notes;
 };
 
