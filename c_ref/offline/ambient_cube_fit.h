@@ -9,7 +9,7 @@
  *    sphere, weighted by solid angle. E is linear in the radiance, so the right-hand side of the
  *    6x6 normal equations is one weighted sum over the radiance samples with a zonal kernel (the
  *    cube basis convolved with the clamped cosine, Funk-Hecke), and the Gram matrix is a constant:
- *    it costs what the mean costs;
+ *    one pass over the samples, like the mean (a Legendre series per sample and axis);
  *  - TS_AC_FIT_LSQ_RADIANCE: the same least squares against the radiance itself (the basis fitted
  *    to L, not to E/pi; kept for comparison).
  * Samples carry their solid angle, so the same accumulator serves a lat-long probe's texels and the
