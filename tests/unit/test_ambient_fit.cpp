@@ -87,8 +87,8 @@ int main() {
       rgb[1] = 0.5;
       rgb[2] = 1.0;
     });
-    // lsq-pixels fits the exact irradiance (1 everywhere): exact at any size, so a 64 x 32 sky (its
-    // exact irradiance costs O(pixels^2)).
+    // lsq-pixels fits the probe's irradiance summed over texels (O(pixels^2): a 64 x 32 sky); the texels
+    // the horizon cuts count whole or not at all, an error of about 2e-4 at this size: tolerance 1e-3.
     const ImageF small_sky = make_probe(64, 32, [](const double *, double rgb[3]) {
       rgb[0] = 0.25;
       rgb[1] = 0.5;
@@ -103,7 +103,7 @@ int main() {
       }
       fit_probe_cube(fit == AmbientFit::LsqPixels ? small_sky : sky, fit, c);
       const double e = max_face_diff(c, want);
-      check(e < 1e-4, std::string("constant sky gives six equal faces (") + ambient_fit_name(fit) + ")",
+      check(e < (fit == AmbientFit::LsqPixels ? 1e-3 : 1e-4), std::string("constant sky gives six equal faces (") + ambient_fit_name(fit) + ")",
             "max face error " + std::to_string(e) + " " + cube_text(c));
     }
   }
