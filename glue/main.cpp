@@ -23,7 +23,10 @@ static const char kUsage[] =
     "  lut        colour-correction LUTs: inspect, bake from OpenColorIO, convert .cube <-> Source .raw\n"
     "  render     render a glTF scene with only the variants it needs (GL or the C fallback)\n"
     "  bake       bake a scene's lightmaps into a bake directory (page + manifest) for extras.tiershade.lightmaps.bake\n"
-    "  light      what the bake says at a point: the face, the luxel, the irradiance and the four lightmap values\n";
+    "  light      what the bake says at a point: the face, the luxel, the irradiance and the four lightmap values\n"
+    "  ambient    fit an ambient cube (six colours) to a lat-long light probe\n";
+
+int cmd_ambient(int argc, char **argv);  // glue/cli/cmd_ambient.cpp
 
 int main(int argc, char **argv) {
   if (argc < 2 || !strcmp(argv[1], "--help") || !strcmp(argv[1], "-h") || !strcmp(argv[1], "help")) {
@@ -39,7 +42,8 @@ int main(int argc, char **argv) {
                      {"conform", cmd_conform},   {"probe", cmd_probe},       {"fold", cmd_fold},
                      {"demo", cmd_demo},         {"bench", cmd_bench},       {"lut", cmd_lut},
                      {"render", cmd_render},     {"bake", cmd_bake},
-                     {"light", cmd_light}};
+                     {"light", cmd_light},
+                     {"ambient", cmd_ambient}};
   for (const auto &c : table)
     if (cmd == c.name) return c.fn(argc - 2, argv + 2);
   fprintf(stderr, "tiershade: unknown command '%s'\n\n%s", cmd.c_str(), kUsage);

@@ -367,13 +367,43 @@ bool read_fog(const tinygltf::Value &v, const std::string &place, SceneFog *f, E
   return true;
 }
 
+bool read_volume(const tinygltf::Value &v, const std::string &place, SceneVolume *vol, Err &e) {
+  if (!check_keys(v, place, {"spacing", "fit", "lookup", "bounds", "enabled"}, e)) return false;
+  if (v.Has("spacing") && !read_vec(v.Get("spacing"), place + ".spacing", 3, 0.01, 1e4, vol->spacing, e)) return false;
+  if (v.Has("fit")) {
+    if (!read_string(v.Get("fit"), place + ".fit", &vol->fit, e)) return false;
+    if (vol->fit != "lsq" && vol->fit != "mean") return e.fail(place + ".fit", quoted(vol->fit) + " is not \"lsq\" or \"mean\"");
+  }
+  if (v.Has("lookup")) {
+    if (!read_string(v.Get("lookup"), place + ".lookup", &vol->lookup, e)) return false;
+    if (vol->lookup != "trilinear" && vol->lookup != "inverse_square")
+      return e.fail(place + ".lookup", quoted(vol->lookup) + " is not \"trilinear\" or \"inverse_square\"");
+  }
+  if (v.Has("enabled")) {
+    const tinygltf::Value &b = v.Get("enabled");
+    if (!b.IsBool()) return e.fail(place + ".enabled", "expected true or false, got " + value_kind(b));
+    vol->enabled = b.Get<bool>();
+  }
+  if (v.Has("bounds")) {
+    const tinygltf::Value &b = v.Get("bounds");
+    if (!b.IsArray() || b.ArrayLen() != 2) return e.fail(place + ".bounds", "expected [[x,y,z], [x,y,z]]");
+    if (!read_vec(b.Get(0), place + ".bounds[0]", 3, -1e6, 1e6, vol->lo, e) ||
+        !read_vec(b.Get(1), place + ".bounds[1]", 3, -1e6, 1e6, vol->hi, e))
+      return false;
+    for (int k = 0; k < 3; ++k)
+      if (!(vol->hi[k] >= vol->lo[k])) return e.fail(place + ".bounds", "the high corner is below the low one on an axis");
+    vol->has_bounds = true;
+  }
+  return true;
+}
+
 }  // namespace
 
 bool convert_tiershade_extras(const tinygltf::Model &m, const std::string &dir, Scene *s, Err &e) {
   const std::string place = "extras.tiershade";
   if (m.extras.IsObject() && m.extras.Has("tiershade")) {
     const tinygltf::Value &t = m.extras.Get("tiershade");
-    if (!check_keys(t, place, {"camera", "probes", "ambient", "hdr", "lightmaps", "fog", "sky"}, e)) return false;
+    if (!check_keys(t, place, {"camera", "probes", "ambient", "hdr", "lightmaps", "fog", "sky", "volume"}, e)) return false;
     if (t.Has("camera") &&
         !read_int(t.Get("camera"), place + ".camera", 0, static_cast<int>(s->cameras.size()) - 1, &s->camera, e))
       return false;
@@ -384,6 +414,7 @@ bool convert_tiershade_extras(const tinygltf::Model &m, const std::string &dir, 
       return false;
     if (t.Has("fog") && !read_fog(t.Get("fog"), place + ".fog", &s->fog, e)) return false;
     if (t.Has("sky") && !read_sky(t.Get("sky"), place + ".sky", dir, s, e)) return false;
+    if (t.Has("volume") && !read_volume(t.Get("volume"), place + ".volume", &s->volume, e)) return false;
   }
   for (const SceneMaterial &mat : s->materials)
     if (mat.probe >= static_cast<int>(s->probes.size()))

@@ -16,6 +16,7 @@
 
 #include "bake/ray_scene.h"
 #include "bake/world_bake.h"
+#include "scene/scene_volume.h"
 #include "scene/textures.h"
 #include "twins/model_lighting.h"
 #include "scene/camera_ortho.h"
@@ -242,6 +243,8 @@ bool model_draw(const Scene &s, const PreparedScene &ps, const SceneDrawChoice &
       for (int f = 0; f < 6; ++f)
         for (int k = 0; k < 3; ++k) cube[f][k] = a.cube[f][k];
     }
+  } else if (!ps.volume.cube.empty()) {
+    scene_volume_cube(s, ps.volume, center, cube);  // no hand-typed samples: the baked irradiance volume
   }
   std::memcpy(d->ambient, cube, sizeof cube);
   // Lights: the tier's limit per pixel, the rest folded into the cube (docs/light_folding.md).
@@ -495,6 +498,7 @@ bool prepare_scene(const Scene &s, const SceneSelection &sel, int w, int h, Api 
     ps.bake_direct_rays = bake.direct_rays;
     ps.bake_sky_rays = bake.sky.rays, ps.bake_area_rays = bake.area.rays;
     ps.bake_sky_ms = bake.sky.ms, ps.bake_area_ms = bake.area.ms;
+    if (!bake_scene_volume(s, sel, ws.faces, bake, ws.page_w, rays, &ps.volume, err)) return false;
   }
   TextureDesc page;
   int encoding = -1;

@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "bake/irradiance_volume.h"
 #include "gl/context.h"
 #include "gl/float_target.h"
 #include "scene/scene.h"
@@ -58,6 +59,7 @@ struct PreparedScene {
   // area_lights.h).
   long bake_direct_rays = 0, bake_sky_rays = 0, bake_area_rays = 0;
   double bake_sky_ms = 0, bake_area_ms = 0;
+  IrradianceVolume volume;  // the models' irradiance volume (docs/irradiance_volume.md); no samples: none
   std::vector<std::string> notes;
 };
 

@@ -188,6 +188,17 @@ struct SceneSky {
   int samples = 64;  // bake rays per luxel and lightmap value
 };
 
+// The irradiance volume ("volume" in the scene's extras; docs/irradiance_volume.md): baked for
+// scenes with world faces and models and no hand-typed "ambient" samples (those stay an override).
+struct SceneVolume {
+  double spacing[3] = {1.2192, 2.4384, 1.2192};  // metres along x, y (up), z: Source's 4 x 8 x 4 ft
+  std::string fit = "lsq";  // "lsq" | "mean" (glue/bake/ambient_fit.h)
+  std::string lookup = "trilinear";  // "trilinear" | "inverse_square" (Source's 1/(d^2 + 1))
+  bool has_bounds = false;  // "bounds": [[x,y,z], [x,y,z]], where models can be; else the world faces' bounds
+  double lo[3] = {0, 0, 0}, hi[3] = {0, 0, 0};
+  bool enabled = true;  // "enabled": false turns the volume off
+};
+
 struct Scene {
   std::string path;  // the .gltf/.glb file
   std::vector<SceneImage> images;
@@ -203,6 +214,7 @@ struct Scene {
   SceneLightmaps lightmaps;
   SceneFog fog;
   SceneSky sky;
+  SceneVolume volume;
 };
 
 // Loads a glTF 2.0 scene (.gltf with external or data-URI buffers and images, or .glb).

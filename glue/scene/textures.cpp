@@ -7,6 +7,7 @@
 #include <glm/gtc/constants.hpp>
 #include <glm/gtc/type_ptr.hpp>
 
+#include "bake/ambient_fit.h"
 #include "base/cube_faces.h"
 #include "base/image.h"
 #include "families/family.h"
@@ -124,25 +125,9 @@ bool cube_from_probe(const std::string &path, const char *sampler, int size, Tex
         float *p = &cube->rgba[((static_cast<size_t>(f) * size + y) * size + x) * 4];
         for (int c = 0; c < 3; ++c) p[c] = static_cast<float>(rgb[c]);
       }
-  // Ambient cube from the probe's texels (solid-angle weighted).
-  const glm::dvec3 axes[6] = {{1, 0, 0}, {-1, 0, 0}, {0, 1, 0}, {0, -1, 0}, {0, 0, 1}, {0, 0, -1}};
-  double sum[6][3] = {}, wsum[6] = {};
-  for (int y = 0; y < probe.h; ++y) {
-    const double theta = (1 - (y + 0.5) / probe.h) * glm::pi<double>();
-    const double dw = std::sin(theta);
-    for (int x = 0; x < probe.w; ++x) {
-      const double phi = ((x + 0.5) / probe.w - 0.5) * 2 * glm::pi<double>();
-      const glm::dvec3 d(std::sin(theta) * std::sin(phi), std::cos(theta), -std::sin(theta) * std::cos(phi));
-      for (int a = 0; a < 6; ++a) {
-        const double c = glm::dot(d, axes[a]);
-        if (c <= 0) continue;
-        wsum[a] += c * dw;
-        for (int k = 0; k < 3; ++k) sum[a][k] += c * dw * probe.rgba[(static_cast<size_t>(y) * probe.w + x) * 4 + k];
-      }
-    }
-  }
-  for (int a = 0; a < 6; ++a)
-    for (int k = 0; k < 3; ++k) ambient[a][k] = static_cast<float>(sum[a][k] / wsum[a]);
+  // Ambient cube from the probe's texels: least squares against the probe's irradiance, solid-angle
+  // weighted, non-negative (glue/bake/ambient_fit.h; Source's per-axis mean is AmbientFit::Mean).
+  fit_probe_cube(probe, AmbientFit::Lsq, ambient);
   // The host contract (scene/finite_check.h): RGBE reaches 2^127, beyond fp16; clamped to 65504.
   return clamp_texels_to_fp16(cube->rgba.data(), cube->rgba.size(), path + ": the cube map from the probe", nullptr,
                               err) &&

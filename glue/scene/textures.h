@@ -12,7 +12,7 @@ TextureDesc make_warp_ramp(const char *sampler);  // 64 x 1, warm to cool
 TextureDesc make_sky_cube(const char *sampler, int size);  // procedural sky, no file needed
 
 // Resamples a lat-long probe into a cube map of `size` (bilinear in the probe) and
-// computes its ambient cube: per axis the cosine-weighted mean radiance over the
-// hemisphere around it (fact sheet section 3, ComputeAmbientFromSphericalSamples).
+// computes its ambient cube: the non-negative least-squares fit to the probe's irradiance
+// (glue/bake/ambient_fit.h, docs/irradiance_volume.md; Source's per-axis mean is the other fit).
 bool cube_from_probe(const std::string &path, const char *sampler, int size, TextureDesc *cube, float ambient[6][3],
                      std::string *err);

@@ -1,0 +1,88 @@
+// tiershade bake: the irradiance volume (the talk: "pre-compute irradiance samples throughout the
+// environment, 4'x4'x8' density", each an ambient cube): a grid of samples over a box, each sample an
+// ambient cube fitted (glue/bake/ambient_fit.h) to the radiance seen along 162 ray directions through
+// the bake's ray scene (fact sheet section 3, vrad's ComputeAmbientFromSphericalSamples): a world
+// face's front returns its radiosity (flat lightmap x reflectivity + emission, bounce.h's
+// luxel_exitant), a back face or other geometry counts as a back-face hit (radiance 0), a miss returns
+// the sky hook's radiance (0 without one). Samples inside geometry (most rays on back faces) are
+// invalid. A model's cube: trilinear over the valid samples around it, or Source's inverse-square
+// weights 1/(d^2 + 1) (d in Source units, inches; fact sheet section 3, Mod_LeafAmbientColorAtPos).
+// docs/irradiance_volume.md.
+#pragma once
+#include <array>
+#include <cstdint>
+#include <functional>
+#include <string>
+#include <vector>
+
+#include <glm/vec3.hpp>
+
+#include "bake/ambient_fit.h"
+#include "bake/bounce.h"
+#include "offline/lightmap_page.h"
+
+class RayScene;
+struct WorldFace;
+
+enum class VolumeLookup { Trilinear, InverseSquare };
+
+struct VolumeSettings {
+  // Sample spacing along x, y, z in scene units (glTF metres, +Y up): Source's 4 ft x 8 ft (up) x 4 ft.
+  double spacing[3] = {1.2192, 2.4384, 1.2192};
+  AmbientFit fit = AmbientFit::Lsq;  // Mean, Lsq or LsqRadiance (LsqPixels is for probes only)
+  // A sample whose share of back-face hits (back faces and other geometry) is above this is invalid.
+  double max_back_share = 0.5;
+  // The sky hook: the radiance of a ray that misses everything (null: 0). The sky bake adds it.
+  std::function<glm::dvec3(const glm::dvec3 &dir)> sky_radiance;
+  int threads = 0;  // 0: all cores (the result is the same for any count)
+};
+
+struct IrradianceVolume {
+  int n[3] = {0, 0, 0};  // samples along x, y, z
+  double origin[3] = {0, 0, 0};  // the first sample's position
+  double step[3] = {1, 1, 1};  // the grid's actual spacing (the box divided into n cells, samples at cell centres)
+  std::vector<std::array<std::array<float, 3>, 6>> cube;  // (k * n[1] + j) * n[0] + i
+  std::vector<uint8_t> valid;
+  std::vector<float> back_share;
+  double bake_ms = 0;
+  long rays = 0;
+  size_t index(int i, int j, int k) const { return (static_cast<size_t>(k) * n[1] + j) * n[0] + i; }
+  glm::dvec3 position(int i, int j, int k) const;
+  size_t bytes() const;  // the samples' memory (cubes, validity, back-face shares)
+};
+
+// The 162 ray directions: the vertices of an icosahedron whose faces are split into 4 x 4 triangles,
+// projected to the sphere (10 * 4^2 + 2 = 162, the count of vrad's g_anorms; fact sheet section 3).
+// Deterministic, nearly uniform; each stands for 4pi / 162 of solid angle.
+const std::vector<glm::dvec3> &volume_ray_directions();
+
+// The flat lightmap of every face as a luxel grid (value k = 0 of each luxel) read from a baked page.
+std::vector<LuxelGrid> flat_grids_from_page(const std::vector<lm_face_place> &place, const std::vector<float> &page,
+                                            int page_w);
+
+// The box of the world faces' corners (the volume's default bounds).
+void world_faces_bounds(const std::vector<WorldFace> &faces, double lo[3], double hi[3]);
+
+// Bakes the volume over the box [lo, hi]: n = max(1, round(extent / spacing)) cells per axis, one
+// sample at each cell's centre. `faces` and `grids` (flat_grids_from_page) are the world; `rays` has
+// every triangle, a face's triangles carrying its index as id (glue/scene/prepare.cpp's scene).
+bool bake_irradiance_volume(const double lo[3], const double hi[3], const std::vector<WorldFace> &faces,
+                            const std::vector<LuxelGrid> &grids, const RayScene &rays, const VolumeSettings &set,
+                            IrradianceVolume *out, std::string *err);
+
+// The cube of one sample position (what bake_irradiance_volume computes for each grid point).
+// Returns the share of back-face hits.
+double volume_sample_cube(const glm::dvec3 &p, const std::vector<WorldFace> &faces,
+                          const std::vector<LuxelGrid> &grids, const RayScene &rays, const VolumeSettings &set,
+                          float cube[6][3]);
+
+struct VolumeContribution {
+  int i = 0, j = 0, k = 0;  // the sample
+  double weight = 0;  // its normalised weight
+};
+// The interpolated cube at p: the valid samples among the 8 around p (p clamped into the grid of
+// sample centres), weighted trilinearly or by 1/(d^2 + 1), renormalised over the valid ones; with
+// none valid, the nearest valid sample of the whole volume. False (cube zero) when no sample is valid.
+// `contrib` (may be null) receives the samples used and their weights (`tiershade light --at`).
+bool volume_cube_at(const IrradianceVolume &v, const double p[3], VolumeLookup lookup, float cube[6][3],
+                    std::vector<VolumeContribution> *contrib);

@@ -1,0 +1,20 @@
+// tiershade scene: a scene's irradiance volume (glue/bake/irradiance_volume.h) from its "volume"
+// settings, baked when the scene calls for it, and a model's ambient cube from it
+// (docs/irradiance_volume.md). Hand-typed "ambient" samples stay an override: no volume then.
+#pragma once
+#include <string>
+#include <vector>
+
+#include "bake/irradiance_volume.h"
+#include "bake/world_bake.h"
+#include "scene/scene.h"
+#include "scene/selection.h"
+
+// Bakes the volume when the scene has world faces, model draws, no "ambient" samples and the volume
+// enabled; otherwise leaves *out empty (no samples). Bounds: the scene's "bounds" or the faces' box.
+bool bake_scene_volume(const Scene &s, const SceneSelection &sel, const std::vector<WorldFace> &faces,
+                       const WorldBake &bake, int page_w, const RayScene &rays, IrradianceVolume *out,
+                       std::string *err);
+
+// The cube at a model's centre with the scene's lookup (trilinear or inverse-square).
+void scene_volume_cube(const Scene &s, const IrradianceVolume &v, const double center[3], float cube[6][3]);
