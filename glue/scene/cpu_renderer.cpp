@@ -82,6 +82,18 @@ const int kVary = 24;  // 6 slots x 4
 const int kPixelSlots = 6;  // ML_PIXEL_SLOTS == WL_PIXEL_SLOTS
 const int kChunk = 64;  // pixels per batched call of scene_shade_cpu (a multiple of 8)
 
+// The clip coordinates alone (what the rasteriser needs), as vertex_stage computes them.
+void clip_stage(const PreparedScene &p, const PreparedDraw &d, std::vector<float> *clip) {
+  const size_t n = d.position.size() / 3;
+  clip->resize(n * 4);
+  const float *m = p.view_proj;
+  for (size_t i = 0; i < n; ++i) {
+    const float *P = &d.position[i * 3];
+    float *c = &(*clip)[i * 4];
+    for (int r = 0; r < 4; ++r) c[r] = m[r] * P[0] + m[4 + r] * P[1] + m[8 + r] * P[2] + m[12 + r];
+  }
+}
+
 // The production vertex shaders' outputs (model_lighting.vs, world_lighting.vs) in float.
 void vertex_stage(const PreparedScene &p, const PreparedDraw &d, std::vector<float> *clip, std::vector<float> *vary) {
   const size_t n = d.position.size() / 3;
@@ -401,7 +413,7 @@ void scene_rasterize_cpu(const PreparedScene &p, SceneVisibility *vis, int threa
   const int kBand = 8;
   const int bands = (p.h + kBand - 1) / kBand;
   std::vector<ScreenTri> tris;
-  std::vector<float> clip, vary;
+  std::vector<float> clip;
   std::vector<std::vector<int>> band_tris(static_cast<size_t>(bands));
   size_t total = 0;
   bool first = true;
@@ -409,7 +421,7 @@ void scene_rasterize_cpu(const PreparedScene &p, SceneVisibility *vis, int threa
   while (first || di < p.draws.size()) {
     tris.clear();
     for (; di < p.draws.size() && tris.size() < kBatch; ++di) {
-      vertex_stage(p, p.draws[di], &clip, &vary);
+      clip_stage(p, p.draws[di], &clip);
       setup(p, static_cast<int>(di), clip, &tris);
     }
     total += tris.size();
