@@ -172,7 +172,7 @@ bool run(const BenchOptions &opt, std::string *md, std::string *err) {
   }
   std::ostringstream o;
   o << "## Large scene: draw count and light count (" << w << "x" << h << ")\n\n"
-    << "`scenes/large_hall.gltf` (tools/make_scenes.py `large_hall()`): 30 world faces (floor, ceiling, walls,\n"
+    << "`scenes/large_hall.gltf` (tools/make_scenes.py `large_hall()`): 46 world faces (floor, ceiling, walls,\n"
     << "8 pillars; lightmaps baked, direct light only), instanced models (three meshes, one glTF node per copy;\n"
     << "`large_hall_40/160.gltf`: the first 40 / 160 of its 400), 48 point and spot lights, 4 probes, 16 ambient\n"
     << "samples; sm3, integer HDR path. **lit**: the lit pass alone, median of " << runs
