@@ -816,7 +816,7 @@ def large_hall():
                 g.light("spot_%d_%d" % (i, j), "spot", col, 12.0, pos, (pos[0], 0.0, pos[2] + 0.01), 0.4, 0.8, src)
             else:
                 g.light("lamp_%d_%d" % (i, j), "point", col, 6.0, pos, source=src)
-    g.camera("overview", (0.0, 9.0, 24.0), (0.0, 0.0, -2.0), 1.0)
+    g.camera("overview", (0.0, 4.5, 19.0), (0.0, 0.3, -4.0), 1.1)
     grace = "../../shared/data/probes/grace.hdr"
     probes = [{"name": "probe_%d" % k, "position": [(-10.0 if k % 2 == 0 else 10.0), 2.0,
                                                     (-10.0 if k < 2 else 10.0)],
