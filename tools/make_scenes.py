@@ -810,6 +810,86 @@ def probe_chart():
              "hdr": {"path": "integer", "tone_map_scale": 1.0}})
 
 
+def large_hall():
+    """A scene of real size for the large-scene bench (glue/bench/large_scene.cpp): a hall of world
+    faces (floor, ceiling, walls, a row of pillars), 400 model instances (one glTF node per copy of
+    three meshes: the geometry is written once and shared), 48 lights (point and spot lamps in a grid
+    under the ceiling), four probes and a grid of ambient samples. Direct light only (bounces 0) at a
+    modest luxel density, so that it bakes and renders in seconds. The first N nodes in file order
+    are spread over the whole hall, so that the bench's subsets (its first 40 / 160 models) cover it."""
+    g = Gltf("large_hall")
+    W = "LightmappedGeneric"
+    floor = g.material("hall_floor", {"shader": W}, base="tiles.png", normal="tiles_normal.png")
+    wall = g.material("hall_wall", {"shader": W}, base="brick.png", normal="brick_normal.png")
+    ceiling = g.material("hall_ceiling", {"shader": W}, base="plaster.png")
+    X, Y, Z = 20.0, 6.0, 20.0
+    g.mesh("floor", [(quad([-X, 0, Z], [2 * X, 0, 0], [0, 0, -2 * Z], X / 2, Z / 2), floor)])
+    g.mesh("ceiling", [(quad([-X, Y, -Z], [2 * X, 0, 0], [0, 0, 2 * Z], X / 2, Z / 2), ceiling)])
+    g.mesh("wall_back", [(quad([-X, 0, -Z], [2 * X, 0, 0], [0, Y, 0], X / 2, Y / 2), wall)])
+    g.mesh("wall_front", [(quad([X, 0, Z], [-2 * X, 0, 0], [0, Y, 0], X / 2, Y / 2), wall)])
+    g.mesh("wall_left", [(quad([-X, 0, Z], [0, 0, -2 * Z], [0, Y, 0], Z / 2, Y / 2), wall)])
+    g.mesh("wall_right", [(quad([X, 0, -Z], [0, 0, 2 * Z], [0, Y, 0], Z / 2, Y / 2), wall)])
+    for i in range(4):
+        for j in range(2):
+            g.mesh("pillar_%d_%d" % (i, j),
+                   [(q, wall) for q in box_quads((-15.0 + 10.0 * i, 0.0, -8.0 + 16.0 * j), (1.0, Y, 1.0), 0.5)])
+    plain = g.material("hall_plain", {"shader": "VertexLitGeneric", "$halflambert": 0}, color=(0.7, 0.7, 0.72, 1))
+    checker = g.material("hall_checker", {"shader": "VertexLitGeneric", "$halflambert": 1}, base="checker.png")
+    skin = g.material("hall_skin", {"shader": "VertexLitGeneric", "$phong": 1, "$phongboost": 2.0,
+                                    "$phongexponenttexture": g.tex("skin_exponent.png"), "$phongexponentfactor": 60,
+                                    "$phongfresnelranges": [0.3, 0.6, 1.0], "$rimlight": 1,
+                                    "$rimlightexponent": 4, "$rimlightboost": 2.0, "$rimmask": 1},
+                      base="skin.png", normal="skin_normal.png")
+    meshes = []
+    for name, geo, mat in (("hall_sphere_plain", uv_sphere(0.5, 32, 16), plain),
+                           ("hall_sphere_checker", uv_sphere(0.5, 32, 16), checker),
+                           ("hall_torus_skin", torus(0.45, 0.18, 32, 16), skin)):
+        g.doc["meshes"].append({"name": name, "primitives": [g.primitive(geo, mat)]})
+        meshes.append(len(g.doc["meshes"]) - 1)
+    # 400 models on a 20 x 20 grid 1.8 apart, visited in a bit-reversed order (any first N spread).
+    cells = [(i, j) for i in range(20) for j in range(20)]
+    def rev(k):
+        return int(format(k, "09b")[::-1], 2)
+    order = sorted(range(400), key=lambda k: rev(k))
+    for n, k in enumerate(order):
+        i, j = cells[k]
+        g.node({"name": "model_%03d" % n, "mesh": meshes[k % 3],
+                "translation": [-17.1 + 1.8 * i, 0.6 + 0.4 * ((i + j) % 3), -17.1 + 1.8 * j]})
+    # 48 lights: a 8 x 6 grid of lamps under the ceiling, every third a spot pointing down.
+    for i in range(8):
+        for j in range(6):
+            pos = (-17.5 + 5.0 * i, 5.0, -16.0 + 6.4 * j)
+            col = (1.0, 0.85 + 0.02 * j, 0.7 + 0.04 * i)
+            src = {"constant": 0, "linear": 0, "quadratic": 1}
+            if (i + j) % 3 == 0:
+                src["exponent"] = 1
+                g.light("spot_%d_%d" % (i, j), "spot", col, 12.0, pos, (pos[0], 0.0, pos[2] + 0.01), 0.4, 0.8, src)
+            else:
+                g.light("lamp_%d_%d" % (i, j), "point", col, 6.0, pos, source=src)
+    g.camera("overview", (0.0, 4.5, 19.0), (0.0, 0.3, -4.0), 1.1)
+    grace = "../../shared/data/probes/grace.hdr"
+    probes = [{"name": "probe_%d" % k, "position": [(-10.0 if k % 2 == 0 else 10.0), 2.0,
+                                                    (-10.0 if k < 2 else 10.0)],
+               "image": grace, "scale": 0.3 + 0.1 * k, "size": 16} for k in range(4)]
+    ambient = [{"position": [-12.0 + 8.0 * i, 1.0, -12.0 + 8.0 * j],
+                "cube": [[0.05 + 0.01 * i, 0.05, 0.06], [0.04, 0.04, 0.05 + 0.01 * j], [0.08, 0.09, 0.11],
+                         [0.03, 0.025, 0.02], [0.05, 0.05, 0.055], [0.04, 0.04, 0.045]]}
+               for i in range(4) for j in range(4)]
+    g.write({"camera": 0, "probes": probes, "ambient": ambient,
+             "lightmaps": {"luxels_per_unit": 1, "encoding": "rgbe", "page": [512, 512], "bounces": 0},
+             "hdr": {"path": "integer", "tone_map_scale": 1.0}})
+    # The bench's smaller halls: the same file and buffer (large_hall.bin), only the first n models
+    # among the scene's root nodes (the other nodes stay in the file, unreferenced).
+    for n in (40, 160):
+        doc = json.loads(json.dumps(g.doc))
+        doc["scenes"][0]["nodes"] = [i for i in doc["scenes"][0]["nodes"]
+                                     if not doc["nodes"][i].get("name", "").startswith("model_")
+                                     or int(doc["nodes"][i]["name"][6:]) < n]
+        with open(os.path.join(SCENES, "large_hall_%d.gltf" % n), "w") as f:
+            json.dump(doc, f, indent=1)
+            f.write("\n")
+
+
 if __name__ == "__main__":
     make_textures()
     model_lighting()
@@ -819,5 +899,6 @@ if __name__ == "__main__":
     phong_sphere()
     hdr_scenes()
     probe_chart()
+    large_hall()
     print("wrote scenes/model_lighting.gltf, world_lighting.gltf, hdr_atrium.gltf, sphere_grid.gltf, "
-          "phong_sphere.gltf, hdr_daylight.gltf, hdr_dark_room.gltf, probe_chart.gltf")
+          "phong_sphere.gltf, hdr_daylight.gltf, hdr_dark_room.gltf, probe_chart.gltf, large_hall.gltf")

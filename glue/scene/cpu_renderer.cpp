@@ -82,6 +82,18 @@ const int kVary = 24;  // 6 slots x 4
 const int kPixelSlots = 6;  // ML_PIXEL_SLOTS == WL_PIXEL_SLOTS
 const int kChunk = 64;  // pixels per batched call of scene_shade_cpu (a multiple of 8)
 
+// The clip coordinates alone (what the rasteriser needs), as vertex_stage computes them.
+void clip_stage(const PreparedScene &p, const PreparedDraw &d, std::vector<float> *clip) {
+  const size_t n = d.position.size() / 3;
+  clip->resize(n * 4);
+  const float *m = p.view_proj;
+  for (size_t i = 0; i < n; ++i) {
+    const float *P = &d.position[i * 3];
+    float *c = &(*clip)[i * 4];
+    for (int r = 0; r < 4; ++r) c[r] = m[r] * P[0] + m[4 + r] * P[1] + m[8 + r] * P[2] + m[12 + r];
+  }
+}
+
 // The production vertex shaders' outputs (model_lighting.vs, world_lighting.vs) in float.
 void vertex_stage(const PreparedScene &p, const PreparedDraw &d, std::vector<float> *clip, std::vector<float> *vary) {
   const size_t n = d.position.size() / 3;
@@ -393,41 +405,56 @@ void scene_rasterize_cpu(const PreparedScene &p, SceneVisibility *vis, int threa
     fresh_buffer(&vis->b2, n, 0.f);
     fresh_buffer(&vis->depth, n, 1.f);
   }
-  std::vector<ScreenTri> tris;
-  std::vector<float> clip, vary;
-  for (size_t di = 0; di < p.draws.size(); ++di) {
-    vertex_stage(p, p.draws[di], &clip, &vary);
-    setup(p, static_cast<int>(di), clip, &tris);
-  }
-  if (maker.joinable()) maker.join();
-  if (getenv("TS_DRAW_MS")) fprintf(stderr, "C raster setup: %zu triangles\n", tris.size());
-  // Bands of kBand rows, each with the triangles that reach it (in draw order, so that equal
-  // depths keep the first draw, as GL_LESS does); workers take whole bands.
+  // The draws' triangles are set up and rasterised in batches of about kBatch triangles, in draw
+  // order (a band takes its triangles in that order, batch after batch, so that equal depths keep
+  // the first draw, as GL_LESS does: the same visibility as one batch): the set-up triangles'
+  // memory is bounded by the batch, not by the scene's draw count.
+  const size_t kBatch = 16384;
   const int kBand = 8;
   const int bands = (p.h + kBand - 1) / kBand;
+  std::vector<ScreenTri> tris;
+  std::vector<float> clip;
   std::vector<std::vector<int>> band_tris(static_cast<size_t>(bands));
-  for (size_t i = 0; i < tris.size(); ++i)
-    for (int b = tris[i].y0 / kBand; b <= tris[i].y1 / kBand; ++b)
-      band_tris[static_cast<size_t>(b)].push_back(static_cast<int>(i));
-  parallel_rows(bands, threads, [&](int band) {
-    const int ra = band * kBand, rb = std::min(p.h, ra + kBand);
-    if (reuse) {
-      const size_t i0 = static_cast<size_t>(ra) * p.w, i1 = static_cast<size_t>(rb) * p.w;
-      std::fill(vis->draw.begin() + i0, vis->draw.begin() + i1, -1);
-      std::fill(vis->tri.begin() + i0, vis->tri.begin() + i1, -1);
-      std::fill(vis->b1.begin() + i0, vis->b1.begin() + i1, 0.f);
-      std::fill(vis->b2.begin() + i0, vis->b2.begin() + i1, 0.f);
-      std::fill(vis->depth.begin() + i0, vis->depth.begin() + i1, 1.f);
+  size_t total = 0;
+  bool first = true;
+  size_t di = 0;
+  while (first || di < p.draws.size()) {
+    tris.clear();
+    for (; di < p.draws.size() && tris.size() < kBatch; ++di) {
+      clip_stage(p, p.draws[di], &clip);
+      setup(p, static_cast<int>(di), clip, &tris);
     }
-    for (int ti : band_tris[static_cast<size_t>(band)]) {
-      const ScreenTri &s = tris[static_cast<size_t>(ti)];
-      const int ya = std::max(s.y0, ra), yb = std::min(s.y1, rb - 1);
-      if (s.small)
-        raster_small(s, vis, ya, yb);
-      else
-        raster_wide(s, vis, ya, yb);
-    }
-  });
+    total += tris.size();
+    if (first && maker.joinable()) maker.join();
+    // Bands of kBand rows, each with the batch's triangles that reach it (in draw order);
+    // workers take whole bands.
+    for (std::vector<int> &b : band_tris) b.clear();
+    for (size_t i = 0; i < tris.size(); ++i)
+      for (int b = tris[i].y0 / kBand; b <= tris[i].y1 / kBand; ++b)
+        band_tris[static_cast<size_t>(b)].push_back(static_cast<int>(i));
+    const bool reset = first && reuse;
+    parallel_rows(bands, threads, [&](int band) {
+      const int ra = band * kBand, rb = std::min(p.h, ra + kBand);
+      if (reset) {
+        const size_t i0 = static_cast<size_t>(ra) * p.w, i1 = static_cast<size_t>(rb) * p.w;
+        std::fill(vis->draw.begin() + i0, vis->draw.begin() + i1, -1);
+        std::fill(vis->tri.begin() + i0, vis->tri.begin() + i1, -1);
+        std::fill(vis->b1.begin() + i0, vis->b1.begin() + i1, 0.f);
+        std::fill(vis->b2.begin() + i0, vis->b2.begin() + i1, 0.f);
+        std::fill(vis->depth.begin() + i0, vis->depth.begin() + i1, 1.f);
+      }
+      for (int ti : band_tris[static_cast<size_t>(band)]) {
+        const ScreenTri &s = tris[static_cast<size_t>(ti)];
+        const int ya = std::max(s.y0, ra), yb = std::min(s.y1, rb - 1);
+        if (s.small)
+          raster_small(s, vis, ya, yb);
+        else
+          raster_wide(s, vis, ya, yb);
+      }
+    });
+    first = false;
+  }
+  if (getenv("TS_DRAW_MS")) fprintf(stderr, "C raster setup: %zu triangles\n", total);
 }
 
 void scene_shade_cpu(const PreparedScene &p, const SceneVisibility &vis, ImageF *out, int threads,

@@ -151,9 +151,12 @@ bool SceneGl::draw_all(const std::vector<GLuint> &progs, bool production, int gb
   begin_pass();
   g.ClearColor(0.f, 0.f, 0.f, 0.f);
   g.Clear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+  bind_ms_ = 0;
   for (size_t i = 0; i < p_->draws.size(); ++i) {
     const GLuint prog = progs.at(prog_of_draw_[i]);
+    const auto tb = Clock::now();
     if (!bind_draw(i, prog, production, err)) return false;
+    bind_ms_ += ms_since(tb);
     if (gb_slot == -1) {
       const GLint loc = g.GetUniformLocation(prog, "u_draw_index");
       if (loc >= 0) g.Uniform1f(loc, static_cast<float>(i));

@@ -39,6 +39,9 @@ class SceneGl : NonCopyable {
   bool gbuffer(std::vector<int> *draw, std::vector<float> *slots, std::string *err);
   const GlFns &gl() const { return r_.gl(); }
   GLuint program_of(int draw) const { return programs_.at(prog_of_draw_.at(draw)); }
+  // The host time of the last pass's per-draw set-up (program, uniforms, textures, attribute
+  // bindings: bind_draw), summed over its draws (the large-scene bench's set-up share).
+  double last_bind_ms() const { return bind_ms_; }
 
  private:
   void begin_pass();
@@ -51,6 +54,7 @@ class SceneGl : NonCopyable {
   const PreparedScene *p_ = nullptr;
   int tw_ = 0, th_ = 0;  // target size
   std::atomic<int> *progress_ = nullptr;
+  double bind_ms_ = 0;
   std::vector<std::string> variant_names_;
   std::vector<GLuint> programs_;  // per unique variant
   std::vector<int> prog_of_draw_;
