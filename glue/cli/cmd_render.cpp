@@ -9,6 +9,7 @@
 #include <thread>
 
 #include "cli/args.h"
+#include "cli/memory_estimate.h"
 #include "conform/conform.h"
 #include "bundle/draw_dump.h"
 #include "gl/float_target.h"
@@ -37,14 +38,10 @@ double peak_mib() {
 
 using Clock = std::chrono::steady_clock;
 
-bool parse_size(const std::string &s, int *w, int *h) {
-  int a = 0, b = 0;
-  char x = 0, extra = 0;
-  if (sscanf(s.c_str(), "%d%c%d%c", &a, &x, &b, &extra) != 3 || (x != 'x' && x != 'X')) return false;
-  if (a < 1 || b < 1 || a > 8192 || b > 8192) return false;
-  *w = a;
-  *h = b;
-  return true;
+// "<scene>: <err>", the scene named once (some errors from prepare.cpp already begin with it).
+std::string scene_message(const Scene &s, const std::string &err) {
+  if (err.compare(0, s.path.size() + 2, s.path + ": ") == 0) return err;
+  return s.path + ": " + err;
 }
 
 // Compiles and links every combo of the families the scene uses (the baseline the selection
@@ -89,7 +86,7 @@ bool warm_frame_ms(const Scene &s, const SceneSelection &sel, const SceneRenderC
 const char kHelp[] = R"(usage: tiershade render SCENE.gltf [--tier ps20|ps2b|sm3] [--backend egl|osmesa|cpu]
                         [--api gles3|gles2|gl33] [--hdr integer|float] [--size WxH] -o OUT
                         [--check] [--compile-all] [--threads N] [--progress] [--quiet]
-                        [--dump-draws DIR]
+                        [--dump-draws DIR] [--max-memory MIB]
 Renders a glTF 2.0 scene (docs/scenes.md) with only the shader variants it needs and writes
 OUT.exr (the lit pass, RGBA32F as the shaders wrote it) and OUT.png (the final frame).
 Defaults: sm3, EGL surfaceless GLES 3.0 (OSMesa: GL 3.3), the scene's HDR path, 1280x720.
@@ -97,11 +94,15 @@ Defaults: sm3, EGL surfaceless GLES 3.0 (OSMesa: GL 3.3), the scene's HDR path, 
 --check: on GL, also shades GL's own G-buffer with the C twin and fails unless equal bit for bit.
 --compile-all: also compiles every combo of the families used, to measure what the selection saved.
 --dump-draws DIR: GL: writes the draws (geometry, uniform values, textures) and the lit frame, for
-a bare engine to replay with a shader bundle (docs/bundles.md; tests/bundle/bare_gl_render).)";
+a bare engine to replay with a shader bundle (docs/bundles.md; tests/bundle/bare_gl_render).
+--max-memory MIB: what input files and the render may take (default 1024): an image, accessor,
+probe set, lightmap page or --size that needs more is refused before it is read, naming the
+limit (docs/reliability.md). --size is at most 8192x8192.)";
 
 int cmd_render(int argc, char **argv) {
   Args a("render", argc, argv, {"--help", "--check", "--quiet", "--progress", "--compile-all", "--report-memory"},
-         {"--tier", "--backend", "--api", "--hdr", "--size", "-o", "--threads", "--exposure-frames", "--dump-draws"});
+         {"--tier", "--backend", "--api", "--hdr", "--size", "-o", "--threads", "--exposure-frames", "--dump-draws",
+          "--max-memory"});
   if (a.help(kHelp)) return 0;
   if (a.positional().size() != 1) a.fail("expected one scene file (tiershade render SCENE.gltf -o OUT)");
   if (!a.has("-o")) a.fail("-o OUT is required");
@@ -121,8 +122,9 @@ int cmd_render(int argc, char **argv) {
   if (cfg.backend != Backend::CPU && !config_supported(cfg.backend, cfg.api, &why)) a.fail(why);
   const std::string hdr = a.get("--hdr");
   if (!hdr.empty() && hdr != "integer" && hdr != "float") a.fail("unknown HDR path '" + hdr + "' (integer, float)");
-  if (a.has("--size") && !parse_size(a.get("--size"), &cfg.w, &cfg.h))
-    a.fail("bad --size '" + a.get("--size") + "' (WxH, 1..8192 each)");
+  if (a.has("--size") && !parse_wxh(a.get("--size"), 1, 8192, &cfg.w, &cfg.h))
+    a.fail("bad --size '" + a.get("--size") + "' (WxH: two integers, 1..8192 each, as 1280x720)");
+  apply_max_memory(a);
   cfg.threads = a.get_int("--threads", 0, 0, 256);
   cfg.exposure_frames = a.get_int("--exposure-frames", cfg.exposure_frames, 1, 10000);
   cfg.check = a.flag("--check");
@@ -172,9 +174,13 @@ int cmd_render(int argc, char **argv) {
     fprintf(stderr, "tiershade render: %s\n", err.c_str());
     return 1;
   }
+  if (!render_fits_memory(scene, cfg.w, cfg.h, cfg.backend != Backend::CPU, cfg.check, &err)) {
+    fprintf(stderr, "tiershade render: %s: %s\n", scene.path.c_str(), err.c_str());
+    return 1;
+  }
   SceneSelection sel;
   if (!select_scene_variants(scene, tier, hdr, &sel, &err)) {
-    fprintf(stderr, "tiershade render: %s: %s\n", scene.path.c_str(), err.c_str());
+    fprintf(stderr, "tiershade render: %s\n", scene_message(scene, err).c_str());
     return 1;
   }
   if (!quiet) {
@@ -191,7 +197,7 @@ int cmd_render(int argc, char **argv) {
   }
   SceneRenderResult res;
   if (!render_scene(scene, sel, cfg, &res, &err)) {
-    fprintf(stderr, "tiershade render: %s: %s\n", scene.path.c_str(), err.c_str());
+    fprintf(stderr, "tiershade render: %s\n", scene_message(scene, err).c_str());
     return 1;
   }
   const double total_ms = std::chrono::duration<double, std::milli>(Clock::now() - t0).count();

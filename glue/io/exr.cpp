@@ -21,6 +21,7 @@
 
 #include "io/atomic_file.h"
 #include "io/io_error.h"
+#include "io/memory_limit.h"
 
 namespace {
 
@@ -123,6 +124,8 @@ bool write_exr_half(const std::string &path, const ImageF &img, std::string *err
 
 bool read_exr(const std::string &path, ImageF *out, std::string *err) {
   static const char fn[] = "read_exr";
+  std::string why;
+  if (!regular_file_within(path, 1LL << 31, nullptr, &why)) return io_error(err, fn, path, why);
   try {
     Imf::InputFile in(path.c_str());
     const Imf::Header &header = in.header();
@@ -130,6 +133,9 @@ bool read_exr(const std::string &path, ImageF *out, std::string *err) {
     const long long w = (long long)dw.max.x - dw.min.x + 1;
     const long long h = (long long)dw.max.y - dw.min.y + 1;
     if (w <= 0 || h <= 0 || w * h > kMaxImagePixels) return io_error(err, fn, path, "bad or too large data window");
+    // The float buffer read and ImageF's flipped copy: 16 bytes per pixel each.
+    if (!memory_fits(32.0 * w * h, "a " + std::to_string(w) + " x " + std::to_string(h) + " image", &why))
+      return io_error(err, fn, path, why);
     static const char *const names[4] = {"R", "G", "B", "A"};
     bool present[4];
     for (int c = 0; c < 4; ++c) {

@@ -464,7 +464,9 @@ bool prepare_scene(const Scene &s, const SceneSelection &sel, int w, int h, Api 
     }
     ws.rays = &rays;
     if (!bake_world(ws, &bake, err)) {
-      *err = s.path + ": lightmap bake: " + *err;
+      *err = s.path + (s.lightmaps.image.empty() ? std::string(": lightmap bake: ")
+                                                  : ": extras.tiershade.lightmaps.image " + s.lightmaps.image +
+                                                        ": the page cannot hold the scene's faces: ") + *err;
       return false;
     }
     // A page from the scene's lightmaps.image: the placement above is its layout (the same
