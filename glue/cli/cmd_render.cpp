@@ -4,6 +4,8 @@
 #include <unistd.h>
 
 #include <algorithm>
+#include <cerrno>
+#include <cstring>
 #include <chrono>
 #include <cstdio>
 #include <thread>
@@ -14,6 +16,7 @@
 #include "bundle/draw_dump.h"
 #include "gl/float_target.h"
 #include "base/image.h"
+#include "io/atomic_file.h"
 #include "io/exr.h"
 #include "io/png.h"
 #include "scene/scene.h"
@@ -210,17 +213,28 @@ int cmd_render(int argc, char **argv) {
       return 1;
     }
   }
-  // The two files on two threads (each is written to a temporary file and renamed, so neither is
-  // ever partial); if one fails, the other is removed: a failed run leaves no frame behind.
+  // The two files on two threads, each to a temporary name of this process (written whole and
+  // synced by the writers' own atomic files); both are renamed into place only when both were
+  // written, so a failed run leaves no frame behind and the previous OUT.exr and OUT.png intact.
+  const std::string tmp = temp_path_for(out);
   std::string png_err;
   bool png_ok = false;
-  std::thread png_writer([&] { png_ok = write_png_rgba8(out + ".png", res.w, res.h, res.display, &png_err); });
-  const bool exr_ok = write_exr(out + ".exr", res.lit, &err);
+  std::thread png_writer([&] { png_ok = write_png_rgba8(tmp + ".png", res.w, res.h, res.display, &png_err); });
+  const bool exr_ok = write_exr(tmp + ".exr", res.lit, &err);
   png_writer.join();
-  if (!exr_ok || !png_ok) {
-    if (exr_ok) unlink((out + ".exr").c_str());
-    if (png_ok) unlink((out + ".png").c_str());
-    fprintf(stderr, "tiershade render: %s\n", (exr_ok ? png_err : err).c_str());
+  bool ok = exr_ok && png_ok;
+  std::string wfail = exr_ok ? png_err : err;
+  for (const char *ext : {".exr", ".png"})
+    if (ok && std::rename((tmp + ext).c_str(), (out + ext).c_str()) != 0) {
+      wfail = out + ext + ": cannot replace (" + std::strerror(errno) + ")";
+      ok = false;
+    }
+  if (!ok) {
+    unlink((tmp + ".exr").c_str());
+    unlink((tmp + ".png").c_str());
+    // The writers name the temporary: name the file the user asked for.
+    for (size_t p; (p = wfail.find(tmp)) != std::string::npos;) wfail.replace(p, tmp.size(), out);
+    fprintf(stderr, "tiershade render: %s\n", wfail.c_str());
     return 1;
   }
   if (!quiet) {
