@@ -6,6 +6,7 @@
 #include <cstdio>
 
 #include "cli/args.h"
+#include "cli/memory_estimate.h"
 #include "base/image.h"
 #include "io/exr.h"
 #include "scene/scene.h"
@@ -13,14 +14,15 @@
 #include "scene/prepare.h"
 
 // `tiershade bake --help`.
-const char kHelp[] = R"(usage: tiershade bake SCENE.gltf -o PAGE.exr
+const char kHelp[] = R"(usage: tiershade bake SCENE.gltf -o PAGE.exr [--max-memory MIB]
 Bakes the scene's lightmap page (flat and three RNM lightmaps per LightmappedGeneric face, from
 its lights) and writes it as RGBA float32 EXR, rows as GL texture rows (row 0 at the bottom).
 Name it in the scene's extras.tiershade.lightmaps.image to render without baking (docs/scenes.md).)";
 
 int cmd_bake(int argc, char **argv) {
-  Args a("bake", argc, argv, {"--help"}, {"-o"});
+  Args a("bake", argc, argv, {"--help"}, {"-o", "--max-memory"});
   if (a.help(kHelp)) return 0;
+  apply_max_memory(a);  // --max-memory MIB: what the scene's files may take (docs/reliability.md)
   if (a.positional().size() != 1) a.fail("expected one scene file (tiershade bake SCENE.gltf -o PAGE.exr)");
   if (!a.has("-o")) a.fail("-o PAGE.exr is required");
   const std::string out = a.get("-o");
@@ -36,6 +38,10 @@ int cmd_bake(int argc, char **argv) {
            scene.lightmaps.image.c_str());
     scene.lightmaps.image.clear();
     scene.lightmaps.image_rgba.clear();
+  }
+  if (!render_fits_memory(scene, 1, 1, false, false, &err)) {  // the page's bake, checked before it starts
+    fprintf(stderr, "tiershade bake: %s: %s\n", scene.path.c_str(), err.c_str());
+    return 1;
   }
   SceneSelection sel;
   PreparedScene ps;

@@ -51,5 +51,5 @@ bool render_fits_memory(const Scene &s, int w, int h, bool gl, bool check, std::
     total += p.bytes;
     if (p.bytes > biggest->bytes) biggest = &p;
   }
-  return memory_fits(total, "the render (mostly " + biggest->what + ")", why);
+  return memory_fits(total, "the render or bake (mostly " + biggest->what + ")", why);
 }

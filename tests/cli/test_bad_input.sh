@@ -159,18 +159,20 @@ ln -s lut.cube link.raw 2> /dev/null
 bad lut_convert_same_file 2 "are the same file" "" -- lut convert lut.cube link.raw
 
 # --- 10. limits: --size 8192x8192, 64 probes of 512, an 8192 x 8192 page ------------------------
-bad limit_size 1 "the render \(mostly the frame of 8192 x 8192\) needs [0-9]+ MiB, over the memory limit of 1024 MiB \(raise it with --max-memory MIB\)" r_lim \
+bad limit_size 1 "the render or bake \(mostly the frame of 8192 x 8192\) needs [0-9]+ MiB, over the memory limit of 1024 MiB \(raise it with --max-memory MIB\)" r_lim \
   -- render "$SC/phong_sphere.gltf" --backend cpu --size 8192x8192 -o r_lim
 scene phong_sphere.gltf probes64.gltf "
 p = d['extras']['tiershade']['probes'][0]
 p['size'] = 512
 p['image'] = os.path.abspath('probe_src.exr')
 d['extras']['tiershade']['probes'] = [dict(p) for i in range(64)]"
-bad limit_probes 1 "the render \(mostly 64 probe cubes\) needs [0-9]+ MiB, over the memory limit of 1024 MiB" r_lim \
+bad limit_probes 1 "the render or bake \(mostly 64 probe cubes\) needs [0-9]+ MiB, over the memory limit of 1024 MiB" r_lim \
   -- render probes64.gltf --backend cpu -o r_lim
 scene world_lighting.gltf page8k.gltf "d['extras']['tiershade']['lightmaps']['page'] = [8192, 8192]"
 bad limit_page 1 "the lightmap page of 8192 x 8192 \(baked at load\)\) needs [0-9]+ MiB, over the memory limit of 1024 MiB" r_lim \
   -- render page8k.gltf --backend cpu -o r_lim
+bad limit_page_bake 1 "tiershade bake: page8k.gltf: the render or bake \(mostly the lightmap page of 8192 x 8192 \(baked at load\)\) needs" page8k.exr \
+  -- bake page8k.gltf -o page8k.exr
 bad max_memory_range 2 "option --max-memory wants an integer in \[64, 1048576\]" r_lim \
   -- render "$SC/phong_sphere.gltf" --backend cpu --max-memory 10 -o r_lim
 # A limit below what an image needs refuses it; the default renders every shipped scene size.
