@@ -224,11 +224,22 @@ int cmd_render(int argc, char **argv) {
   png_writer.join();
   bool ok = exr_ok && png_ok;
   std::string wfail = exr_ok ? png_err : err;
-  for (const char *ext : {".exr", ".png"})
-    if (ok && std::rename((tmp + ext).c_str(), (out + ext).c_str()) != 0) {
-      wfail = out + ext + ": cannot replace (" + std::strerror(errno) + ")";
+  if (ok) {
+    // OUT.exr first; if OUT.png then cannot be replaced, the previous OUT.exr (kept as a hard
+    // link) comes back, or the new one goes: the pair is never half replaced.
+    const std::string exr = out + ".exr", keep = tmp + ".prev.exr";
+    const bool had = link(exr.c_str(), keep.c_str()) == 0;
+    if (std::rename((tmp + ".exr").c_str(), exr.c_str()) != 0) {
+      wfail = exr + ": cannot replace (" + std::strerror(errno) + ")";
       ok = false;
+    } else if (std::rename((tmp + ".png").c_str(), (out + ".png").c_str()) != 0) {
+      wfail = out + ".png: cannot replace (" + std::strerror(errno) + ")";
+      ok = false;
+      if (had ? std::rename(keep.c_str(), exr.c_str()) != 0 : unlink(exr.c_str()) != 0)
+        wfail += "; and " + exr + " could not be restored";
     }
+    if (had) unlink(keep.c_str());
+  }
   if (!ok) {
     unlink((tmp + ".exr").c_str());
     unlink((tmp + ".png").c_str());
