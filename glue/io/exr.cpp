@@ -13,6 +13,7 @@
 #include <ImfOutputFile.h>
 #include <half.h>
 
+#include <algorithm>
 #include <cerrno>
 #include <cstdio>
 #include <cstring>
@@ -112,6 +113,69 @@ bool write_exr_any(const char *fn, const std::string &path, const ImageF &img, I
   return true;
 }
 
+// OpenEXR allocates from the header in InputFile's constructor (line buffers of width x lines a
+// chunk x channels, tile buffers), before the data window can be checked: the header's
+// attributes (OpenEXR file layout: magic, version, then name\0 type\0 int32 size value, up to an
+// empty name) are read here first and those sizes checked against the memory limit.
+bool exr_header_fits(const std::string &path, std::string *why) {
+  FILE *f = std::fopen(path.c_str(), "rb");
+  if (!f) {
+    *why = std::string("cannot open: ") + std::strerror(errno);
+    return false;
+  }
+  std::vector<unsigned char> b(1 << 16);
+  b.resize(std::fread(b.data(), 1, b.size(), f));
+  long long file_size = static_cast<long long>(b.size());
+  if (std::fseek(f, 0, SEEK_END) == 0) file_size = ftello(f);
+  std::fclose(f);
+  auto le = [&](size_t p) -> long long {
+    return p + 4 <= b.size() ? static_cast<int32_t>(b[p] | b[p + 1] << 8 | b[p + 2] << 16 | static_cast<uint32_t>(b[p + 3]) << 24) : 0;
+  };
+  long long w = 0, h = 0, tx = 0, ty = 0, channels = 0;
+  size_t p = 8;
+  while (p < b.size() && b[p] != 0) {
+    const size_t n0 = p;
+    while (p < b.size() && b[p]) ++p;
+    const std::string name(b.begin() + n0, b.begin() + p);
+    const size_t t0 = ++p;
+    while (p < b.size() && b[p]) ++p;
+    const std::string type(b.begin() + t0, b.begin() + std::min(p, b.size()));
+    ++p;
+    const long long size = le(p);
+    p += 4;
+    if (size < 0 || static_cast<long long>(p) + size > file_size) {  // OpenEXR would allocate it first
+      *why = "header attribute '" + name + "' claims " + std::to_string(size) + " bytes, more than the file holds";
+      return false;
+    }
+    if (p + size > b.size()) break;  // a header beyond what was read: OpenEXR checks the rest
+    if (name == "dataWindow" && type == "box2i" && size == 16) {
+      w = le(p + 8) - le(p) + 1;
+      h = le(p + 12) - le(p + 4) + 1;
+    } else if (name == "tiles" && type == "tiledesc" && size >= 8) {
+      tx = static_cast<uint32_t>(le(p));
+      ty = static_cast<uint32_t>(le(p + 4));
+    } else if (name == "channels" && type == "chlist") {
+      for (size_t q = p; q < p + size && b[q];) {
+        while (q < p + size && b[q]) ++q;
+        q += 17;
+        ++channels;
+      }
+    }
+    p += size;
+  }
+  if (w <= 0 || h <= 0) return true;  // OpenEXR reports it
+  const double px = static_cast<double>(w) * h, ch = static_cast<double>(std::max(1LL, channels));
+  const std::string dims = std::to_string(w) + " x " + std::to_string(h);
+  if (px > static_cast<double>(kMaxImagePixels)) {
+    *why = "data window " + dims + " is more than " + std::to_string(kMaxImagePixels) + " pixels";
+    return false;
+  }
+  // Lines are decoded up to 256 at a time (DWAB), 4 bytes a channel sample at most.
+  return memory_fits(32.0 * px, "a " + dims + " image", why) &&
+      memory_fits(4.0 * ch * static_cast<double>(w) * 256, "a " + dims + " image of " + std::to_string(channels) + " channels", why) &&
+      memory_fits(4.0 * ch * static_cast<double>(tx) * static_cast<double>(ty), "tiles of " + std::to_string(tx) + " x " + std::to_string(ty), why);
+}
+
 }  // namespace
 
 bool write_exr(const std::string &path, const ImageF &img, std::string *err) {
@@ -125,7 +189,8 @@ bool write_exr_half(const std::string &path, const ImageF &img, std::string *err
 bool read_exr(const std::string &path, ImageF *out, std::string *err) {
   static const char fn[] = "read_exr";
   std::string why;
-  if (!regular_file_within(path, 1LL << 31, nullptr, &why)) return io_error(err, fn, path, why);
+  if (!regular_file_within(path, 1LL << 31, nullptr, &why) || !exr_header_fits(path, &why))
+    return io_error(err, fn, path, why);
   try {
     Imf::InputFile in(path.c_str());
     const Imf::Header &header = in.header();
