@@ -136,10 +136,12 @@ bool exr_header_fits(const std::string &path, std::string *why) {
   while (p < b.size() && b[p] != 0) {
     const size_t n0 = p;
     while (p < b.size() && b[p]) ++p;
+    if (p >= b.size()) break;
     const std::string name(b.begin() + n0, b.begin() + p);
     const size_t t0 = ++p;
     while (p < b.size() && b[p]) ++p;
-    const std::string type(b.begin() + t0, b.begin() + std::min(p, b.size()));
+    if (p + 5 > b.size()) break;  // OpenEXR reports a truncated header
+    const std::string type(b.begin() + t0, b.begin() + p);
     ++p;
     const long long size = le(p);
     p += 4;

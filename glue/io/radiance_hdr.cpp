@@ -199,12 +199,11 @@ std::string stb_reason() {
 bool read_hdr_impl(const std::string &path, ImageF *out, std::string *why) {
   std::vector<unsigned char> d;
   Header hd;
-  if (!slurp(path, &d, why) || !parse_header(d, &hd, why)) return false;
+  if (!slurp(path, &d, why) || !parse_header(d, &hd, why) || !check_pixel_data(d, hd, why)) return false;
   // stb's float image and ImageF's copy: 16 bytes per pixel each, besides the file.
   const double pixels = static_cast<double>(hd.w) * hd.h;
   if (!memory_fits(static_cast<double>(d.size()) + 32.0 * pixels,
-                   "a " + std::to_string(hd.w) + " x " + std::to_string(hd.h) + " image", why) ||
-      !check_pixel_data(d, hd, why))
+                   "a " + std::to_string(hd.w) + " x " + std::to_string(hd.h) + " image", why))
     return false;
   // stb reads only "-Y h +X w": for "+Y" it decodes the same scanlines, stored bottom row first.
   if (!hd.top_down) d[hd.res_line] = '-';

@@ -115,14 +115,14 @@ printf '#?RADIANCE\nFORMAT=32-bit_rle_rgbe\n\n-Y 11585 +X 11585\n' > big.hdr
 printf '#?RADIANCE\nFORMAT=32-bit_rle_rgbe\n\n-Y 1 +X 134217728\n' > wide.hdr
 scene phong_sphere.gltf probe_big.gltf "
 for p in d['extras']['tiershade']['probes']: p['image'] = os.path.abspath('big.hdr')"
-bad hdr_probe_header 1 "probe_big.gltf: extras.tiershade.probes\[0\].image: read_hdr: '.*big.hdr': a 11585 x 11585 image needs [0-9]+ MiB, over the memory limit of 1024 MiB" r_hdr \
+bad hdr_probe_header 1 "probe_big.gltf: extras.tiershade.probes\[0\].image: read_hdr: '.*big.hdr': unexpected end of file in pixel data" r_hdr \
   -- render probe_big.gltf --backend cpu -o r_hdr
 scene phong_sphere.gltf probe_wide.gltf "
 for p in d['extras']['tiershade']['probes']: p['image'] = os.path.abspath('wide.hdr')"
-bad hdr_probe_wide 1 "read_hdr: '.*wide.hdr': a 134217728 x 1 image needs" r_hdr \
+bad hdr_probe_wide 1 "read_hdr: '.*wide.hdr': unexpected end of file in pixel data" r_hdr \
   -- render probe_wide.gltf --backend cpu -o r_hdr
 scene world_lighting.gltf page_big.gltf "d['extras']['tiershade']['lightmaps']['image'] = os.path.abspath('big.hdr'); del d['extras']['tiershade']['lightmaps']['page']"
-bad hdr_page_header 1 "page_big.gltf: extras.tiershade.lightmaps.image: read_hdr: '.*big.hdr': a 11585 x 11585 image needs" r_page \
+bad hdr_page_header 1 "page_big.gltf: extras.tiershade.lightmaps.image: read_hdr: '.*big.hdr': unexpected end of file in pixel data" r_page \
   -- render page_big.gltf --backend cpu -o r_page
 
 # --- 5. an EXR probe renders; errors name the scene once ---------------------------------------
