@@ -12,6 +12,7 @@
 #include <ImfInputFile.h>
 #include <ImfOutputFile.h>
 #include <half.h>
+#include <openexr.h>
 
 #include <algorithm>
 #include <cerrno>
@@ -193,6 +194,15 @@ bool read_exr(const std::string &path, ImageF *out, std::string *err) {
   std::string why;
   if (!regular_file_within(path, 1LL << 31, nullptr, &why) || !exr_header_fits(path, &why))
     return io_error(err, fn, path, why);
+  {  // OpenEXR's C core reads the header first: it checks every attribute against the file
+     // (the C++ InputFile allocates an attribute's claimed size before reading it)
+    exr_context_t ctx = nullptr;
+    exr_context_initializer_t init = EXR_DEFAULT_CONTEXT_INITIALIZER;
+    init.error_handler_fn = [](exr_const_context_t, exr_result_t, const char *) {};
+    const exr_result_t r = exr_start_read(&ctx, path.c_str(), &init);
+    exr_finish(&ctx);
+    if (r != EXR_ERR_SUCCESS) return io_error(err, fn, path, std::string("bad header (") + exr_get_default_error_message(r) + ")");
+  }
   try {
     Imf::InputFile in(path.c_str());
     const Imf::Header &header = in.header();
