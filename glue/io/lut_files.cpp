@@ -53,6 +53,7 @@ bool parse_size(const std::string &tok, long lo, long hi, long *out) {
 bool read_all(const std::string &path, long long max_bytes, std::string *bytes, std::string *err) {
   std::string why;
   if (!regular_file_within(path, max_bytes, nullptr, &why)) {
+    if (why.rfind("cannot open: ", 0) == 0) why = "cannot open (" + why.substr(13) + ")";
     *err = path + ": " + why;
     return false;
   }
