@@ -12,10 +12,21 @@ OPT      := -O2 -g
 ifeq ($(SAN),1)
 OPT      := -O1 -g -fsanitize=address,undefined -fno-omit-frame-pointer -fno-sanitize-recover=undefined
 endif
+# SAN=fuzz (clang only, `make fuzz`): objects instrumented for libFuzzer's coverage, with ASan+UBSan.
+ifeq ($(SAN),fuzz)
+OPT      := -O1 -g -fsanitize=fuzzer-no-link,address,undefined -fno-omit-frame-pointer -fno-sanitize-recover=undefined
+endif
 CFLAGS   := -std=c99 $(OPT) -Wall -Wextra -Werror -ffp-contract=off -fno-fast-math -Ic_ref
 CXXFLAGS := -std=c++17 $(OPT) -Wall -Wextra -Werror -ffp-contract=off -fno-fast-math -Iglue -Ic_ref \
             $(shell pkg-config --cflags $(PKGS) 2>/dev/null)
 SANFLAGS := -fsanitize=address,undefined
+ifeq ($(SAN),fuzz)
+# The C reference is compiled by gcc, uninstrumented (its SIMD code uses GCC target pragmas); the
+# readers the harnesses drive are all C++.
+CFLAGS   := $(filter-out -fsanitize=% -fno-sanitize%,$(CFLAGS))
+# clang-only warnings on code gcc accepts: the libraries' headers as system headers, a private field kept.
+CXXFLAGS := $(patsubst -I/usr/%,-isystem /usr/%,$(CXXFLAGS)) -Wno-unused-private-field
+endif
 LDFLAGS  := $(if $(filter 1,$(SAN)),$(SANFLAGS))
 LDLIBS   := -lEGL -lglslang-default-resource-limits -lembree3 $(shell pkg-config --libs $(PKGS) 2>/dev/null) -lpthread -ldl -lm
 
@@ -36,7 +47,8 @@ all: $(BUILD)/tiershade $(UNIT_TESTS)
 # Debian packages (see README): installed only when missing, so a second run is quick.
 DEB_PKGS := build-essential pkg-config libosmesa6-dev libegl-dev libegl-mesa0 libgles-dev libgbm-dev \
             libglm-dev libopenexr-dev libopencolorio-dev libtinygltf-dev nlohmann-json3-dev libstb-dev \
-            libpng-dev glslang-dev spirv-tools spirv-headers libembree-dev
+            libpng-dev glslang-dev spirv-tools spirv-headers libembree-dev \
+            clang libclang-rt-14-dev
 deps:
 	@missing=$$(for p in $(DEB_PKGS); do dpkg-query -W -f='$${Status}\n' $$p 2>/dev/null | grep -q 'install ok installed' || echo $$p; done); \
 	if [ -n "$$missing" ]; then \
@@ -88,11 +100,30 @@ $(BARE_GL): tests/bundle/bare_gl_render.cpp
 	$(CXX) -std=c++17 $(OPT) -Wall -Wextra -Werror $(LDFLAGS) -o $@ $< -lEGL
 # --- end bundle test
 
+# --- fuzzing (docs/reliability.md): the libFuzzer harnesses tests/fuzz/fuzz_*.cpp, built by clang
+# (libFuzzer: libclang-rt-14-dev) with ASan+UBSan against the library objects in build/fuzz/.
+# `make fuzz FUZZ_SECONDS=60` runs each for that long; `make test` replays the corpora and the
+# past crashes (tests/fuzz/regressions/) and runs each briefly (tests/run_tests.sh).
+FUZZ_SECONDS ?= 60
+FUZZ_SRC  := $(sort $(wildcard tests/fuzz/fuzz_*.cpp))
+FUZZ_BINS := $(patsubst tests/fuzz/%.cpp,$(BUILD)/fuzzers/%,$(FUZZ_SRC))
+.PHONY: fuzz fuzz-build fuzz-bins
+fuzz-bins: $(FUZZ_BINS)
+$(BUILD)/fuzzers/%: tests/fuzz/%.cpp tests/fuzz/fuzz_util.h $(LIB_OBJ)
+	@mkdir -p $(dir $@)
+	$(CXX) $(CXXFLAGS) -fsanitize=fuzzer,address,undefined -o $@ $< $(LIB_OBJ) $(LDLIBS)
+fuzz-build:
+	$(MAKE) -j$(JOBS) BUILD=build/fuzz SAN=fuzz CC=gcc CXX=clang++ fuzz-bins
+fuzz: deps fuzz-build
+	bash tests/fuzz/run_fuzz.sh build/fuzz/fuzzers $(FUZZ_SECONDS)
+# --- end fuzzing
+
 # The README's test command: every unit test, conformance on both backends and all
 # APIs, the CLI checks, then the same suite's fast part under ASan+UBSan.
 test: deps
 	$(MAKE) -j$(JOBS) all
 	$(MAKE) -j$(JOBS) BUILD=build/san SAN=1 all
+	$(MAKE) fuzz-build
 	bash tests/run_tests.sh
 
 demo: deps

@@ -1,4 +1,5 @@
 // tiershade main: command-line front end. `tiershade --help` lists the subcommands.
+#include <csignal>
 #include <cstdio>
 #include <cstring>
 #include <string>
@@ -33,6 +34,7 @@ int main(int argc, char **argv) {
     fputs(kUsage, argc < 2 ? stderr : stdout);
     return argc < 2 ? 2 : 0;
   }
+  signal(SIGXFSZ, SIG_IGN);  // a file-size limit (RLIMIT_FSIZE) fails the write with EFBIG, reported, not a kill
   ts_math_init();  // FTZ|DAZ and the fused-mad choice, as llvmpipe computes
   const std::string cmd = argv[1];
   struct {

@@ -8,7 +8,8 @@
 #   4. per-pixel conformance: every variant x {OSMesa GL 3.3, EGL GLES 2.0, GLES 3.0, GL 3.3}
 #      x {random, hard} input grids, 0 ULP against the C reference (glue/conform/conform.h),
 #   5. the demo frames (GL = C on every backend),
-#   6. the same unit, CLI and (smaller) conformance checks under AddressSanitizer + UBSan.
+#   6. the same unit, CLI and (smaller) conformance checks under AddressSanitizer + UBSan,
+#   7. the libFuzzer harnesses over their corpora and past crashes, then briefly (tests/fuzz).
 # A check may also print "SKIP name: why". No check of this suite is expected to skip on the
 # machines it targets (Debian 12 with make deps run), so every SKIP is counted, listed, and fails
 # the run: a check that silently stops running must not look like a pass.
@@ -105,6 +106,10 @@ unit_tests build/san san_
 for s in tests/cli/test_*.sh; do run "san_$(basename "$s" .sh)" bash "$s" build/san/tiershade; done
 run san_conform as_checks build/san/tiershade conform --verbose --size 16
 run san_demo demo_check build/san/tiershade
+
+echo "== fuzz harnesses (tests/fuzz: every corpus file and past crash, then ${FUZZ_TEST_SECONDS:-15} s of mutation each)"
+# The EXR readers replay only (docs/reliability.md, "Still open": OpenEXR's C++ header reader).
+FUZZ_REPLAY_ONLY="fuzz_exr fuzz_probe fuzz_page" run fuzz bash tests/fuzz/run_fuzz.sh build/fuzz/fuzzers "${FUZZ_TEST_SECONDS:-15}"
 
 if [ "$skipped" -gt 0 ]; then
   echo "$skipped check(s) skipped: every skip is unexpected in this suite (see the [name] SKIP lines above)"

@@ -63,6 +63,31 @@ int Args::get_int(const std::string &name, int def, int lo, int hi) const {
   return static_cast<int>(v);
 }
 
+namespace {
+// Digits only, at most 9 of them (no overflow of int), value in [lo, hi].
+bool parse_dim(const std::string &s, int lo, int hi, int *out) {
+  if (s.empty() || s.size() > 9) return false;
+  long v = 0;
+  for (char c : s) {
+    if (c < '0' || c > '9') return false;
+    v = v * 10 + (c - '0');
+  }
+  if (v < lo || v > hi) return false;
+  *out = static_cast<int>(v);
+  return true;
+}
+}  // namespace
+
+bool parse_wxh(const std::string &s, int lo, int hi, int *w, int *h) {
+  const size_t x = s.find_first_of("xX");
+  if (x == std::string::npos) return false;
+  int a = 0, b = 0;
+  if (!parse_dim(s.substr(0, x), lo, hi, &a) || !parse_dim(s.substr(x + 1), lo, hi, &b)) return false;
+  *w = a;
+  *h = b;
+  return true;
+}
+
 bool Args::help(const char *text) const {
   if (!flag("--help")) return false;
   puts(text);

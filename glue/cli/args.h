@@ -34,6 +34,10 @@ class Args {
   std::vector<std::string> pos_;
 };
 
+// Parses "WxH" strictly: two decimal integers (digits only: no sign, spaces or other text)
+// joined by 'x' or 'X', each in [lo, hi]; overflow is refused. False on anything else.
+bool parse_wxh(const std::string &s, int lo, int hi, int *w, int *h);
+
 // Subcommands (glue/cmd_*.cpp). Each returns the process exit status.
 int cmd_variants(int argc, char **argv);
 int cmd_budget(int argc, char **argv);

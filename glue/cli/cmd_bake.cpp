@@ -8,15 +8,16 @@
 #include <string>
 #include <vector>
 
-#include "base/image.h"
 #include "cli/args.h"
+#include "cli/memory_estimate.h"
+#include "base/image.h"
 #include "io/exr.h"
 #include "scene/prepare.h"
 #include "scene/scene.h"
 #include "scene/selection.h"
 
 // `tiershade bake --help`.
-const char kHelp[] = R"(usage: tiershade bake SCENE.gltf -o DIR
+const char kHelp[] = R"(usage: tiershade bake SCENE.gltf -o DIR [--max-memory MIB]
        tiershade bake SCENE.gltf -o PAGE.exr
 Bakes the scene's lightmaps (flat and three RNM lightmaps per LightmappedGeneric face: direct light
 with shadows, then extras.tiershade.lightmaps.bounces bounces) and writes the bake directory DIR:
@@ -24,7 +25,8 @@ page.exr (RGBA float32, rows as GL texture rows) and manifest.json (the scene's 
 faces' places, the settings, each pass's rays and time). Each finished pass is saved in DIR.partial:
 a bake that was killed resumes from it; DIR appears only when the bake is complete. Name DIR in the
 scene's extras.tiershade.lightmaps.bake to render from it (a stale bake is refused). With a .exr
-name, writes the page alone (for extras.tiershade.lightmaps.image). docs/baking.md.)";
+name, writes the page alone (for extras.tiershade.lightmaps.image). --max-memory MIB: what the
+scene's files and the bake may take (default 1024; docs/reliability.md). docs/baking.md.)";
 
 namespace fs = std::filesystem;
 
@@ -128,8 +130,9 @@ std::vector<std::string> bake_report(const BakeSummary &s) {
 }  // namespace
 
 int cmd_bake(int argc, char **argv) {
-  Args a("bake", argc, argv, {"--help"}, {"-o"});
+  Args a("bake", argc, argv, {"--help"}, {"-o", "--max-memory"});
   if (a.help(kHelp)) return 0;
+  apply_max_memory(a);  // --max-memory MIB: what the scene's files may take (docs/reliability.md)
   if (a.positional().size() != 1) a.fail("expected one scene file (tiershade bake SCENE.gltf -o DIR)");
   if (!a.has("-o")) a.fail("-o DIR is required (the bake directory; or -o PAGE.exr for the page alone)");
   const std::string out = a.get("-o");
@@ -161,6 +164,10 @@ int cmd_bake(int argc, char **argv) {
   }
   if (!page_only) scene.lightmaps.bake_checkpoint = out;
   scene.lightmaps.bake_progress = true;
+  if (!render_fits_memory(scene, 1, 1, false, false, &err)) {  // the page's bake, checked before it starts
+    fprintf(stderr, "tiershade bake: %s: %s\n", scene.path.c_str(), err.c_str());
+    return 1;
+  }
   SceneSelection sel;
   PreparedScene ps;
   // The page does not depend on the tier or the frame size: faces, density and page size only.

@@ -1,15 +1,14 @@
 // tiershade cli: `demo` subcommand: the lit sphere grid (scenes/sphere_grid.gltf) in each tier (ps20,
 // ps2b, sm3), rendered by the scene renderer on OSMesa and EGL (llvmpipe) and by its C fallback,
 // written to OUT/ as PNG and EXR, with GL-vs-C difference images and a side-by-side of the tiers.
-#include <sys/stat.h>
 
-#include <cerrno>
 #include <cmath>
 #include <cstdio>
 #include <cstring>
 
 #include "cli/select_args.h"
 #include "base/image_diff.h"
+#include "io/atomic_dir.h"
 #include "io/exr.h"
 #include "io/png.h"
 #include "base/srgb.h"
@@ -28,6 +27,9 @@ namespace {
 // The sphere grid (kSphereGridGltf, written by tools/make_scenes.py from scenes/sphere_grid.lights)
 // is rendered by the scene renderer in each tier.
 const Tier kTiers[] = {Tier::PS20, Tier::PS2B, Tier::SM3};
+
+// The file every demo output holds: a directory with it may be replaced by the next run.
+const char kDemoMarker[] = "model_lighting_tiers.png";
 
 bool save(const std::string &base, const ImageF &img, Encode enc, bool exr, std::string *err) {
   if (!write_png(base + ".png", img, enc, err)) return false;
@@ -70,6 +72,10 @@ compared bit for bit with the C twin shading GL's own G-buffer.
 Writes DIR/model_lighting_<tier>_<backend>.png/.exr, DIR/model_lighting_<tier>_diff_<backend>.png
 (black = bit-equal), DIR/model_lighting_reference.png (double precision, every light local)
 and DIR/model_lighting_tiers.png (ps20 | ps2b | sm3 | reference). Default DIR: out.
+DIR is written whole or not at all: the files go to DIR.tmp.<pid>, renamed to DIR when every
+section succeeded. An existing DIR is replaced only when it is empty or a previous demo output
+(it holds model_lighting_tiers.png); any other directory is refused: remove it or pick another -o.
+The scenes are found next to the executable (its repository's scenes/), from any directory.
 --lights replaces the six lights with a lights file (format: tiershade fold --help;
 example: scenes/sphere_grid.lights).)";
 
@@ -77,20 +83,15 @@ int cmd_demo(int argc, char **argv) {
   Args a("demo", argc, argv, {"--help"}, {"-o", "--size", "--backend", "--lights"});
   if (a.help(kHelp)) return 0;
   a.no_positional();
-  const std::string dir = a.get("-o", "out");
+  std::string dir = a.get("-o", "out");
   int w = 640, h = 320;
   if (a.has("--size")) {
     const std::string s = a.get("--size");
-    char extra;
-    if (sscanf(s.c_str(), "%dx%d%c", &w, &h, &extra) != 2 || w < 8 || h < 8 || w > 4096 || h > 4096)
+    if (!parse_wxh(s, 8, 4096, &w, &h))
       a.fail("--size wants WxH with 8 <= W, H <= 4096, got '" + s + "'");
   }
   std::vector<BackendApi> configs = select_configs(a);
   std::string err;
-  if (mkdir(dir.c_str(), 0777) != 0 && errno != EEXIST) {
-    fprintf(stderr, "tiershade demo: cannot create directory '%s': %s\n", dir.c_str(), strerror(errno));
-    return 1;
-  }
   std::vector<ts_light> lights;
   if (a.has("--lights") && !read_lights(a.get("--lights"), &lights, &err)) a.fail(err);
   Scene scene;
@@ -100,6 +101,12 @@ int cmd_demo(int argc, char **argv) {
     for (size_t i = 0; i < lights.size(); ++i)
       scene.lights.push_back({a.get("--lights") + ": light " + std::to_string(i + 1), lights[i]});
   }
+  // Everything goes into DIR.tmp.<pid>, renamed over DIR only when the whole demo succeeded
+  // (io/atomic_dir.h): a failed or killed run leaves no DIR, and a previous one intact.
+  DirWriter out_dir;
+  if (!out_dir.begin(dir, kDemoMarker, "demo output", &err)) a.fail(err);
+  const std::string final_dir = dir;
+  dir = out_dir.tmp();
   int failures = 0;
   std::vector<ImageF> panels;
   std::vector<Encode> panel_enc;
@@ -116,7 +123,10 @@ int cmd_demo(int argc, char **argv) {
          "lights local+folded");
   for (const Tier tier : kTiers) {
     SceneSelection sel;
-    if (!select_scene_variants(scene, tier, "", &sel, &err)) a.fail(err);
+    if (!select_scene_variants(scene, tier, "", &sel, &err)) {
+      fprintf(stderr, "tiershade demo: %s\n", err.c_str());
+      return 1;
+    }
     // OUTPUT_MODE 0: linear out for an sRGB target (ps20); else the shader encodes the display.
     const Encode png = sel.variants.at(0).value("OUTPUT_MODE") == 0 ? Encode::SRGB : Encode::Linear;
     const std::string base = dir + "/model_lighting_" + tier_name(tier);
@@ -168,9 +178,8 @@ int cmd_demo(int argc, char **argv) {
     return 1;
   }
   printf(
-      "wrote %s/model_lighting_*.png, *.exr; side by side: %s/model_lighting_tiers.png (ps20 | ps2b | sm3 | "
-      "reference)\n",
-      dir.c_str(), dir.c_str());
+      "model_lighting_*.png, *.exr; side by side: model_lighting_tiers.png (ps20 | ps2b | sm3 | "
+      "reference)\n");
   // The other families' sections (glue/demo_*.cpp).
   DemoOptions opt;
   opt.dir = dir;
@@ -184,6 +193,15 @@ int cmd_demo(int argc, char **argv) {
       ++failures;
     }
   }
-  if (failures) printf("demo: %d GL frames differ from the C fallback or failed\n", failures);
-  return failures ? 1 : 0;
+  if (failures) {
+    fprintf(stderr, "tiershade demo: %d GL frames differ from the C fallback or failed; nothing written to %s\n",
+            failures, final_dir.c_str());
+    return 1;
+  }
+  if (!out_dir.commit(&err)) {
+    fprintf(stderr, "tiershade demo: %s\n", err.c_str());
+    return 1;
+  }
+  printf("wrote %s/\n", final_dir.c_str());
+  return 0;
 }

@@ -2,6 +2,8 @@
 // .raw; bake a 3D LUT from an OpenColorIO transform (a LUT/CDL file, config looks, CDL
 // values); convert between .cube and .raw. Bad input files: "tiershade lut: <file>[:<line>]:
 // <problem>", exit status 2, nothing written (glue/io/lut_files.h writes atomically).
+#include <sys/stat.h>
+
 #include <cctype>
 #include <cmath>
 #include <cstdio>
@@ -81,6 +83,20 @@ void inspect(const Args &a, const std::string &path) {
   printf("  values: min %g %g %g, max %g %g %g\n", lo[0], lo[1], lo[2], hi[0], hi[1], hi[2]);
 }
 
+bool has_ext(const std::string &path, const char *ext) {
+  const std::string e = ext;
+  if (path.size() <= e.size()) return false;
+  for (size_t i = 0; i < e.size(); ++i)
+    if (std::tolower(static_cast<unsigned char>(path[path.size() - e.size() + i])) != e[i]) return false;
+  return true;
+}
+
+// True when both paths name one existing file (hard links and symlinks included).
+bool same_file(const std::string &x, const std::string &y) {
+  struct stat a, b;
+  return stat(x.c_str(), &a) == 0 && stat(y.c_str(), &b) == 0 && a.st_dev == b.st_dev && a.st_ino == b.st_ino;
+}
+
 int write_lut(const Args &a, const std::string &out, const Lut3D &l) {
   std::string lower = out;
   for (char &c : lower) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
@@ -114,6 +130,12 @@ int cmd_lut(int argc, char **argv) {
   }
   if (sub == "convert") {
     if (pos.size() != 3) a.fail("convert wants IN and OUT");
+    // .cube <-> .raw only: the same format would only rewrite the file (or its own input).
+    const bool in_raw = has_ext(pos[1], ".raw"), out_raw = has_ext(pos[2], ".raw");
+    if ((in_raw || has_ext(pos[1], ".cube")) && (out_raw || has_ext(pos[2], ".cube")) && in_raw == out_raw)
+      a.fail("convert turns a .cube into a .raw or a .raw into a .cube; " + pos[1] + " and " + pos[2] +
+             " are both " + (in_raw ? ".raw" : ".cube") + (same_file(pos[1], pos[2]) ? " (and the same file)" : ""));
+    if (same_file(pos[1], pos[2])) a.fail(pos[1] + " and " + pos[2] + " are the same file");
     Lut3D l;
     std::string err;
     if (!read_lut_file(pos[1], &l, &err)) a.fail(err);

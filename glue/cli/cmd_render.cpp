@@ -4,16 +4,20 @@
 #include <unistd.h>
 
 #include <algorithm>
+#include <cerrno>
+#include <cstring>
 #include <chrono>
 #include <cstdio>
 #include <thread>
 #include <vector>
 
 #include "cli/args.h"
+#include "cli/memory_estimate.h"
 #include "conform/conform.h"
 #include "bundle/draw_dump.h"
 #include "gl/float_target.h"
 #include "base/image.h"
+#include "io/atomic_file.h"
 #include "io/exr.h"
 #include "io/png.h"
 #include "scene/scene.h"
@@ -38,14 +42,10 @@ double peak_mib() {
 
 using Clock = std::chrono::steady_clock;
 
-bool parse_size(const std::string &s, int *w, int *h) {
-  int a = 0, b = 0;
-  char x = 0, extra = 0;
-  if (sscanf(s.c_str(), "%d%c%d%c", &a, &x, &b, &extra) != 3 || (x != 'x' && x != 'X')) return false;
-  if (a < 1 || b < 1 || a > 8192 || b > 8192) return false;
-  *w = a;
-  *h = b;
-  return true;
+// "<scene>: <err>", the scene named once (some errors from prepare.cpp already begin with it).
+std::string scene_message(const Scene &s, const std::string &err) {
+  if (err.compare(0, s.path.size() + 2, s.path + ": ") == 0) return err;
+  return s.path + ": " + err;
 }
 
 // Compiles and links every combo of the families the scene uses (the baseline the selection
@@ -90,7 +90,7 @@ bool warm_frame_ms(const Scene &s, const SceneSelection &sel, const SceneRenderC
 const char kHelp[] = R"(usage: tiershade render SCENE.gltf [--tier ps20|ps2b|sm3] [--backend egl|osmesa|cpu]
                         [--api gles3|gles2|gl33] [--hdr integer|float] [--size WxH] -o OUT
                         [--check] [--compile-all] [--threads N] [--progress] [--quiet]
-                        [--dump-draws DIR] [--frames N]
+                        [--dump-draws DIR] [--frames N] [--max-memory MIB]
 Renders a glTF 2.0 scene (docs/scenes.md) with only the shader variants it needs and writes
 OUT.exr (the lit pass, RGBA32F as the shaders wrote it) and OUT.png (the final frame).
 Defaults: sm3, EGL surfaceless GLES 3.0 (OSMesa: GL 3.3), the scene's HDR path, 1280x720.
@@ -101,12 +101,16 @@ Defaults: sm3, EGL surfaceless GLES 3.0 (OSMesa: GL 3.3), the scene's HDR path, 
 a bare engine to replay with a shader bundle (docs/bundles.md; tests/bundle/bare_gl_render).
 --frames N: after the first frame (the one written), renders N more with the same renderer and
 prints their median ("median frame X ms", with the lit pass and post times): a scene's warm frame
-time on a backend, without the bench.)";
+time on a backend, without the bench.
+
+--max-memory MIB: what input files and the render may take (default 1024): an image, accessor,
+probe set, lightmap page or --size that needs more is refused before it is read, naming the
+limit (docs/reliability.md). --size is at most 8192x8192.)";
 
 int cmd_render(int argc, char **argv) {
   Args a("render", argc, argv, {"--help", "--check", "--quiet", "--progress", "--compile-all", "--report-memory"},
          {"--tier", "--backend", "--api", "--hdr", "--size", "-o", "--threads", "--exposure-frames", "--dump-draws",
-          "--frames"});
+          "--frames", "--max-memory"});
   if (a.help(kHelp)) return 0;
   if (a.positional().size() != 1) a.fail("expected one scene file (tiershade render SCENE.gltf -o OUT)");
   if (!a.has("-o")) a.fail("-o OUT is required");
@@ -126,8 +130,9 @@ int cmd_render(int argc, char **argv) {
   if (cfg.backend != Backend::CPU && !config_supported(cfg.backend, cfg.api, &why)) a.fail(why);
   const std::string hdr = a.get("--hdr");
   if (!hdr.empty() && hdr != "integer" && hdr != "float") a.fail("unknown HDR path '" + hdr + "' (integer, float)");
-  if (a.has("--size") && !parse_size(a.get("--size"), &cfg.w, &cfg.h))
-    a.fail("bad --size '" + a.get("--size") + "' (WxH, 1..8192 each)");
+  if (a.has("--size") && !parse_wxh(a.get("--size"), 1, 8192, &cfg.w, &cfg.h))
+    a.fail("bad --size '" + a.get("--size") + "' (WxH: two integers, 1..8192 each, as 1280x720)");
+  apply_max_memory(a);
   cfg.threads = a.get_int("--threads", 0, 0, 256);
   cfg.exposure_frames = a.get_int("--exposure-frames", cfg.exposure_frames, 1, 10000);
   cfg.check = a.flag("--check");
@@ -184,9 +189,13 @@ int cmd_render(int argc, char **argv) {
     return 1;
   }
   scene.lightmaps.bake_progress = !quiet;  // a long bake at load shows its passes (docs/baking.md)
+  if (!render_fits_memory(scene, cfg.w, cfg.h, cfg.backend != Backend::CPU, cfg.check, &err)) {
+    fprintf(stderr, "tiershade render: %s: %s\n", scene.path.c_str(), err.c_str());
+    return 1;
+  }
   SceneSelection sel;
   if (!select_scene_variants(scene, tier, hdr, &sel, &err)) {
-    fprintf(stderr, "tiershade render: %s: %s\n", scene.path.c_str(), err.c_str());
+    fprintf(stderr, "tiershade render: %s\n", scene_message(scene, err).c_str());
     return 1;
   }
   if (!quiet) {
@@ -217,7 +226,7 @@ int cmd_render(int argc, char **argv) {
       warm_post.push_back(warm.post_ms);
     }
     if (!ok) {
-      fprintf(stderr, "tiershade render: %s: %s\n", scene.path.c_str(), err.c_str());
+      fprintf(stderr, "tiershade render: %s\n", scene_message(scene, err).c_str());
       return 1;
     }
   }
@@ -231,17 +240,39 @@ int cmd_render(int argc, char **argv) {
       return 1;
     }
   }
-  // The two files on two threads (each is written to a temporary file and renamed, so neither is
-  // ever partial); if one fails, the other is removed: a failed run leaves no frame behind.
+  // The two files on two threads, each to a temporary name of this process (written whole and
+  // synced by the writers' own atomic files); both are renamed into place only when both were
+  // written, so a failed run leaves no frame behind and the previous OUT.exr and OUT.png intact.
+  const std::string tmp = temp_path_for(out);
   std::string png_err;
   bool png_ok = false;
-  std::thread png_writer([&] { png_ok = write_png_rgba8(out + ".png", res.w, res.h, res.display, &png_err); });
-  const bool exr_ok = write_exr(out + ".exr", res.lit, &err);
+  std::thread png_writer([&] { png_ok = write_png_rgba8(tmp + ".png", res.w, res.h, res.display, &png_err); });
+  const bool exr_ok = write_exr(tmp + ".exr", res.lit, &err);
   png_writer.join();
-  if (!exr_ok || !png_ok) {
-    if (exr_ok) unlink((out + ".exr").c_str());
-    if (png_ok) unlink((out + ".png").c_str());
-    fprintf(stderr, "tiershade render: %s\n", (exr_ok ? png_err : err).c_str());
+  bool ok = exr_ok && png_ok;
+  std::string wfail = exr_ok ? png_err : err;
+  if (ok) {
+    // OUT.exr first; if OUT.png then cannot be replaced, the previous OUT.exr (kept as a hard
+    // link) comes back, or the new one goes: the pair is never half replaced.
+    const std::string exr = out + ".exr", keep = tmp + ".prev.exr";
+    const bool had = link(exr.c_str(), keep.c_str()) == 0;
+    if (std::rename((tmp + ".exr").c_str(), exr.c_str()) != 0) {
+      wfail = exr + ": cannot replace (" + std::strerror(errno) + ")";
+      ok = false;
+    } else if (std::rename((tmp + ".png").c_str(), (out + ".png").c_str()) != 0) {
+      wfail = out + ".png: cannot replace (" + std::strerror(errno) + ")";
+      ok = false;
+      if (had ? std::rename(keep.c_str(), exr.c_str()) != 0 : unlink(exr.c_str()) != 0)
+        wfail += "; and " + exr + " could not be restored";
+    }
+    if (had) unlink(keep.c_str());
+  }
+  if (!ok) {
+    unlink((tmp + ".exr").c_str());
+    unlink((tmp + ".png").c_str());
+    // The writers name the temporary: name the file the user asked for.
+    for (size_t p; (p = wfail.find(tmp)) != std::string::npos;) wfail.replace(p, tmp.size(), out);
+    fprintf(stderr, "tiershade render: %s\n", wfail.c_str());
     return 1;
   }
   if (!quiet) {

@@ -51,7 +51,7 @@ bool cc_examples(std::vector<CcExample> *out, std::string *err) {
     e.file = f[1];
     TransformSpec s;
     s.kind = TransformSpec::Kind::File;
-    s.file = f[1];
+    s.file = repo_file(f[1]);
     if (!e.transform.open(s, err)) return false;
     out->push_back(std::move(e));
   }

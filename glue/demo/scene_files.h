@@ -1,5 +1,5 @@
 // tiershade demo: the glTF scenes the demo and benchmark sections render (written by
-// tools/make_scenes.py; docs/scenes.md), by path from the repository root, where make runs.
+// tools/make_scenes.py; docs/scenes.md), found from the executable (scene_files.cpp).
 #pragma once
 
 extern const char *const kSphereGridGltf;  // scenes/sphere_grid.gltf: the model-lighting grid
@@ -9,3 +9,6 @@ extern const char *const kProbeChartGltf;  // scenes/probe_chart.gltf: the colou
 extern const char *const kHdrDaylightGltf;  // scenes/hdr_daylight.gltf
 extern const char *const kHdrDarkRoomGltf;  // scenes/hdr_dark_room.gltf
 extern const char *const kWorldLightingGltf;  // scenes/world_lighting.gltf: the lightmapped room
+
+// Another repository file by its name from the root ("scenes/luts/warm.cc"), found as above.
+const char *repo_file(const char *rel);

@@ -4,6 +4,7 @@
 // by the C fallback alone; the variants each one needed and the frames are written to out/.
 #include <cstdio>
 
+#include "demo/scene_files.h"
 #include "families/family.h"
 #include "io/exr.h"
 #include "io/png.h"
@@ -20,7 +21,7 @@ bool run(const DemoOptions &opt, std::string *err) {
   printf("%-16s %-8s %-9s %-10s %-28s %-28s %10s %10s\n", "scene", "tier", "variants", "HDR path",
          "GL = C twin (lit pixels)", "GL = C twin (post channels)", "GL ms", "C ms");
   for (const char *name : kScenes) {
-    const std::string path = std::string("scenes/") + name + ".gltf";
+    const std::string path = repo_file((std::string("scenes/") + name + ".gltf").c_str());
     Scene s;
     if (!load_scene(path, &s, err)) return false;
     SceneSelection sel;

@@ -26,7 +26,7 @@ bool DirWriter::begin(const std::string &dir, const std::string &marker, const s
       *err = dir_ + ": exists and is not a directory; refusing to replace it with a " + what;
       return false;
     }
-    if (!fs::is_regular_file(fs::path(dir_) / marker, ec)) {
+    if (!fs::is_regular_file(fs::path(dir_) / marker, ec) && !fs::is_empty(dir_, ec)) {
       *err = dir_ + ": exists and is not a previous " + what + " (no " + marker + "); refusing to replace it";
       return false;
     }

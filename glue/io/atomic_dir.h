@@ -1,12 +1,12 @@
 // tiershade io: writing an output directory atomically. Files go into DIR.tmp.<pid>, which
 // is renamed over DIR at the end; an existing DIR is only replaced when it holds `marker`
-// (a file this kind of output always writes), so a user's other directory is never lost.
+// (a file this kind of output always writes) or is empty, so a user's other directory is never lost.
 #pragma once
 #include <string>
 
 class DirWriter {
  public:
-  // Checks DIR (absent, or a directory holding `marker`) and creates a fresh DIR.tmp.<pid>.
+  // Checks DIR (absent, empty, or a directory holding `marker`) and creates a fresh DIR.tmp.<pid>.
   // what: "bundle", "draw dump" (for messages).
   bool begin(const std::string &dir, const std::string &marker, const std::string &what, std::string *err);
   const std::string &tmp() const { return tmp_; }

@@ -12,7 +12,9 @@
 #include <ImfInputFile.h>
 #include <ImfOutputFile.h>
 #include <half.h>
+#include <openexr.h>
 
+#include <algorithm>
 #include <cerrno>
 #include <cstdio>
 #include <cstring>
@@ -21,6 +23,7 @@
 
 #include "io/atomic_file.h"
 #include "io/io_error.h"
+#include "io/memory_limit.h"
 
 namespace {
 
@@ -111,6 +114,71 @@ bool write_exr_any(const char *fn, const std::string &path, const ImageF &img, I
   return true;
 }
 
+// OpenEXR allocates from the header in InputFile's constructor (line buffers of width x lines a
+// chunk x channels, tile buffers), before the data window can be checked: the header's
+// attributes (OpenEXR file layout: magic, version, then name\0 type\0 int32 size value, up to an
+// empty name) are read here first and those sizes checked against the memory limit.
+bool exr_header_fits(const std::string &path, std::string *why) {
+  FILE *f = std::fopen(path.c_str(), "rb");
+  if (!f) {
+    *why = std::string("cannot open: ") + std::strerror(errno);
+    return false;
+  }
+  std::vector<unsigned char> b(1 << 16);
+  b.resize(std::fread(b.data(), 1, b.size(), f));
+  long long file_size = static_cast<long long>(b.size());
+  if (std::fseek(f, 0, SEEK_END) == 0) file_size = ftello(f);
+  std::fclose(f);
+  auto le = [&](size_t p) -> long long {
+    return p + 4 <= b.size() ? static_cast<int32_t>(b[p] | b[p + 1] << 8 | b[p + 2] << 16 | static_cast<uint32_t>(b[p + 3]) << 24) : 0;
+  };
+  long long w = 0, h = 0, tx = 0, ty = 0, channels = 0;
+  size_t p = 8;
+  while (p < b.size() && b[p] != 0) {
+    const size_t n0 = p;
+    while (p < b.size() && b[p]) ++p;
+    if (p >= b.size()) break;
+    const std::string name(b.begin() + n0, b.begin() + p);
+    const size_t t0 = ++p;
+    while (p < b.size() && b[p]) ++p;
+    if (p + 5 > b.size()) break;  // OpenEXR reports a truncated header
+    const std::string type(b.begin() + t0, b.begin() + p);
+    ++p;
+    const long long size = le(p);
+    p += 4;
+    if (size < 0 || static_cast<long long>(p) + size > file_size) {  // OpenEXR would allocate it first
+      *why = "header attribute '" + name + "' claims " + std::to_string(size) + " bytes, more than the file holds";
+      return false;
+    }
+    if (p + size > b.size()) break;  // a header beyond what was read: OpenEXR checks the rest
+    if (name == "dataWindow" && type == "box2i" && size == 16) {
+      w = le(p + 8) - le(p) + 1;
+      h = le(p + 12) - le(p + 4) + 1;
+    } else if (name == "tiles" && type == "tiledesc" && size >= 8) {
+      tx = static_cast<uint32_t>(le(p));
+      ty = static_cast<uint32_t>(le(p + 4));
+    } else if (name == "channels" && type == "chlist") {
+      for (size_t q = p; q < p + size && b[q];) {
+        while (q < p + size && b[q]) ++q;
+        q += 17;
+        ++channels;
+      }
+    }
+    p += size;
+  }
+  if (w <= 0 || h <= 0) return true;  // OpenEXR reports it
+  const double px = static_cast<double>(w) * h, ch = static_cast<double>(std::max(1LL, channels));
+  const std::string dims = std::to_string(w) + " x " + std::to_string(h);
+  if (px > static_cast<double>(kMaxImagePixels)) {
+    *why = "data window " + dims + " is more than " + std::to_string(kMaxImagePixels) + " pixels";
+    return false;
+  }
+  // Lines are decoded up to 256 at a time (DWAB), 4 bytes a channel sample at most.
+  return memory_fits(32.0 * px, "a " + dims + " image", why) &&
+      memory_fits(4.0 * ch * static_cast<double>(w) * 256, "a " + dims + " image of " + std::to_string(channels) + " channels", why) &&
+      memory_fits(4.0 * ch * static_cast<double>(tx) * static_cast<double>(ty), "tiles of " + std::to_string(tx) + " x " + std::to_string(ty), why);
+}
+
 }  // namespace
 
 bool write_exr(const std::string &path, const ImageF &img, std::string *err) {
@@ -123,6 +191,18 @@ bool write_exr_half(const std::string &path, const ImageF &img, std::string *err
 
 bool read_exr(const std::string &path, ImageF *out, std::string *err) {
   static const char fn[] = "read_exr";
+  std::string why;
+  if (!regular_file_within(path, 1LL << 31, nullptr, &why) || !exr_header_fits(path, &why))
+    return io_error(err, fn, path, why);
+  {  // OpenEXR's C core reads the header first: it checks every attribute against the file
+     // (the C++ InputFile allocates an attribute's claimed size before reading it)
+    exr_context_t ctx = nullptr;
+    exr_context_initializer_t init = EXR_DEFAULT_CONTEXT_INITIALIZER;
+    init.error_handler_fn = [](exr_const_context_t, exr_result_t, const char *) {};
+    const exr_result_t r = exr_start_read(&ctx, path.c_str(), &init);
+    exr_finish(&ctx);
+    if (r != EXR_ERR_SUCCESS) return io_error(err, fn, path, std::string("bad header (") + exr_get_default_error_message(r) + ")");
+  }
   try {
     Imf::InputFile in(path.c_str());
     const Imf::Header &header = in.header();
@@ -130,6 +210,9 @@ bool read_exr(const std::string &path, ImageF *out, std::string *err) {
     const long long w = (long long)dw.max.x - dw.min.x + 1;
     const long long h = (long long)dw.max.y - dw.min.y + 1;
     if (w <= 0 || h <= 0 || w * h > kMaxImagePixels) return io_error(err, fn, path, "bad or too large data window");
+    // The float buffer read and ImageF's flipped copy: 16 bytes per pixel each.
+    if (!memory_fits(32.0 * w * h, "a " + std::to_string(w) + " x " + std::to_string(h) + " image", &why))
+      return io_error(err, fn, path, why);
     static const char *const names[4] = {"R", "G", "B", "A"};
     bool present[4];
     for (int c = 0; c < 4; ++c) {

@@ -16,6 +16,7 @@
 #include <sstream>
 
 #include "io/atomic_file.h"
+#include "io/memory_limit.h"
 
 namespace {
 
@@ -48,7 +49,14 @@ bool parse_size(const std::string &tok, long lo, long hi, long *out) {
   return true;
 }
 
-bool read_all(const std::string &path, std::string *bytes, std::string *err) {
+// The whole of a regular file of at most max_bytes (a FIFO or /dev/zero would block or never end).
+bool read_all(const std::string &path, long long max_bytes, std::string *bytes, std::string *err) {
+  std::string why;
+  if (!regular_file_within(path, max_bytes, nullptr, &why)) {
+    if (why.rfind("cannot open: ", 0) == 0) why = "cannot open (" + why.substr(13) + ")";
+    *err = path + ": " + why;
+    return false;
+  }
   std::ifstream f(path, std::ios::binary);
   if (!f) {
     *err = path + ": cannot open (" + std::string(std::strerror(errno)) + ")";
@@ -61,6 +69,10 @@ bool read_all(const std::string &path, std::string *bytes, std::string *err) {
     return false;
   }
   *bytes = ss.str();
+  if (static_cast<long long>(bytes->size()) > max_bytes) {  // the file grew while it was read
+    *err = path + ": more than " + std::to_string(max_bytes) + " bytes";
+    return false;
+  }
   return true;
 }
 
@@ -75,7 +87,7 @@ bool ends_with(const std::string &s, const std::string &suffix) {
 
 bool read_cube(const std::string &path, CubeFile *out, std::string *err) {
   std::string bytes;
-  if (!read_all(path, &bytes, err)) return false;
+  if (!read_all(path, kMaxCubeBytes, &bytes, err)) return false;
   *out = CubeFile();
   CubeFile &c = *out;
   bool seen_title = false, seen_dmin = false, seen_dmax = false, seen_r1 = false, seen_r3 = false;
@@ -164,6 +176,12 @@ bool read_cube(const std::string &path, CubeFile *out, std::string *err) {
       long v;
       if (t.size() != 2 || !parse_size(t[1], 2, is3 ? 256 : 65536, &v)) {
         *err = at(path, lineno) + key + " wants one integer in [2, " + (is3 ? "256" : "65536") + "]";
+        return false;
+      }
+      // The table is held three times (parsed, CubeFile, Lut3D), 12 bytes an entry.
+      std::string why;
+      if (is3 && !memory_fits(36.0 * v * v * v, "LUT_3D_SIZE " + std::to_string(v), &why)) {
+        *err = at(path, lineno) + why;
         return false;
       }
       size = static_cast<int>(v);
@@ -279,7 +297,7 @@ bool write_cube(const std::string &path, const Lut3D &lut, std::string *err) {
 
 bool read_source_raw(const std::string &path, Lut3D *out, std::string *err) {
   std::string bytes;
-  if (!read_all(path, &bytes, err)) return false;
+  if (!read_all(path, 16 * kSourceRawBytes, &bytes, err)) return false;
   if (static_cast<long>(bytes.size()) != kSourceRawBytes) {
     *err = path + ": " + std::to_string(bytes.size()) +
         " bytes; a Source colour-correction .raw is 32 x 32 x 32 RGB8 = " + std::to_string(kSourceRawBytes) + " bytes";

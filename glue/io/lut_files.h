@@ -27,6 +27,9 @@ struct CubeFile {
   std::vector<float> table_3d;  // size_3d^3 RGB triples, red fastest
 };
 
+// Inputs must be regular files (a FIFO or a device is refused before it is opened); a .cube
+// is at most kMaxCubeBytes, a .raw exactly kSourceRawBytes.
+constexpr long long kMaxCubeBytes = 128LL << 20;
 bool read_cube(const std::string &path, CubeFile *out, std::string *err);
 
 // A .cube that is a plain 3D table on the unit domain, as a Lut3D; otherwise an error that

@@ -19,6 +19,7 @@
 #include "base/srgb.h"
 #include "io/atomic_file.h"
 #include "io/io_error.h"
+#include "io/memory_limit.h"
 
 namespace {
 
@@ -117,6 +118,15 @@ bool png_read_c(FILE *fp, PngRaw *raw, PngCtx *ctx) {
   raw->w = png_get_image_width(png, info);
   raw->h = png_get_image_height(png, info);
   if ((long long)raw->w * (long long)raw->h > kMaxImagePixels) png_error(png, "image too large");
+  {  // libpng's rows (up to 8 bytes a pixel) and the float image (16): checked before either is allocated
+    char msg[200];
+    const double need = 24.0 * raw->w * raw->h;
+    if (need > memory_limit_mib() * 1048576.0) {
+      std::snprintf(msg, sizeof msg, "a %u x %u image needs %.0f MiB, over the memory limit of %lld MiB (raise it with --max-memory MIB)",
+                    (unsigned)raw->w, (unsigned)raw->h, std::ceil(need / 1048576.0), memory_limit_mib());
+      png_error(png, msg);
+    }
+  }
 
   const int color_type = png_get_color_type(png, info);
   const int bit_depth = png_get_bit_depth(png, info);
@@ -220,6 +230,8 @@ bool write_png_rgba8(const std::string &path, int w, int h, const std::vector<ui
 
 bool read_png(const std::string &path, ImageF *out, Encode decode, std::string *err) {
   static const char fn[] = "read_png";
+  std::string why;
+  if (!regular_file_within(path, 1LL << 30, nullptr, &why)) return io_error(err, fn, path, why);
   FILE *fp = std::fopen(path.c_str(), "rb");
   if (!fp) return io_error(err, fn, path, std::string("cannot open: ") + std::strerror(errno));
   PngCtx ctx;

@@ -9,7 +9,6 @@
 #include "io/radiance_hdr.h"
 
 #include <stb_image.h>
-#include <sys/stat.h>
 
 #include <algorithm>
 #include <cerrno>
@@ -19,6 +18,7 @@
 #include <vector>
 
 #include "io/io_error.h"
+#include "io/memory_limit.h"
 
 namespace {
 
@@ -27,25 +27,15 @@ const char kTruncated[] = "unexpected end of file in pixel data (truncated?)";
 
 // Reads a whole regular file into memory.
 bool slurp(const std::string &path, std::vector<unsigned char> *data, std::string *why) {
-  struct stat st;
-  if (::stat(path.c_str(), &st) != 0) {
-    *why = std::string("cannot open: ") + std::strerror(errno);
-    return false;
-  }
-  if (!S_ISREG(st.st_mode)) {
-    *why = "not a regular file";
-    return false;
-  }
-  if (st.st_size > kMaxFileBytes) {
-    *why = "file too large";
-    return false;
-  }
+  long long size = 0;
+  if (!regular_file_within(path, kMaxFileBytes, &size, why)) return false;
+  if (!memory_fits(static_cast<double>(size), "the file", why)) return false;
   FILE *fp = std::fopen(path.c_str(), "rb");
   if (!fp) {
     *why = std::string("cannot open: ") + std::strerror(errno);
     return false;
   }
-  data->resize(static_cast<size_t>(st.st_size));
+  data->resize(static_cast<size_t>(size));
   const size_t n = data->empty() ? 0 : std::fread(data->data(), 1, data->size(), fp);
   const bool bad = std::ferror(fp) != 0;
   const int e = errno;
@@ -210,6 +200,11 @@ bool read_hdr_impl(const std::string &path, ImageF *out, std::string *why) {
   std::vector<unsigned char> d;
   Header hd;
   if (!slurp(path, &d, why) || !parse_header(d, &hd, why) || !check_pixel_data(d, hd, why)) return false;
+  // stb's float image and ImageF's copy: 16 bytes per pixel each, besides the file.
+  const double pixels = static_cast<double>(hd.w) * hd.h;
+  if (!memory_fits(static_cast<double>(d.size()) + 32.0 * pixels,
+                   "a " + std::to_string(hd.w) + " x " + std::to_string(hd.h) + " image", why))
+    return false;
   // stb reads only "-Y h +X w": for "+Y" it decodes the same scanlines, stored bottom row first.
   if (!hd.top_down) d[hd.res_line] = '-';
 

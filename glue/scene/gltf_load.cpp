@@ -8,7 +8,10 @@
 #include <fstream>
 #include <iterator>
 #include <nlohmann/json.hpp>
+#include <stb_image.h>
 
+#include "base/image.h"
+#include "io/memory_limit.h"
 #include "scene/gltf_util.h"
 
 namespace scene_gltf {
@@ -19,10 +22,16 @@ using tinygltf::Model;
 // ---------------------------------------------------------------- file & JSON checks ---
 
 bool read_file(const std::string &path, std::vector<unsigned char> *out, Err &e) {
+  std::string why;
+  long long size = 0;
+  if (!regular_file_within(path, kMaxSceneFileBytes, &size, &why) ||
+      !memory_fits(2.0 * static_cast<double>(size), "the scene file", &why))
+    return e.fail("", why);
   std::ifstream f(path, std::ios::binary);
   if (!f) return e.fail("", "cannot open the file");
   out->assign(std::istreambuf_iterator<char>(f), std::istreambuf_iterator<char>());
   if (f.bad()) return e.fail("", "read error");
+  if (static_cast<long long>(out->size()) > kMaxSceneFileBytes) return e.fail("", "the file grew while it was read");
   return true;
 }
 
@@ -40,9 +49,10 @@ bool glb_json(const std::vector<unsigned char> &b, std::string *json, Err &e) {
 }
 
 // JSON number tokens outside strings that overflow a double (nlohmann reports them without
-// a position).
+// a position), and arrays and objects nested deeper than kMaxJsonDepth (tinygltf converts
+// values recursively: 20,000 levels overflow its stack).
 bool check_number_tokens(const std::string &s, Err &e) {
-  int line = 1, col = 1;
+  int line = 1, col = 1, depth = 0;
   bool in_str = false;
   for (size_t i = 0; i < s.size(); ++i, ++col) {
     const char c = s[i];
@@ -60,6 +70,16 @@ bool check_number_tokens(const std::string &s, Err &e) {
     }
     if (c == '"') {
       in_str = true;
+      continue;
+    }
+    if (c == '[' || c == '{') {
+      if (++depth > kMaxJsonDepth)
+        return e.fail("line " + std::to_string(line) + ", column " + std::to_string(col),
+                      "arrays and objects nested more than " + std::to_string(kMaxJsonDepth) + " deep");
+      continue;
+    }
+    if (c == ']' || c == '}') {
+      --depth;
       continue;
     }
     if (c == '-' || (c >= '0' && c <= '9')) {
@@ -116,7 +136,9 @@ bool precheck_json(const std::string &text, const std::string &dir, Err &e) {
       if (uri.rfind("data:", 0) == 0) continue;
       const std::string file = join_path(dir, url_decode(uri));
       long long size = 0;
-      if (!file_exists(file, &size)) return e.fail(place, "file not found: " + file);
+      if (!file_exists(file, &size)) return e.fail(place, missing_file(file));
+      std::string why;
+      if (!memory_fits(static_cast<double>(size), "the file " + file, &why)) return e.fail(place, why);
       if (kind[0] == 'b' && o.contains("byteLength") && o["byteLength"].is_number()) {
         const double want = o["byteLength"].get<double>();
         if (static_cast<double>(size) != want)
@@ -134,6 +156,78 @@ std::string trim_tinygltf(std::string s) {
   for (char &c : s)
     if (c == '\n') c = ';';
   return s;
+}
+
+// Every accessor against its bufferView (count x stride within byteLength) and the memory
+// limit, before any accessor is read: gltf_nodes.cpp allocates count x components doubles.
+bool check_accessors(const Model &m, Err &e) {
+  double total = 0;
+  for (size_t i = 0; i < m.accessors.size(); ++i) {
+    const tinygltf::Accessor &a = m.accessors[i];
+    const std::string place = named("accessors[" + std::to_string(i) + "]", a.name);
+    const int nc = tinygltf::GetNumComponentsInType(static_cast<uint32_t>(a.type));
+    const int cs = tinygltf::GetComponentSizeInBytes(static_cast<uint32_t>(a.componentType));
+    if (nc <= 0 || cs <= 0) continue;  // gltf_nodes.cpp names the bad type where it is used
+    if (a.count > kMaxAccessorElements)
+      return e.fail(place, "count " + std::to_string(a.count) + " is more than the limit of " +
+                               std::to_string(kMaxAccessorElements) + " elements");
+    total += 8.0 * static_cast<double>(a.count) * nc;
+    std::string why;
+    if (!memory_fits(total, "the accessors up to " + place, &why)) return e.fail(place, why);
+    if (a.bufferView < 0 || a.count == 0 || a.sparse.isSparse) continue;
+    if (static_cast<size_t>(a.bufferView) >= m.bufferViews.size())
+      return e.fail(place, "bufferView " + std::to_string(a.bufferView) + " does not exist");
+    const tinygltf::BufferView &bv = m.bufferViews[a.bufferView];
+    const size_t elem = static_cast<size_t>(nc) * cs;
+    const size_t stride = bv.byteStride >= elem ? bv.byteStride : elem;
+    const double need = static_cast<double>(a.byteOffset) + static_cast<double>(a.count - 1) * stride + elem;
+    // Small overruns are left to gltf_nodes.cpp, which names the use (and a wrong type first).
+    if (need > static_cast<double>(bv.byteLength) && need > 1048576.0)
+      return e.fail(place, "byteOffset " + std::to_string(a.byteOffset) + " + " + std::to_string(a.count) + " x " +
+                               std::to_string(stride) + " bytes needs " + std::to_string(static_cast<long long>(need)) +
+                               " bytes, bufferViews[" + std::to_string(a.bufferView) + "] has " +
+                               std::to_string(bv.byteLength));
+  }
+  return true;
+}
+
+// tinygltf's image callback: the size from the header (stbi_info) checked against the limits
+// before stb decodes, and a failure named by the image's file (or its bufferView / data URI).
+struct ImageLoad {
+  std::string dir;
+  std::string error;  // the first failure, "images[i] (file): reason"
+};
+
+bool load_image(tinygltf::Image *im, const int idx, std::string *err, std::string *warn, int req_w, int req_h,
+                const unsigned char *bytes, int size, void *user) {
+  ImageLoad &ctx = *static_cast<ImageLoad *>(user);
+  const std::string src = !im->uri.empty()        ? join_path(ctx.dir, url_decode(im->uri))
+      : im->bufferView >= 0                       ? "bufferView " + std::to_string(im->bufferView)
+                                                  : "a data URI";
+  const std::string place = named("images[" + std::to_string(idx) + "]", im->name) + " (" + src + ")";
+  auto fail = [&](const std::string &why) {
+    if (ctx.error.empty()) ctx.error = place + ": " + why;
+    if (err) *err += ctx.error + "\n";
+    return false;
+  };
+  int w = 0, h = 0, comp = 0;
+  if (!stbi_info_from_memory(bytes, size, &w, &h, &comp)) {
+    const char *r = stbi_failure_reason();
+    return fail(std::string("not a PNG or JPEG image stb_image can read (") + (r ? r : "unknown format") + ")");
+  }
+  if (w < 1 || h < 1 || static_cast<long long>(w) * h > kMaxImagePixels)
+    return fail(std::to_string(w) + " x " + std::to_string(h) + " pixels (at most " + std::to_string(kMaxImagePixels) +
+                " pixels)");
+  std::string why;
+  const double px = static_cast<double>(w) * h;  // stb's 4 channels (8 or 16 bits) and the float copy
+  if (!memory_fits(px * (8 + 16), "a " + std::to_string(w) + " x " + std::to_string(h) + " image", &why))
+    return fail(why);
+  std::string terr;
+  if (!tinygltf::LoadImageData(im, idx, &terr, warn, req_w, req_h, bytes, size, nullptr)) {
+    const char *r = stbi_failure_reason();
+    return fail(std::string("cannot decode the image (") + (r ? r : "stb_image failed") + ")");
+  }
+  return true;
 }
 
 // ------------------------------------------------------------------------- images ---
@@ -193,13 +287,18 @@ bool load(const std::string &path, Scene *s, Err &e) {
   if (bytes.size() > 0xFFFFFFFFu) return e.fail("", "file too large");
   Model m;
   tinygltf::TinyGLTF loader;
+  ImageLoad images{dir, ""};
+  loader.SetImageLoader(load_image, &images);
   std::string terr, twarn;
   const bool ok = glb
       ? loader.LoadBinaryFromMemory(&m, &terr, &twarn, bytes.data(), static_cast<unsigned>(bytes.size()), dir)
       : loader.LoadASCIIFromString(&m, &terr, &twarn, json.data(), static_cast<unsigned>(json.size()), dir);
+  if (!ok && !images.error.empty()) return e.fail("", images.error);
   if (!ok) return e.fail("glTF", trim_tinygltf(terr.empty() ? "tinygltf could not load the file" : terr));
   s->path = path;
-  if (!convert_images(m, path, dir, s, e) || !convert_materials(m, s, e) || !convert_nodes(m, s, e)) return false;
+  if (!check_accessors(m, e) || !convert_images(m, path, dir, s, e) || !convert_materials(m, s, e) ||
+      !convert_nodes(m, s, e))
+    return false;
   for (ScenePrimitive &p : s->primitives)
     if (p.material < 0) {  // glTF's default material: a plain VertexLitGeneric one
       if (s->materials.empty() || s->materials.back().where != "default material") {

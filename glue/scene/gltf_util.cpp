@@ -104,4 +104,10 @@ bool file_exists(const std::string &path, long long *size) {
   return true;
 }
 
+std::string missing_file(const std::string &path) {
+  struct stat st;
+  if (stat(path.c_str(), &st) != 0) return "file not found: " + path;
+  return path + ": not a regular file (" + (S_ISFIFO(st.st_mode) ? "a FIFO" : S_ISDIR(st.st_mode) ? "a directory" : "a device or special file") + ")";
+}
+
 }  // namespace scene_gltf

@@ -15,6 +15,12 @@
 
 namespace scene_gltf {
 
+// Limits of the loader (docs/reliability.md): the .gltf/.glb file, JSON nesting (tinygltf
+// converts values recursively), elements of one accessor (each read as doubles).
+constexpr long long kMaxSceneFileBytes = 1LL << 30;
+constexpr int kMaxJsonDepth = 128;
+constexpr size_t kMaxAccessorElements = size_t(1) << 24;
+
 // Collects the first error as "<file>: <place>: <reason>"; every fail() returns false.
 struct Err {
   std::string file;
@@ -55,6 +61,8 @@ bool read_vec(const tinygltf::Value &v, const std::string &place, int n, double 
 std::string dir_of(const std::string &path);
 std::string join_path(const std::string &dir, const std::string &rel);
 bool file_exists(const std::string &path, long long *size = nullptr);
+// Why file_exists(path) is false: "file not found: <path>" or "<path>: not a regular file (a FIFO)".
+std::string missing_file(const std::string &path);
 // True when path ends with suffix (e.g. ".exr") and has a name before it.
 bool ends_with(const std::string &path, const char *suffix);
 

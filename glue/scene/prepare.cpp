@@ -475,7 +475,9 @@ bool prepare_scene(const Scene &s, const SceneSelection &sel, int w, int h, Api 
     ws.rays = &rays;
     const BakeDirUse use{s.lightmaps.bake, s.lightmaps.bake_checkpoint, s.lightmaps.bake_progress};
     if (!bake_world_dir(use, ws, face_where, &bake, &ps.bake_summary, err)) {
-      *err = s.path + ": lightmap bake: " + *err;
+      *err = s.path + (s.lightmaps.image.empty() ? std::string(": lightmap bake: ")
+                                                  : ": extras.tiershade.lightmaps.image " + s.lightmaps.image +
+                                                        ": the page cannot hold the scene's faces: ") + *err;
       return false;
     }
     // A page from the scene's lightmaps.image: the placement above is its layout (the same

@@ -11,6 +11,7 @@
 #include "base/cube_faces.h"
 #include "base/image.h"
 #include "families/family.h"
+#include "io/exr.h"
 #include "io/radiance_hdr.h"
 #include "scene/finite_check.h"
 
@@ -94,7 +95,9 @@ TextureDesc make_sky_cube(const char *sampler, int size) {
 bool cube_from_probe(const std::string &path, const char *sampler, int size, TextureDesc *cube, float ambient[6][3],
                      std::string *err) {
   ImageF probe;
-  if (!read_hdr(path, &probe, err)) return false;
+  // The reader the scene loader chose (gltf_extras.cpp: .exr or Radiance .hdr, docs/scenes.md).
+  const bool exr = path.size() > 4 && path.compare(path.size() - 4, 4, ".exr") == 0;
+  if (!(exr ? read_exr(path, &probe, err) : read_hdr(path, &probe, err))) return false;
   // Lat-long lookup: u = atan2(x, -z) / 2pi + 0.5, v = acos(y) / pi (row 0 = bottom in ImageF).
   auto sample = [&](const double d[3], double rgb[3]) {
     const double u = std::atan2(d[0], -d[2]) / (2 * glm::pi<double>()) + 0.5;
