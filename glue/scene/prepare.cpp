@@ -16,6 +16,7 @@
 
 #include "bake/ray_scene.h"
 #include "bake/world_bake.h"
+#include "scene/bake_inputs.h"
 #include "scene/scene_volume.h"
 #include "scene/textures.h"
 #include "twins/model_lighting.h"
@@ -417,23 +418,7 @@ bool prepare_scene(const Scene &s, const SceneSelection &sel, int w, int h, Api 
   WorldBake bake;
   if (!ws.faces.empty()) {
     const auto t0 = Clock::now();
-    for (const SceneLight &l : s.lights) {
-      rnm_light r{};
-      r.directional = l.light.type == TS_LIGHT_DIRECTIONAL;
-      r.pos = ts_v3d(l.light.pos[0], l.light.pos[1], l.light.pos[2]);
-      r.dir = ts_v3d(l.light.dir[0], l.light.dir[1], l.light.dir[2]);
-      r.color = ts_v3d(l.light.color[0], l.light.color[1], l.light.color[2]);
-      for (int k = 0; k < 3; ++k) r.atten[k] = l.light.atten[k];
-      if (l.light.type == TS_LIGHT_SPOT) {  // baked with vrad's cone (c_ref/offline/rnm_bake.h)
-        r.spot = 1;
-        r.spot_dir = r.dir;
-        r.cos_inner = l.light.cos_inner;
-        r.cos_outer = l.light.cos_outer;
-        r.exponent = l.light.spot_exponent;
-      }
-      ws.lights.push_back(r);
-      ws.light_spread.push_back(l.spread);  // a sun's angular radius: soft shadows (glue/bake/world_bake.h)
-    }
+    bake_lights_of(s, &ws);  // the lights and the suns' spread (glue/scene/bake_inputs.h)
     if (s.sky.image >= 0) {  // the sky pass (glue/bake/sky.h)
       const SceneImage &si = s.images.at(static_cast<size_t>(s.sky.image));
       ws.sky = BakeSky{si.rgba.data(), si.w, si.h, s.sky.scale, s.sky.samples};
@@ -460,18 +445,7 @@ bool prepare_scene(const Scene &s, const SceneSelection &sel, int w, int h, Api 
     if (from_file) ws.page_in = &s.lightmaps.image_rgba;
     // Visibility: one BVH of every triangle of the scene, world and model (glue/bake/ray_scene.h).
     RayScene rays;
-    // A face's triangles carry its index (bounces and probes read its luxels), other geometry -2.
-    for (size_t i = 0; i < s.primitives.size(); ++i)
-      if (!rays.add_mesh(s.primitives[i].position, s.primitives[i].indices,
-                         i < face_of_draw.size() && face_of_draw[i] >= 0 ? face_of_draw[i] : -2,
-                         s.primitives[i].where, err)) {
-        *err = s.path + ": " + *err;
-        return false;
-      }
-    if (!rays.commit(err)) {
-      *err = s.path + ": " + *err;
-      return false;
-    }
+    if (!build_scene_rays(s, face_of_draw, &rays, err)) return false;
     ws.rays = &rays;
     const BakeDirUse use{s.lightmaps.bake, s.lightmaps.bake_checkpoint, s.lightmaps.bake_progress};
     if (!bake_world_dir(use, ws, face_where, &bake, &ps.bake_summary, err)) {

@@ -1,0 +1,37 @@
+// tiershade scene: the bake's inputs from a scene (bake_inputs.h).
+#include "scene/bake_inputs.h"
+
+void bake_lights_of(const Scene &s, WorldBakeInput *in) {
+  for (const SceneLight &l : s.lights) {
+    rnm_light r{};
+    r.directional = l.light.type == TS_LIGHT_DIRECTIONAL;
+    r.pos = ts_v3d(l.light.pos[0], l.light.pos[1], l.light.pos[2]);
+    r.dir = ts_v3d(l.light.dir[0], l.light.dir[1], l.light.dir[2]);
+    r.color = ts_v3d(l.light.color[0], l.light.color[1], l.light.color[2]);
+    for (int k = 0; k < 3; ++k) r.atten[k] = l.light.atten[k];
+    if (l.light.type == TS_LIGHT_SPOT) {  // baked with vrad's cone (c_ref/offline/rnm_bake.h)
+      r.spot = 1;
+      r.spot_dir = r.dir;
+      r.cos_inner = l.light.cos_inner;
+      r.cos_outer = l.light.cos_outer;
+      r.exponent = l.light.spot_exponent;
+    }
+    in->lights.push_back(r);
+    in->light_spread.push_back(l.spread);  // a sun's angular radius: soft shadows
+  }
+}
+
+bool build_scene_rays(const Scene &s, const std::vector<int> &face_of_draw, RayScene *rays, std::string *err) {
+  for (size_t i = 0; i < s.primitives.size(); ++i)
+    if (!rays->add_mesh(s.primitives[i].position, s.primitives[i].indices,
+                        i < face_of_draw.size() && face_of_draw[i] >= 0 ? face_of_draw[i] : -2, s.primitives[i].where,
+                        err)) {
+      *err = s.path + ": " + *err;
+      return false;
+    }
+  if (!rays->commit(err)) {
+    *err = s.path + ": " + *err;
+    return false;
+  }
+  return true;
+}
