@@ -73,6 +73,8 @@ for k in ('buffers', 'images'):
         if 'uri' in b: b['uri'] = os.path.join(sd, b['uri'])
 for p in d.get('extras', {}).get('tiershade', {}).get('probes', []):
     if 'image' in p: p['image'] = os.path.normpath(os.path.join(sd, p['image']))
+sky = d.get('extras', {}).get('tiershade', {}).get('sky')
+if sky and 'image' in sky: sky['image'] = os.path.normpath(os.path.join(sd, sky['image']))
 exec(edit)
 text = json.dumps(d)
 text = text.replace('"@@DEEP@@"', '[' * 20000 + ']' * 20000)

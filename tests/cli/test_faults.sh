@@ -82,10 +82,16 @@ fi
 # --- a read-only output directory (as root, the runs drop to nobody: root writes anywhere) -----
 mkdir ro && chmod 555 ro
 AS=()
+R_RO=("${R[@]}")
 if [ "$(id -u)" = 0 ]; then
   if command -v setpriv > /dev/null && id nobody > /dev/null 2>&1; then
     chmod 755 "$TMP"
     AS=(setpriv --reuid=nobody --regid="$(id -g nobody)" --clear-groups)
+    # nobody must read the scene: the checkout may sit under a directory only root can enter, so
+    # a copy of a scene that names no file outside scenes/ (hdr_dark_room: no probe image).
+    mkdir -p ro_scene && cp "$SC/hdr_dark_room.gltf" "$SC/hdr_dark_room.bin" ro_scene/ && cp -r "$SC/textures" ro_scene/ &&
+      chmod -R a+rX ro_scene
+    R_RO=(render "$PWD/ro_scene/hdr_dark_room.gltf" --backend cpu --quiet)
   else
     AS=(skip)
   fi
@@ -93,7 +99,7 @@ fi
 if [ "${AS[0]:-}" = skip ]; then
   skip readonly_dir "running as root without setpriv: a read-only directory does not stop root"
 else
-  "${TIMEOUT[@]}" "${AS[@]}" "$TS" "${R[@]}" --size 64x48 -o ro/x > "$OUT" 2> "$ERR" < /dev/null
+  "${TIMEOUT[@]}" "${AS[@]}" "$TS" "${R_RO[@]}" --size 64x48 -o ro/x > "$OUT" 2> "$ERR" < /dev/null
   RC=$?
   if [ "$RC" -eq 1 ] && grep -q "ro/x\.\(exr\|png\).*cannot write (Permission denied)" "$ERR" && [ -z "$(ls -A ro)" ]; then
     pass render_readonly_dir
