@@ -111,6 +111,7 @@ bool read_cube(const std::string &path, CubeFile *out, std::string *err) {
     const size_t first = line.find_first_not_of(" \t");
     if (first == std::string::npos || line[first] == '#') continue;
     const std::vector<std::string> t = tokens(line);
+    if (t.empty()) continue;  // other white space alone (a vertical tab, a form feed): a blank line
     const std::string &key = t[0];
     std::string lower = key;
     for (char &ch : lower) ch = static_cast<char>(std::tolower(static_cast<unsigned char>(ch)));
