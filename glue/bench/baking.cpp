@@ -180,8 +180,8 @@ bool run(const BenchOptions &opt, std::string *md, std::string *err) {
              p.ms > 0 ? p.rays / (p.ms * 1e3) / cores : 0.0);
     o << b;
   }
-  o << "\nThe shipped room bakes direct light only (`lightmaps.bounces` 0): `render` bakes at load until the bake\n"
-    << "directory lands (docs/baking.md, \"Not done yet\").\n";
+  o << "\nThe shipped room bakes direct light only (`lightmaps.bounces` 0): `render` bakes it at load, and a\n"
+       "committed bake directory would go stale with every edit of the scene (docs/baking.md, \"Not done yet\").\n";
   *md = o.str();
   return true;
 }

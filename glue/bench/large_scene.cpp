@@ -21,20 +21,14 @@
 #include "scene/scene.h"
 #include "scene/selection.h"
 
+#include "bench/table_format.h"
+
 namespace {
 
-using Clock = std::chrono::steady_clock;
-double ms_since(Clock::time_point t0) { return std::chrono::duration<double, std::milli>(Clock::now() - t0).count(); }
-std::string f1(double v) {
-  char b[32];
-  snprintf(b, sizeof b, "%.1f", v);
-  return b;
-}
-std::string f2(double v) {
-  char b[32];
-  snprintf(b, sizeof b, "%.2f", v);
-  return b;
-}
+using bench::Clock;
+using bench::f1;
+using bench::f2;
+using bench::ms_since;
 
 struct Hall {
   const char *path;

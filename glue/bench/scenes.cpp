@@ -20,20 +20,14 @@
 #include "scene/frame.h"
 #include "base/stats.h"
 
+#include "bench/table_format.h"
+
 namespace {
 
-using Clock = std::chrono::steady_clock;
-double ms_since(Clock::time_point t0) { return std::chrono::duration<double, std::milli>(Clock::now() - t0).count(); }
-std::string f1(double v) {
-  char b[32];
-  snprintf(b, sizeof b, "%.1f", v);
-  return b;
-}
-std::string f2(double v) {
-  char b[32];
-  snprintf(b, sizeof b, "%.2f", v);
-  return b;
-}
+using bench::Clock;
+using bench::f1;
+using bench::f2;
+using bench::ms_since;
 
 const int kW = 1280, kH = 720;
 const char *kScenes[] = {"scenes/model_lighting.gltf", "scenes/world_lighting.gltf", "scenes/hdr_atrium.gltf"};
