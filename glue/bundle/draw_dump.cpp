@@ -89,7 +89,12 @@ bool check_draw(const DumpDraw &d, size_t i, std::string *err) {
       *err = where + "index " + std::to_string(k) + " out of range (" + std::to_string(n) + " vertices)";
       return false;
     }
-  for (const auto &t : d.textures) {
+  for (const auto &tp : d.textures) {
+    if (!tp) {
+      *err = where + "a texture is missing";
+      return false;
+    }
+    const TextureDesc &t = *tp;
     if (t.w <= 0 || t.h <= 0 || t.d <= 0 || (t.kind == TexKind::Cube && t.w != t.h) ||
         t.rgba.size() != texel_count(t) * 4) {
       *err = where + "texture " + t.sampler + " has a size that does not match its texels";
@@ -134,6 +139,7 @@ bool write_draw_dump(const std::string &dir, const DumpFrame &f, std::string *er
   DirWriter w;
   if (!w.begin(dir, "draws.json", "draw dump", err)) return false;
   std::map<uint64_t, std::string> tex_files;  // content hash -> file
+  std::map<const TextureDesc *, std::string> tex_of;  // each shared texture hashed once
   json draws = json::array();
   for (size_t i = 0; i < f.draws.size(); ++i) {
     const DumpDraw &d = f.draws[i];
@@ -168,14 +174,19 @@ bool write_draw_dump(const std::string &dir, const DumpFrame &f, std::string *er
                     {"bits", float_bits(u.values.data(), u.values.size())}});
     j["uniforms"] = ju;
     json jt = json::array();
-    for (const auto &t : d.textures) {
-      const uint64_t h = content_hash(t);
-      auto it = tex_files.find(h);
-      if (it == tex_files.end()) {
-        char name[48];
-        snprintf(name, sizeof name, "tex_%016llx.f32", static_cast<unsigned long long>(h));
-        if (!w.write(name, t.rgba.data(), t.rgba.size() * 4, err)) return false;
-        it = tex_files.emplace(h, name).first;
+    for (const auto &tp : d.textures) {
+      const TextureDesc &t = *tp;
+      auto known = tex_of.find(&t);
+      if (known == tex_of.end()) {
+        const uint64_t h = content_hash(t);
+        auto it = tex_files.find(h);
+        if (it == tex_files.end()) {
+          char name[48];
+          snprintf(name, sizeof name, "tex_%016llx.f32", static_cast<unsigned long long>(h));
+          if (!w.write(name, t.rgba.data(), t.rgba.size() * 4, err)) return false;
+          it = tex_files.emplace(h, name).first;
+        }
+        known = tex_of.emplace(&t, it->second).first;
       }
       jt.push_back({{"sampler", t.sampler},
                     {"kind", kind_name(t.kind)},
@@ -184,7 +195,7 @@ bool write_draw_dump(const std::string &dir, const DumpFrame &f, std::string *er
                     {"d", t.d},
                     {"linear", t.linear},
                     {"repeat", t.repeat},
-                    {"file", it->second}});
+                    {"file", known->second}});
     }
     j["textures"] = jt;
     draws.push_back(j);

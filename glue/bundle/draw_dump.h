@@ -4,6 +4,7 @@
 // frame tiershade rendered. Format: docs/bundles.md ("The draw dump").
 #pragma once
 #include <cstdint>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -25,7 +26,9 @@ struct DumpDraw {
   std::vector<float> lightmap;  // per vertex 4: world_lighting's a_lightmap (may be empty)
   std::vector<uint32_t> indices;  // triangles
   std::vector<DumpUniform> uniforms;  // from dump_capture_uniforms
-  std::vector<TextureDesc> textures;  // sampler name = TextureDesc::sampler
+  // Sampler name = TextureDesc::sampler. Shared, not copied: the draws of a scene of hundreds of
+  // models bind the same few textures (the dump hashes and writes each one once).
+  std::vector<std::shared_ptr<const TextureDesc>> textures;
 };
 
 struct DumpFrame {

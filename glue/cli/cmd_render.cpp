@@ -8,6 +8,8 @@
 #include <cstring>
 #include <chrono>
 #include <cstdio>
+#include <map>
+#include <memory>
 #include <thread>
 #include <vector>
 
@@ -144,6 +146,7 @@ int cmd_render(int argc, char **argv) {
   DumpFrame dump;
   std::string dump_err;
   bool first_frame = true;  // the draw dump captures the first frame only (--frames renders more)
+  std::map<int, std::shared_ptr<const TextureDesc>> dump_textures;  // one copy per scene texture
   if (a.has("--dump-draws")) {
     cfg.on_draw = [&](const GlFns &gl, const PreparedScene &ps, const PreparedDraw &d, GLuint prog) {
       if (!first_frame) return;
@@ -156,7 +159,11 @@ int cmd_render(int argc, char **argv) {
       dd.tangent = d.tangent;
       dd.lightmap = d.lightmap;
       dd.indices = d.indices;
-      for (int t : d.tex) dd.textures.push_back(ps.textures.at(t));
+      for (int t : d.tex) {
+        auto &shared = dump_textures[t];
+        if (!shared) shared = std::make_shared<const TextureDesc>(ps.textures.at(t));
+        dd.textures.push_back(shared);
+      }
       if (!dump_capture_uniforms(gl, prog, &dd.uniforms, &dump_err) && dump_err.empty())
         dump_err = "uniform capture failed";
       dump.draws.push_back(std::move(dd));

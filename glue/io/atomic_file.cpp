@@ -14,7 +14,7 @@ std::string temp_path_for(const std::string &path) {
   return path + ".tmp." + std::to_string(static_cast<long>(getpid()));
 }
 
-bool write_and_close(FILE *fp, const void *data, size_t n, std::string *why) {
+bool write_and_close(FILE *fp, const void *data, size_t n, std::string *why, bool sync) {
   int e = 0;
   bool ok = n == 0 || std::fwrite(data, 1, n, fp) == n;
   if (!ok) e = errno;
@@ -22,7 +22,7 @@ bool write_and_close(FILE *fp, const void *data, size_t n, std::string *why) {
     ok = false;
     e = errno;
   }
-  if (ok && ::fsync(fileno(fp)) != 0) {
+  if (ok && sync && ::fsync(fileno(fp)) != 0) {
     ok = false;
     e = errno;
   }

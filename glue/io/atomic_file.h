@@ -11,9 +11,10 @@
 // "<path>.tmp.<pid>": the temporary name of a file or directory being written.
 std::string temp_path_for(const std::string &path);
 
-// Writes n bytes to fp, then fflush, fsync and fclose, each checked; fp is closed in every
+// Writes n bytes to fp, then fflush, fsync (unless sync is false) and fclose, each checked; fp is closed in every
 // case. On failure *why = "write failed (<reason>)".
-bool write_and_close(FILE *fp, const void *data, size_t n, std::string *why);
+// sync = false leaves the flush to disk to the caller (DirWriter syncs its directory's files at once).
+bool write_and_close(FILE *fp, const void *data, size_t n, std::string *why, bool sync = true);
 
 // A file written under its temporary name and renamed into place by commit(). The destructor
 // removes the temporary unless commit() succeeded, so every early return cleans up. Reasons

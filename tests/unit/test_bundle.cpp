@@ -95,9 +95,9 @@ bool render(GlContext &ctx, const std::vector<Variant> &vars, DumpFrame *f, std:
       const GLint loc = g.GetUniformLocation(p, u.name.c_str());
       const int n = u.is_array ? u.array_size : 1;
       if (u.type == GL_SAMPLER_2D || u.type == GL_SAMPLER_CUBE || u.type == GL_SAMPLER_3D) {
-        d.textures.push_back(random_texture(u, rng));
+        d.textures.push_back(std::make_shared<const TextureDesc>(random_texture(u, rng)));
         g.ActiveTexture(GL_TEXTURE0 + unit);
-        objects.push_back(r.upload_texture(d.textures.back()));
+        objects.push_back(r.upload_texture(*d.textures.back()));
         g.Uniform1i(loc, unit++);
       } else if (u.type == GL_FLOAT_MAT4) {
         const float m[16] = {u.name == "u_model" ? 1.f : 0.5f,
