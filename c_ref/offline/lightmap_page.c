@@ -56,6 +56,11 @@ void lm_page_uv(const lm_face_place *p, int page_w, int page_h, double a, double
   uv[1] = (float)((p->y + 1 + 0.5 + b * (lh - 1)) / page_h);
 }
 
+void lm_page_chart_uv(const lm_face_place *p, int page_w, int page_h, double u, double v, float uv[2]) {
+  uv[0] = (float)((p->x + 1 + u * (p->block_w - 2)) / page_w);
+  uv[1] = (float)((p->y + 1 + v * (p->block_h - 2)) / page_h);
+}
+
 void lm_page_fill_borders(const lm_face_place *p, int page_w, float *rgba) {
   for (int k = 0; k < p->count; ++k) {
     const int x0 = p->x + k * p->block_w, y0 = p->y, w = p->block_w, h = p->block_h;

@@ -36,6 +36,11 @@ void lm_page_texel(const lm_face_place *p, int k, int i, int j, int *tx, int *ty
  * and 1 are the centres of the first and last luxel columns. */
 void lm_page_uv(const lm_face_place *p, int page_w, int page_h, double a, double b, float uv[2]);
 
+/* The lightmap uv (k = 0) of TEXCOORD_1 point (u, v) in [0, 1]^2 of a chart's block
+ * (glue/bake/charts.h): luxel i spans u in [i, i + 1) / luxels_w, so u maps to texel
+ * x + 1 + u * luxels_w of the page. */
+void lm_page_chart_uv(const lm_face_place *p, int page_w, int page_h, double u, double v, float uv[2]);
+
 /* A face's luxels as a BSP stores them for one light style (fact sheet section 1,
  * PrecompLightmapOffsets/FinalLightFace): `count` blocks one after another (flat, then b0,
  * b1, b2 for a bumped face), each luxels_w * luxels_h ColorRGBExp32 values, row by row (s

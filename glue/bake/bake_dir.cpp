@@ -30,7 +30,7 @@ const long kManifestMaxBytes = 64l << 20;  // bounded: a face is ~300 bytes of m
 
 // Every input the bake reads goes into the hash: a field added to these structs must be hashed
 // below (and its size here updated), else a stale bake would pass for a current one.
-static_assert(sizeof(WorldFace) == 184, "WorldFace changed: hash the new field in bake_input_hash");
+static_assert(sizeof(WorldFace) == 200, "WorldFace changed: hash the new field in bake_input_hash");
 static_assert(sizeof(rnm_light) == 160, "rnm_light changed: hash the new field in bake_input_hash");
 // (BounceSettings::emission_sampled is set by bake_world from area_samples, which is hashed.)
 static_assert(sizeof(BounceSettings) == 40, "BounceSettings changed: hash the new field in bake_input_hash");
@@ -79,6 +79,8 @@ BakeHash bake_input_hash(const WorldBakeInput &in) {
     g.value(f.su);
     g.value(f.sv);
     vec(g, f.normal);
+    g.value(f.chart != nullptr);  // a TEXCOORD_1 chart (glue/bake/charts.h): what it bakes from
+    if (f.chart) chart_hash(&g, *f.chart);
     p.value(f.probe);
     vec(m, f.reflectivity);
     vec(m, f.emission);

@@ -399,7 +399,15 @@ bool prepare_scene(const Scene &s, const SceneSelection &sel, int w, int h, Api 
     if (p.indices.size() < 3) continue;
     WorldFace f{};
     double frame_min[2];
-    if (!world_face_from_quad(p.position, p.normal, p.tangent, p.indices, m.name.c_str(), m.probe, &f, frame_min)) {
+    if (!p.uv1.empty()) {  // TEXCOORD_1: the mesh's own lightmap chart (glue/bake/charts.h)
+      if (!world_face_from_chart(p.position, p.normal, p.tangent, p.uv1, p.indices, m.name.c_str(), m.probe,
+                                 s.lightmaps.luxels_per_unit, p.where, &f, err)) {
+        *err = s.path + ": " + *err;
+        return false;
+      }
+      frame_min[0] = frame_min[1] = 0;
+    } else if (!world_face_from_quad(p.position, p.normal, p.tangent, p.indices, m.name.c_str(), m.probe, &f,
+                                     frame_min)) {
       *err = s.path + ": " + p.where + ": a world primitive whose first triangle and normal are degenerate";
       return false;
     }
@@ -506,7 +514,16 @@ bool prepare_scene(const Scene &s, const SceneSelection &sel, int w, int h, Api 
     const size_t n = p.position.size() / 3;
     d.lightmap.resize(n * 4);
     const glm::dvec3 t = d3(f.u), b = d3(f.v);
-    for (size_t i = 0; i < n; ++i) {
+    for (size_t i = 0; f.chart && i < n; ++i) {  // a chart: TEXCOORD_1 on its block, the bake's tangents
+      float lm[2];
+      lm_page_chart_uv(&bake.place[fi], ws.page_w, ws.page_h, p.uv1[i * 2], p.uv1[i * 2 + 1], lm);
+      d.lightmap[i * 4 + 0] = lm[0];
+      d.lightmap[i * 4 + 1] = lm[1];
+      d.lightmap[i * 4 + 2] = bake.place[fi].offset[0];
+      d.lightmap[i * 4 + 3] = bake.place[fi].offset[1];
+      for (int k = 0; k < 4; ++k) d.tangent[i * 4 + k] = f.chart->vertex_tangent[i * 4 + k];
+    }
+    for (size_t i = 0; !f.chart && i < n; ++i) {
       const glm::dvec3 q = d3f(&p.position[i * 3]);
       const double a = (glm::dot(q, t) - face_frame[fi][0]) / f.su, bb = (glm::dot(q, b) - face_frame[fi][1]) / f.sv;
       float lm[2];
