@@ -128,7 +128,10 @@ bool bake_world(const WorldBakeInput &in, WorldBake *out, std::string *err) {
     const char *face = std::strstr(msg, "face ");
     if (face) {  // name the primitive
       const long fi = std::strtol(face + 5, nullptr, 10);
-      if (fi >= 0 && fi < static_cast<long>(s.faces.size())) *err = std::string(s.faces[static_cast<size_t>(fi)].name) + ": " + msg;
+      if (fi >= 0 && fi < static_cast<long>(s.faces.size())) {
+        const WorldFace &f = s.faces[static_cast<size_t>(fi)];  // a chart names its primitive too
+        *err = std::string(f.name) + (f.chart ? " (" + f.chart->where + ")" : std::string()) + ": " + msg;
+      }
     }
     return false;
   }
