@@ -94,7 +94,8 @@ std::string uv_text(const dvec2 &p) { return "(" + std::to_string(p.x) + ", " + 
 }  // namespace
 
 // Every field a bake reads is hashed below: a new one must be too (and the size here updated).
-static_assert(sizeof(WorldChart) == 2 * sizeof(int) + 7 * sizeof(std::vector<double>) + sizeof(std::string),
+// (cand_at, cand, luxel_tri and frame follow from what is hashed.)
+static_assert(sizeof(WorldChart) == 2 * sizeof(int) + 9 * sizeof(std::vector<double>) + sizeof(std::string),
               "WorldChart changed: hash the new field in chart_hash");
 
 void chart_hash(ContentHash *h, const WorldChart &c) {
@@ -183,6 +184,7 @@ bool chart_build(const std::vector<float> &position, const std::vector<float> &n
   c.luxel_tri.assign(static_cast<size_t>(c.w) * c.h, -1);
   std::vector<double> dist(c.luxel_tri.size(), INFINITY);  // 0: the centre is inside
   std::vector<dvec3> best(c.luxel_tri.size());
+  std::vector<std::vector<int>> touch(c.luxel_tri.size());
   for (int t = 0; t < nt; ++t) {
     const dvec2 q[3] = {corner_uv(c, t, 0), corner_uv(c, t, 1), corner_uv(c, t, 2)};
     const double u0 = std::min({q[0].x, q[1].x, q[2].x}), u1 = std::max({q[0].x, q[1].x, q[2].x});
@@ -208,6 +210,7 @@ bool chart_build(const std::vector<float> &position, const std::vector<float> &n
         const double x0 = static_cast<double>(i) / c.w, x1 = static_cast<double>(i + 1) / c.w;
         const double y0 = static_cast<double>(j) / c.h, y1 = static_cast<double>(j + 1) / c.h;
         if (!tri_box_overlap(q, x0, y0, x1, y1)) continue;
+        touch[static_cast<size_t>(j) * c.w + i].push_back(t);
         const dvec2 centre((i + 0.5) / c.w, (j + 0.5) / c.h);
         dvec3 l = bary(centre, q[0], q[1], q[2]);
         double d = 0;
@@ -229,6 +232,11 @@ bool chart_build(const std::vector<float> &position, const std::vector<float> &n
         }
       }
   }
+  c.cand_at.push_back(0);
+  for (const std::vector<int> &t : touch) {
+    c.cand.insert(c.cand.end(), t.begin(), t.end());
+    c.cand_at.push_back(static_cast<int>(c.cand.size()));
+  }
   c.frame.assign(c.luxel_tri.size(), LuxelFrame());
   for (size_t li = 0; li < c.frame.size(); ++li)
     if (c.luxel_tri[li] >= 0 && !frame_of(c, c.luxel_tri[li], best[li], &c.frame[li], err)) return false;
@@ -239,11 +247,9 @@ bool chart_build(const std::vector<float> &position, const std::vector<float> &n
 bool chart_frame_at(const WorldChart &c, double u, double v, LuxelFrame *f) {
   const dvec2 s(u, v);
   const int i = std::clamp(static_cast<int>(u * c.w), 0, c.w - 1), j = std::clamp(static_cast<int>(v * c.h), 0, c.h - 1);
-  // The luxel's own triangle first, then every other (a point of the luxel another triangle holds).
-  const int own = c.luxel_tri[static_cast<size_t>(j) * c.w + i];
-  for (int k = -1; k < c.triangles(); ++k) {
-    const int t = k < 0 ? own : k;
-    if (t < 0 || (k >= 0 && t == own)) continue;
+  const size_t li = static_cast<size_t>(j) * c.w + i;
+  for (int k = c.cand_at[li]; k < c.cand_at[li + 1]; ++k) {
+    const int t = c.cand[static_cast<size_t>(k)];
     const dvec3 l = bary(s, corner_uv(c, t, 0), corner_uv(c, t, 1), corner_uv(c, t, 2));
     if (l.x >= 0 && l.y >= 0 && l.z >= 0) return frame_of(c, t, l, f, nullptr);
   }

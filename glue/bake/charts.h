@@ -26,6 +26,8 @@ struct WorldChart {
   std::vector<double> pos, nrm, tan, uv;  // per triangle corner: 3, 3, 4 (w: handedness), 2
   std::vector<float> vertex_tangent;  // per vertex of the primitive (4): the frame the bake used
   std::vector<int> luxel_tri;  // per luxel (j * w + i): its triangle, -1 none
+  // Per luxel, the triangles that overlap it: cand[cand_at[l] .. cand_at[l + 1]) (chart_frame_at's search).
+  std::vector<int> cand_at, cand;
   std::vector<LuxelFrame> frame;  // per luxel
   std::string where;  // the primitive, for messages
   int triangles() const { return static_cast<int>(uv.size() / 6); }
@@ -51,8 +53,8 @@ bool chart_build(const std::vector<float> &position, const std::vector<float> &n
                  const std::vector<float> &tangent, const std::vector<float> &uv1, const std::vector<uint32_t> &indices,
                  double luxels_per_unit, const std::string &where, WorldChart *out, std::string *err);
 
-// The frame at chart point (u, v): the first triangle whose closed UV triangle holds it, interpolated
-// barycentrically. False (and *f untouched) when no triangle holds it.
+// The frame at chart point (u, v), strictly inside a luxel: the first of the luxel's triangles whose
+// closed UV triangle holds it, interpolated barycentrically. False (*f untouched) when none holds it.
 bool chart_frame_at(const WorldChart &c, double u, double v, LuxelFrame *f);
 
 // The grid coordinates (a, b) = (i / (w - 1), j / (h - 1)) of the luxel holding the point of
