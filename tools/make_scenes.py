@@ -957,6 +957,12 @@ def lightmap_charts():
     g.camera("room_view", (1.6, 1.6, 2.4), (-0.6, 0.5, -2.0), 1.0)
     g.write({"camera": 0, "lightmaps": {"luxels_per_unit": 8, "encoding": "rgbe", "page": [512, 256]},
              "hdr": {"path": "integer", "tone_map_scale": 1.0}})
+    # The same scene and buffer on pages of 256 x 128: the faces fill two pages (each its own texture).
+    doc = json.loads(json.dumps(g.doc))
+    doc["extras"]["tiershade"]["lightmaps"]["page"] = [256, 128]
+    with open(os.path.join(SCENES, "lightmap_charts_pages.gltf"), "w") as f:
+        json.dump(doc, f, indent=1)
+        f.write("\n")
 
 
 if __name__ == "__main__":

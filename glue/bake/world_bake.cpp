@@ -122,8 +122,8 @@ bool bake_world(const WorldBakeInput &in, WorldBake *out, std::string *err) {
                             : lm_face_size{luxels(f.su, s.luxels_per_unit), luxels(f.sv, s.luxels_per_unit), 1});
   out->place.resize(s.faces.size());
   char msg[256];
-  if (lm_page_pack(s.page_w, s.page_h, sizes.data(), static_cast<int>(sizes.size()), out->place.data(), msg,
-                   sizeof msg) != 0) {
+  if (lm_page_pack_pages(s.page_w, s.page_h, kMaxLightmapPages, sizes.data(), static_cast<int>(sizes.size()),
+                         out->place.data(), &out->pages, msg, sizeof msg) != 0) {
     *err = msg;
     const char *face = std::strstr(msg, "face ");
     if (face) {  // name the primitive
@@ -135,7 +135,7 @@ bool bake_world(const WorldBakeInput &in, WorldBake *out, std::string *err) {
     }
     return false;
   }
-  out->page.assign(static_cast<size_t>(s.page_w) * s.page_h * 4, 0.f);
+  out->page.assign(static_cast<size_t>(s.page_w) * s.page_h * out->pages * 4, 0.f);
   for (size_t i = 0; i < out->page.size(); i += 4) out->page[i + 3] = 1.f;
   // Each face's bump basis and its luxel grid, the direct light first.
   std::vector<std::array<ts_vec3d, 3>> bump(s.faces.size());
@@ -388,10 +388,11 @@ bool bake_world(const WorldBakeInput &in, WorldBake *out, std::string *err) {
   return true;
 }
 
-TextureDesc encode_page(const WorldBakeInput &s, const WorldBake &b, int encoding) {
+TextureDesc encode_page(const WorldBakeInput &s, const WorldBake &b, int encoding, int page) {
   TextureDesc t = blank_texture("u_lightmap", s.page_w, s.page_h, encoding != WL_LM_RGBE, false);
-  for (size_t i = 0; i < b.page.size(); i += 4) {
-    const float *in = &b.page[i];
+  const size_t first = static_cast<size_t>(page) * s.page_w * s.page_h * 4;
+  for (size_t i = 0; i < t.rgba.size(); i += 4) {
+    const float *in = &b.page[first + i];
     float *o = &t.rgba[i];
     o[3] = 1.f;
     if (encoding == WL_LM_RGBE) {

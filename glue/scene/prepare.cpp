@@ -467,7 +467,8 @@ bool prepare_scene(const Scene &s, const SceneSelection &sel, int w, int h, Api 
     ps.lightmap_page = bake.page;
     ps.lightmap_places = bake.place;
     ps.lightmap_w = ws.page_w;
-    ps.lightmap_h = ws.page_h;
+    ps.lightmap_h = ws.page_h * bake.pages;  // the pages stacked (c_ref/offline/lightmap_page.h)
+    ps.lightmap_pages = bake.pages;
     probes.have_world = true;
     probes.world_cubes.assign(s.probes.size(), TextureDesc());
     for (size_t i = 0; i < s.probes.size(); ++i)
@@ -484,8 +485,6 @@ bool prepare_scene(const Scene &s, const SceneSelection &sel, int w, int h, Api 
     ps.bake_sky_ms = bake.sky.ms, ps.bake_area_ms = bake.area.ms;
     if (!bake_scene_volume(s, sel, ws.faces, bake, ws.page_w, rays, &ps.volume, err)) return false;
   }
-  TextureDesc page;
-  int encoding = -1;
   for (size_t di = 0; di < sel.draws.size(); ++di) {
     const SceneDrawChoice &c = sel.draws[di];
     PreparedDraw d;
@@ -501,11 +500,7 @@ bool prepare_scene(const Scene &s, const SceneSelection &sel, int w, int h, Api 
     const SceneMaterial &m = s.materials[p.material];
     const Variant &v = *c.variant;
     const int enc = v.value("LIGHTMAP_ENCODING");
-    if (enc != encoding) {
-      page = encode_page(ws, bake,
-                         s.lightmaps.encoding == "float32" ? -1 : s.lightmaps.encoding == "rgbe" ? kPageRgbeToHalf : enc);
-      encoding = enc;
-    }
+    const int code = s.lightmaps.encoding == "float32" ? -1 : s.lightmaps.encoding == "rgbe" ? kPageRgbeToHalf : enc;
     const int fi = face_of_draw[di];
     if (fi < 0) continue;
     const WorldFace &f = ws.faces[fi];
@@ -569,7 +564,10 @@ bool prepare_scene(const Scene &s, const SceneSelection &sel, int w, int h, Api 
     else
       d.tex.push_back(pool.get(key_solid("u_normalmap", 0.5f, 0.5f, 1.f, 1.f),
                                [&] { return solid("u_normalmap", 0.5f, 0.5f, 1.f, 1.f); }));
-    d.tex.push_back(pool.get("u_lightmap|" + std::to_string(enc), [&] { return page; }));
+    // The face's page (one texture per page and encoding; several pages: each draw binds its own).
+    d.lightmap_page = bake.place[fi].page;
+    d.tex.push_back(pool.get("u_lightmap|" + std::to_string(enc) + "|" + std::to_string(d.lightmap_page),
+                             [&] { return encode_page(ws, bake, code, d.lightmap_page); }));
     if (v.value("ENVMAPMASK") == 1 && m.envmap_mask_texture.image >= 0)
       d.tex.push_back(pool.get(key_of("u_envmap_mask", m.envmap_mask_texture, false, nullptr), [&] {
         return image_texture(s, m.envmap_mask_texture, "u_envmap_mask", false, nullptr);

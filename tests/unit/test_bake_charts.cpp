@@ -5,7 +5,10 @@
 //   - dilation: on a baked curved chart (a dome, lit everywhere), every texel bilinear filtering
 //     reads at points inside the triangles holds light; the same page with the dilated texels
 //     cleared fails that check (the check can fail); a ring takes the mean of its lit neighbours;
-//   - the content hash changes when TEXCOORD_1 does (a stale bake is refused).
+//   - the content hash changes when TEXCOORD_1 does (a stale bake is refused);
+//   - several pages: faces that overflow a page go on the next (stacked rows, uv within the page),
+//     a face larger than a page and a full last page are refused; a bake on two small pages holds
+//     every luxel value of the bake on one large page, bit for bit.
 #include <cmath>
 #include <cstdio>
 #include <string>
@@ -203,10 +206,69 @@ void content_hash() {
   check(bake_input_hash(in).geometry != ha, "the bake's hash changes with TEXCOORD_1 (a stale bake is refused)");
 }
 
+void pages() {
+  // Three faces of 6 x 6 luxels (8 x 8 blocks, one lightmap) on 20 x 10 pages: two per page.
+  lm_face_size f[3] = {{6, 6, 0}, {6, 6, 0}, {6, 6, 0}};
+  lm_face_place p[3];
+  int n = 0;
+  char msg[256];
+  const int rc = lm_page_pack_pages(20, 10, 4, f, 3, p, &n, msg, sizeof msg);
+  float uv[2];
+  if (rc == 0) lm_page_chart_uv(&p[2], 20, 10, 0.0, 0.0, uv);
+  check(rc == 0 && n == 2 && p[0].page == 0 && p[1].page == 0 && p[1].x == 8 && p[2].page == 1 && p[2].x == 0 &&
+            p[2].y == 10 && uv[0] == 1.f / 20 && uv[1] == 1.f / 10,
+        "pages: the third face on page 1 (rows 10.., its uv within its page)", rc ? msg : std::to_string(n));
+  check(lm_page_pack_pages(20, 10, 1, f, 3, p, &n, msg, sizeof msg) != 0 &&
+            std::string(msg).find("face 2 (6x6 luxels, 1 lightmaps) does not fit in the 20x10 page") != std::string::npos,
+        "pages: one page full refuses the face that does not fit", msg);
+  lm_face_size big = {20, 6, 0};
+  check(lm_page_pack_pages(20, 10, 4, &big, 1, p, &n, msg, sizeof msg) != 0 &&
+            std::string(msg).find("face 0 (20x6 luxels, 1 lightmaps) does not fit in the 20x10 page") != std::string::npos,
+        "pages: a face wider than a page is refused", msg);
+  // A bake on 2 pages = the bake on one page, luxel for luxel (the dome chart and a planar face).
+  const Mesh m = dome(6, 20);
+  WorldFace chart{};
+  std::string err;
+  if (!build(m, 12, &chart, &err)) return check(false, "build the dome chart", err);
+  WorldFace quad{"quad", ts_v3d(-1, 0, 1), ts_v3d(1, 0, 0), ts_v3d(0, 0, -1), 2, 2, -1, ts_v3d(0, 1, 0)};
+  WorldBakeInput in;
+  in.faces = {chart, quad};
+  rnm_light l{};
+  l.pos = ts_v3d(0.2, 3, 0.1);
+  l.color = ts_v3d(20, 20, 20);
+  l.atten[2] = 1;
+  in.lights = {l};
+  in.probes = {ts_v3d(0, 2, 0)};
+  in.luxels_per_unit = 12;
+  in.cube_size = 4;
+  in.page_w = 256;
+  in.page_h = 128;
+  WorldBake one, two;
+  if (!bake_world(in, &one, &err)) return check(false, "bake on one page", err);
+  in.page_w = 128;
+  in.page_h = 32;
+  if (!bake_world(in, &two, &err)) return check(false, "bake on two pages", err);
+  long differ = 0, texels = 0;
+  for (size_t fi = 0; fi < 2; ++fi) {
+    const lm_face_place &a = one.place[fi], &b = two.place[fi];
+    for (int k = 0; k < a.count; ++k)
+      for (int y = 0; y < a.block_h; ++y)
+        for (int x = 0; x < a.block_w; ++x) {
+          const float *ta = &one.page[(static_cast<size_t>(a.y + y) * 256 + a.x + k * a.block_w + x) * 4];
+          const float *tb = &two.page[(static_cast<size_t>(b.y + y) * 128 + b.x + k * b.block_w + x) * 4];
+          ++texels;
+          differ += ta[0] != tb[0] || ta[1] != tb[1] || ta[2] != tb[2];
+        }
+  }
+  check(one.pages == 1 && two.pages == 2 && two.place[1].page == 1 && differ == 0 && texels > 1000,
+        "pages: the bake on two 128 x 32 pages holds the one-page bake's texels bit for bit",
+        std::to_string(two.pages) + " pages, " + std::to_string(differ) + " of " + std::to_string(texels) + " differ");
+}
+
 }  // namespace
 
 int main() {
   ts_math_init();
-  for (void (*test)() : {bad_geometry, dilation, content_hash}) test();
+  for (void (*test)() : {bad_geometry, dilation, content_hash, pages}) test();
   return unit_check::finish();
 }
