@@ -145,9 +145,9 @@ bad chart_out_of_range 1 "chart_range.gltf: meshes\[4\].primitives\[0\] \(node \
 scene lightmap_charts.gltf chart_overlap.gltf "$CH; dome['indices'] = cove['indices']"
 bad chart_overlap 1 "chart_overlap.gltf: meshes\[4\].primitives\[0\] \(node \"dome\"\): TEXCOORD_1 triangles [0-9]+ and [0-9]+ overlap at" r_cho \
   -- render chart_overlap.gltf --backend cpu -o r_cho
-# A page the planar faces fit in but not the cove's 48 x 48 chart (4 lightmaps: 200 texels wide).
-scene lightmap_charts.gltf chart_page.gltf "d['extras']['tiershade']['lightmaps']['page'] = [300, 128]"
-bad chart_page_full 1 "chart_page.gltf: lightmap bake: brick \(meshes\[5\].primitives\[0\] \(node \"cove\"\)\): lm_page_pack: face 5 \(48x48 luxels, 4 lightmaps\) does not fit in the 300x128 page" r_chp \
+# A page the planar faces fit on (several pages if need be) but not the cove's 48 x 48 chart (50 rows).
+scene lightmap_charts.gltf chart_page.gltf "d['extras']['tiershade']['lightmaps']['page'] = [256, 40]"
+bad chart_page_full 1 "chart_page.gltf: lightmap bake: brick \(meshes\[5\].primitives\[0\] \(node \"cove\"\)\): lm_page_pack: face 5 \(48x48 luxels, 4 lightmaps\) does not fit in the 256x40 page" r_chp \
   -- render chart_page.gltf --backend cpu -o r_chp
 
 # --- 8. unnamed errors: a broken PNG texture, a page too small for the faces -------------------
