@@ -316,7 +316,8 @@ class Gltf:
         return {"attributes": {"POSITION": self._acc(mesh["pos"], "VEC3", 3),
                                "NORMAL": self._acc(mesh["nrm"], "VEC3", 3),
                                "TEXCOORD_0": self._acc(mesh["uv"], "VEC2", 2),
-                               "TANGENT": self._acc(mesh["tan"], "VEC4", 4)},
+                               "TANGENT": self._acc(mesh["tan"], "VEC4", 4),
+                               **({"TEXCOORD_1": self._acc(mesh["uv1"], "VEC2", 2)} if "uv1" in mesh else {})},
                 "indices": ind, "material": material, "mode": 4}
 
     def node(self, node, root=True):
@@ -890,6 +891,80 @@ def large_hall():
             f.write("\n")
 
 
+def lightmap_charts():
+    """Curved LightmappedGeneric meshes carrying their own lightmap UVs (TEXCOORD_1, the glTF
+    convention; glue/bake/charts.h) in a room of planar faces charted automatically: a dome (a
+    height field, TEXCOORD_1 its plan projection) and a quarter-pipe cove between the floor and the
+    back wall (TEXCOORD_1 its unrolled arc), lit by two point lights; the dome shadows the floor."""
+    g = Gltf("lightmap_charts")
+    W = "LightmappedGeneric"
+    plaster = g.material("plaster", {"shader": W}, base="plaster.png")
+    brick = g.material("brick", {"shader": W}, base="brick.png", normal="brick_normal.png")
+    X, Y, Z, R = 3.0, 2.5, 2.5, 1.0
+
+    def dome(cx, cz, rad, h, rings, seg):  # y = h (1 - r^2 / rad^2)^2 over a disc, TEXCOORD_1 = its plan
+        pos, nrm, uv, uv1, tan, bit, idx = [], [], [], [], [], [], []
+        for j in range(rings + 1):
+            r = rad * j / rings
+            q = 1 - r * r / (rad * rad)
+            dq = -4 * h * q / (rad * rad)  # dy/dx = dq x, dy/dz = dq z
+            for i in range(seg if j else 1):
+                ph = 2 * math.pi * i / seg
+                x, z = r * math.cos(ph), r * math.sin(ph)
+                pos.append([cx + x, h * q * q, cz + z])
+                nrm.append(norm([-dq * x, 1.0, -dq * z]))
+                uv.append([x + rad, z + rad])
+                uv1.append([0.5 + 0.5 * x / rad, 0.5 + 0.5 * z / rad])
+                tan.append(norm([1.0, dq * x, 0.0]))
+                bit.append(norm([0.0, -dq * z, -1.0]))
+        for i in range(seg):  # the fan round the top, then the rings' quads
+            idx += [0, 1 + (i + 1) % seg, 1 + i]
+        for j in range(1, rings):
+            a0, b0 = 1 + (j - 1) * seg, 1 + j * seg
+            for i in range(seg):
+                i1 = (i + 1) % seg
+                idx += [a0 + i, a0 + i1, b0 + i1, a0 + i, b0 + i1, b0 + i]
+        return fix_winding_and_tangents(dict(pos=pos, nrm=nrm, uv=uv, uv1=uv1, tan=tan, bit=bit, idx=idx))
+
+    def cove(seg):  # a quarter cylinder of radius R along x, centre (., R, -Z + R), facing the room
+        L = 2 * X
+        arc = math.pi / 2 * R
+        pos, nrm, uv, uv1, tan, bit, idx = [], [], [], [], [], [], []
+        for j in range(seg + 1):
+            th = math.pi / 2 * j / seg  # 0: the floor's edge, pi/2: the wall's
+            n = [0.0, math.cos(th), math.sin(th)]
+            for i in range(2):
+                x = -X + L * i
+                pos.append([x, R - R * math.cos(th), -Z + R - R * math.sin(th)])
+                nrm.append(n)
+                uv.append([i * L / 2, arc * j / seg / 2])
+                uv1.append([i, arc * j / seg / L])  # the unrolled arc at the same scale as the length
+                tan.append([1.0, 0.0, 0.0])
+                bit.append([0.0, -math.sin(th), math.cos(th)])
+        for j in range(seg):
+            a, b = 2 * j, 2 * (j + 1)
+            idx += [a, a + 1, b + 1, a, b + 1, b]
+        return fix_winding_and_tangents(dict(pos=pos, nrm=nrm, uv=uv, uv1=uv1, tan=tan, bit=bit, idx=idx))
+
+    g.mesh("floor", [(quad([-X, 0, Z], [2 * X, 0, 0], [0, 0, -(2 * Z - R)], X, Z), plaster)])
+    g.mesh("wall_back", [(quad([-X, R, -Z], [2 * X, 0, 0], [0, Y - R, 0], X, (Y - R) / 2), brick)])
+    g.mesh("wall_left", [(quad([-X, 0, Z], [0, 0, -2 * Z], [0, Y, 0], Z, Y / 2), brick)])
+    g.mesh("wall_right", [(quad([X, 0, -Z], [0, 0, 2 * Z], [0, Y, 0], Z, Y / 2), brick)])
+    g.mesh("dome", [(dome(0.4, 0.3, 1.2, 0.7, 8, 32), plaster)])
+    g.mesh("cove", [(cove(12), brick)])
+    g.light("lamp_warm", "point", (1.0, 0.85, 0.65), 5.0, (-1.2, 2.1, 0.9))
+    g.light("lamp_cool", "point", (0.7, 0.8, 1.0), 3.0, (2.0, 1.4, -1.2))
+    g.camera("room_view", (1.6, 1.6, 2.4), (-0.6, 0.5, -2.0), 1.0)
+    g.write({"camera": 0, "lightmaps": {"luxels_per_unit": 8, "encoding": "rgbe", "page": [512, 256]},
+             "hdr": {"path": "integer", "tone_map_scale": 1.0}})
+    # The same scene and buffer on pages of 256 x 128: the faces fill two pages (each its own texture).
+    doc = json.loads(json.dumps(g.doc))
+    doc["extras"]["tiershade"]["lightmaps"]["page"] = [256, 128]
+    with open(os.path.join(SCENES, "lightmap_charts_pages.gltf"), "w") as f:
+        json.dump(doc, f, indent=1)
+        f.write("\n")
+
+
 if __name__ == "__main__":
     make_textures()
     model_lighting()
@@ -900,5 +975,6 @@ if __name__ == "__main__":
     hdr_scenes()
     probe_chart()
     large_hall()
+    lightmap_charts()
     print("wrote scenes/model_lighting.gltf, world_lighting.gltf, hdr_atrium.gltf, sphere_grid.gltf, "
           "phong_sphere.gltf, hdr_daylight.gltf, hdr_dark_room.gltf, probe_chart.gltf, large_hall.gltf")

@@ -8,11 +8,18 @@
 
 int lm_page_pack(int page_w, int page_h, const lm_face_size *faces, int n, lm_face_place *out, char *err,
                  size_t errlen) {
-  if (page_w < 1 || page_h < 1 || page_w > 16384 || page_h > 16384 || n < 0) {
-    snprintf(err, errlen, "lm_page_pack: page %dx%d with %d faces", page_w, page_h, n);
+  int pages;
+  return lm_page_pack_pages(page_w, page_h, 1, faces, n, out, &pages, err, errlen);
+}
+
+int lm_page_pack_pages(int page_w, int page_h, int max_pages, const lm_face_size *faces, int n, lm_face_place *out,
+                       int *pages, char *err, size_t errlen) {
+  if (page_w < 1 || page_h < 1 || page_w > 16384 || page_h > 16384 || n < 0 || max_pages < 1 || max_pages > 256) {
+    snprintf(err, errlen, "lm_page_pack: page %dx%d (up to %d) with %d faces", page_w, page_h, max_pages, n);
     return -1;
   }
-  int x = 0, y = 0, shelf_h = 0;
+  int x = 0, y = 0, shelf_h = 0, page = 0;
+  *pages = 1;
   for (int f = 0; f < n; ++f) {
     const lm_face_size *s = &faces[f];
     if (s->luxels_w < 2 || s->luxels_h < 2 || s->luxels_w > 1024 || s->luxels_h > 1024) {
@@ -30,13 +37,23 @@ int lm_page_pack(int page_w, int page_h, const lm_face_size *faces, int n, lm_fa
       y += shelf_h;
       shelf_h = 0;
     }
+    if (w <= page_w && y + p->block_h > page_h && page + 1 < max_pages && p->block_h <= page_h) {
+      ++page; /* the next page */
+      x = y = shelf_h = 0;
+    }
     if (w > page_w || y + p->block_h > page_h) {
-      snprintf(err, errlen, "lm_page_pack: face %d (%dx%d luxels, %d lightmaps) does not fit in the %dx%d page", f,
-               s->luxels_w, s->luxels_h, p->count, page_w, page_h);
+      if (max_pages > 1 && w <= page_w && p->block_h <= page_h)
+        snprintf(err, errlen, "lm_page_pack: face %d (%dx%d luxels, %d lightmaps) does not fit in %d pages of %dx%d", f,
+                 s->luxels_w, s->luxels_h, p->count, max_pages, page_w, page_h);
+      else
+        snprintf(err, errlen, "lm_page_pack: face %d (%dx%d luxels, %d lightmaps) does not fit in the %dx%d page", f,
+                 s->luxels_w, s->luxels_h, p->count, page_w, page_h);
       return -1;
     }
     p->x = x;
-    p->y = y;
+    p->y = page * page_h + y;
+    p->page = page;
+    if (page + 1 > *pages) *pages = page + 1;
     p->offset[0] = (float)((double)p->block_w / page_w);
     p->offset[1] = 0.0f;
     x += w;
@@ -53,7 +70,12 @@ void lm_page_texel(const lm_face_place *p, int k, int i, int j, int *tx, int *ty
 void lm_page_uv(const lm_face_place *p, int page_w, int page_h, double a, double b, float uv[2]) {
   const double lw = p->block_w - 2, lh = p->block_h - 2;
   uv[0] = (float)((p->x + 1 + 0.5 + a * (lw - 1)) / page_w);
-  uv[1] = (float)((p->y + 1 + 0.5 + b * (lh - 1)) / page_h);
+  uv[1] = (float)((p->y - p->page * page_h + 1 + 0.5 + b * (lh - 1)) / page_h);
+}
+
+void lm_page_chart_uv(const lm_face_place *p, int page_w, int page_h, double u, double v, float uv[2]) {
+  uv[0] = (float)((p->x + 1 + u * (p->block_w - 2)) / page_w);
+  uv[1] = (float)((p->y - p->page * page_h + 1 + v * (p->block_h - 2)) / page_h);
 }
 
 void lm_page_fill_borders(const lm_face_place *p, int page_w, float *rgba) {

@@ -107,7 +107,8 @@ bool area_lights(const std::vector<WorldFace> &faces, const std::vector<std::arr
   std::vector<size_t> emitters;
   for (size_t e = 0; e < faces.size(); ++e) {
     const ts_vec3d &le = faces[e].emission;
-    if (le.x > 0 || le.y > 0 || le.z > 0) emitters.push_back(e);
+    // A TEXCOORD_1 chart is not a parallelogram: its emission reaches the luxels through the bounces.
+    if ((le.x > 0 || le.y > 0 || le.z > 0) && !faces[e].chart) emitters.push_back(e);
   }
   report->emitters = static_cast<int>(emitters.size());
   if (emitters.empty() || set.samples <= 0) return true;
@@ -116,16 +117,15 @@ bool area_lights(const std::vector<WorldFace> &faces, const std::vector<std::arr
   const int m = side * side;
   for (size_t f = 0; f < faces.size(); ++f) {
     const WorldFace &face = faces[f];
-    const glm::dvec3 n = to_glm(world_face_normal(face));
-    const glm::dvec3 ax[4] = {n, to_glm(bump[f][0]), to_glm(bump[f][1]), to_glm(bump[f][2])};
     LuxelGrid &g = (*grids)[f];
     std::vector<long> traced_rows(static_cast<size_t>(g.h), 0);
     parallel_rows(g.h, set.threads, [&](int j) {
       long traced = 0;
       for (int i = 0; i < g.w; ++i) {
-        const glm::dvec3 p =
-            to_glm(world_face_sample(face, static_cast<double>(i) / (g.w - 1), static_cast<double>(j) / (g.h - 1))) +
-            n * 1e-4;
+        const LuxelFrame lf = world_luxel_frame(face, bump[f].data(), i, j, g.w, g.h);
+        if (!lf.lit) continue;  // a chart's luxel no triangle touches
+        const glm::dvec3 n = to_glm(lf.n), p = to_glm(lf.p) + n * 1e-4;
+        const glm::dvec3 ax[4] = {n, to_glm(lf.bump[0]), to_glm(lf.bump[1]), to_glm(lf.bump[2])};
         glm::dvec3 sum[4] = {glm::dvec3(0.0), glm::dvec3(0.0), glm::dvec3(0.0), glm::dvec3(0.0)};
         for (size_t e : emitters) {
           if (e == f) continue;  // a face does not light itself (a plane sees none of itself)

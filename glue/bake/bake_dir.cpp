@@ -30,7 +30,7 @@ const long kManifestMaxBytes = 64l << 20;  // bounded: a face is ~300 bytes of m
 
 // Every input the bake reads goes into the hash: a field added to these structs must be hashed
 // below (and its size here updated), else a stale bake would pass for a current one.
-static_assert(sizeof(WorldFace) == 184, "WorldFace changed: hash the new field in bake_input_hash");
+static_assert(sizeof(WorldFace) == 200, "WorldFace changed: hash the new field in bake_input_hash");
 static_assert(sizeof(rnm_light) == 160, "rnm_light changed: hash the new field in bake_input_hash");
 // (BounceSettings::emission_sampled is set by bake_world from area_samples, which is hashed.)
 static_assert(sizeof(BounceSettings) == 40, "BounceSettings changed: hash the new field in bake_input_hash");
@@ -79,6 +79,8 @@ BakeHash bake_input_hash(const WorldBakeInput &in) {
     g.value(f.su);
     g.value(f.sv);
     vec(g, f.normal);
+    g.value(f.chart != nullptr);  // a TEXCOORD_1 chart (glue/bake/charts.h): what it bakes from
+    if (f.chart) chart_hash(&g, *f.chart);
     p.value(f.probe);
     vec(m, f.reflectivity);
     vec(m, f.emission);
@@ -215,7 +217,7 @@ bool write_bake_dir(const std::string &dir, const std::string &scene_name, const
   if (!w.begin(dir, kManifest, "bake directory", err)) return false;
   ImageF img;
   img.w = sum.page_w;
-  img.h = sum.page_h;
+  img.h = static_cast<int>(page.size() / 4 / static_cast<size_t>(sum.page_w));  // the pages stacked
   img.rgba = page;
   if (!write_exr(w.path(kPage), img, err)) return false;
   json m;
@@ -228,6 +230,7 @@ bool write_bake_dir(const std::string &dir, const std::string &scene_name, const
   m["page"] = {{"file", kPage},
                {"width", sum.page_w},
                {"height", sum.page_h},
+               {"pages", img.h / sum.page_h},
                {"texels", "RGBA float32, row 0 at the bottom; flat, b0, b1, b2 blocks per face (docs/baking.md)"}};
   m["settings"] =
       settings_json(sum.luxels_per_unit, sum.page_w, sum.page_h, sum.supersample, sum.bounce, sum.cube_size);
@@ -381,8 +384,8 @@ bool read_bake_dir(const std::string &dir, const WorldBakeInput &in, std::vector
   ImageF img;
   const std::string pf = dir + "/" + kPage;
   if (!read_exr(pf, &img, err)) return false;
-  if (img.w != page_w || img.h != page_h) {
-    *err = pf + ": " + std::to_string(img.w) + " x " + std::to_string(img.h) + " texels, the manifest says " +
+  if (img.w != page_w || img.h < page_h || img.h % page_h != 0) {  // pages of page_h rows, stacked
+    *err = pf + ": " + std::to_string(img.w) + " x " + std::to_string(img.h) + " texels, the manifest says pages of " +
         std::to_string(page_w) + " x " + std::to_string(page_h);
     return false;
   }

@@ -76,7 +76,8 @@ bool bounce_light(const std::vector<WorldFace> &faces, const std::vector<std::ar
       for (int i = 0; i < g.w; ++i) {
         const glm::dvec3 e = to_glm(g.at(i, j, 0));
         total += e.x + e.y + e.z;
-        const glm::dvec3 le = set.emission_sampled ? glm::dvec3(0.0) : to_glm(faces[f].emission);
+        // A TEXCOORD_1 chart is no area light (glue/bake/area_lights.h): the bounces send its emission.
+        const glm::dvec3 le = set.emission_sampled && !faces[f].chart ? glm::dvec3(0.0) : to_glm(faces[f].emission);
         send[f][static_cast<size_t>(j) * g.w + i] = to_ts(le + to_glm(faces[f].reflectivity) * e);
       }
   }
@@ -100,7 +101,6 @@ bool bounce_light(const std::vector<WorldFace> &faces, const std::vector<std::ar
     double pass_max = 0, pass_sum = 0;
     for (size_t f = 0; f < faces.size(); ++f) {
       const WorldFace &face = faces[f];
-      const glm::dvec3 n = to_glm(world_face_normal(face));
       LuxelGrid &a = added[f];
       if (face.reflectivity.x == 0 && face.reflectivity.y == 0 && face.reflectivity.z == 0) {
         // A black face shows base x lightmap = 0 whatever it gathers, and reflects nothing: no rays.
@@ -115,9 +115,9 @@ bool bounce_light(const std::vector<WorldFace> &faces, const std::vector<std::ar
         for (int i = 0; i < a.w; ++i) {
           Rng rng{(static_cast<uint64_t>(pass) << 48) ^ (static_cast<uint64_t>(f) << 32) ^
                   (static_cast<uint64_t>(j) << 16) ^ static_cast<uint64_t>(i) ^ (set.seed * 0xD1B54A32D192ED03ull)};
-          const glm::dvec3 p =
-              to_glm(world_face_sample(face, static_cast<double>(i) / (a.w - 1), static_cast<double>(j) / (a.h - 1))) +
-              n * 1e-4;
+          const LuxelFrame lf = world_luxel_frame(face, bump[f].data(), i, j, a.w, a.h);
+          if (!lf.lit) continue;  // a chart's luxel no triangle touches: nothing to gather
+          const glm::dvec3 n = to_glm(lf.n), p = to_glm(lf.p) + n * 1e-4;
           // Value k: (1/pi) of the integral of L (a_k . w)+ over the face's front, a_0 = n, a_k = b_k: the
           // mean of L over directions drawn with the cosine lobe of a_k (Malley: a stratified disc
           // sample lifted to the hemisphere), a direction behind the face counting as 0. Each lobe
@@ -126,7 +126,7 @@ bool bounce_light(const std::vector<WorldFace> &faces, const std::vector<std::ar
           // A face the shader reads flat (no normal map) gathers its flat value only; its bumped
           // values keep the direct light (nothing samples them).
           for (int k = 0; k < (face.bumped ? 4 : 1); ++k) {
-            const glm::dvec3 ax = k == 0 ? n : to_glm(bump[f][k - 1]);
+            const glm::dvec3 ax = k == 0 ? n : to_glm(lf.bump[k - 1]);
             const glm::dvec3 side = std::fabs(ax.x) < 0.9 ? glm::dvec3(1, 0, 0) : glm::dvec3(0, 1, 0);
             const glm::dvec3 au = glm::normalize(glm::cross(side, ax)), av = glm::cross(ax, au);
             for (int s = 0; s < m; ++s) {
@@ -138,10 +138,9 @@ bool bounce_light(const std::vector<WorldFace> &faces, const std::vector<std::ar
               const RayScene::Hit h = rays.intersect(p, d, 0.0, INFINITY);
               if (h.id < 0 || h.id >= static_cast<int>(faces.size())) continue;  // other geometry, or nothing
               const WorldFace &hf = faces[static_cast<size_t>(h.id)];
-              if (glm::dot(to_glm(world_face_normal(hf)), d) >= 0) continue;  // a face's back sends nothing
-              const glm::dvec3 q = p + d * h.t - to_glm(hf.origin);
-              sum[k] += to_glm(lookup(send[static_cast<size_t>(h.id)], (*grids)[static_cast<size_t>(h.id)],
-                                      glm::dot(q, to_glm(hf.u)) / hf.su, glm::dot(q, to_glm(hf.v)) / hf.sv));
+              double ha, hb;
+              if (!world_face_hit(hf, p + d * h.t, h, d, &ha, &hb)) continue;  // a face's back sends nothing
+              sum[k] += to_glm(lookup(send[static_cast<size_t>(h.id)], (*grids)[static_cast<size_t>(h.id)], ha, hb));
             }
           }
           for (int k = 0; k < 4; ++k) a.at(i, j, k) = to_ts(sum[k] / static_cast<double>(m));

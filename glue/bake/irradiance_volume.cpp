@@ -120,13 +120,12 @@ double volume_sample_cube(const glm::dvec3 &p, const std::vector<WorldFace> &fac
       }
     } else {
       const WorldFace &f = faces[static_cast<size_t>(hit.id)];
-      if (glm::dot(to_glm(world_face_normal(f)), d) >= 0) {
+      double ha, hb;
+      if (!world_face_hit(f, p + d * hit.t, hit, d, &ha, &hb)) {
         ++back;  // the face's back: the sample is behind a wall or inside a solid
       } else {
         // The face's radiosity where the ray lands (fact sheet section 3: reflectivity applied).
-        const glm::dvec3 q = p + d * hit.t - to_glm(f.origin);
-        rad = to_glm(luxel_exitant(f, grids[static_cast<size_t>(hit.id)], glm::dot(q, to_glm(f.u)) / f.su,
-                                   glm::dot(q, to_glm(f.v)) / f.sv));
+        rad = to_glm(luxel_exitant(f, grids[static_cast<size_t>(hit.id)], ha, hb));
       }
     }
     const double dd[3] = {d.x, d.y, d.z}, rgb[3] = {rad.x, rad.y, rad.z};

@@ -45,20 +45,19 @@ bool sky_light(const std::vector<WorldFace> &faces, const std::vector<std::array
   const int m = side * side;
   for (size_t f = 0; f < faces.size(); ++f) {
     const WorldFace &face = faces[f];
-    const glm::dvec3 n = to_glm(world_face_normal(face));
     LuxelGrid &g = (*grids)[f];
     std::vector<long> traced_rows(static_cast<size_t>(g.h), 0);
     parallel_rows(g.h, threads, [&](int j) {
       long traced = 0;
       for (int i = 0; i < g.w; ++i) {
         LuxelRng rng = LuxelRng::of(0x536B79 /* "Sky" */, f, static_cast<uint64_t>(j), static_cast<uint64_t>(i), 0, seed);
-        const glm::dvec3 p =
-            to_glm(world_face_sample(face, static_cast<double>(i) / (g.w - 1), static_cast<double>(j) / (g.h - 1))) +
-            n * 1e-4;
+        const LuxelFrame lf = world_luxel_frame(face, bump[f].data(), i, j, g.w, g.h);
+        if (!lf.lit) continue;  // a chart's luxel no triangle touches
+        const glm::dvec3 n = to_glm(lf.n), p = to_glm(lf.p) + n * 1e-4;
         // Value k = (1/pi) integral of L_sky (a_k . w)+ over the directions of the face's front that
         // leave the scene (docs/baking.md): the mean of L over the cosine lobe of a_k, as bounce.cpp.
         for (int k = 0; k < (face.bumped ? 4 : 1); ++k) {
-          const glm::dvec3 ax = k == 0 ? n : to_glm(bump[f][static_cast<size_t>(k - 1)]);
+          const glm::dvec3 ax = k == 0 ? n : to_glm(lf.bump[static_cast<size_t>(k - 1)]);
           glm::dvec3 au, av, sum(0.0);
           frame_of(ax, &au, &av);
           for (int s = 0; s < m; ++s) {

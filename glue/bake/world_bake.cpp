@@ -6,6 +6,8 @@
 #include <array>
 #include <chrono>
 #include <cmath>
+#include <cstdlib>
+#include <cstring>
 
 #include "bake/bounce.h"
 #include "bake/glm_ts.h"
@@ -82,6 +84,13 @@ int lit_values(const WorldBakeInput &s, const glm::dvec3 &p, ts_vec3d n, const t
 bool face_rays(const std::vector<WorldFace> &faces, RayScene *r, std::string *err) {
   for (size_t i = 0; i < faces.size(); ++i) {
     const WorldFace &f = faces[i];
+    if (f.chart) {  // a TEXCOORD_1 chart: its triangles, in order (hits name them: chart_hit_ab)
+      std::vector<float> p(f.chart->pos.begin(), f.chart->pos.end());
+      std::vector<uint32_t> idx(p.size() / 3);
+      for (size_t k = 0; k < idx.size(); ++k) idx[k] = static_cast<uint32_t>(k);
+      if (!r->add_mesh(p, idx, static_cast<int>(i), f.name, err)) return false;
+      continue;
+    }
     const glm::dvec3 o = to_glm(f.origin), u = to_glm(f.u) * f.su, v = to_glm(f.v) * f.sv;
     std::vector<float> p;
     for (const glm::dvec3 &q : {o, o + u, o + u + v, o + v})
@@ -108,16 +117,25 @@ bool bake_world(const WorldBakeInput &in, WorldBake *out, std::string *err) {
     s.rays = &own;
   }
   std::vector<lm_face_size> sizes;
-  for (const WorldFace &f : s.faces)
-    sizes.push_back({luxels(f.su, s.luxels_per_unit), luxels(f.sv, s.luxels_per_unit), 1});
+  for (const WorldFace &f : s.faces)  // a chart's block is its own (glue/bake/charts.h)
+    sizes.push_back(f.chart ? lm_face_size{f.chart->w, f.chart->h, 1}
+                            : lm_face_size{luxels(f.su, s.luxels_per_unit), luxels(f.sv, s.luxels_per_unit), 1});
   out->place.resize(s.faces.size());
   char msg[256];
-  if (lm_page_pack(s.page_w, s.page_h, sizes.data(), static_cast<int>(sizes.size()), out->place.data(), msg,
-                   sizeof msg) != 0) {
+  if (lm_page_pack_pages(s.page_w, s.page_h, kMaxLightmapPages, sizes.data(), static_cast<int>(sizes.size()),
+                         out->place.data(), &out->pages, msg, sizeof msg) != 0) {
     *err = msg;
+    const char *face = std::strstr(msg, "face ");
+    if (face) {  // name the primitive
+      const long fi = std::strtol(face + 5, nullptr, 10);
+      if (fi >= 0 && fi < static_cast<long>(s.faces.size())) {
+        const WorldFace &f = s.faces[static_cast<size_t>(fi)];  // a chart names its primitive too
+        *err = std::string(f.name) + (f.chart ? " (" + f.chart->where + ")" : std::string()) + ": " + msg;
+      }
+    }
     return false;
   }
-  out->page.assign(static_cast<size_t>(s.page_w) * s.page_h * 4, 0.f);
+  out->page.assign(static_cast<size_t>(s.page_w) * s.page_h * out->pages * 4, 0.f);
   for (size_t i = 0; i < out->page.size(); i += 4) out->page[i + 3] = 1.f;
   // Each face's bump basis and its luxel grid, the direct light first.
   std::vector<std::array<ts_vec3d, 3>> bump(s.faces.size());
@@ -181,21 +199,47 @@ bool bake_world(const WorldBakeInput &in, WorldBake *out, std::string *err) {
       for (int i = 0; i < g.w && row_err[static_cast<size_t>(j)].empty(); ++i) {
         // The luxel's footprint is one luxel spacing wide, centred on its grid point; ss x ss samples.
         glm::dvec3 v4[4] = {glm::dvec3(0.0), glm::dvec3(0.0), glm::dvec3(0.0), glm::dvec3(0.0)};
+        if (f.chart && !f.chart->at(i, j).lit) continue;  // no triangle touches it: dilation fills it
+        int taken = 0;
         for (int sj = 0; sj < ss; ++sj)
           for (int si = 0; si < ss; ++si) {
-            const double a = std::clamp((i + (si + 0.5) / ss - 0.5) / (g.w - 1), 0.0, 1.0);
-            const double b = std::clamp((j + (sj + 0.5) / ss - 0.5) / (g.h - 1), 0.0, 1.0);
             ts_vec3d s4[4];
             LuxelRng rng = LuxelRng::of(0x53756E /* "Sun" */, fi, static_cast<uint64_t>(j), static_cast<uint64_t>(i),
                                         static_cast<uint64_t>(sj * ss + si), s.bounce.seed);
-            if (lit_values(s, to_glm(world_face_sample(f, a, b)), n, bump[fi].data(), s4, &scratch, &rng,
-                           &row_rays[static_cast<size_t>(j)], rmsg, sizeof rmsg) != 0) {
+            LuxelFrame lf;
+            if (f.chart) {
+              // A chart's sample: the point of the luxel's square, on the triangle holding it; a
+              // sample no triangle holds is skipped (the luxel's own frame when none is held).
+              if (!chart_frame_at(*f.chart, (i + (si + 0.5) / ss) / g.w, (j + (sj + 0.5) / ss) / g.h, &lf)) continue;
+            } else {
+              const double a = std::clamp((i + (si + 0.5) / ss - 0.5) / (g.w - 1), 0.0, 1.0);
+              const double b = std::clamp((j + (sj + 0.5) / ss - 0.5) / (g.h - 1), 0.0, 1.0);
+              lf.p = world_face_sample(f, a, b);
+              lf.n = n;
+              for (int k = 0; k < 3; ++k) lf.bump[k] = bump[fi][static_cast<size_t>(k)];
+            }
+            if (lit_values(s, to_glm(lf.p), lf.n, lf.bump, s4, &scratch, &rng, &row_rays[static_cast<size_t>(j)],
+                           rmsg, sizeof rmsg) != 0) {
               row_err[static_cast<size_t>(j)] = std::string(f.name) + ": " + rmsg;
               return;
             }
             for (int k = 0; k < 4; ++k) v4[k] += to_glm(s4[k]);
+            ++taken;
           }
-        for (int k = 0; k < 4; ++k) g.at(i, j, k) = to_ts(v4[k] / static_cast<double>(ss * ss));
+        if (taken == 0) {  // a luxel a triangle only grazes: its frame (the nearest point)
+          const LuxelFrame &lf = f.chart->at(i, j);
+          ts_vec3d s4[4];
+          LuxelRng rng = LuxelRng::of(0x53756E /* "Sun" */, fi, static_cast<uint64_t>(j), static_cast<uint64_t>(i),
+                                      static_cast<uint64_t>(ss * ss), s.bounce.seed);
+          if (lit_values(s, to_glm(lf.p), lf.n, lf.bump, s4, &scratch, &rng, &row_rays[static_cast<size_t>(j)], rmsg,
+                         sizeof rmsg) != 0) {
+            row_err[static_cast<size_t>(j)] = std::string(f.name) + ": " + rmsg;
+            return;
+          }
+          for (int k = 0; k < 4; ++k) v4[k] = to_glm(s4[k]);
+          taken = 1;
+        }
+        for (int k = 0; k < 4; ++k) g.at(i, j, k) = to_ts(v4[k] / static_cast<double>(taken));
       }
     });
     for (int j = 0; j < g.h; ++j) {
@@ -251,7 +295,17 @@ bool bake_world(const WorldBakeInput &in, WorldBake *out, std::string *err) {
             t[1] = static_cast<float>(v.y);
             t[2] = static_cast<float>(v.z);
           }
-      lm_page_fill_borders(&out->place[fi], s.page_w, out->page.data());
+      if (!s.faces[fi].chart) {
+        lm_page_fill_borders(&out->place[fi], s.page_w, out->page.data());
+        continue;
+      }
+      // A chart's blocks: their unlit texels and borders dilated from the lit ones (glue/bake/charts.h).
+      std::vector<int> lit(s.faces[fi].chart->luxel_tri.size());
+      for (size_t k = 0; k < lit.size(); ++k) lit[k] = s.faces[fi].chart->luxel_tri[k] >= 0;
+      const lm_face_place &pl = out->place[fi];
+      for (int k = 0; k < pl.count; ++k)
+        chart_dilate(out->page.data(), s.page_w, pl.x + k * pl.block_w + 1, pl.y + 1, g.w, g.h, lit, kChartDilateRings,
+                     nullptr);
     }
   }
   // The grids as the page holds them (float32, whether baked or read): the probes see what the
@@ -296,9 +350,9 @@ bool bake_world(const WorldBakeInput &in, WorldBake *out, std::string *err) {
           if (hit.id >= 0 && hit.id < static_cast<int>(s.faces.size())) {
             // A face: the radiance it leaves there (emission + reflectivity x its lightmap).
             const WorldFace &f = s.faces[static_cast<size_t>(hit.id)];
-            const glm::dvec3 q = to_glm(pos) + d * t - to_glm(f.origin);
-            rad = to_glm(luxel_exitant(f, grids[static_cast<size_t>(hit.id)], glm::dot(q, to_glm(f.u)) / f.su,
-                                       glm::dot(q, to_glm(f.v)) / f.sv));
+            double ha, hb;
+            world_face_hit(f, to_glm(pos) + d * t, hit, -to_glm(world_face_normal(f)), &ha, &hb);
+            rad = to_glm(luxel_exitant(f, grids[static_cast<size_t>(hit.id)], ha, hb));
           } else if (hit.id >= 0) {  // other geometry: its flat irradiance (with shadows) x a mean albedo
             const glm::dvec3 n = glm::dot(hit.normal, d) > 0 ? -hit.normal : hit.normal;
             const glm::dvec3 side = std::fabs(n.x) < 0.9 ? glm::dvec3(1, 0, 0) : glm::dvec3(0, 1, 0);
@@ -334,10 +388,11 @@ bool bake_world(const WorldBakeInput &in, WorldBake *out, std::string *err) {
   return true;
 }
 
-TextureDesc encode_page(const WorldBakeInput &s, const WorldBake &b, int encoding) {
+TextureDesc encode_page(const WorldBakeInput &s, const WorldBake &b, int encoding, int page) {
   TextureDesc t = blank_texture("u_lightmap", s.page_w, s.page_h, encoding != WL_LM_RGBE, false);
-  for (size_t i = 0; i < b.page.size(); i += 4) {
-    const float *in = &b.page[i];
+  const size_t first = static_cast<size_t>(page) * s.page_w * s.page_h * 4;
+  for (size_t i = 0; i < t.rgba.size(); i += 4) {
+    const float *in = &b.page[first + i];
     float *o = &t.rgba[i];
     o[3] = 1.f;
     if (encoding == WL_LM_RGBE) {

@@ -50,11 +50,16 @@ struct WorldBakeInput {
   int spread_samples = 30;
 };
 
-// The baked lighting: the page in float32 (flat, b0, b1, b2 per face, borders filled),
+// The pages a bake may fill (page_w x page_h each; c_ref/offline/lightmap_page.h stacks them):
+// the faces go on the next page when one is full, each page its own texture at run time.
+const int kMaxLightmapPages = 16;
+
+// The baked lighting: the pages in float32 (flat, b0, b1, b2 per face, borders filled or dilated),
 // the faces' places in it, each face's probe and the probes' cube maps (linear radiance).
 struct WorldBake {
   std::vector<lm_face_place> place;
-  std::vector<float> page;  // page_w x page_h RGBA32F, alpha 1
+  std::vector<float> page;  // page_w x (pages x page_h) RGBA32F, alpha 1: the pages stacked
+  int pages = 1;
   std::vector<int> face_probe;
   std::vector<TextureDesc> cubes;  // "u_envmap", LINEAR (a frame for GLES switches them to NEAREST)
   BounceReport bounce;  // what the interreflection passes did
@@ -74,6 +79,6 @@ bool bake_world(const WorldBakeInput &s, WorldBake *out, std::string *err);
 // fp16 ("stored in RGBE ... at run time stored in a 16-bit per channel format", fact sheet
 // section 2), for LIGHTMAP_ENCODING 0 (the float path), LINEAR: what the scene encoding "rgbe" runs.
 const int kPageRgbeToHalf = -2;
-TextureDesc encode_page(const WorldBakeInput &s, const WorldBake &b, int encoding);
+TextureDesc encode_page(const WorldBakeInput &s, const WorldBake &b, int encoding, int page = 0);  // one page
 // The value a texel of that encoding decodes to (double), for error measurements.
 void decode_texel(int encoding, const float texel[4], double rgb[3]);

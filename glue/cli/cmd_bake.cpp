@@ -5,6 +5,7 @@
 // against baking everything (docs/baking.md).
 #include <cstdio>
 #include <filesystem>
+#include <algorithm>
 #include <string>
 #include <vector>
 
@@ -207,7 +208,9 @@ int cmd_bake(int argc, char **argv) {
     printf("bounce %zu: %ld gather rays, %.1f ms%s\n", k + 1, sum.report.pass_rays[k],
            k < sum.report.pass_ms.size() ? sum.report.pass_ms[k] : 0.0,
            static_cast<int>(k) + 1 <= sum.resumed_after ? " (from the checkpoint)" : "");
-  printf("wrote %s: %d x %d lightmap page%s, %.1f ms to bake\n", out.c_str(), ps.lightmap_w, ps.lightmap_h,
+  printf("wrote %s: %d x %d lightmap page%s%s, %.1f ms to bake\n", out.c_str(), ps.lightmap_w,
+         ps.lightmap_h / std::max(1, ps.lightmap_pages),
+         ps.lightmap_pages > 1 ? (" x " + std::to_string(ps.lightmap_pages) + " (stacked)").c_str() : "",
          page_only ? "" : " and manifest.json", ps.bake_ms);
   return 0;
 }

@@ -84,6 +84,22 @@ int cmd_light(int argc, char **argv) {
   double best_d = 0, best_a = 0, best_b = 0;
   for (size_t i = 0; i < sum.faces.size(); ++i) {
     const WorldFace &f = sum.faces[i].face;
+    if (f.chart) {  // a TEXCOORD_1 chart (glue/bake/charts.h): its nearest lit luxel's point
+      for (int j = 0; j < f.chart->h; ++j)
+        for (int k = 0; k < f.chart->w; ++k) {
+          const LuxelFrame &lf = f.chart->at(k, j);
+          if (!lf.lit || (want_normal && !(dot3(nrm, lf.n) > 0.5))) continue;
+          const double d = std::sqrt((at[0] - lf.p.x) * (at[0] - lf.p.x) + (at[1] - lf.p.y) * (at[1] - lf.p.y) +
+                                     (at[2] - lf.p.z) * (at[2] - lf.p.z));
+          if (best < 0 || d < best_d) {
+            best = static_cast<int>(i);
+            best_d = d;
+            best_a = static_cast<double>(k) / (f.chart->w - 1);
+            best_b = static_cast<double>(j) / (f.chart->h - 1);
+          }
+        }
+      continue;
+    }
     const ts_vec3d n = world_face_normal(f);
     if (want_normal && !(dot3(nrm, n) > 0.5)) continue;  // within 60 degrees
     const double q[3] = {at[0] - f.origin.x, at[1] - f.origin.y, at[2] - f.origin.z};

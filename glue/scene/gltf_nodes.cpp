@@ -201,7 +201,7 @@ bool convert_primitive(Walk &w, int mesh, int pi, const glm::dmat4 &world, int i
   const int F = TINYGLTF_COMPONENT_TYPE_FLOAT, UB = TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE,
             US = TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT, UI = TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT;
   if (attr("POSITION") < 0) return w.e.fail(place + ".attributes", "no POSITION");
-  std::vector<double> pos, nrm, uv, tan, idx;
+  std::vector<double> pos, nrm, uv, uv1, tan, idx;
   size_t nv = 0, n2 = 0;
   if (!read_accessor(w.m, attr("POSITION"), place + ".attributes.POSITION", {TINYGLTF_TYPE_VEC3, {F}, false}, &pos, &nv,
                      w.e))
@@ -213,6 +213,7 @@ bool convert_primitive(Walk &w, int mesh, int pi, const glm::dmat4 &world, int i
     std::vector<double> *out;
   } opts[] = {{"NORMAL", {TINYGLTF_TYPE_VEC3, {F}, false}, &nrm},
               {"TEXCOORD_0", {TINYGLTF_TYPE_VEC2, {F, UB, US}, true}, &uv},
+              {"TEXCOORD_1", {TINYGLTF_TYPE_VEC2, {F, UB, US}, true}, &uv1},  // lightmap UVs (glue/bake/charts.h)
               {"TANGENT", {TINYGLTF_TYPE_VEC4, {F}, false}, &tan}};
   for (const Opt &o : opts) {
     if (attr(o.name) < 0) continue;
@@ -275,6 +276,7 @@ bool convert_primitive(Walk &w, int mesh, int pi, const glm::dmat4 &world, int i
   out.normal.resize(n * 3);
   out.uv.assign(n * 2, 0.f);
   if (!tan.empty()) out.tangent.resize(n * 4);
+  if (!uv1.empty()) out.uv1.resize(n * 2);
   for (size_t i = 0; i < n; ++i) {
     const size_t v = src[i];
     glm::dvec3 q = glm::dvec3(world * glm::dvec4(pos[v * 3], pos[v * 3 + 1], pos[v * 3 + 2], 1.0));
@@ -289,6 +291,8 @@ bool convert_primitive(Walk &w, int mesh, int pi, const glm::dmat4 &world, int i
     }
     if (!uv.empty())
       out.uv[i * 2] = static_cast<float>(uv[v * 2]), out.uv[i * 2 + 1] = static_cast<float>(uv[v * 2 + 1]);
+    if (!uv1.empty())
+      out.uv1[i * 2] = static_cast<float>(uv1[v * 2]), out.uv1[i * 2 + 1] = static_cast<float>(uv1[v * 2 + 1]);
     if (!tan.empty()) {
       q = unit_or_zero(m3 * glm::dvec3(tan[v * 4], tan[v * 4 + 1], tan[v * 4 + 2]));
       for (int k = 0; k < 3; ++k) out.tangent[i * 4 + k] = static_cast<float>(q[k]);

@@ -399,7 +399,15 @@ bool prepare_scene(const Scene &s, const SceneSelection &sel, int w, int h, Api 
     if (p.indices.size() < 3) continue;
     WorldFace f{};
     double frame_min[2];
-    if (!world_face_from_quad(p.position, p.normal, p.tangent, p.indices, m.name.c_str(), m.probe, &f, frame_min)) {
+    if (!p.uv1.empty()) {  // TEXCOORD_1: the mesh's own lightmap chart (glue/bake/charts.h)
+      if (!world_face_from_chart(p.position, p.normal, p.tangent, p.uv1, p.indices, m.name.c_str(), m.probe,
+                                 s.lightmaps.luxels_per_unit, p.where, &f, err)) {
+        *err = s.path + ": " + *err;
+        return false;
+      }
+      frame_min[0] = frame_min[1] = 0;
+    } else if (!world_face_from_quad(p.position, p.normal, p.tangent, p.indices, m.name.c_str(), m.probe, &f,
+                                     frame_min)) {
       *err = s.path + ": " + p.where + ": a world primitive whose first triangle and normal are degenerate";
       return false;
     }
@@ -459,7 +467,8 @@ bool prepare_scene(const Scene &s, const SceneSelection &sel, int w, int h, Api 
     ps.lightmap_page = bake.page;
     ps.lightmap_places = bake.place;
     ps.lightmap_w = ws.page_w;
-    ps.lightmap_h = ws.page_h;
+    ps.lightmap_h = ws.page_h * bake.pages;  // the pages stacked (c_ref/offline/lightmap_page.h)
+    ps.lightmap_pages = bake.pages;
     probes.have_world = true;
     probes.world_cubes.assign(s.probes.size(), TextureDesc());
     for (size_t i = 0; i < s.probes.size(); ++i)
@@ -476,8 +485,6 @@ bool prepare_scene(const Scene &s, const SceneSelection &sel, int w, int h, Api 
     ps.bake_sky_ms = bake.sky.ms, ps.bake_area_ms = bake.area.ms;
     if (!bake_scene_volume(s, sel, ws.faces, bake, ws.page_w, rays, &ps.volume, err)) return false;
   }
-  TextureDesc page;
-  int encoding = -1;
   for (size_t di = 0; di < sel.draws.size(); ++di) {
     const SceneDrawChoice &c = sel.draws[di];
     PreparedDraw d;
@@ -493,11 +500,7 @@ bool prepare_scene(const Scene &s, const SceneSelection &sel, int w, int h, Api 
     const SceneMaterial &m = s.materials[p.material];
     const Variant &v = *c.variant;
     const int enc = v.value("LIGHTMAP_ENCODING");
-    if (enc != encoding) {
-      page = encode_page(ws, bake,
-                         s.lightmaps.encoding == "float32" ? -1 : s.lightmaps.encoding == "rgbe" ? kPageRgbeToHalf : enc);
-      encoding = enc;
-    }
+    const int code = s.lightmaps.encoding == "float32" ? -1 : s.lightmaps.encoding == "rgbe" ? kPageRgbeToHalf : enc;
     const int fi = face_of_draw[di];
     if (fi < 0) continue;
     const WorldFace &f = ws.faces[fi];
@@ -506,7 +509,16 @@ bool prepare_scene(const Scene &s, const SceneSelection &sel, int w, int h, Api 
     const size_t n = p.position.size() / 3;
     d.lightmap.resize(n * 4);
     const glm::dvec3 t = d3(f.u), b = d3(f.v);
-    for (size_t i = 0; i < n; ++i) {
+    for (size_t i = 0; f.chart && i < n; ++i) {  // a chart: TEXCOORD_1 on its block, the bake's tangents
+      float lm[2];
+      lm_page_chart_uv(&bake.place[fi], ws.page_w, ws.page_h, p.uv1[i * 2], p.uv1[i * 2 + 1], lm);
+      d.lightmap[i * 4 + 0] = lm[0];
+      d.lightmap[i * 4 + 1] = lm[1];
+      d.lightmap[i * 4 + 2] = bake.place[fi].offset[0];
+      d.lightmap[i * 4 + 3] = bake.place[fi].offset[1];
+      for (int k = 0; k < 4; ++k) d.tangent[i * 4 + k] = f.chart->vertex_tangent[i * 4 + k];
+    }
+    for (size_t i = 0; !f.chart && i < n; ++i) {
       const glm::dvec3 q = d3f(&p.position[i * 3]);
       const double a = (glm::dot(q, t) - face_frame[fi][0]) / f.su, bb = (glm::dot(q, b) - face_frame[fi][1]) / f.sv;
       float lm[2];
@@ -552,7 +564,10 @@ bool prepare_scene(const Scene &s, const SceneSelection &sel, int w, int h, Api 
     else
       d.tex.push_back(pool.get(key_solid("u_normalmap", 0.5f, 0.5f, 1.f, 1.f),
                                [&] { return solid("u_normalmap", 0.5f, 0.5f, 1.f, 1.f); }));
-    d.tex.push_back(pool.get("u_lightmap|" + std::to_string(enc), [&] { return page; }));
+    // The face's page (one texture per page and encoding; several pages: each draw binds its own).
+    d.lightmap_page = bake.place[fi].page;
+    d.tex.push_back(pool.get("u_lightmap|" + std::to_string(enc) + "|" + std::to_string(d.lightmap_page),
+                             [&] { return encode_page(ws, bake, code, d.lightmap_page); }));
     if (v.value("ENVMAPMASK") == 1 && m.envmap_mask_texture.image >= 0)
       d.tex.push_back(pool.get(key_of("u_envmap_mask", m.envmap_mask_texture, false, nullptr), [&] {
         return image_texture(s, m.envmap_mask_texture, "u_envmap_mask", false, nullptr);

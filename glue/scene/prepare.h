@@ -22,6 +22,7 @@ struct PreparedDraw {
   bool world = false;  // world_lighting, else model_lighting
   std::vector<float> position, normal, uv, tangent;  // 3, 3, 2, 4 per vertex (tangent: 0,0,0,1 when absent)
   std::vector<float> lightmap;  // world: 4 per vertex (lightmap uv, offset to the next lightmap)
+  int lightmap_page = 0;  // world: the page its uv is on (the stacked page's rows page x page_h on)
   std::vector<uint32_t> indices;
   std::vector<ts_vec4f> shared;  // the family's full record with the shared slots set
   std::vector<int> tex;  // indices into PreparedScene::textures, in sampler order:
@@ -46,7 +47,8 @@ struct PreparedScene {
   // The world's lightmap page in float32 before its run-time encoding (baked, or the scene's
   // lightmaps.image): lightmap_w x lightmap_h RGBA, row 0 at the bottom; empty without world draws.
   std::vector<float> lightmap_page;
-  int lightmap_w = 0, lightmap_h = 0;
+  int lightmap_w = 0, lightmap_h = 0;  // lightmap_h: every page's rows (lightmap_pages pages stacked)
+  int lightmap_pages = 0;
   std::vector<lm_face_place> lightmap_places;  // each world face's blocks on the page (c_ref/offline/lightmap_page.h)
   double bake_ms = 0;
   // The bake's parts (glue/bake/world_bake.h): luxels, the direct pass and the bounces (ms), the

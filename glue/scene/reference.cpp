@@ -40,6 +40,7 @@ bool scene_reference_linear(const Scene &s, const PreparedScene &p, const std::v
     wl_variant wv;
     ts_tex2d t2[4];
     ts_texcube cube;
+    ts_tex2d page;  // world: its page of the float32 pages
     ml_textures tex;
     wl_textures wt;
   };
@@ -60,7 +61,10 @@ bool scene_reference_linear(const Scene &s, const PreparedScene &p, const std::v
       c.wv = wl_variant_of(*d.variant);
       c.wv.tier = TS_TIER_ID_SM3;
       c.wv.encoding = WL_LM_FLOAT;
-      c.wt = {&c.t2[0], &c.t2[1], &page32_view, &c.t2[3], &c.cube};
+      c.page = page32_view;  // the draw's page: its rows of the stacked pages
+      c.page.h = p.lightmap_h / std::max(1, p.lightmap_pages);
+      c.page.texels += static_cast<size_t>(d.lightmap_page) * c.page.h * p.lightmap_w * 4;
+      c.wt = {&c.t2[0], &c.t2[1], &c.page, &c.t2[3], &c.cube};
       continue;
     }
     c.v = ml_variant_of(*d.variant);

@@ -84,6 +84,7 @@ struct ScenePrimitive {
   std::vector<float> normal;  // 3 per vertex (world; the mesh's, or flat face normals if absent)
   std::vector<float> uv;  // 2 per vertex (TEXCOORD_0; zeros if absent)
   std::vector<float> tangent;  // 4 per vertex (world xyz, w handedness) or empty if absent
+  std::vector<float> uv1;  // 2 per vertex (TEXCOORD_1, the lightmap UVs) or empty if absent
   std::vector<uint32_t> indices;  // 3 per triangle
   std::string where;  // "meshes[i].primitives[j]" (node name) for messages
 };

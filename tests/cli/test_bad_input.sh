@@ -135,6 +135,21 @@ run render probe_exr.gltf --backend cpu --size 48x32 -o r_exr --quiet
 if [ "$RC" -eq 0 ] && [ -s r_exr.png ] && [ -s r_exr.exr ]; then pass exr_probe_renders; else
   fail exr_probe_renders "status $RC: $(head -n 2 "$ERR")"; fi
 
+# --- TEXCOORD_1 lightmap charts (glue/bake/charts.h): bad charts name the primitive ------------
+# The dome's lightmap UVs replaced by its TEXCOORD_0 (0..2.4: outside the unit square); its
+# triangles replaced by the cove's indices (over the dome's fan: two triangles share a wedge).
+CH="m = {x['name']: x for x in d['meshes']}; dome = m['dome']['primitives'][0]; cove = m['cove']['primitives'][0]"
+scene lightmap_charts.gltf chart_range.gltf "$CH; dome['attributes']['TEXCOORD_1'] = dome['attributes']['TEXCOORD_0']"
+bad chart_out_of_range 1 "chart_range.gltf: meshes\[4\].primitives\[0\] \(node \"dome\"\): TEXCOORD_1 of vertex 0 is \(1.200000, 1.200000\), outside \[0, 1\]" r_chr \
+  -- render chart_range.gltf --backend cpu -o r_chr
+scene lightmap_charts.gltf chart_overlap.gltf "$CH; dome['indices'] = cove['indices']"
+bad chart_overlap 1 "chart_overlap.gltf: meshes\[4\].primitives\[0\] \(node \"dome\"\): TEXCOORD_1 triangles [0-9]+ and [0-9]+ overlap at" r_cho \
+  -- render chart_overlap.gltf --backend cpu -o r_cho
+# A page the planar faces fit on (several pages if need be) but not the cove's 48 x 48 chart (50 rows).
+scene lightmap_charts.gltf chart_page.gltf "d['extras']['tiershade']['lightmaps']['page'] = [256, 40]"
+bad chart_page_full 1 "chart_page.gltf: lightmap bake: brick \(meshes\[5\].primitives\[0\] \(node \"cove\"\)\): lm_page_pack: face 5 \(48x48 luxels, 4 lightmaps\) does not fit in the 256x40 page" r_chp \
+  -- render chart_page.gltf --backend cpu -o r_chp
+
 # --- 8. unnamed errors: a broken PNG texture, a page too small for the faces -------------------
 head -c 100 "$SC/textures/brick.png" > broken.png
 scene phong_sphere.gltf bad_png.gltf "d['images'][2]['uri'] = os.path.abspath('broken.png')"

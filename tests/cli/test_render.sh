@@ -73,7 +73,7 @@ check() {  # name, args...
   fi
   pass "$name: ${line#check: }; post: ${post##*: }"
 }
-for s in model_lighting world_lighting hdr_atrium; do
+for s in model_lighting world_lighting hdr_atrium lightmap_charts lightmap_charts_pages; do
   for t in ps20 ps2b sm3; do check "$s $t egl gles3" "scenes/$s.gltf" --tier $t; done
 done
 check "model_lighting sm3 osmesa gl33" scenes/model_lighting.gltf --tier sm3 --backend osmesa

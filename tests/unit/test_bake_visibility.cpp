@@ -9,7 +9,9 @@
 //     penumbra's luxels take the share of the cone the occluder leaves; spread 0: the same bytes;
 //   - basis values: a light on the face normal gives each bumped value the flat value times the
 //     basis vector's z (1/sqrt(3)); a light behind the face gives zero everywhere;
-//   - the ray scene itself: hits and misses, the nearest hit's t and mesh id, a bad index refused.
+//   - the ray scene itself: hits and misses, the nearest hit's t and mesh id, a bad index refused;
+//   - the same floor as a TEXCOORD_1 chart (glue/bake/charts.h: 32 triangles, luxels at their
+//     centres): the point light's I cos(theta) / d^2 and shadow as on the planar floor.
 #include <cmath>
 #include <cstdio>
 #include <string>
@@ -37,6 +39,7 @@ struct Floor {
   WorldBake out;
   int w = 0, h = 0;  // luxels
   bool ok = false;
+  void (*sample)(int i, int j, int si, int sj, double *x, double *z) = nullptr;  // null: sample_xz
 };
 
 // The floor x, z in [-2, 2] at y = 0, facing +y, 8 luxels per unit (33 x 33), lit by `lights`.
@@ -103,7 +106,7 @@ void check_shadow(const Floor &f, double half, const char *label, double (*lit)(
       for (int sj = 0; sj < 2; ++sj)
         for (int si = 0; si < 2; ++si) {
           double x, z;
-          sample_xz(i, j, si, sj, &x, &z);
+          (f.sample ? f.sample : sample_xz)(i, j, si, sj, &x, &z);
           const double m = std::max(std::fabs(x), std::fabs(z)) - half;
           if (m < -margin) ++n_in;
           if (m > margin) {
@@ -139,6 +142,55 @@ double point_lit(double x, double z) {
   return 10.0 * (dy / std::sqrt(d2)) / d2;  // I cos(theta) / d^2, I = 10
 }
 double sun_lit(double, double) { return 3.0; }
+
+// The floor as a TEXCOORD_1 chart: a 4 x 4 grid of quads (32 triangles) over x, z in [-2, 2], u =
+// (x + 2) / 4, v = (2 - z) / 4: a 4-unit square at 8 luxels per unit, 32 x 32 luxels, luxel i
+// spanning u in [i, i + 1) / 32, its 2 x 2 samples at (i + (si + 0.5) / 2) / 32.
+void chart_sample_xz(int i, int j, int si, int sj, double *x, double *z) {
+  *x = -2 + 4 * (i + (si + 0.5) / 2) / 32;
+  *z = 2 - 4 * (j + (sj + 0.5) / 2) / 32;
+}
+
+void chart_shadows() {
+  std::vector<float> pos, nrm, uv1;
+  std::vector<uint32_t> idx;
+  for (int r = 0; r <= 4; ++r)
+    for (int c = 0; c <= 4; ++c) {
+      const float x = -2.f + c, z = 2.f - r;
+      pos.insert(pos.end(), {x, 0.f, z});
+      nrm.insert(nrm.end(), {0.f, 1.f, 0.f});
+      uv1.insert(uv1.end(), {c / 4.f, r / 4.f});
+    }
+  for (uint32_t r = 0; r < 4; ++r)
+    for (uint32_t c = 0; c < 4; ++c) {
+      const uint32_t a = r * 5 + c;
+      idx.insert(idx.end(), {a, a + 1, a + 6, a, a + 6, a + 5});
+    }
+  RayScene rays;
+  std::string err;
+  if (!rays.add_mesh(pos, idx, 0, "chart floor", &err)) return check(false, "add the chart floor", err);
+  add_quad(&rays, kOccY, kOcc, 1, "occluder");
+  if (!rays.commit(&err)) return check(false, "commit", err);
+  Floor cf;
+  WorldFace face{};
+  if (!world_face_from_chart(pos, nrm, {}, uv1, idx, "chart floor", -1, 8, "chart floor", &face, &err))
+    return check(false, "chart the floor", err);
+  check(face.chart->w == 32 && face.chart->h == 32, "the chart floor has 32 x 32 luxels (4 units at 8 per unit)",
+        std::to_string(face.chart->w) + " x " + std::to_string(face.chart->h));
+  cf.in.faces = {face};
+  cf.in.lights = {point_light(0, 4, 0, 10)};
+  cf.in.probes = {ts_v3d(0, 1, 0)};
+  cf.in.luxels_per_unit = 8;
+  cf.in.page_w = 256;
+  cf.in.page_h = 64;
+  cf.in.cube_size = 4;
+  cf.in.rays = &rays;
+  cf.ok = bake_world(cf.in, &cf.out, &err);
+  if (!cf.ok) return check(false, "bake the chart floor", err);
+  cf.w = cf.h = 32;
+  cf.sample = chart_sample_xz;
+  check_shadow(cf, kOcc * 4.0 / (4.0 - kOccY), "TEXCOORD_1 chart, point light at height 4", point_lit);
+}
 
 void shadows() {
   RayScene rays;
@@ -290,7 +342,7 @@ void ray_scene() {
 
 int main() {
   ts_math_init();
-  for (void (*test)() : {ray_scene, shadows, soft_shadow, basis_values}) test();
+  for (void (*test)() : {ray_scene, shadows, soft_shadow, basis_values, chart_shadows}) test();
   printf("%d passed, %d failed\n", g_passed, g_failed);
   return g_failed ? 1 : 0;
 }
