@@ -104,6 +104,7 @@ run demo demo_check build/tiershade
 
 echo "== under AddressSanitizer + UndefinedBehaviorSanitizer"
 export ASAN_OPTIONS=detect_leaks=0:abort_on_error=1 UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1
+export TIERSHADE_TEST_SANITIZED=1  # test_bundle.sh: fewer copies of the same instanced scene
 unit_tests build/san san_
 for s in tests/cli/test_*.sh; do run "san_$(basename "$s" .sh)" bash "$s" build/san/tiershade; done
 run san_conform as_checks build/san/tiershade conform --verbose --size 16
