@@ -9,6 +9,7 @@
 #include <sstream>
 
 #include "bake/ambient_fit.h"
+#include "bench/ambient_volume.h"
 #include "base/stats.h"
 #include "demo/scene_files.h"
 #include "families/family.h"
@@ -140,7 +141,7 @@ bool run(const BenchOptions &opt, std::string *md, std::string *err) {
     << "at every texel\ncentre (docs/irradiance_volume.md): RMS over the lat-long pixels (Probulator's metric) and "
     << "solid-angle weighted; ms per fit: median\nof the runs (lsq-pixels: one run, it computes the exact irradiance "
     << "first).\n\n";
-  if (!probe_rows(opt, o, err) || !volume_rows(o, err)) return false;
+  if (!probe_rows(opt, o, err) || !volume_rows(o, err) || !ambient_volume_rows(o, err)) return false;
   *md = o.str();
   return true;
 }
