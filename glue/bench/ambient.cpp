@@ -55,7 +55,7 @@ bool probe_rows(const BenchOptions &opt, std::ostringstream &o, std::string *err
 }
 
 // The room with a small model (a copy of its first primitive at 5 % scale) at `at`: a scene with world
-// faces and a model, which no shipped scene is yet.
+// faces, a sky, bounces and a model (large_hall_40, below, has world and models but no sky or bounces).
 Scene room_with_model(const Scene &room, const double at[3]) {
   Scene s = room;
   SceneMaterial mm;
@@ -109,8 +109,8 @@ bool volume_rows(std::ostringstream &o, std::string *err) {
   const Scene s = room_with_model(room, at);
   PreparedScene ref;
   if (!volume_of(s, 0.25, &ref, err)) return false;
-  o << "\nThe irradiance volume of `" << kWorldLightingGltf << "` with a small model added (no shipped scene has both "
-    << "world faces and models yet),\nbaked at each density over the world faces' box (162 rays per sample, lsq fit; "
+  o << "\nThe irradiance volume of `" << kWorldLightingGltf << "` with a small model added (the room has the sky and "
+    << "the bounces that large_hall_40 below lacks),\nbaked at each density over the world faces' box (162 rays per sample, lsq fit; "
     << "docs/irradiance_volume.md). **walk RMS**: the model's cube\nalong 64 points of a diagonal walk at 1 m height "
     << "against the volume four times as dense as Source's (" << ref.volume.cube.size() << " samples), trilinear.\n\n"
     << "| density | spacing (m) | samples | valid | rays | bake ms | memory KiB | walk RMS trilinear | walk RMS inverse-square |\n"

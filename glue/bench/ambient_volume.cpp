@@ -26,7 +26,7 @@ double ms_since(Clock::time_point t0) { return std::chrono::duration<double, std
 
 const char kScene[] = "scenes/large_hall_40.gltf";
 const int kW = 320, kH = 180;  // the frame (the scene's camera)
-const int kStrata = 24;  // 24 x 24 = 576 cosine-weighted rays per model pixel
+const int kStrata = 48;  // 48 x 48 = 2304 cosine-weighted rays per model pixel
 
 // A shaded point of a model: its draw, position, unit normal, and the exact E / pi there.
 struct ModelPixel {
