@@ -105,7 +105,15 @@ glm::dvec3 volume_ray_radiance(const glm::dvec3 &p, const glm::dvec3 &d, const s
                                const std::vector<LuxelGrid> &grids, const RayScene &rays, const VolumeSettings &set,
                                bool *back) {
   if (back) *back = false;
-  const RayScene::Hit hit = rays.intersect(p, d, 1e-5, INFINITY);
+  glm::dvec3 o = p;
+  RayScene::Hit hit = rays.intersect(o, d, 1e-5, INFINITY);
+  // (At most 1024 model surfaces passed: beyond that the ray counts as stopped by geometry.)
+  for (int k = 0; k < 1024 && !set.models_occlude && (hit.id < -1 || hit.id >= static_cast<int>(faces.size())) &&
+       hit.triangle >= 0;
+       ++k) {
+    o += d * hit.t;  // through the model to what lies behind it
+    hit = rays.intersect(o, d, 1e-5, INFINITY);
+  }
   if (hit.id < 0 || hit.id >= static_cast<int>(faces.size())) {
     if (hit.id < 0 && hit.triangle < 0) return set.sky_radiance ? set.sky_radiance(d) : glm::dvec3(0.0);  // a miss
     if (back) *back = true;  // other geometry (a model): counted with the back faces, no radiance
@@ -117,7 +125,7 @@ glm::dvec3 volume_ray_radiance(const glm::dvec3 &p, const glm::dvec3 &d, const s
     return glm::dvec3(0.0);
   }
   // The face's radiosity where the ray lands (fact sheet section 3: reflectivity applied).
-  const glm::dvec3 q = p + d * hit.t - to_glm(f.origin);
+  const glm::dvec3 q = o + d * hit.t - to_glm(f.origin);
   return to_glm(luxel_exitant(f, grids[static_cast<size_t>(hit.id)], glm::dot(q, to_glm(f.u)) / f.su,
                               glm::dot(q, to_glm(f.v)) / f.sv));
 }

@@ -37,6 +37,9 @@ struct VolumeSettings {
   // The sky hook: the radiance of a ray that misses everything (null: 0). The sky bake adds it.
   std::function<glm::dvec3(const glm::dvec3 &dir)> sky_radiance;
   int threads = 0;  // 0: all cores (the result is the same for any count)
+  // Whether other geometry (models) stops a ray as a black back-face hit (true, the scenes') or the
+  // ray goes on through it to the world (false: the world alone, measured by `bench --section ambient`).
+  bool models_occlude = true;
 };
 
 struct IrradianceVolume {
@@ -77,7 +80,7 @@ bool bake_irradiance_volume(const double lo[3], const double hi[3], const std::v
 
 // The radiance a ray from p along unit d sees (what a sample's and the ground truth's rays add up): a
 // world face's front: its radiosity at the hit; a miss: the sky hook; a face's back or other geometry:
-// 0 with *back set (may be null).
+// 0 with *back set (may be null); with set.models_occlude false, other geometry is passed through.
 glm::dvec3 volume_ray_radiance(const glm::dvec3 &p, const glm::dvec3 &d, const std::vector<WorldFace> &faces,
                                const std::vector<LuxelGrid> &grids, const RayScene &rays, const VolumeSettings &set,
                                bool *back);

@@ -65,6 +65,7 @@ uint64_t volume_inputs_hash(const double lo[3], const double hi[3], const Volume
   }
   h.value(static_cast<int>(set.fit));
   h.value(set.max_back_share);
+  h.value(set.models_occlude);
   h.value(rays_hash);
   h.value(sky_hash);
   for (const WorldFace &f : faces) {

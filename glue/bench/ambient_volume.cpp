@@ -258,6 +258,8 @@ bool ambient_volume_rows(std::ostringstream &o, std::string *err) {
   o << "\nAgainst density (lsq fit): the volume over the world faces' box, 162 rays per sample; bake ms: the "
        "volume alone (not the lightmaps), one run; memory: the samples (cubes, validity, back-face shares) and "
        "volume.bin's size in the bake directory.\n\n"
+    << "Rows \"rays through the models\": the volume's rays pass through the models to the world behind "
+       "(`VolumeSettings::models_occlude` false), an experiment: the scenes' volumes stop at the models.\n\n"
     << "| density | spacing (m) | samples | valid | rays | bake ms | memory KiB | volume.bin KiB | RMS trilinear | "
        "bias trilinear | RMS inverse-square | RMS nearest | mean back-face share of the samples used |\n"
        "|---|---|---|---|---|---|---|---|---|---|---|---|---|\n";
@@ -265,13 +267,11 @@ bool ambient_volume_rows(std::ostringstream &o, std::string *err) {
     const char *label;
     double scale;
   } const rows[] = {{"Source's 4 x 8 x 4 ft", 1.0}, {"half (8 x 16 x 8 ft)", 2.0}, {"double (2 x 4 x 2 ft)", 0.5}};
-  for (const Density &r : rows) {
-    PreparedScene p;
-    if (!volume_of(s, r.scale, "lsq", &p, err)) return false;
-    const IrradianceVolume &dv = p.volume;
+  // One row: a volume's frame errors, bake and memory, and the back-face share of the samples the
+  // models' trilinear lookups use.
+  auto density_row = [&](const std::string &label, const IrradianceVolume &dv) {
     int valid = 0;
     for (uint8_t x : dv.valid) valid += x;
-    // The back-face share (back faces and models) of the samples the models' trilinear lookups use.
     double share = 0, wsum = 0;
     for (const PreparedDraw &d : g.p.draws) {
       if (d.world) continue;
@@ -288,11 +288,27 @@ bool ambient_volume_rows(std::ostringstream &o, std::string *err) {
     const Err tri = frame_error(px, volume_cubes(s, g.p, dv, VolumeLookup::Trilinear));
     snprintf(b, sizeof b,
              "| %s | %.3f x %.3f x %.3f | %d x %d x %d | %d | %ld | %.0f | %.1f | %.1f | %.4f | %+.4f | %.4f | %.4f | %.3f |\n",
-             r.label, dv.step[0], dv.step[1], dv.step[2], dv.n[0], dv.n[1], dv.n[2], valid, dv.rays, dv.bake_ms,
+             label.c_str(), dv.step[0], dv.step[1], dv.step[2], dv.n[0], dv.n[1], dv.n[2], valid, dv.rays, dv.bake_ms,
              dv.bytes() / 1024.0, volume_file_bytes(dv).size() / 1024.0, tri.rms, tri.bias,
              frame_error(px, volume_cubes(s, g.p, dv, VolumeLookup::InverseSquare)).rms,
              frame_error(px, volume_cubes(s, g.p, dv, VolumeLookup::Nearest)).rms, wsum > 0 ? share / wsum : 0.0);
     o << b;
+  };
+  for (const Density &r : rows) {
+    PreparedScene p;
+    if (!volume_of(s, r.scale, "lsq", &p, err)) return false;
+    density_row(r.label, p.volume);
+  }
+  // The same densities with the volume's rays passing through the models (the world alone): not what
+  // the scenes bake (VolumeSettings::models_occlude), measured to show what the models' own
+  // occlusion costs; the reference still has the other models as occluders.
+  for (const Density &r : rows) {
+    VolumeSettings vs = w.setup.set;
+    for (double &x : vs.spacing) x *= r.scale;
+    vs.models_occlude = false;
+    IrradianceVolume wv;
+    if (!bake_irradiance_volume(w.setup.lo, w.setup.hi, w.faces, w.grids, w.rays, vs, &wv, err)) return false;
+    density_row(std::string(r.label) + ", rays through the models", wv);
   }
   return true;
 }
