@@ -15,6 +15,7 @@
 
 #include "bake/content_hash.h"
 #include "bake/ray_scene.h"
+#include "bake/volume_file.h"
 #include "base/image.h"
 #include "io/atomic_dir.h"
 #include "io/exr.h"
@@ -212,7 +213,8 @@ bool bake_world_dir(const BakeDirUse &use, WorldBakeInput in, const std::vector<
 }
 
 bool write_bake_dir(const std::string &dir, const std::string &scene_name, const BakeSummary &sum,
-                    const std::vector<float> &page, const std::vector<std::string> &baked_why, std::string *err) {
+                    const std::vector<float> &page, const std::vector<std::string> &baked_why, std::string *err,
+                    const IrradianceVolume *volume) {
   DirWriter w;
   if (!w.begin(dir, kManifest, "bake directory", err)) return false;
   ImageF img;
@@ -264,6 +266,11 @@ bool write_bake_dir(const std::string &dir, const std::string &scene_name, const
   m["resumed_after_pass"] = sum.resumed_after;
   m["luxels"] = sum.luxels;
   m["baked"] = baked_why;
+  if (volume && !volume->cube.empty()) {  // the models' irradiance volume (docs/irradiance_volume.md)
+    const std::string vb = volume_file_bytes(*volume);
+    if (!w.write(kVolumeFile, vb, err)) return false;
+    m["volume"] = volume_manifest_entry(*volume, vb);
+  }
   if (!w.write(kManifest, m.dump(1) + "\n", err) || !w.commit(err)) return false;
   std::error_code ec;
   fs::remove_all(bake_checkpoint_dir(dir), ec);  // the bake is complete: its checkpoints are spent

@@ -10,6 +10,7 @@
 #include <string>
 #include <vector>
 
+#include "bake/irradiance_volume.h"
 #include "bake/world_bake.h"
 
 // What a bake depends on, hashed in parts (glue/bake/content_hash.h) so that a stale bake can say
@@ -65,8 +66,11 @@ bool bake_world_dir(const BakeDirUse &use, WorldBakeInput in, const std::vector<
 
 // Writes DIR (page.exr, manifest.json) atomically (glue/io/atomic_dir.h: DIR appears whole or not
 // at all; an existing DIR is replaced only if it holds a manifest.json), then removes DIR.partial.
+// `volume` (may be null or empty): the scene's irradiance volume, written as volume.bin with the
+// manifest's "volume" entry (glue/bake/volume_file.h).
 bool write_bake_dir(const std::string &dir, const std::string &scene_name, const BakeSummary &sum,
-                    const std::vector<float> &page, const std::vector<std::string> &baked_why, std::string *err);
+                    const std::vector<float> &page, const std::vector<std::string> &baked_why, std::string *err,
+                    const IrradianceVolume *volume = nullptr);
 // Reads DIR/manifest.json and DIR/page.exr: every error names the file and the JSON place; a
 // manifest whose hash is not bake_input_hash(in) is refused, naming what changed.
 bool read_bake_dir(const std::string &dir, const WorldBakeInput &in, std::vector<float> *page, std::string *err);

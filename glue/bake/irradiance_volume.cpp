@@ -101,6 +101,34 @@ void world_faces_bounds(const std::vector<WorldFace> &faces, double lo[3], doubl
       }
 }
 
+glm::dvec3 volume_ray_radiance(const glm::dvec3 &p, const glm::dvec3 &d, const std::vector<WorldFace> &faces,
+                               const std::vector<LuxelGrid> &grids, const RayScene &rays, const VolumeSettings &set,
+                               bool *back) {
+  if (back) *back = false;
+  glm::dvec3 o = p;
+  RayScene::Hit hit = rays.intersect(o, d, 1e-5, INFINITY);
+  // (At most 1024 model surfaces passed: beyond that the ray counts as stopped by geometry.)
+  for (int k = 0; k < 1024 && !set.models_occlude && (hit.id < -1 || hit.id >= static_cast<int>(faces.size())) &&
+       hit.triangle >= 0;
+       ++k) {
+    o += d * hit.t;  // through the model to what lies behind it
+    hit = rays.intersect(o, d, 1e-5, INFINITY);
+  }
+  if (hit.id < 0 || hit.id >= static_cast<int>(faces.size())) {
+    if (hit.id < 0 && hit.triangle < 0) return set.sky_radiance ? set.sky_radiance(d) : glm::dvec3(0.0);  // a miss
+    if (back) *back = true;  // other geometry (a model): counted with the back faces, no radiance
+    return glm::dvec3(0.0);
+  }
+  const WorldFace &f = faces[static_cast<size_t>(hit.id)];
+  double ha, hb;
+  if (!world_face_hit(f, o + d * hit.t, hit, d, &ha, &hb)) {
+    if (back) *back = true;  // the face's back: the sample is behind a wall or inside a solid
+    return glm::dvec3(0.0);
+  }
+  // The face's radiosity where the ray lands (fact sheet section 3: reflectivity applied).
+  return to_glm(luxel_exitant(f, grids[static_cast<size_t>(hit.id)], ha, hb));
+}
+
 double volume_sample_cube(const glm::dvec3 &p, const std::vector<WorldFace> &faces,
                           const std::vector<LuxelGrid> &grids, const RayScene &rays, const VolumeSettings &set,
                           float cube[6][3]) {
@@ -110,24 +138,9 @@ double volume_sample_cube(const glm::dvec3 &p, const std::vector<WorldFace> &fac
   ts_ac_accum_init(&acc, fit_code(set.fit));
   int back = 0;
   for (const glm::dvec3 &d : dirs) {
-    glm::dvec3 rad(0.0);
-    const RayScene::Hit hit = rays.intersect(p, d, 1e-5, INFINITY);
-    if (hit.id < 0 || hit.id >= static_cast<int>(faces.size())) {
-      if (hit.id < 0 && hit.triangle < 0) {
-        if (set.sky_radiance) rad = set.sky_radiance(d);  // a miss: the sky hook
-      } else {
-        ++back;  // other geometry (a model): counted with the back faces, no radiance
-      }
-    } else {
-      const WorldFace &f = faces[static_cast<size_t>(hit.id)];
-      double ha, hb;
-      if (!world_face_hit(f, p + d * hit.t, hit, d, &ha, &hb)) {
-        ++back;  // the face's back: the sample is behind a wall or inside a solid
-      } else {
-        // The face's radiosity where the ray lands (fact sheet section 3: reflectivity applied).
-        rad = to_glm(luxel_exitant(f, grids[static_cast<size_t>(hit.id)], ha, hb));
-      }
-    }
+    bool b = false;
+    const glm::dvec3 rad = volume_ray_radiance(p, d, faces, grids, rays, set, &b);
+    back += b;
     const double dd[3] = {d.x, d.y, d.z}, rgb[3] = {rad.x, rad.y, rad.z};
     ts_ac_accum_add(&acc, dd, rgb, dw);
   }
@@ -205,7 +218,7 @@ bool volume_cube_at(const IrradianceVolume &v, const double p[3], VolumeLookup l
   }
   std::vector<VolumeContribution> used;
   double wsum = 0;
-  for (int c = 0; c < 8; ++c) {
+  for (int c = 0; c < (lookup == VolumeLookup::Nearest ? 0 : 8); ++c) {
     const int o[3] = {c & 1, (c >> 1) & 1, (c >> 2) & 1};
     int q[3];
     bool in = true;

@@ -24,7 +24,9 @@
 class RayScene;
 struct WorldFace;
 
-enum class VolumeLookup { Trilinear, InverseSquare };
+// Trilinear (the default), Source's inverse-square over the 8 around the point, or the nearest valid
+// sample of the whole volume (what a hand-placed sample gives; for the accuracy table).
+enum class VolumeLookup { Trilinear, InverseSquare, Nearest };
 
 struct VolumeSettings {
   // Sample spacing along x, y, z in scene units (glTF metres, +Y up): Source's 4 ft x 8 ft (up) x 4 ft.
@@ -35,6 +37,9 @@ struct VolumeSettings {
   // The sky hook: the radiance of a ray that misses everything (null: 0). The sky bake adds it.
   std::function<glm::dvec3(const glm::dvec3 &dir)> sky_radiance;
   int threads = 0;  // 0: all cores (the result is the same for any count)
+  // Whether other geometry (models) stops a ray as a black back-face hit (true, the scenes') or the
+  // ray goes on through it to the world (false: the world alone, measured by `bench --section ambient`).
+  bool models_occlude = true;
 };
 
 struct IrradianceVolume {
@@ -46,6 +51,9 @@ struct IrradianceVolume {
   std::vector<float> back_share;
   double bake_ms = 0;
   long rays = 0;
+  // The content hash of what the samples depend on (glue/bake/volume_file.h: volume_inputs_hash): the
+  // bake directory's copy is refused when it differs from the scene's.
+  uint64_t inputs_hash = 0;
   size_t index(int i, int j, int k) const { return (static_cast<size_t>(k) * n[1] + j) * n[0] + i; }
   glm::dvec3 position(int i, int j, int k) const;
   size_t bytes() const;  // the samples' memory (cubes, validity, back-face shares)
@@ -70,6 +78,13 @@ bool bake_irradiance_volume(const double lo[3], const double hi[3], const std::v
                             const std::vector<LuxelGrid> &grids, const RayScene &rays, const VolumeSettings &set,
                             IrradianceVolume *out, std::string *err);
 
+// The radiance a ray from p along unit d sees (what a sample's and the ground truth's rays add up): a
+// world face's front: its radiosity at the hit; a miss: the sky hook; a face's back or other geometry:
+// 0 with *back set (may be null); with set.models_occlude false, other geometry is passed through.
+glm::dvec3 volume_ray_radiance(const glm::dvec3 &p, const glm::dvec3 &d, const std::vector<WorldFace> &faces,
+                               const std::vector<LuxelGrid> &grids, const RayScene &rays, const VolumeSettings &set,
+                               bool *back);
+
 // The cube of one sample position (what bake_irradiance_volume computes for each grid point).
 // Returns the share of back-face hits.
 double volume_sample_cube(const glm::dvec3 &p, const std::vector<WorldFace> &faces,
@@ -82,7 +97,7 @@ struct VolumeContribution {
 };
 // The interpolated cube at p: the valid samples among the 8 around p (p clamped into the grid of
 // sample centres), weighted trilinearly or by 1/(d^2 + 1), renormalised over the valid ones; with
-// none valid, the nearest valid sample of the whole volume. False (cube zero) when no sample is valid.
+// none valid (or with VolumeLookup::Nearest), the nearest valid sample of the whole volume. False (cube zero) when no sample is valid.
 // `contrib` (may be null) receives the samples used and their weights (`tiershade light --at`).
 bool volume_cube_at(const IrradianceVolume &v, const double p[3], VolumeLookup lookup, float cube[6][3],
                     std::vector<VolumeContribution> *contrib);

@@ -23,7 +23,8 @@ const char kHelp[] = R"(usage: tiershade bake SCENE.gltf -o DIR [--max-memory MI
 Bakes the scene's lightmaps (flat and three RNM lightmaps per LightmappedGeneric face: direct light
 with shadows, then extras.tiershade.lightmaps.bounces bounces) and writes the bake directory DIR:
 page.exr (RGBA float32, rows as GL texture rows) and manifest.json (the scene's content hash, the
-faces' places, the settings, each pass's rays and time). Each finished pass is saved in DIR.partial:
+faces' places, the settings, each pass's rays and time), and for a scene with models the irradiance
+volume (volume.bin, docs/irradiance_volume.md). Each finished pass is saved in DIR.partial:
 a bake that was killed resumes from it; DIR appears only when the bake is complete. Name DIR in the
 scene's extras.tiershade.lightmaps.bake to render from it (a stale bake is refused). With a .exr
 name, writes the page alone (for extras.tiershade.lightmaps.image). --max-memory MIB: what the
@@ -198,11 +199,18 @@ int cmd_bake(int argc, char **argv) {
       fprintf(stderr, "tiershade bake: %s\n", err.c_str());
       return 1;
     }
-  } else if (!write_bake_dir(out, base_name(scene.path), sum, ps.lightmap_page, why, &err)) {
+  } else if (!write_bake_dir(out, base_name(scene.path), sum, ps.lightmap_page, why, &err, &ps.volume)) {
     fprintf(stderr, "tiershade bake: %s\n", err.c_str());
     return 1;
   }
   for (const std::string &l : why) printf("baked: %s\n", l.c_str());
+  if (!ps.volume.cube.empty()) {
+    int valid = 0;
+    for (uint8_t x : ps.volume.valid) valid += x;
+    printf("baked: irradiance volume of %d x %d x %d samples (%d valid), %ld rays, %.1f ms%s\n", ps.volume.n[0],
+           ps.volume.n[1], ps.volume.n[2], valid, ps.volume.rays, ps.volume.bake_ms,
+           page_only ? " (not written: -o PAGE.exr writes the page alone)" : ", written as volume.bin");
+  }
   printf("direct: %ld shadow rays, %.1f ms\n", sum.direct_rays, sum.direct_ms);
   for (size_t k = 0; k < sum.report.pass_rays.size(); ++k)
     printf("bounce %zu: %ld gather rays, %.1f ms%s\n", k + 1, sum.report.pass_rays[k],

@@ -1,7 +1,9 @@
 // tiershade cli: `light` subcommand: what the bake says at a point (docs/baking.md, "tiershade
 // light"): the world face nearest the point (with --normal, the nearest whose front normal agrees),
 // its luxel there, the irradiance and the four lightmap values (flat, b0, b1, b2) before any
-// run-time encoding, from the scene's bake directory (extras.tiershade.lightmaps.bake) or baked here.
+// run-time encoding, from the scene's bake directory (extras.tiershade.lightmaps.bake) or baked here;
+// for a scene with an irradiance volume, the models' ambient cube interpolated at the point and the
+// samples that contributed with their weights (docs/irradiance_volume.md).
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -14,16 +16,20 @@
 #include "cli/args.h"
 #include "scene/prepare.h"
 #include "scene/scene.h"
+#include "scene/scene_volume.h"
 #include "scene/selection.h"
 
 namespace {
 
-const char kHelp[] = R"(usage: tiershade light SCENE.gltf --at X,Y,Z [--normal NX,NY,NZ] [--json]
+const char kHelp[] = R"(usage: tiershade light SCENE.gltf --at X,Y,Z [--normal NX,NY,NZ] [--lookup L] [--json]
 Bakes the scene's lightmaps (or reads its bake directory, extras.tiershade.lightmaps.bake) and prints
 what they hold at the world surface nearest the point: the face (primitive), the luxel, the
 irradiance E there (the flat value, bilinear between the luxels as LINEAR sampling reads it) and the
 four values of the nearest luxel (flat and the three basis directions b0, b1, b2) before any
 run-time encoding. --normal: only faces whose front normal is within 60 degrees of it.
+With models and an irradiance volume (docs/irradiance_volume.md), also the ambient cube a model
+centred at the point takes (+X -X +Y -Y +Z -Z, before lights are folded in) and the samples that
+contributed with their weights; --lookup trilinear|inverse_square|nearest (default: the scene's).
 Units (docs/baking.md): a point light of glTF color x intensity I at distance d gives E = I cos / d^2;
 a value is the radiance a white diffuse surface lit by E reflects (the shader multiplies it by the
 base colour).)";
@@ -43,10 +49,57 @@ bool parse3(const std::string &s, double v[3]) {
 
 double dot3(const double a[3], const ts_vec3d &b) { return a[0] * b.x + a[1] * b.y + a[2] * b.z; }
 
+const char *const kFaces[6] = {"+X", "-X", "+Y", "-Y", "+Z", "-Z"};
+
+const char *lookup_name(VolumeLookup l) {
+  return l == VolumeLookup::InverseSquare ? "inverse_square" : l == VolumeLookup::Nearest ? "nearest" : "trilinear";
+}
+
+// The volume's cube at the point: JSON (null without a volume) and the text lines.
+nlohmann::ordered_json volume_json(const IrradianceVolume &v, VolumeLookup look, const double at[3], std::string *text) {
+  char b[300];
+  if (v.cube.empty()) {
+    *text = "volume: none (the scene has no models, hand-typed ambient samples, or extras.tiershade.volume.enabled false)\n";
+    return nullptr;
+  }
+  float cube[6][3];
+  std::vector<VolumeContribution> used;
+  if (!volume_cube_at(v, at, look, cube, &used)) {
+    *text = "volume: no valid sample: the cube is zero\n";
+    return {{"lookup", lookup_name(look)}, {"cube", nullptr}, {"samples", nlohmann::ordered_json::array()}};
+  }
+  nlohmann::ordered_json j, faces, samples = nlohmann::ordered_json::array();
+  snprintf(b, sizeof b, "volume: %d x %d x %d samples, %s lookup: the ambient cube at the point (before lights are folded in):\n",
+           v.n[0], v.n[1], v.n[2], lookup_name(look));
+  *text = b;
+  for (int f = 0; f < 6; ++f) {
+    faces[kFaces[f]] = {cube[f][0], cube[f][1], cube[f][2]};
+    snprintf(b, sizeof b, "  %s %.9g %.9g %.9g\n", kFaces[f], cube[f][0], cube[f][1], cube[f][2]);
+    *text += b;
+  }
+  double sum = 0;
+  for (const VolumeContribution &u : used) {
+    const glm::dvec3 p = v.position(u.i, u.j, u.k);
+    samples.push_back({{"sample", {u.i, u.j, u.k}}, {"position", {p.x, p.y, p.z}}, {"weight", u.weight}});
+    snprintf(b, sizeof b, "  sample (%d, %d, %d) at (%.6g, %.6g, %.6g): weight %.9g\n", u.i, u.j, u.k, p.x, p.y, p.z,
+             u.weight);
+    *text += b;
+    sum += u.weight;
+  }
+  snprintf(b, sizeof b, "  %zu samples contributed, weights sum to %.9g\n", used.size(), sum);
+  *text += b;
+  j["lookup"] = lookup_name(look);
+  j["samples_grid"] = {v.n[0], v.n[1], v.n[2]};
+  j["cube"] = faces;
+  j["samples"] = samples;
+  j["weight_sum"] = sum;
+  return j;
+}
+
 }  // namespace
 
 int cmd_light(int argc, char **argv) {
-  Args a("light", argc, argv, {"--help", "--json"}, {"--at", "--normal"});
+  Args a("light", argc, argv, {"--help", "--json"}, {"--at", "--normal", "--lookup"});
   if (a.help(kHelp)) return 0;
   if (a.positional().size() != 1) a.fail("expected one scene file (tiershade light SCENE.gltf --at X,Y,Z)");
   if (!a.has("--at")) a.fail("--at X,Y,Z is required");
@@ -59,12 +112,19 @@ int cmd_light(int argc, char **argv) {
     if (!(l > 0)) a.fail("--normal: a zero vector");
     for (double &c : nrm) c /= l;
   }
+  if (a.has("--lookup") && a.get("--lookup") != "trilinear" && a.get("--lookup") != "inverse_square" &&
+      a.get("--lookup") != "nearest")
+    a.fail("--lookup '" + a.get("--lookup") + "': expected trilinear, inverse_square or nearest");
   Scene scene;
   std::string err;
   if (!load_scene(a.positional()[0], &scene, &err)) {
     fprintf(stderr, "tiershade light: %s\n", err.c_str());
     return 1;
   }
+  const VolumeLookup look = !a.has("--lookup")            ? scene_volume_lookup(scene)
+      : a.get("--lookup") == "inverse_square" ? VolumeLookup::InverseSquare
+      : a.get("--lookup") == "nearest"        ? VolumeLookup::Nearest
+                                              : VolumeLookup::Trilinear;
   scene.lightmaps.bake_progress = true;
   SceneSelection sel;
   PreparedScene ps;
@@ -144,6 +204,8 @@ int cmd_light(int argc, char **argv) {
   }
   const char *names[4] = {"flat", "b0", "b1", "b2"};
   const std::string source = sum.from_dir.empty() ? "baked at load" : sum.from_dir;
+  std::string volume_text;
+  const nlohmann::ordered_json vol = volume_json(ps.volume, look, at, &volume_text);
   if (a.flag("--json")) {
     nlohmann::ordered_json j;
     j["scene"] = scene.path;
@@ -159,6 +221,7 @@ int cmd_light(int argc, char **argv) {
     j["irradiance"] = {e[0], e[1], e[2]};
     for (int k = 0; k < 4; ++k) j["values"][names[k]] = {vals[k][0], vals[k][1], vals[k][2]};
     j["units"] = kUnits;
+    j["volume"] = vol;
     printf("%s\n", j.dump(1).c_str());
     return 0;
   }
@@ -170,5 +233,6 @@ int cmd_light(int argc, char **argv) {
          bf.face.bumped ? "" : " (no normal map: the shader reads the flat one)");
   for (int k = 0; k < 4; ++k) printf("  %-4s %.9g %.9g %.9g\n", names[k], vals[k][0], vals[k][1], vals[k][2]);
   printf("units: %s\n", kUnits);
+  printf("%s", volume_text.c_str());
   return 0;
 }

@@ -3,7 +3,37 @@
 
 #include <cstring>
 
+#include "bake/content_hash.h"
+#include "bake/ray_scene.h"
 #include "bake/sky.h"
+#include "bake/volume_file.h"
+
+SceneVolumeSetup scene_volume_setup(const Scene &s, const std::vector<WorldFace> &faces) {
+  SceneVolumeSetup u;
+  world_faces_bounds(faces, u.lo, u.hi);
+  if (s.volume.has_bounds) {
+    std::memcpy(u.lo, s.volume.lo, sizeof u.lo);
+    std::memcpy(u.hi, s.volume.hi, sizeof u.hi);
+  }
+  std::memcpy(u.set.spacing, s.volume.spacing, sizeof u.set.spacing);
+  u.set.fit = s.volume.fit == "mean" ? AmbientFit::Mean : AmbientFit::Lsq;
+  if (s.sky.image >= 0) {  // a ray that leaves the scene sees the sky (glue/bake/sky.h), as the bake's do
+    const SceneImage &si = s.images.at(static_cast<size_t>(s.sky.image));
+    const BakeSky sky{si.rgba.data(), si.w, si.h, s.sky.scale, s.sky.samples};
+    ContentHash h;
+    h.value(si.w);
+    h.value(si.h);
+    h.value(s.sky.scale);
+    h.value(s.sky.samples);
+    h.values(si.rgba);
+    u.sky_hash = h.h;
+    u.set.sky_radiance = [sky](const glm::dvec3 &d) {
+      const ts_vec3d r = sky_radiance(sky, ts_v3d(d.x, d.y, d.z));
+      return glm::dvec3(r.x, r.y, r.z);
+    };
+  }
+  return u;
+}
 
 bool bake_scene_volume(const Scene &s, const SceneSelection &sel, const std::vector<WorldFace> &faces,
                        const WorldBake &bake, int page_w, const RayScene &rays, IrradianceVolume *out,
@@ -12,32 +42,23 @@ bool bake_scene_volume(const Scene &s, const SceneSelection &sel, const std::vec
   bool models = false;
   for (const SceneDrawChoice &c : sel.draws) models = models || c.family == "model_lighting";
   if (!models || faces.empty() || !s.ambient.empty() || !s.volume.enabled) return true;  // only what the scene calls for
-  double lo[3], hi[3];
-  world_faces_bounds(faces, lo, hi);
-  if (s.volume.has_bounds) {
-    std::memcpy(lo, s.volume.lo, sizeof lo);
-    std::memcpy(hi, s.volume.hi, sizeof hi);
-  }
-  VolumeSettings vs;
-  std::memcpy(vs.spacing, s.volume.spacing, sizeof vs.spacing);
-  vs.fit = s.volume.fit == "mean" ? AmbientFit::Mean : AmbientFit::Lsq;
-  if (s.sky.image >= 0) {  // a ray that leaves the scene sees the sky (glue/bake/sky.h), as the bake's do
-    const SceneImage &si = s.images.at(static_cast<size_t>(s.sky.image));
-    const BakeSky sky{si.rgba.data(), si.w, si.h, s.sky.scale, s.sky.samples};
-    vs.sky_radiance = [sky](const glm::dvec3 &d) {
-      const ts_vec3d r = sky_radiance(sky, ts_v3d(d.x, d.y, d.z));
-      return glm::dvec3(r.x, r.y, r.z);
-    };
-  }
-  if (!bake_irradiance_volume(lo, hi, faces, flat_grids_from_page(bake.place, bake.page, page_w), rays, vs, out,
-                              err)) {
+  const SceneVolumeSetup u = scene_volume_setup(s, faces);
+  const std::vector<LuxelGrid> grids = flat_grids_from_page(bake.place, bake.page, page_w);
+  const uint64_t hash = volume_inputs_hash(u.lo, u.hi, u.set, faces, grids, rays.content_hash(), u.sky_hash);
+  if (!s.lightmaps.bake.empty())  // the bake directory's volume, refused when stale (glue/bake/volume_file.h)
+    return read_volume_dir(s.lightmaps.bake, hash, out, err);
+  if (!bake_irradiance_volume(u.lo, u.hi, faces, grids, rays, u.set, out, err)) {
     *err = s.path + ": extras.tiershade.volume: " + *err;
     return false;
   }
+  out->inputs_hash = hash;
   return true;
 }
 
 void scene_volume_cube(const Scene &s, const IrradianceVolume &v, const double center[3], float cube[6][3]) {
-  volume_cube_at(v, center, s.volume.lookup == "inverse_square" ? VolumeLookup::InverseSquare : VolumeLookup::Trilinear,
-                 cube, nullptr);
+  volume_cube_at(v, center, scene_volume_lookup(s), cube, nullptr);
+}
+
+VolumeLookup scene_volume_lookup(const Scene &s) {
+  return s.volume.lookup == "inverse_square" ? VolumeLookup::InverseSquare : VolumeLookup::Trilinear;
 }

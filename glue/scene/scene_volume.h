@@ -10,7 +10,18 @@
 #include "scene/scene.h"
 #include "scene/selection.h"
 
-// Bakes the volume when the scene has world faces, model draws, no "ambient" samples and the volume
+// What the scene's volume is baked from: its box (volume.bounds or the faces' box), the settings
+// (volume.spacing, volume.fit, the sky hook when the scene has a sky) and the sky's hash (0: none),
+// as bake_scene_volume uses them (the accuracy bench traces its ground truth with the same sky).
+struct SceneVolumeSetup {
+  double lo[3] = {0, 0, 0}, hi[3] = {0, 0, 0};
+  VolumeSettings set;
+  uint64_t sky_hash = 0;
+};
+SceneVolumeSetup scene_volume_setup(const Scene &s, const std::vector<WorldFace> &faces);
+
+// Bakes the volume (or, when the scene reads a bake directory, extras.tiershade.lightmaps.bake, reads
+// it from there, refused when stale: glue/bake/volume_file.h) when the scene has world faces, model draws, no "ambient" samples and the volume
 // enabled; otherwise leaves *out empty (no samples). Bounds: the scene's "bounds" or the faces' box.
 bool bake_scene_volume(const Scene &s, const SceneSelection &sel, const std::vector<WorldFace> &faces,
                        const WorldBake &bake, int page_w, const RayScene &rays, IrradianceVolume *out,
@@ -18,3 +29,5 @@ bool bake_scene_volume(const Scene &s, const SceneSelection &sel, const std::vec
 
 // The cube at a model's centre with the scene's lookup (trilinear or inverse-square).
 void scene_volume_cube(const Scene &s, const IrradianceVolume &v, const double center[3], float cube[6][3]);
+// The scene's lookup: volume.lookup "trilinear" (default) or "inverse_square".
+VolumeLookup scene_volume_lookup(const Scene &s);

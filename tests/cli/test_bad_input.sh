@@ -5,7 +5,7 @@
 # a FIFO and a /dev/zero symlink as the scene and as LUTs, a 53-byte Radiance header claiming
 # 11585 x 11585 pixels (as a probe and as a lightmap page), extras nested 20,000 deep, an
 # accessor count of 67,108,864 over a 19,600-byte view, a broken PNG texture, an EXR probe,
-# a lightmap page too small for the faces, --size overflow and malformed sizes, `lut convert`
+# a lightmap page too small for the faces, damaged irradiance-volume files in a bake directory, --size overflow and malformed sizes, `lut convert`
 # onto itself, the limits (--size 8192x8192, 64 probes of 512, an 8192 x 8192 page) and demo's
 # output directory. Each checks the exit status, the message (it names the file and the limit),
 # that nothing is left at the output path, and the peak memory (/usr/bin/time -f %M): an input
@@ -195,6 +195,45 @@ bad max_memory_range 2 "option --max-memory wants an integer in \[64, 1048576\]"
 # A limit below what an image needs refuses it; the default renders every shipped scene size.
 bad max_memory_small 1 "needs [0-9]+ MiB, over the memory limit of 64 MiB" r_lim \
   -- render probe_exr.gltf --backend cpu --size 2048x2048 --max-memory 64 -o r_lim
+
+# --- 11. the bake directory's irradiance volume (docs/irradiance_volume.md) -------------------------
+# large_hall_40 without its hand-typed samples: its models take the volume, written by bake -o DIR.
+scene large_hall_40.gltf hv.gltf "del d['extras']['tiershade']['ambient']; d['extras']['tiershade']['lightmaps']['bake'] = os.path.abspath('hv_bad.bake')"
+"${TIMEOUT[@]}" "$TS" bake hv.gltf -o hv.bake > "$OUT" 2> "$ERR" < /dev/null || fail volume_setup "bake: $(head -n 2 "$ERR")"
+# vol_case NAME REGEX PYTHON: a copy of hv.bake as hv_bad.bake edited by PYTHON (b: volume.bin's
+# bytes, m: the manifest), then a render of hv.gltf must fail naming the file and the place.
+vol_case() {
+  rm -rf hv_bad.bake && cp -r hv.bake hv_bad.bake
+  python3 - hv_bad.bake "$3" << 'EOF2'
+import json, os, sys
+d, edit = sys.argv[1], sys.argv[2]
+b = bytearray(open(d + '/volume.bin', 'rb').read())
+m = json.load(open(d + '/manifest.json'))
+def rehash():
+    h = 0xcbf29ce484222325
+    for c in b: h = ((h ^ c) * 0x100000001b3) & 0xffffffffffffffff
+    m['volume']['content_hash'] = '%016x' % h
+exec(edit)
+if b is not None: open(d + '/volume.bin', 'wb').write(b)
+else: os.remove(d + '/volume.bin')
+json.dump(m, open(d + '/manifest.json', 'w'))
+EOF2
+  bad "$1" 1 "$2" r_vol -- render hv.gltf --backend cpu --size 32x18 -o r_vol
+}
+vol_case volume_flipped_byte "hv_bad\.bake/volume\.bin: content hash [0-9a-f]{16} is not the manifest's /volume/content_hash" "b[5000] ^= 1"
+vol_case volume_truncated "hv_bad\.bake/volume\.bin: 1000 bytes, the manifest's /volume/bytes says [0-9]+" "b = b[:1000]"
+vol_case volume_missing_file "hv_bad\.bake/volume\.bin: cannot read" "b = None"
+vol_case volume_missing_entry "hv_bad\.bake/manifest\.json: /volume: missing: the bake has no irradiance volume" "del m['volume']"
+vol_case volume_entry_type "hv_bad\.bake/manifest\.json: /volume/bytes: expected a non-negative integer, found string" "m['volume']['bytes'] = 'x'"
+vol_case volume_stale "hv_bad\.bake/manifest\.json: /volume/inputs_hash: stale irradiance volume" "m['volume']['inputs_hash'] = '0' * 16"
+# File and manifest edited together (hash updated): the fields' own checks name the sample and byte.
+vol_case volume_negative_colour "hv_bad\.bake/volume\.bin: sample \(1, 0, 0\) at byte 172: colour 0\.0 is negative or not finite" \
+  "import struct; struct.pack_into('<f', b, 80 + 92 + 20, -1.0); rehash(); m['volume']['bytes'] = len(b)"
+vol_case volume_bad_validity "hv_bad\.bake/volume\.bin: sample \(0, 0, 0\) at byte 80: validity 7" \
+  "b[80 + 12] = 7; rehash()"
+vol_case volume_bad_magic "hv_bad\.bake/volume\.bin: byte 0: not a tiershade volume file" "b[0:8] = b'XXXXXXXX'; rehash()"
+vol_case volume_bad_grid "hv_bad\.bake/volume\.bin: [0-9]+ bytes, a 34 x 2 x 33 volume takes" \
+  "import struct; struct.pack_into('<i', b, 12, struct.unpack_from('<i', b, 12)[0] + 1); rehash()"
 
 # --- 6. demo: refuses another directory, a failure leaves nothing, scenes found from anywhere --
 mkdir mine && echo keep > mine/notes.txt

@@ -1,5 +1,6 @@
 // tiershade tests: the irradiance volume (glue/bake/irradiance_volume.cpp): its 162 ray directions,
-// a closed emitting room gives its emission everywhere, a sample inside a solid is invalid and never
+// a closed emitting room gives its emission everywhere, a model stops the rays or (models_occlude
+// false) is passed through, a sample inside a solid is invalid and never
 // used, a point moving in small steps changes its cube by a bounded amount per step, and the
 // inverse-square option reproduces Source's 1/(d^2 + 1) on a hand case.
 #include <cmath>
@@ -315,6 +316,57 @@ int main() {
       for (int f = 0; f < 6; ++f)
         for (int k = 0; k < 3; ++k) osum += off[f][k];
       check(ok3 && osum == 0, "volume.enabled false: no volume", err);
+    }
+  }
+  // 8. A model (a closed box of id -2, other geometry) in the emitting room: with models_occlude (the
+  //    scenes' setting) a ray into it stops as a black back-face hit and a sample inside it is invalid;
+  //    with models_occlude false the ray passes through both of its walls to the room (radiance L,
+  //    exact: the emission is read unchanged) and the sample inside sees the room: valid, cube L.
+  {
+    std::vector<WorldFace> faces;
+    const glm::dvec3 em[6] = {L, L, L, L, L, L};
+    add_box(glm::dvec3(0, 0, 0), glm::dvec3(4, 3, 5), true, em, &faces);
+    RayScene rays;
+    bool ok = true;
+    for (size_t i = 0; i < faces.size() && ok; ++i) {
+      const WorldFace &f = faces[i];
+      const glm::dvec3 o(f.origin.x, f.origin.y, f.origin.z), u = glm::dvec3(f.u.x, f.u.y, f.u.z) * f.su,
+                       v = glm::dvec3(f.v.x, f.v.y, f.v.z) * f.sv;
+      std::vector<float> p;
+      for (const glm::dvec3 &q : {o, o + u, o + u + v, o + v})
+        for (int k = 0; k < 3; ++k) p.push_back(static_cast<float>(q[k]));
+      ok = rays.add_mesh(p, {0, 1, 2, 0, 2, 3}, static_cast<int>(i), f.name, &err);
+    }
+    // The model: the box [1.5, 2.5] x [1, 2] x [2, 3] as 12 triangles.
+    std::vector<float> mp;
+    for (int c = 0; c < 8; ++c)
+      for (float x : {(c & 1) ? 2.5f : 1.5f, (c & 2) ? 2.f : 1.f, (c & 4) ? 3.f : 2.f}) mp.push_back(x);
+    const std::vector<uint32_t> mi = {0, 1, 3, 0, 3, 2, 4, 6, 7, 4, 7, 5, 0, 4, 5, 0, 5, 1,
+                                      2, 3, 7, 2, 7, 6, 0, 2, 6, 0, 6, 4, 1, 5, 7, 1, 7, 3};
+    ok = ok && rays.add_mesh(mp, mi, -2, "model box", &err) && rays.commit(&err);
+    if (!ok) {
+      check(false, "room with a model box", err);
+    } else {
+      const std::vector<LuxelGrid> grids = dark_grids(faces.size());
+      VolumeSettings occ, through;
+      through.models_occlude = false;
+      const glm::dvec3 from(2, 1.5, 0.5), dir(0, 0, 1);  // towards the model, the room's z+ wall behind it
+      bool b1 = false, b2 = true;
+      const glm::dvec3 r1 = volume_ray_radiance(from, dir, faces, grids, rays, occ, &b1);
+      const glm::dvec3 r2 = volume_ray_radiance(from, dir, faces, grids, rays, through, &b2);
+      check(b1 && r1 == glm::dvec3(0.0) && !b2 && r2 == L,
+            "a ray into a model: a black back-face hit (models_occlude), else through it to the room",
+            "occlude " + std::to_string(r1.x) + ", through " + std::to_string(r2.x));
+      float c1[6][3], c2[6][3];
+      const double s1 = volume_sample_cube(glm::dvec3(2, 1.5, 2.5), faces, grids, rays, occ, c1);
+      const double s2 = volume_sample_cube(glm::dvec3(2, 1.5, 2.5), faces, grids, rays, through, c2);
+      double worst = 0;
+      for (int f = 0; f < 6; ++f)
+        for (int c = 0; c < 3; ++c) worst = std::fmax(worst, std::fabs(c2[f][c] - L[c]) / L[c]);
+      // Tolerance 1e-6 relative: float rounding of the fitted cube, as in check 2.
+      check(s1 == 1.0 && s2 == 0.0 && worst < 1e-6,
+            "a sample inside a model: all back-face hits (models_occlude), else the room's cube L",
+            "shares " + std::to_string(s1) + " / " + std::to_string(s2) + ", worst " + std::to_string(worst));
     }
   }
   return finish();
