@@ -199,11 +199,11 @@ int cmd_render(int argc, char **argv) {
     return 1;
   }
   scene.lightmaps.bake_progress = !quiet;  // a long bake at load shows its passes (docs/baking.md)
-  if (!render_fits_memory(scene, cfg.w, cfg.h, cfg.backend != Backend::CPU, cfg.check, &err)) {
+  cfg.msaa = msaa_arg >= 0 ? msaa_arg : scene.hdr.msaa;
+  if (!render_fits_memory(scene, cfg.w, cfg.h, cfg.backend != Backend::CPU, cfg.check, &err, cfg.msaa)) {
     fprintf(stderr, "tiershade render: %s: %s\n", scene.path.c_str(), err.c_str());
     return 1;
   }
-  cfg.msaa = msaa_arg >= 0 ? msaa_arg : scene.hdr.msaa;
   SceneSelection sel;
   if (!select_scene_variants(scene, tier, hdr, &sel, &err)) {
     fprintf(stderr, "tiershade render: %s\n", scene_message(scene, err).c_str());
