@@ -264,6 +264,7 @@ void scene_render_msaa_cpu(const PreparedScene &p, int S, MsaaFrameC *out, int t
   // Each sample stores its fragment's colour as an RGBA8 target does (clear colour 0); resolve.
   out->display.assign(n * 4, 0);
   std::vector<int32_t> full(n, -1);  // the one triangle robustly covering every sample, or -1
+  out->silhouette.assign(n, 0);
   parallel_rows(h, threads, [&](int y) {
     uint8_t codes[8 * 4];
     for (int x = 0; x < w; ++x) {
@@ -276,6 +277,9 @@ void scene_render_msaa_cpu(const PreparedScene &p, int S, MsaaFrameC *out, int t
         one = one && t >= 0 && t == stri[i * S] && srobust[i * S + k];
       }
       if (one) full[i] = stri[i * S];
+      bool sil = !all;
+      for (int k = 0; k < S && !sil; ++k) sil = tris[static_cast<size_t>(stri[i * S + k])].draw != tris[static_cast<size_t>(stri[i * S])].draw;
+      out->silhouette[i] = sil;
       if (all && frags[i] == 1) {  // every sample holds the same codes, which resolve to themselves
         for (int c = 0; c < 4; ++c) out->display[i * 4 + c] = ts_unorm8_from_float(shaded[0].rgba[i * 4 + static_cast<size_t>(c)]);
         continue;

@@ -36,6 +36,9 @@ struct MsaaFrameC {
   // edge by at least the edge's change when its vertices move 2/256 pixel in x and y): pixels
   // another rasteriser's snapping and tie rules cannot turn into edge pixels.
   std::vector<uint8_t> interior;
+  // 1 where the samples hold background and a triangle, or triangles of two draws: the pixels
+  // of silhouettes and draw boundaries (geometric edges, what MSAA is for).
+  std::vector<uint8_t> silhouette;
   size_t sample_bytes = 0;  // the per-sample buffers' bytes (codes, depth, triangle)
 };
 void scene_render_msaa_cpu(const PreparedScene &p, int samples, MsaaFrameC *out, int threads = 0);
