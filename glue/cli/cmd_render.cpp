@@ -200,6 +200,11 @@ int cmd_render(int argc, char **argv) {
   }
   scene.lightmaps.bake_progress = !quiet;  // a long bake at load shows its passes (docs/baking.md)
   cfg.msaa = msaa_arg >= 0 ? msaa_arg : scene.hdr.msaa;
+  if (cfg.msaa > 1 && a.has("--dump-draws")) {
+    fprintf(stderr, "tiershade render: %s: --dump-draws captures the one-sample frame a bare engine replays "
+            "(docs/bundles.md); render it without MSAA (--msaa 1)\n", scene.path.c_str());
+    return 1;
+  }
   if (!render_fits_memory(scene, cfg.w, cfg.h, cfg.backend != Backend::CPU, cfg.check, &err, cfg.msaa)) {
     fprintf(stderr, "tiershade render: %s: %s\n", scene.path.c_str(), err.c_str());
     return 1;

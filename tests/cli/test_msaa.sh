@@ -43,6 +43,8 @@ bad "ps20 draws refuse" 1 "writes linear colour" scenes/model_lighting.gltf --ti
 bad "world draws refuse" 1 "world_lighting .*writes linear colour" scenes/world_lighting.gltf --msaa 4 $S 32x18 -o "$TMP/o"
 "bad" "8x at 8192x8192 over the memory limit" 1 "mostly the 8-sample frame.*over the memory limit" \
   scenes/model_lighting.gltf --backend cpu --msaa 8 $S 8192x8192 -o "$TMP/o"
+bad "--dump-draws with MSAA refuses" 1 "dump-draws captures the one-sample frame" \
+  scenes/model_lighting.gltf --msaa 4 --dump-draws "$TMP/dump" $S 32x18 -o "$TMP/o"
 bad "OSMesa 8x refuses" 1 "offers at most 4 samples" scenes/model_lighting.gltf --backend osmesa --msaa 8 $S 32x18 -o "$TMP/o"
 
 # The scene setting: a copy of model_lighting.gltf with its files named absolutely.
