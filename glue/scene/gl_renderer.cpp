@@ -244,7 +244,9 @@ bool SceneGl::draw_all(const std::vector<GLuint> &progs, bool production, int gb
 
 void SceneGl::warm(const std::atomic<int> *main_next) {
   const GlFns &g = gl();
+  ms_pass_ = ms_fbo_ != 0;  // MSAA: the multisampled target's shader variants
   begin_pass();
+  ms_pass_ = false;
   g.Clear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
   std::vector<bool> done(programs_.size(), false);
   std::string err;

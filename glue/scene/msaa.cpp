@@ -180,7 +180,7 @@ void scene_render_msaa_cpu(const PreparedScene &p, int S, MsaaFrameC *out, int t
   sb.tri.assign(n * S, -1);
   sb.depth.assign(n * S, 1.f);
   sb.robust.assign(n * S, 0);
-  out->sample_bytes = n * S * (sizeof(int32_t) + sizeof(float));
+  out->sample_bytes = n * S * (sizeof(int32_t) + sizeof(float) + 2);  // triangle, depth, robust, layer
   // Bands of 8 rows, each with its triangles in draw order (equal depths keep the first draw).
   const int kBand = 8, bands = (h + kBand - 1) / kBand;
   std::vector<std::vector<int>> band_tris(static_cast<size_t>(bands));
