@@ -38,6 +38,9 @@ SceneGl::~SceneGl() {
   if (ms_color_) g.DeleteRenderbuffers(1, &ms_color_);
   if (ms_depth_) g.DeleteRenderbuffers(1, &ms_depth_);
   if (rs_color_) g.DeleteTextures(1, &rs_color_);
+  if (gbm_fbo_) g.DeleteFramebuffers(1, &gbm_fbo_);
+  if (gbm_color_) g.DeleteRenderbuffers(1, &gbm_color_);
+  if (gbm_depth_) g.DeleteRenderbuffers(1, &gbm_depth_);
 }
 
 bool SceneGl::init(const PreparedScene &p, std::string *err, double *compile_ms, int target_w, int target_h) {
@@ -203,7 +206,7 @@ bool SceneGl::bind_draw(size_t i, GLuint program, bool production, std::string *
 // engine draws opaque geometry; the draw dump documents the same state, docs/bundles.md).
 void SceneGl::begin_pass() {
   const GlFns &g = gl();
-  g.BindFramebuffer(GL_FRAMEBUFFER, ms_pass_ ? ms_fbo_ : fbo_);
+  g.BindFramebuffer(GL_FRAMEBUFFER, gbm_pass_ ? gbm_fbo_ : ms_pass_ ? ms_fbo_ : fbo_);
   g.BindVertexArray(vao_);
   g.Viewport(0, 0, tw_, th_);
   g.Disable(GL_BLEND);
@@ -219,6 +222,10 @@ bool SceneGl::draw_all(const std::vector<GLuint> &progs, bool production, int gb
   begin_pass();
   g.ClearColor(0.f, 0.f, 0.f, 0.f);
   g.Clear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+  if (gbm_pass_) {
+    g.Enable(GL_SAMPLE_COVERAGE);
+    g.SampleCoverage(1.f / static_cast<float>(msaa_got_), GL_FALSE);
+  }
   bind_ms_ = 0;
   for (size_t i = 0; i < p_->draws.size(); ++i) {
     const GLuint prog = progs.at(prog_of_draw_[i]);
@@ -239,6 +246,7 @@ bool SceneGl::draw_all(const std::vector<GLuint> &progs, bool production, int gb
     }
   }
   g.Disable(GL_DEPTH_TEST);
+  g.Disable(GL_SAMPLE_COVERAGE);
   return gl_no_error(g, "while drawing the scene", err);
 }
 
@@ -285,7 +293,42 @@ bool SceneGl::frame(ImageF *out, std::string *err, double *draw_ms,
   return true;
 }
 
+bool SceneGl::gbuffer_msaa(std::vector<int> *draw, std::vector<float> *slots, std::string *err) {
+  const GlFns &g = gl();
+  if (!ms_fbo_) {
+    *err = "gbuffer_msaa without a multisampled target (set_msaa before init)";
+    return false;
+  }
+  if (!gbm_fbo_) {
+    g.GenRenderbuffers(1, &gbm_color_);
+    g.BindRenderbuffer(GL_RENDERBUFFER, gbm_color_);
+    g.RenderbufferStorageMultisample(GL_RENDERBUFFER, msaa_got_, GL_RGBA32F, tw_, th_);
+    g.GenRenderbuffers(1, &gbm_depth_);
+    g.BindRenderbuffer(GL_RENDERBUFFER, gbm_depth_);
+    g.RenderbufferStorageMultisample(GL_RENDERBUFFER, msaa_got_, GL_DEPTH_COMPONENT24, tw_, th_);
+    g.GenFramebuffers(1, &gbm_fbo_);
+    g.BindFramebuffer(GL_FRAMEBUFFER, gbm_fbo_);
+    g.FramebufferRenderbuffer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_RENDERBUFFER, gbm_color_);
+    g.FramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER, gbm_depth_);
+    if (!gl_framebuffer_complete(g, "multisampled G-buffer framebuffer", err)) return false;
+  }
+  // Each pass resolved into the one-sample RGBA32F target (fbo_), which read() reads.
+  gbm_pass_ = true;
+  const bool ok = gbuffer_passes(draw, slots, err, [&] {
+    g.BindFramebuffer(GL_READ_FRAMEBUFFER, gbm_fbo_);
+    g.BindFramebuffer(GL_DRAW_FRAMEBUFFER, fbo_);
+    g.BlitFramebuffer(0, 0, tw_, th_, 0, 0, tw_, th_, GL_COLOR_BUFFER_BIT, GL_NEAREST);
+  }, static_cast<float>(msaa_got_));
+  gbm_pass_ = false;
+  return ok;
+}
+
 bool SceneGl::gbuffer(std::vector<int> *draw, std::vector<float> *slots, std::string *err) {
+  return gbuffer_passes(draw, slots, err, nullptr, 1.f);
+}
+
+bool SceneGl::gbuffer_passes(std::vector<int> *draw, std::vector<float> *slots, std::string *err,
+                             const std::function<void()> &resolve, float scale) {
   const size_t n = static_cast<size_t>(p_->w) * p_->h;
   if (gb_programs_.empty()) {
     const Target t = target_for_api(api_);
@@ -313,11 +356,14 @@ bool SceneGl::gbuffer(std::vector<int> *draw, std::vector<float> *slots, std::st
   slots->assign(n * 24, 0.f);
   for (int slot = -1; slot < 6; ++slot) {
     if (!draw_all(gb_programs_[slot + 1], false, slot, err, nullptr)) return false;
+    if (resolve) resolve();
     if (!read(&img)) {
       *err = "reading the G-buffer back failed";
       return false;
     }
     for (size_t i = 0; i < n; ++i) {
+      if (scale != 1.f)
+        for (int c = 0; c < 4; ++c) img[i * 4 + c] *= scale;
       if (slot < 0) {
         (*draw)[i] = img[i * 4 + 3] > 0.5f ? static_cast<int>(img[i * 4]) : -1;
       } else {

@@ -43,10 +43,12 @@ struct MsaaFrameC {
 };
 void scene_render_msaa_cpu(const PreparedScene &p, int samples, MsaaFrameC *out, int threads = 0);
 
-// --check with MSAA: GL's resolved frame against the C twin shaded on GL's own one-sample
-// G-buffer (the pixel-centre records) on interior pixels (MsaaFrameC::interior), where the resolve of equal samples is that one code: any difference there
-// is a shading or resolve mismatch. On the other (edge) pixels GL's frame is compared with the
-// C fallback's multisampled frame: there the two rasterisers' coverage and interpolation differ.
+// --check with MSAA: GL's resolved frame against the C twin shaded on GL's own G-buffer drawn
+// with the multisampled state (SceneGl::gbuffer_msaa: sample 0's records, interpolated at the
+// pixel centre by the same multisample shader variant) on interior pixels (MsaaFrameC::interior),
+// where every sample holds that one fragment: any difference is a shading or resolve mismatch
+// (tolerance 0). On the other (edge) pixels GL's frame is compared with the C fallback's
+// multisampled frame: there the two rasterisers' coverage and interpolation differ.
 struct MsaaCheck {
   long interior = 0, interior_mismatched = 0;  // pixels (RGB compared)
   long background = 0, background_mismatched = 0;  // no sample covered in either frame
