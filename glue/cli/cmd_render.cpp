@@ -26,6 +26,7 @@
 #include "scene/selection.h"
 #include "scene/frame.h"
 #include "scene/prepare.h"
+#include "scene/msaa.h"
 #include "base/stats.h"
 
 namespace {
@@ -92,7 +93,7 @@ bool warm_frame_ms(const Scene &s, const SceneSelection &sel, const SceneRenderC
 const char kHelp[] = R"(usage: tiershade render SCENE.gltf [--tier ps20|ps2b|sm3] [--backend egl|osmesa|cpu]
                         [--api gles3|gles2|gl33] [--hdr integer|float] [--size WxH] -o OUT
                         [--check] [--compile-all] [--threads N] [--progress] [--quiet]
-                        [--dump-draws DIR] [--frames N] [--max-memory MIB]
+                        [--dump-draws DIR] [--frames N] [--msaa 2|4|8] [--max-memory MIB]
 Renders a glTF 2.0 scene (docs/scenes.md) with only the shader variants it needs and writes
 OUT.exr (the lit pass, RGBA32F as the shaders wrote it) and OUT.png (the final frame).
 Defaults: sm3, EGL surfaceless GLES 3.0 (OSMesa: GL 3.3), the scene's HDR path, 1280x720.
@@ -104,6 +105,13 @@ a bare engine to replay with a shader bundle (docs/bundles.md; tests/bundle/bare
 --frames N: after the first frame (the one written), renders N more with the same renderer and
 prints their median ("median frame X ms", with the lit pass and post times): a scene's warm frame
 time on a backend, without the bench.
+--msaa N: N samples per pixel (default: the scene's "hdr": {"msaa": N}, else none) on the integer
+HDR path: a multisampled RGBA8 target with the shaders' in-shader tone map, resolved with
+glBlitFramebuffer (GLES 3.0 / GL 3.3; llvmpipe has 4 samples only: 2 allocates 4, 8 is refused);
+the C fallback rasterises the same pattern (2 and 8: the standard patterns). The float path and
+GLES 2.0 refuse MSAA and say why (docs/rendering.md, "MSAA"). --check then compares GL's
+interior pixels with the C twin bit for bit (on GL's multisample G-buffer) and reports the edge
+pixels against the C fallback's MSAA frame.
 
 --max-memory MIB: what input files and the render may take (default 1024): an image, accessor,
 probe set, lightmap page or --size that needs more is refused before it is read, naming the
@@ -112,7 +120,7 @@ limit (docs/reliability.md). --size is at most 8192x8192.)";
 int cmd_render(int argc, char **argv) {
   Args a("render", argc, argv, {"--help", "--check", "--quiet", "--progress", "--compile-all", "--report-memory"},
          {"--tier", "--backend", "--api", "--hdr", "--size", "-o", "--threads", "--exposure-frames", "--dump-draws",
-          "--frames", "--max-memory"});
+          "--frames", "--max-memory", "--msaa"});
   if (a.help(kHelp)) return 0;
   if (a.positional().size() != 1) a.fail("expected one scene file (tiershade render SCENE.gltf -o OUT)");
   if (!a.has("-o")) a.fail("-o OUT is required");
@@ -139,6 +147,9 @@ int cmd_render(int argc, char **argv) {
   cfg.exposure_frames = a.get_int("--exposure-frames", cfg.exposure_frames, 1, 10000);
   cfg.check = a.flag("--check");
   const int warm_frames = a.get_int("--frames", 0, 0, 10000);
+  const int msaa_arg = a.has("--msaa") ? a.get_int("--msaa", 0, 1, 8) : -1;
+  if (msaa_arg > 1 && msaa_arg != 2 && msaa_arg != 4 && msaa_arg != 8)
+    a.fail("--msaa " + a.get("--msaa") + ": samples per pixel are 1 (none), 2, 4 or 8");
   if (warm_frames > 0 && cfg.check) a.fail("--frames times warm frames; --check compares one frame: use one or the other");
   if (cfg.check && cfg.backend == Backend::CPU) a.fail("--check compares GL with C: it needs a GL backend");
   if (a.has("--dump-draws") && cfg.backend == Backend::CPU)
@@ -196,13 +207,24 @@ int cmd_render(int argc, char **argv) {
     return 1;
   }
   scene.lightmaps.bake_progress = !quiet;  // a long bake at load shows its passes (docs/baking.md)
-  if (!render_fits_memory(scene, cfg.w, cfg.h, cfg.backend != Backend::CPU, cfg.check, &err)) {
+  cfg.msaa = msaa_arg >= 0 ? msaa_arg : scene.hdr.msaa;
+  if (cfg.msaa > 1 && a.has("--dump-draws")) {
+    fprintf(stderr, "tiershade render: %s: --dump-draws captures the one-sample frame a bare engine replays "
+            "(docs/bundles.md); render it without MSAA (--msaa 1)\n", scene.path.c_str());
+    return 1;
+  }
+  if (!render_fits_memory(scene, cfg.w, cfg.h, cfg.backend != Backend::CPU, cfg.check, &err, cfg.msaa)) {
     fprintf(stderr, "tiershade render: %s: %s\n", scene.path.c_str(), err.c_str());
     return 1;
   }
   SceneSelection sel;
   if (!select_scene_variants(scene, tier, hdr, &sel, &err)) {
     fprintf(stderr, "tiershade render: %s\n", scene_message(scene, err).c_str());
+    return 1;
+  }
+  if (cfg.msaa > 1 && sel.hdr_path == "float") {
+    fprintf(stderr, "tiershade render: %s: --msaa %d: %s\n", scene.path.c_str(), cfg.msaa,
+            msaa_refusal(PreparedScene(), true, cfg.backend == Backend::CPU, cfg.api, cfg.msaa).c_str());
     return 1;
   }
   if (!quiet) {
@@ -322,6 +344,7 @@ int cmd_render(int argc, char **argv) {
     }
     printf("frame %dx%d: prepare %.1f ms, lit pass %.1f ms, post %.1f ms, frame %.1f ms, total with loading %.1f ms\n",
            cfg.w, cfg.h, res.prepare_ms, res.lit_ms, res.post_ms, res.frame_ms, total_ms);
+    if (res.msaa_samples > 1) printf("msaa: %d samples per pixel, resolved as RGBA8\n", res.msaa_samples);
     if (res.auto_exposure) printf("auto exposure: tone-map scale %.4f\n", res.tone_map_scale);
     printf("wrote %s.exr (lit pass) and %s.png\n", out.c_str(), out.c_str());
   }
@@ -331,7 +354,22 @@ int cmd_render(int argc, char **argv) {
   if (!quiet || a.flag("--report-memory")) {
     printf("peak memory: %.1f MiB\n", peak_mib());
   }
-  if (cfg.check) {
+  if (cfg.check && res.check_msaa_interior >= 0) {
+    printf("check: MSAA interior pixels, GL's resolved frame vs the C twin on GL's G-buffer: %ld of %ld differ (max %d "
+           "codes)\n",
+           res.check_mismatched, res.check_pixels, res.check_msaa_interior_max);
+    printf("check: MSAA background pixels (no sample covered): %ld of %ld differ\n", res.check_msaa_background_mismatched,
+           res.check_msaa_background);
+    printf("check: MSAA edge pixels, GL vs the C fallback's MSAA frame: %ld pixels, %ld beyond 1 code, %ld beyond "
+           "64 codes, max %d\n",
+           res.check_msaa_edge, res.check_msaa_edge_over_1, res.check_msaa_edge_over_64, res.check_msaa_edge_max);
+    printf("check: HDR path and colour correction on GL vs their C twins on GL's lit frame: %ld of %ld channels differ\n",
+           res.check_post_mismatched, res.check_post_channels);
+    // Interior pixels: tolerance 0 (the same records through the same arithmetic); edge pixels
+    // are reported (their bound is tests/cli/test_msaa.sh's).
+    if (res.check_mismatched != 0 || res.check_msaa_background_mismatched != 0 || res.check_post_mismatched != 0)
+      return 1;
+  } else if (cfg.check) {
     printf("check: GL frame vs the C twin on GL's G-buffer: %ld of %ld covered pixels differ (max %u ULP)\n",
            res.check_mismatched, res.check_pixels, res.check_max_ulp);
     printf(

@@ -29,7 +29,7 @@ void apply_max_memory(const Args &a) {
   set_memory_limit_mib(a.get_int("--max-memory", static_cast<int>(kDefaultMemoryLimitMiB), 64, 1048576));
 }
 
-bool render_fits_memory(const Scene &s, int w, int h, bool gl, bool check, std::string *why) {
+bool render_fits_memory(const Scene &s, int w, int h, bool gl, bool check, std::string *why, int msaa) {
   struct Part {
     std::string what;
     double bytes;
@@ -37,6 +37,14 @@ bool render_fits_memory(const Scene &s, int w, int h, bool gl, bool check, std::
   std::vector<Part> parts;
   parts.push_back({"the frame of " + std::to_string(w) + " x " + std::to_string(h) + (check ? " with --check" : ""),
                    static_cast<double>(w) * h * (check ? 192.0 : 64.0)});
+  if (msaa > 1) {
+    // GL: RGBA8 and 32-bit depth per sample in llvmpipe; the C fallback (glue/scene/msaa.cpp):
+    // triangle, depth, robustness and layer bytes per sample, and up to one shaded layer per
+    // sample (visibility 16 and RGBA32F 16 bytes a pixel); --check runs both.
+    const double c_bytes = msaa * (10.0 + 32.0), gl_bytes = msaa * 8.0 + 4.0;
+    parts.push_back({"the " + std::to_string(msaa) + "-sample frame",
+                     static_cast<double>(w) * h * (gl ? gl_bytes + (check ? c_bytes : 0) : c_bytes)});
+  }
   double probes = 0;
   for (const SceneProbe &p : s.probes) probes += 2.0 * 6 * p.size * p.size * 16;  // the cube, and its GL copy
   if (!s.probes.empty()) parts.push_back({std::to_string(s.probes.size()) + " probe cubes", probes});

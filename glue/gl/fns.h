@@ -93,6 +93,8 @@
   X(RenderbufferStorageMultisample, PFNGLRENDERBUFFERSTORAGEMULTISAMPLEPROC) \
   X(FramebufferRenderbuffer, PFNGLFRAMEBUFFERRENDERBUFFERPROC)               \
   X(BlitFramebuffer, PFNGLBLITFRAMEBUFFERPROC)                               \
+  X(GetRenderbufferParameteriv, PFNGLGETRENDERBUFFERPARAMETERIVPROC)         \
+  X(SampleCoverage, PFNGLSAMPLECOVERAGEPROC)                                 \
   X(DrawElements, PFNGLDRAWELEMENTSPROC)                                     \
   X(DrawBuffers, PFNGLDRAWBUFFERSPROC)                                       \
   X(ReadBuffer, PFNGLREADBUFFERPROC)                                         \

@@ -1,5 +1,6 @@
 // tiershade scene: the C fallback's scene frames (glue/scene/cpu_renderer.h): rasteriser and shading.
 #include "scene/cpu_renderer.h"
+#include "scene/raster_tri.h"
 
 #include <algorithm>
 #include <atomic>
@@ -81,18 +82,6 @@ void make_ctx(const PreparedScene &p, std::vector<DrawCtx> *out) {
 const int kVary = 24;  // 6 slots x 4
 const int kPixelSlots = 6;  // ML_PIXEL_SLOTS == WL_PIXEL_SLOTS
 const int kChunk = 64;  // pixels per batched call of scene_shade_cpu (a multiple of 8)
-
-// The clip coordinates alone (what the rasteriser needs), as vertex_stage computes them.
-void clip_stage(const PreparedScene &p, const PreparedDraw &d, std::vector<float> *clip) {
-  const size_t n = d.position.size() / 3;
-  clip->resize(n * 4);
-  const float *m = p.view_proj;
-  for (size_t i = 0; i < n; ++i) {
-    const float *P = &d.position[i * 3];
-    float *c = &(*clip)[i * 4];
-    for (int r = 0; r < 4; ++r) c[r] = m[r] * P[0] + m[4 + r] * P[1] + m[8 + r] * P[2] + m[12 + r];
-  }
-}
 
 // The production vertex shaders' outputs (model_lighting.vs, world_lighting.vs) in float.
 void vertex_stage(const PreparedScene &p, const PreparedDraw &d, std::vector<float> *clip, std::vector<float> *vary) {
@@ -179,32 +168,6 @@ void shade_run(const DrawCtx &c, const ts_vec4f *pix, int pitch, int n, ts_vec4f
 
 // ---- rasteriser -----------------------------------------------------------------------
 
-struct ClipVert {
-  double c[4];
-  double bary[3];
-};
-
-struct ScreenTri {
-  int draw, tri;
-  int64_t X[3], Y[3];  // 8-bit sub-pixel fixed point
-  double z[3], invw[3];
-  double bary[3][3];  // each screen vertex as barycentrics of the original triangle
-  __int128 area;
-  int x0, x1, y0, y1;
-  // Derived once in setup: 1 / area; edge k (a -> b, opposite vertex k) as dx, dy and its
-  // top-left bias (an edge value of 0 covers the pixel iff the edge is top or left); small:
-  // every coordinate below 2^27, so the edge values are exact in 64 bits; unit: not clipped,
-  // each screen vertex is one original vertex (bary rows are unit vectors; ui[j]: the screen
-  // vertex that is original vertex j).
-  double inv_area;
-  int64_t dx[3], dy[3];
-  int bias[3];
-  bool small, unit;
-  int ui[3];
-};
-
-const int kSub = 256;  // llvmpipe rasterises with 8 sub-pixel bits
-
 bool top_left(int64_t dx, int64_t dy) { return dy < 0 || (dy == 0 && dx > 0); }
 
 void finish_setup(ScreenTri *s) {
@@ -231,7 +194,21 @@ void finish_setup(ScreenTri *s) {
   }
 }
 
-void setup(const PreparedScene &p, int di, const std::vector<float> &clip, std::vector<ScreenTri> *out) {
+}  // namespace
+
+// The clip coordinates alone (what the rasteriser needs), as vertex_stage computes them.
+void scene_clip_stage(const PreparedScene &p, const PreparedDraw &d, std::vector<float> *clip) {
+  const size_t n = d.position.size() / 3;
+  clip->resize(n * 4);
+  const float *m = p.view_proj;
+  for (size_t i = 0; i < n; ++i) {
+    const float *P = &d.position[i * 3];
+    float *c = &(*clip)[i * 4];
+    for (int r = 0; r < 4; ++r) c[r] = m[r] * P[0] + m[4 + r] * P[1] + m[8 + r] * P[2] + m[12 + r];
+  }
+}
+
+void scene_tri_setup(const PreparedScene &p, int di, const std::vector<float> &clip, std::vector<ScreenTri> *out) {
   const PreparedDraw &d = p.draws[di];
   const double W = p.w, H = p.h;
   for (size_t t = 0; t + 2 < d.indices.size(); t += 3) {
@@ -298,33 +275,19 @@ void setup(const PreparedScene &p, int di, const std::vector<float> &clip, std::
   }
 }
 
+namespace {
+
 // floor(a / b) and ceil(a / b) for b > 0.
 int64_t floor_div(int64_t a, int64_t b) { return a >= 0 ? a / b : -((-a + b - 1) / b); }
 int64_t ceil_div(int64_t a, int64_t b) { return -floor_div(-a, b); }
-
-typedef double D2 __attribute__((vector_size(16)));  // GCC vector extension: one SSE2 register
 
 // The visible pixel (y, x) of s with edge values e (double): depth test LESS, then the
 // perspective-correct barycentrics. The operations and their order are the reference's.
 inline void shade_pixel(const ScreenTri &s, SceneVisibility *vis, size_t i, double l0, double l1, double l2) {
   const double z = l0 * s.z[0] + l1 * s.z[1] + l2 * s.z[2];
   if (!(z < vis->depth[i]) || z < 0.0) return;
-  const double q[3] = {l0 * s.invw[0], l1 * s.invw[1], l2 * s.invw[2]};
-  const double qs = q[0] + q[1] + q[2];
   double B1, B2;
-  if (s.unit) {
-    // Rows of unit vectors: the sum over k of q[k] / qs * bary[k][j] is +0 + ... with one
-    // non-zero term (q >= 0 and finite inside the triangle), which is that term exactly.
-    const D2 r = D2{q[s.ui[1]], q[s.ui[2]]} / D2{qs, qs};  // two IEEE divisions in one instruction
-    B1 = r[0];
-    B2 = r[1];
-  } else {
-    // B[j] = sum over k of q[k] / qs * bary[k][j], from 0 in k order (B[0] is not kept).
-    const D2 r01 = D2{q[0], q[1]} / D2{qs, qs};
-    const double r0 = r01[0], r1 = r01[1], r2 = q[2] / qs;
-    B1 = ((0.0 + r0 * s.bary[0][1]) + r1 * s.bary[1][1]) + r2 * s.bary[2][1];
-    B2 = ((0.0 + r0 * s.bary[0][2]) + r1 * s.bary[1][2]) + r2 * s.bary[2][2];
-  }
+  scene_tri_bary(s, l0, l1, l2, &B1, &B2);
   vis->depth[i] = static_cast<float>(z);
   vis->draw[i] = s.draw;
   vis->tri[i] = s.tri;
@@ -421,8 +384,8 @@ void scene_rasterize_cpu(const PreparedScene &p, SceneVisibility *vis, int threa
   while (first || di < p.draws.size()) {
     tris.clear();
     for (; di < p.draws.size() && tris.size() < kBatch; ++di) {
-      clip_stage(p, p.draws[di], &clip);
-      setup(p, static_cast<int>(di), clip, &tris);
+      scene_clip_stage(p, p.draws[di], &clip);
+      scene_tri_setup(p, static_cast<int>(di), clip, &tris);
     }
     total += tris.size();
     if (first && maker.joinable()) maker.join();

@@ -26,6 +26,9 @@ struct SceneRenderConfig {
   int w = 1280, h = 720;
   int threads = 0;  // C fallback workers (0 = all cores)
   bool check = false;  // GL: also shade GL's own G-buffer with the C twin and compare bit for bit
+  // MSAA samples per pixel (0 or 1: none; 2, 4, 8: the integer path's multisampled RGBA8
+  // target, glue/scene/msaa.h).
+  int msaa = 0;
   int exposure_frames = 300;  // auto exposure: frames (at 30 fps) of the running histogram on the still frame
   // Progress of long stages: (stage, fraction done).
   std::function<void(const char *, double)> progress;
@@ -51,6 +54,12 @@ struct SceneRenderResult {
   // --check: display channels where GL's HDR path and colour correction differ from their C twins
   // run on GL's lit frame (-1: not run).
   long check_post_mismatched = -1, check_post_channels = 0;
+  // MSAA: the samples per pixel the frame was rendered with (0: none); --check: interior
+  // pixels against the C twin on GL's G-buffer, edge pixels against the C fallback's MSAA frame.
+  int msaa_samples = 0;
+  long check_msaa_interior = -1, check_msaa_edge = 0, check_msaa_edge_over_1 = 0, check_msaa_edge_over_64 = 0;
+  int check_msaa_edge_max = 0, check_msaa_interior_max = 0;
+  long check_msaa_background = 0, check_msaa_background_mismatched = 0;
   std::vector<std::string> notes;
 };
 

@@ -33,6 +33,14 @@ SceneGl::~SceneGl() {
   if (fbo_) g.DeleteFramebuffers(1, &fbo_);
   if (color_) g.DeleteTextures(1, &color_);
   if (depth_) g.DeleteRenderbuffers(1, &depth_);
+  if (ms_fbo_) g.DeleteFramebuffers(1, &ms_fbo_);
+  if (rs_fbo_) g.DeleteFramebuffers(1, &rs_fbo_);
+  if (ms_color_) g.DeleteRenderbuffers(1, &ms_color_);
+  if (ms_depth_) g.DeleteRenderbuffers(1, &ms_depth_);
+  if (rs_color_) g.DeleteTextures(1, &rs_color_);
+  if (gbm_fbo_) g.DeleteFramebuffers(1, &gbm_fbo_);
+  if (gbm_color_) g.DeleteRenderbuffers(1, &gbm_color_);
+  if (gbm_depth_) g.DeleteRenderbuffers(1, &gbm_depth_);
 }
 
 bool SceneGl::init(const PreparedScene &p, std::string *err, double *compile_ms, int target_w, int target_h) {
@@ -86,7 +94,70 @@ bool SceneGl::init(const PreparedScene &p, std::string *err, double *compile_ms,
   g.BindFramebuffer(GL_FRAMEBUFFER, fbo_);
   g.FramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, color_, 0);
   g.FramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER, depth_);
-  return gl_framebuffer_complete(g, "scene framebuffer", err) && gl_no_error(g, "while uploading the scene", err);
+  if (!gl_framebuffer_complete(g, "scene framebuffer", err)) return false;
+  if (msaa_ > 1 && !init_msaa(err)) return false;
+  return gl_no_error(g, "while uploading the scene", err);
+}
+
+// The multisampled target (see set_msaa). GL_MAX_SAMPLES bounds the count a context offers
+// (llvmpipe: 4, its one multisample mode, lp_sample_pos_4x); a count it lacks is rounded up to
+// the next one it has (GL ES 3.0 section 4.4.2.1), which GL_RENDERBUFFER_SAMPLES reports.
+bool SceneGl::init_msaa(std::string *err) {
+  const GlFns &g = gl();
+  if (api_ == Api::GLES2) {
+    *err = "MSAA needs multisampled framebuffers (GLES 3.0 or GL 3.3; GLES 2.0 has none)";
+    return false;
+  }
+  GLint max_samples = 0;
+  g.GetIntegerv(GL_MAX_SAMPLES, &max_samples);
+  if (max_samples < msaa_) {
+    *err = "--msaa " + std::to_string(msaa_) + ": this context offers at most " + std::to_string(max_samples) +
+        " samples per pixel (GL_MAX_SAMPLES)";
+    return false;
+  }
+  g.GenRenderbuffers(1, &ms_color_);
+  g.BindRenderbuffer(GL_RENDERBUFFER, ms_color_);
+  g.RenderbufferStorageMultisample(GL_RENDERBUFFER, msaa_, GL_RGBA8, tw_, th_);
+  g.GetRenderbufferParameteriv(GL_RENDERBUFFER, GL_RENDERBUFFER_SAMPLES, &msaa_got_);
+  g.GenRenderbuffers(1, &ms_depth_);
+  g.BindRenderbuffer(GL_RENDERBUFFER, ms_depth_);
+  g.RenderbufferStorageMultisample(GL_RENDERBUFFER, msaa_, GL_DEPTH_COMPONENT24, tw_, th_);
+  g.GenFramebuffers(1, &ms_fbo_);
+  g.BindFramebuffer(GL_FRAMEBUFFER, ms_fbo_);
+  g.FramebufferRenderbuffer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_RENDERBUFFER, ms_color_);
+  g.FramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER, ms_depth_);
+  if (!gl_framebuffer_complete(g, "multisampled scene framebuffer", err)) return false;
+  rs_color_ = new_target_texture(g, GL_RGBA8, GL_UNSIGNED_BYTE, tw_, th_);
+  g.GenFramebuffers(1, &rs_fbo_);
+  g.BindFramebuffer(GL_FRAMEBUFFER, rs_fbo_);
+  g.FramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, rs_color_, 0);
+  if (!gl_framebuffer_complete(g, "MSAA resolve framebuffer", err)) return false;
+  return gl_no_error(g, "while allocating the multisampled target", err);
+}
+
+bool SceneGl::frame_msaa(std::vector<uint8_t> *rgba8, std::string *err, double *draw_ms,
+                         const std::function<void(int, GLuint)> &before_draw) {
+  const GlFns &g = gl();
+  if (!ms_fbo_) {
+    *err = "frame_msaa without a multisampled target (set_msaa before init)";
+    return false;
+  }
+  const auto t0 = Clock::now();
+  ms_pass_ = true;
+  const bool ok = draw_all(programs_, true, 0, err, before_draw);
+  ms_pass_ = false;
+  if (!ok) return false;
+  // The resolve: a blit from the multisampled framebuffer to the one-sample one, same size.
+  g.BindFramebuffer(GL_READ_FRAMEBUFFER, ms_fbo_);
+  g.BindFramebuffer(GL_DRAW_FRAMEBUFFER, rs_fbo_);
+  g.BlitFramebuffer(0, 0, tw_, th_, 0, 0, tw_, th_, GL_COLOR_BUFFER_BIT, GL_NEAREST);
+  g.Finish();
+  if (draw_ms) *draw_ms = ms_since(t0);
+  rgba8->assign(static_cast<size_t>(p_->w) * p_->h * 4, 0);
+  g.BindFramebuffer(GL_FRAMEBUFFER, rs_fbo_);
+  g.PixelStorei(GL_PACK_ALIGNMENT, 4);
+  g.ReadPixels(0, 0, p_->w, p_->h, GL_RGBA, GL_UNSIGNED_BYTE, rgba8->data());
+  return gl_no_error(g, "while resolving the multisampled frame", err);
 }
 
 bool SceneGl::bind_draw(size_t i, GLuint program, bool production, std::string *err) {
@@ -135,7 +206,7 @@ bool SceneGl::bind_draw(size_t i, GLuint program, bool production, std::string *
 // engine draws opaque geometry; the draw dump documents the same state, docs/bundles.md).
 void SceneGl::begin_pass() {
   const GlFns &g = gl();
-  g.BindFramebuffer(GL_FRAMEBUFFER, fbo_);
+  g.BindFramebuffer(GL_FRAMEBUFFER, gbm_pass_ ? gbm_fbo_ : ms_pass_ ? ms_fbo_ : fbo_);
   g.BindVertexArray(vao_);
   g.Viewport(0, 0, tw_, th_);
   g.Disable(GL_BLEND);
@@ -151,6 +222,10 @@ bool SceneGl::draw_all(const std::vector<GLuint> &progs, bool production, int gb
   begin_pass();
   g.ClearColor(0.f, 0.f, 0.f, 0.f);
   g.Clear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+  if (gbm_pass_) {
+    g.Enable(GL_SAMPLE_COVERAGE);
+    g.SampleCoverage(1.f / static_cast<float>(msaa_got_), GL_FALSE);
+  }
   bind_ms_ = 0;
   for (size_t i = 0; i < p_->draws.size(); ++i) {
     const GLuint prog = progs.at(prog_of_draw_[i]);
@@ -171,12 +246,15 @@ bool SceneGl::draw_all(const std::vector<GLuint> &progs, bool production, int gb
     }
   }
   g.Disable(GL_DEPTH_TEST);
+  g.Disable(GL_SAMPLE_COVERAGE);
   return gl_no_error(g, "while drawing the scene", err);
 }
 
 void SceneGl::warm(const std::atomic<int> *main_next) {
   const GlFns &g = gl();
+  ms_pass_ = ms_fbo_ != 0;  // MSAA: the multisampled target's shader variants
   begin_pass();
+  ms_pass_ = false;
   g.Clear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
   std::vector<bool> done(programs_.size(), false);
   std::string err;
@@ -215,7 +293,42 @@ bool SceneGl::frame(ImageF *out, std::string *err, double *draw_ms,
   return true;
 }
 
+bool SceneGl::gbuffer_msaa(std::vector<int> *draw, std::vector<float> *slots, std::string *err) {
+  const GlFns &g = gl();
+  if (!ms_fbo_) {
+    *err = "gbuffer_msaa without a multisampled target (set_msaa before init)";
+    return false;
+  }
+  if (!gbm_fbo_) {
+    g.GenRenderbuffers(1, &gbm_color_);
+    g.BindRenderbuffer(GL_RENDERBUFFER, gbm_color_);
+    g.RenderbufferStorageMultisample(GL_RENDERBUFFER, msaa_got_, GL_RGBA32F, tw_, th_);
+    g.GenRenderbuffers(1, &gbm_depth_);
+    g.BindRenderbuffer(GL_RENDERBUFFER, gbm_depth_);
+    g.RenderbufferStorageMultisample(GL_RENDERBUFFER, msaa_got_, GL_DEPTH_COMPONENT24, tw_, th_);
+    g.GenFramebuffers(1, &gbm_fbo_);
+    g.BindFramebuffer(GL_FRAMEBUFFER, gbm_fbo_);
+    g.FramebufferRenderbuffer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_RENDERBUFFER, gbm_color_);
+    g.FramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER, gbm_depth_);
+    if (!gl_framebuffer_complete(g, "multisampled G-buffer framebuffer", err)) return false;
+  }
+  // Each pass resolved into the one-sample RGBA32F target (fbo_), which read() reads.
+  gbm_pass_ = true;
+  const bool ok = gbuffer_passes(draw, slots, err, [&] {
+    g.BindFramebuffer(GL_READ_FRAMEBUFFER, gbm_fbo_);
+    g.BindFramebuffer(GL_DRAW_FRAMEBUFFER, fbo_);
+    g.BlitFramebuffer(0, 0, tw_, th_, 0, 0, tw_, th_, GL_COLOR_BUFFER_BIT, GL_NEAREST);
+  }, static_cast<float>(msaa_got_));
+  gbm_pass_ = false;
+  return ok;
+}
+
 bool SceneGl::gbuffer(std::vector<int> *draw, std::vector<float> *slots, std::string *err) {
+  return gbuffer_passes(draw, slots, err, nullptr, 1.f);
+}
+
+bool SceneGl::gbuffer_passes(std::vector<int> *draw, std::vector<float> *slots, std::string *err,
+                             const std::function<void()> &resolve, float scale) {
   const size_t n = static_cast<size_t>(p_->w) * p_->h;
   if (gb_programs_.empty()) {
     const Target t = target_for_api(api_);
@@ -243,11 +356,14 @@ bool SceneGl::gbuffer(std::vector<int> *draw, std::vector<float> *slots, std::st
   slots->assign(n * 24, 0.f);
   for (int slot = -1; slot < 6; ++slot) {
     if (!draw_all(gb_programs_[slot + 1], false, slot, err, nullptr)) return false;
+    if (resolve) resolve();
     if (!read(&img)) {
       *err = "reading the G-buffer back failed";
       return false;
     }
     for (size_t i = 0; i < n; ++i) {
+      if (scale != 1.f)
+        for (int c = 0; c < 4; ++c) img[i * 4 + c] *= scale;
       if (slot < 0) {
         (*draw)[i] = img[i * 4 + 3] > 0.5f ? static_cast<int>(img[i * 4]) : -1;
       } else {

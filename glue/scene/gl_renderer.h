@@ -33,10 +33,24 @@ class SceneGl : NonCopyable {
   // before_draw (optional) is called after a draw's program, uniforms and textures are bound.
   bool frame(ImageF *out, std::string *err, double *draw_ms = nullptr,
              const std::function<void(int draw, GLuint program)> &before_draw = nullptr);
+  // MSAA (the integer path; glue/scene/msaa.h), set before init: samples > 1 adds a
+  // multisampled RGBA8 colour and depth renderbuffer pair that frame_msaa draws into and
+  // resolves with glBlitFramebuffer into a one-sample RGBA8 texture, as an engine resolves.
+  void set_msaa(int samples) { msaa_ = samples; }
+  int msaa_samples() const { return msaa_got_; }  // the count GL allocated (GL_RENDERBUFFER_SAMPLES)
+  // The production pass into the multisampled target (clear 0,0,0,0; depth 1), resolved and read
+  // back as RGBA8 codes (rows bottom-up).
+  bool frame_msaa(std::vector<uint8_t> *rgba8, std::string *err, double *draw_ms = nullptr,
+                  const std::function<void(int draw, GLuint program)> &before_draw = nullptr);
   // Updates the shared slots (uniforms) of the draws from p (e.g. a new tone-map scale).
   void update(const PreparedScene &p) { p_ = &p; }
   // G-buffer: per pixel the draw index (-1 background) and the 6 pixel slots (24 floats).
   bool gbuffer(std::vector<int> *draw, std::vector<float> *slots, std::string *err);
+  // The same G-buffer drawn with the multisampled state (after set_msaa and init): an RGBA32F
+  // target of the same sample count, only sample 0 written (glSampleCoverage 1/4 of 4), resolved
+  // by glBlitFramebuffer ((v + 0 + 0 + 0) / 4, exact) and scaled back by 4: the records llvmpipe's
+  // multisample shader variant interpolated at sample 0's pixels (for MSAA --check).
+  bool gbuffer_msaa(std::vector<int> *draw, std::vector<float> *slots, std::string *err);
   const GlFns &gl() const { return r_.gl(); }
   GLuint program_of(int draw) const { return programs_.at(prog_of_draw_.at(draw)); }
   // The host time of the last pass's per-draw set-up (program, uniforms, textures, attribute
@@ -49,6 +63,9 @@ class SceneGl : NonCopyable {
   bool draw_all(const std::vector<GLuint> &progs, bool production, int gb_slot, std::string *err,
                 const std::function<void(int, GLuint)> &before_draw);
   bool read(std::vector<float> *rgba);
+  bool init_msaa(std::string *err);
+  bool gbuffer_passes(std::vector<int> *draw, std::vector<float> *slots, std::string *err,
+                      const std::function<void()> &resolve, float scale);
   GlRenderer &r_;
   Api api_;
   const PreparedScene *p_ = nullptr;
@@ -66,5 +83,10 @@ class SceneGl : NonCopyable {
   };
   std::vector<Buffers> buffers_;
   GLuint vao_ = 0, fbo_ = 0, color_ = 0, depth_ = 0;
+  int msaa_ = 0, msaa_got_ = 0;
+  bool ms_pass_ = false;  // begin_pass binds the multisampled framebuffer
+  bool gbm_pass_ = false;  // begin_pass binds the multisampled RGBA32F G-buffer framebuffer
+  GLuint gbm_fbo_ = 0, gbm_color_ = 0, gbm_depth_ = 0;
+  GLuint ms_fbo_ = 0, ms_color_ = 0, ms_depth_ = 0, rs_fbo_ = 0, rs_color_ = 0;
   std::vector<std::vector<GLuint>> gb_programs_;  // [slot + 1][unique variant]
 };

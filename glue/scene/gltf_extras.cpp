@@ -165,7 +165,7 @@ bool read_ambient(const tinygltf::Value &v, const std::string &place, Scene *s, 
 bool read_hdr_settings(const tinygltf::Value &v, const std::string &place, const std::string &dir, SceneHdr *h,
                        Err &e) {
   if (!check_keys(v, place,
-                  {"path", "tone_map_scale", "auto_exposure", "exposure_min", "exposure_max", "bloom", "luts"}, e))
+                  {"path", "tone_map_scale", "auto_exposure", "exposure_min", "exposure_max", "bloom", "luts", "msaa"}, e))
     return false;
   if (v.Has("path")) {
     if (!read_string(v.Get("path"), place + ".path", &h->path, e)) return false;
@@ -190,6 +190,16 @@ bool read_hdr_settings(const tinygltf::Value &v, const std::string &place, const
     return false;
   if (h->exposure_min > h->exposure_max) return e.fail(place, "exposure_min is larger than exposure_max");
   if (h->bloom_amount > 0 && h->path != "float") return e.fail(place + ".bloom", "bloom needs \"path\": \"float\"");
+  if (v.Has("msaa")) {
+    double d;
+    if (!read_number(v.Get("msaa"), place + ".msaa", 0, 8, &d, e)) return false;
+    if (d != 0 && d != 1 && d != 2 && d != 4 && d != 8)
+      return e.fail(place + ".msaa", "samples per pixel are 0 or 1 (none), 2, 4 or 8, not " + std::to_string(d));
+    h->msaa = static_cast<int>(d);
+    if (h->msaa > 1 && h->path == "float")
+      return e.fail(place + ".msaa", "MSAA is the integer path's (the float path's RGBA16F target has none: the talk's "
+                                     "float path \"requires floating-point alpha blending\" and lacks MSAA)");
+  }
   if (v.Has("luts")) {
     const tinygltf::Value &a = v.Get("luts");
     if (!a.IsArray()) return e.fail(place + ".luts", "expected an array, got " + value_kind(a));

@@ -145,6 +145,7 @@ struct SceneHdr {
   float exposure_min = 0.5f, exposure_max = 2.f;  // scale clamp
   float bloom_amount = 0.f;  // float path only
   std::vector<SceneLut> luts;  // colour correction after tone mapping (0..4)
+  int msaa = 0;  // samples per pixel of the integer path (0/1 none, 2, 4, 8; glue/scene/msaa.h)
 };
 
 // Lightmap settings ("lightmaps" in the scene's extras), used by World materials.

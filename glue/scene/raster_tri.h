@@ -1,0 +1,68 @@
+// tiershade scene: the C fallback's triangle set-up, shared by its one-sample rasteriser
+// (glue/scene/cpu_renderer.cpp) and its multisample one (glue/scene/msaa.cpp): clip-space
+// vertices, near-plane clipping, 8-bit sub-pixel fixed point (llvmpipe's FIXED_ORDER 8), the
+// top-left rule and the perspective-correct barycentrics at a point given by its edge values.
+#pragma once
+#include <cstdint>
+#include <vector>
+
+#include "scene/prepare.h"
+
+struct ClipVert {
+  double c[4];
+  double bary[3];
+};
+
+struct ScreenTri {
+  int draw, tri;
+  int64_t X[3], Y[3];  // 8-bit sub-pixel fixed point
+  double z[3], invw[3];
+  double bary[3][3];  // each screen vertex as barycentrics of the original triangle
+  __int128 area;
+  int x0, x1, y0, y1;
+  // Derived once in setup: 1 / area; edge k (a -> b, opposite vertex k) as dx, dy and its
+  // top-left bias (an edge value of 0 covers the pixel iff the edge is top or left); small:
+  // every coordinate below 2^27, so the edge values are exact in 64 bits; unit: not clipped,
+  // each screen vertex is one original vertex (bary rows are unit vectors; ui[j]: the screen
+  // vertex that is original vertex j).
+  double inv_area;
+  int64_t dx[3], dy[3];
+  int bias[3];
+  bool small, unit;
+  int ui[3];
+};
+
+const int kSub = 256;  // llvmpipe rasterises with 8 sub-pixel bits
+
+// The clip coordinates of a draw's vertices (u_view_proj * vec4(P, 1), summed as llvmpipe's
+// vertex shader sums them).
+void scene_clip_stage(const PreparedScene &p, const PreparedDraw &d, std::vector<float> *clip);
+// The screen triangles of draw di (clipped, snapped, counter-clockwise, bounding box in pixels).
+void scene_tri_setup(const PreparedScene &p, int di, const std::vector<float> &clip, std::vector<ScreenTri> *out);
+
+// Edge k's value at the sub-pixel point (px, py) (exact: 128-bit products).
+inline __int128 scene_tri_edge(const ScreenTri &s, int k, int64_t px, int64_t py) {
+  const int a = (k + 1) % 3;
+  return static_cast<__int128>(s.dx[k]) * (py - s.Y[a]) - static_cast<__int128>(s.dy[k]) * (px - s.X[a]);
+}
+
+// The perspective-correct barycentrics of original vertices 1 and 2 at the point whose
+// normalised edge values are l0, l1, l2 (the operations and their order are the reference's).
+inline void scene_tri_bary(const ScreenTri &s, double l0, double l1, double l2, double *b1, double *b2) {
+  typedef double D2 __attribute__((vector_size(16)));  // GCC vector extension: one SSE2 register
+  const double q[3] = {l0 * s.invw[0], l1 * s.invw[1], l2 * s.invw[2]};
+  const double qs = q[0] + q[1] + q[2];
+  if (s.unit) {
+    // Rows of unit vectors: the sum over k of q[k] / qs * bary[k][j] is +0 + ... with one
+    // non-zero term (q >= 0 and finite inside the triangle), which is that term exactly.
+    const D2 r = D2{q[s.ui[1]], q[s.ui[2]]} / D2{qs, qs};  // two IEEE divisions in one instruction
+    *b1 = r[0];
+    *b2 = r[1];
+  } else {
+    // B[j] = sum over k of q[k] / qs * bary[k][j], from 0 in k order (B[0] is not kept).
+    const D2 r01 = D2{q[0], q[1]} / D2{qs, qs};
+    const double r0 = r01[0], r1 = r01[1], r2 = q[2] / qs;
+    *b1 = ((0.0 + r0 * s.bary[0][1]) + r1 * s.bary[1][1]) + r2 * s.bary[2][1];
+    *b2 = ((0.0 + r0 * s.bary[0][2]) + r1 * s.bary[1][2]) + r2 * s.bary[2][2];
+  }
+}
