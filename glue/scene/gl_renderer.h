@@ -6,6 +6,7 @@
 #pragma once
 #include <atomic>
 #include <functional>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -67,4 +68,5 @@ class SceneGl : NonCopyable {
   std::vector<Buffers> buffers_;
   GLuint vao_ = 0, fbo_ = 0, color_ = 0, depth_ = 0;
   std::vector<std::vector<GLuint>> gb_programs_;  // [slot + 1][unique variant]
+  std::unique_ptr<SkyboxGl> sky_;  // the skybox pass of a scene with a sky (scene/skybox_pass.h)
 };
