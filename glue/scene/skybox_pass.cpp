@@ -19,7 +19,7 @@
 #include "scene/scene.h"
 #include "twins/skybox.h"
 
-int skybox_face_size(int lat_long_w) { return std::clamp(lat_long_w / 2, 16, 1024); }
+int skybox_face_size(int lat_long_w) { return std::clamp(lat_long_w, 16, 512); }
 
 void skybox_camera_vectors(const float view_proj[16], double forward[3], double right[3], double up[3]) {
   // Row r of the matrix (column-major): m[r], m[4 + r], m[8 + r] on a direction (w = 0).
