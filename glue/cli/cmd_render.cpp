@@ -227,6 +227,10 @@ int cmd_render(int argc, char **argv) {
             msaa_refusal(PreparedScene(), true, cfg.backend == Backend::CPU, cfg.api, cfg.msaa).c_str());
     return 1;
   }
+  // A draw dump holds geometry draws only: the skybox's full-screen pass is not in its format yet
+  // (docs/bundles.md), so a dumped frame is drawn without it, on GL and in C alike.
+  const bool dump_without_sky = a.has("--dump-draws") && sel.sky;
+  if (dump_without_sky) sel.sky = nullptr;
   if (!quiet) {
     printf("scene %s: %zu primitives, %zu materials, %zu lights, %zu probes; tier %s, %s HDR path, %s\n",
            scene.path.c_str(), scene.primitives.size(), scene.materials.size(), scene.lights.size(),
@@ -306,6 +310,7 @@ int cmd_render(int argc, char **argv) {
   }
   if (!quiet) {
     for (const std::string &n : res.notes) printf("note: %s\n", n.c_str());
+    if (dump_without_sky) printf("note: --dump-draws: the frame is drawn without the skybox (draw dumps hold geometry draws only)\n");
     printf("selection: %zu of %d combos of the families used (%.1f%%)\n", sel.variants.size(), sel.all_combos,
            100.0 * sel.variants.size() / std::max(1, sel.all_combos));
     if (cfg.backend != Backend::CPU) {

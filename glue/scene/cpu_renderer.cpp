@@ -484,6 +484,7 @@ void scene_shade_cpu(const PreparedScene &p, const SceneVisibility &vis, ImageF 
     const int done = ++rows;
     if (progress && t == 0) progress(static_cast<double>(done) / p.h);
   });
+  skybox_shade_background(p.sky, p.w, p.h, vis.draw.data(), out->rgba.data(), threads);  // skybox_pass.h
 }
 
 void scene_shade_records(const PreparedScene &p, const std::vector<int> &draw, const std::vector<float> &slots,
@@ -515,6 +516,7 @@ void scene_shade_records(const PreparedScene &p, const std::vector<int> &draw, c
       x = x1;
     }
   });
+  skybox_shade_background(p.sky, p.w, p.h, draw.data(), out->rgba.data(), threads);  // skybox_pass.h
 }
 
 void scene_records_cpu(const PreparedScene &p, const SceneVisibility &vis, std::vector<int> *draw,

@@ -64,6 +64,10 @@ bool SceneGl::init(const PreparedScene &p, std::string *err, double *compile_ms,
     }
     prog_of_draw_.push_back(static_cast<int>(k));
   }
+  if (p.sky.present()) {
+    sky_.reset(new SkyboxGl(r_, api_));
+    if (!sky_->init(p.sky, err)) return false;
+  }
   g.Finish();
   if (compile_ms) *compile_ms = ms_since(t0);
   g.GenVertexArrays(1, &vao_);
@@ -225,6 +229,11 @@ bool SceneGl::draw_all(const std::vector<GLuint> &progs, bool production, int gb
   if (gbm_pass_) {
     g.Enable(GL_SAMPLE_COVERAGE);
     g.SampleCoverage(1.f / static_cast<float>(msaa_got_), GL_FALSE);
+  }
+  // The skybox first, over every pixel; the geometry overwrites what it covers (skybox_pass.h).
+  if (production && sky_) {
+    if (!sky_->draw(p_->sky, err)) return false;
+    g.BindVertexArray(vao_);
   }
   bind_ms_ = 0;
   for (size_t i = 0; i < p_->draws.size(); ++i) {

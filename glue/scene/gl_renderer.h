@@ -6,6 +6,7 @@
 #pragma once
 #include <atomic>
 #include <functional>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -89,4 +90,5 @@ class SceneGl : NonCopyable {
   GLuint gbm_fbo_ = 0, gbm_color_ = 0, gbm_depth_ = 0;
   GLuint ms_fbo_ = 0, ms_color_ = 0, ms_depth_ = 0, rs_fbo_ = 0, rs_color_ = 0;
   std::vector<std::vector<GLuint>> gb_programs_;  // [slot + 1][unique variant]
+  std::unique_ptr<SkyboxGl> sky_;  // the skybox pass of a scene with a sky (scene/skybox_pass.h)
 };

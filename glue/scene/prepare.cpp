@@ -355,6 +355,7 @@ void set_scene_tone_map_scale(PreparedScene *p, float scale) {
     else
       d.shared[ML_SLOT_PARAMS].x = scale;
   }
+  skybox_set_tone_map_scale(&p->sky, scale);
 }
 
 bool prepare_scene(const Scene &s, const SceneSelection &sel, int w, int h, Api api, float tone_map_scale,
@@ -592,6 +593,7 @@ bool prepare_scene(const Scene &s, const SceneSelection &sel, int w, int h, Api 
     ps.draws.push_back(std::move(d));
   }
   ps.probes_made = static_cast<int>(probes.cubes.size());
+  if (!prepare_skybox(s, sel.sky, api, &ps, err)) return false;
   *out = std::move(ps);
   return true;
 }

@@ -12,6 +12,7 @@
 #include "gl/float_target.h"
 #include "scene/scene.h"
 #include "scene/selection.h"
+#include "scene/skybox_pass.h"
 #include "math/ts_math.h"
 #include "bake/bake_dir.h"
 #include "offline/lightmap_page.h"
@@ -63,6 +64,7 @@ struct PreparedScene {
   double bake_sky_ms = 0, bake_area_ms = 0;
   IrradianceVolume volume;  // the models' irradiance volume (docs/irradiance_volume.md); no samples: none
   std::vector<std::string> notes;
+  PreparedSky sky;  // the skybox (glue/scene/skybox_pass.h); absent without a sky
 };
 
 // api: cube maps are NEAREST on GLES (Mesa forces seamless filtering there; docs/conformance.md),

@@ -197,8 +197,15 @@ bool select_scene_variants(const Scene &s, Tier tier, const std::string &hdr_pat
     *err = "shader library lacks model_lighting or world_lighting";
     return false;
   }
-  // Every variant of both families for the tier; those used are pointed at.
-  for (const ShaderDecl *d : {model, world}) {
+  // The sky's skybox (glue/scene/skybox_pass.h): only in a scene with a sky.
+  const ShaderDecl *skybox = s.sky.image >= 0 ? find_decl(sel.decls, "skybox") : nullptr;
+  if (s.sky.image >= 0 && !skybox) {
+    *err = "shader library lacks skybox";
+    return false;
+  }
+  // Every variant of the families for the tier; those used are pointed at.
+  for (const ShaderDecl *d : {model, world, skybox}) {
+    if (!d) continue;
     std::string enum_err;  // (enumerate_variants reports through a non-empty message)
     std::vector<Variant> v = enumerate_variants(*d, {tier}, &enum_err);
     if (!enum_err.empty()) {
@@ -256,8 +263,16 @@ bool select_scene_variants(const Scene &s, Tier tier, const std::string &hdr_pat
     }
     sel.draws.push_back(std::move(c));
   }
+  const Variant *sky = nullptr;  // the skybox has one variant per tier
   for (const Variant &v : sel.all_storage)
-    if ((v.shader == model && used_model) || (v.shader == world && used_world)) sel.all_variants.push_back(&v);
+    if (skybox && v.shader == skybox && !sky) sky = &v;
+  if (sky) {
+    index[sky] = static_cast<int>(order.size());
+    order.push_back(sky);
+  }
+  for (const Variant &v : sel.all_storage)
+    if ((v.shader == model && used_model) || (v.shader == world && used_world) || v.shader == skybox)
+      sel.all_variants.push_back(&v);
   sel.all_combos = static_cast<int>(sel.all_variants.size());
   // Unique variants, in first-use order; the Variant objects are copied into sel.variants.
   sel.variants.reserve(order.size());
@@ -270,6 +285,10 @@ bool select_scene_variants(const Scene &s, Tier tier, const std::string &hdr_pat
     for (const auto &r : c.why) line += "; " + r;
     sel.variant_why[k].push_back(line);
     c.variant = &sel.variants[k];
+  }
+  if (sky) {
+    sel.sky = &sel.variants[index[sky]];
+    sel.variant_why[index[sky]].push_back("the scene's sky (extras.tiershade.sky): the HDR skybox where no geometry covers a pixel");
   }
   (void)yes;
   *out = std::move(sel);

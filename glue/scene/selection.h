@@ -33,6 +33,9 @@ struct SceneSelection {
   std::vector<Variant> all_storage;
   // The HDR path the scene runs ("integer" | "float") and its output encoding.
   std::string hdr_path;
+  // The skybox variant (points into variants) when the scene has a sky (extras.tiershade.sky),
+  // drawn where no geometry covers a pixel (glue/scene/skybox_pass.h); nullptr: none.
+  const Variant *sky = nullptr;
 };
 
 // Tier names as in the variants files: "ps20" | "ps2b" | "sm3". hdr_path: "" = the scene's.

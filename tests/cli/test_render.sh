@@ -102,6 +102,15 @@ run scenes/world_lighting.gltf --backend cpu --size 32x18 -o "$TMP/w"
 if [ "$RC" -eq 0 ] && grep -q 'is constant' "$OUT" && grep -q 'BUMPMAP=0: no \$bumpmap' "$OUT"; then
   pass "world: a constant envmap mask skips the fetch, a face without a normal map skips RNM"
 else fail "world: constant mask and flat faces" "status $RC: $(grep -m1 ENVMAPMASK "$OUT")"; fi
+# The sky (docs/baking.md, "The sky as the skybox"): the room's sky selects the skybox variant and
+# --check counts every pixel (the sky covers what no geometry does); a scene without a sky has none.
+run scenes/world_lighting.gltf --size 32x18 --check -o "$TMP/sky"
+if [ "$RC" -eq 0 ] && grep -q '^  skybox sm3:' "$OUT" && grep -q 'extras.tiershade.sky' "$OUT" &&
+   grep -qE ': 0 of 576 covered pixels differ' "$OUT"; then pass "a scene with a sky draws the skybox (GL = C twin on all 576 pixels)"
+else fail "a scene with a sky draws the skybox" "status $RC: $(grep -m1 -E 'skybox|check: GL' "$OUT")"; fi
+run scenes/model_lighting.gltf --size 32x18 -o "$TMP/nosky"
+if [ "$RC" -eq 0 ] && ! grep -q 'skybox' "$OUT"; then pass "a scene without a sky selects no skybox"
+else fail "a scene without a sky selects no skybox" "status $RC: $(grep -m1 skybox "$OUT")"; fi
 # --- --frames N: the first frame is the one written, then N warm frames and their median ----
 bad "frames with check" 2 "--frames times warm frames" scenes/model_lighting.gltf --frames 2 --check -o "$TMP/o"
 bad "negative frames" 2 "--frames" scenes/model_lighting.gltf --frames -1 -o "$TMP/o"
