@@ -181,11 +181,10 @@ struct CoreRead {
   // "what: reason": the refused allocation against the limit, else the core's message.
   std::string why(exr_result_t rc, const std::string &what) const {
     std::string r;
-    if (budget.refused > 0) {
-      memory_fits(static_cast<double>(memory_limit_mib()) * 1048576.0 + 1, "OpenEXR's buffer of " +
-                      std::to_string(static_cast<long long>(budget.refused)) + " bytes (with what is already allocated)", &r);
-      return what + ": " + r;
-    }
+    if (budget.refused > 0)
+      return what + ": OpenEXR asked for a buffer of " + std::to_string(static_cast<long long>(budget.refused)) +
+          " bytes, over what the memory limit of " + std::to_string(memory_limit_mib()) +
+          " MiB leaves it (raise it with --max-memory MIB)";
     r = budget.message.empty() ? exr_get_default_error_message(rc) : budget.message;
     return what + " (" + r + ")";
   }
