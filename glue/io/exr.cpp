@@ -1,4 +1,5 @@
-// tiershade io: openEXR files (io/exr.h), through the OpenEXR 3 C++ API.
+// tiershade io: openEXR files (io/exr.h): written through the OpenEXR 3 C++ API, read through its
+// C core (openexr.h) within the memory limit.
 //   * Output goes through FileOStream (an Imf::OStream over FILE*) into an AtomicFile, so
 //     write errors are seen even when OpenEXR swallows them (it writes the line-offset table
 //     from ~OutputFile, which cannot throw).
@@ -15,6 +16,8 @@
 #include <openexr.h>
 
 #include <algorithm>
+#include <cstdint>
+#include <cstdlib>
 #include <cerrno>
 #include <cstdio>
 #include <cstring>
@@ -114,69 +117,190 @@ bool write_exr_any(const char *fn, const std::string &path, const ImageF &img, I
   return true;
 }
 
-// OpenEXR allocates from the header in InputFile's constructor (line buffers of width x lines a
-// chunk x channels, tile buffers), before the data window can be checked: the header's
-// attributes (OpenEXR file layout: magic, version, then name\0 type\0 int32 size value, up to an
-// empty name) are read here first and those sizes checked against the memory limit.
-bool exr_header_fits(const std::string &path, std::string *why) {
-  FILE *f = std::fopen(path.c_str(), "rb");
-  if (!f) {
-    *why = std::string("cannot open: ") + std::strerror(errno);
-    return false;
+// ------------------------------------------------------------------------------ reading ---
+// Reading goes through OpenEXR's C core (openexr.h), not the C++ InputFile: InputFile allocates
+// from the header before anything can be checked (an unknown attribute's declared size, 1.8 GB
+// from a 444-byte file; line buffers of width x lines a chunk), whereas the core checks each
+// attribute's size against the file's and makes every allocation through the context's
+// alloc_fn. core_alloc counts those allocations against a budget (the memory limit minus what
+// read_exr allocates itself, io/memory_limit.h), so no header can make it take more.
+
+struct CoreBudget {
+  double left = 0;       // bytes the core may still allocate
+  double refused = 0;    // the first allocation refused, 0 if none
+  std::string message;   // the core's last error message
+};
+thread_local CoreBudget *t_budget = nullptr;  // the read_exr running on this thread (the core has no threads)
+
+constexpr size_t kAllocHead = 16;  // the size of each block, ahead of it (keeps malloc's 16-byte alignment)
+
+void *core_alloc(size_t n) {
+  CoreBudget *b = t_budget;
+  if (n > SIZE_MAX - kAllocHead) return nullptr;
+  if (b && static_cast<double>(n) > b->left) {
+    if (b->refused == 0) b->refused = static_cast<double>(n);
+    return nullptr;
   }
-  std::vector<unsigned char> b(1 << 16);
-  b.resize(std::fread(b.data(), 1, b.size(), f));
-  long long file_size = static_cast<long long>(b.size());
-  if (std::fseek(f, 0, SEEK_END) == 0) file_size = ftello(f);
-  std::fclose(f);
-  auto le = [&](size_t p) -> long long {
-    return p + 4 <= b.size() ? static_cast<int32_t>(b[p] | b[p + 1] << 8 | b[p + 2] << 16 | static_cast<uint32_t>(b[p + 3]) << 24) : 0;
-  };
-  long long w = 0, h = 0, tx = 0, ty = 0, channels = 0;
-  size_t p = 8;
-  while (p < b.size() && b[p] != 0) {
-    const size_t n0 = p;
-    while (p < b.size() && b[p]) ++p;
-    if (p >= b.size()) break;
-    const std::string name(b.begin() + n0, b.begin() + p);
-    const size_t t0 = ++p;
-    while (p < b.size() && b[p]) ++p;
-    if (p + 5 > b.size()) break;  // OpenEXR reports a truncated header
-    const std::string type(b.begin() + t0, b.begin() + p);
-    ++p;
-    const long long size = le(p);
-    p += 4;
-    if (size < 0 || static_cast<long long>(p) + size > file_size) {  // OpenEXR would allocate it first
-      *why = "header attribute '" + name + "' claims " + std::to_string(size) + " bytes, more than the file holds";
-      return false;
+  unsigned char *p = static_cast<unsigned char *>(std::malloc(n + kAllocHead));
+  if (!p) return nullptr;
+  const size_t counted = b ? n : 0;
+  std::memcpy(p, &counted, sizeof counted);
+  if (b) b->left -= static_cast<double>(n);
+  return p + kAllocHead;
+}
+
+void core_free(void *q) {
+  if (!q) return;
+  unsigned char *p = static_cast<unsigned char *>(q) - kAllocHead;
+  size_t counted;
+  std::memcpy(&counted, p, sizeof counted);
+  if (t_budget) t_budget->left += static_cast<double>(counted);
+  std::free(p);
+}
+
+void core_error(exr_const_context_t, exr_result_t, const char *msg) {
+  if (t_budget && msg) t_budget->message = msg;
+}
+
+// One read: the budget installed for this thread, the context and the decoder, released in order.
+struct CoreRead {
+  CoreBudget budget;
+  CoreBudget *prev;
+  exr_context_t ctx = nullptr;
+  exr_decode_pipeline_t dec{};  // EXR_DECODE_PIPELINE_INITIALIZER: all zero
+  bool dec_live = false;
+  CoreRead() : prev(t_budget) { t_budget = &budget; }
+  ~CoreRead() {
+    if (dec_live) exr_decoding_destroy(ctx, &dec);
+    exr_finish(&ctx);
+    t_budget = prev;
+  }
+  CoreRead(const CoreRead &) = delete;
+  CoreRead &operator=(const CoreRead &) = delete;
+
+  // "what: reason": the refused allocation against the limit, else the core's message.
+  std::string why(exr_result_t rc, const std::string &what) const {
+    std::string r;
+    if (budget.refused > 0)
+      return what + ": OpenEXR asked for a buffer of " + std::to_string(static_cast<long long>(budget.refused)) +
+          " bytes, over what the memory limit of " + std::to_string(memory_limit_mib()) +
+          " MiB leaves it (raise it with --max-memory MIB)";
+    r = budget.message.empty() ? exr_get_default_error_message(rc) : budget.message;
+    return what + " (" + r + ")";
+  }
+};
+
+int rgba_index(const char *name) {
+  static const char *const names[4] = {"R", "G", "B", "A"};
+  for (int c = 0; c < 4; ++c)
+    if (name && std::strcmp(name, names[c]) == 0) return c;
+  return -1;
+}
+
+// Sample i of a channel decoded in its own type (native byte order) as a float, converted as the
+// C++ library converts to FLOAT (half: Imath's table; uint: float(u); float: the same bits).
+float sample_as_float(const unsigned char *p, uint16_t type, size_t i) {
+  if (type == EXR_PIXEL_HALF) {
+    uint16_t bits;
+    std::memcpy(&bits, p + 2 * i, 2);
+    Imath::half h;
+    h.setBits(bits);
+    return static_cast<float>(h);
+  }
+  if (type == EXR_PIXEL_UINT) {
+    uint32_t u;
+    std::memcpy(&u, p + 4 * i, 4);
+    return static_cast<float>(u);
+  }
+  float f;
+  std::memcpy(&f, p + 4 * i, 4);
+  return f;
+}
+
+// Decodes one chunk (a block of scanlines or a tile, at (x0, y0) from the data window's corner,
+// rows counted from the top) into img (bottom-up), the R, G, B, A channels only.
+exr_result_t decode_chunk(CoreRead &r, const exr_chunk_info_t &ci, long long x0, long long y0, std::vector<unsigned char> &scratch,
+                          ImageF *img, std::string *why) {
+  exr_result_t rc = r.dec_live ? exr_decoding_update(r.ctx, 0, &ci, &r.dec) : exr_decoding_initialize(r.ctx, 0, &ci, &r.dec);
+  if (rc != EXR_ERR_SUCCESS) return rc;
+  r.dec_live = true;
+  if (x0 < 0 || y0 < 0 || ci.width < 1 || ci.height < 1 || x0 + ci.width > img->w || y0 + ci.height > img->h) {
+    *why = "chunk " + std::to_string(ci.idx) + " lies outside the data window";
+    return EXR_ERR_CORRUPT_CHUNK;
+  }
+  size_t off = 0, at[4] = {0, 0, 0, 0};
+  int chan[4] = {-1, -1, -1, -1};
+  for (int i = 0; i < r.dec.channel_count; ++i) {
+    exr_coding_channel_info_t &c = r.dec.channels[i];
+    const int k = rgba_index(c.channel_name);
+    c.decode_to_ptr = nullptr;
+    if (k < 0) continue;  // other channels are skipped by the unpacker
+    if (c.width != ci.width || c.height != ci.height) {
+      *why = "chunk " + std::to_string(ci.idx) + ": channel " + c.channel_name + " has another size than its chunk";
+      return EXR_ERR_CORRUPT_CHUNK;
     }
-    if (p + size > b.size()) break;  // a header beyond what was read: OpenEXR checks the rest
-    if (name == "dataWindow" && type == "box2i" && size == 16) {
-      w = le(p + 8) - le(p) + 1;
-      h = le(p + 12) - le(p + 4) + 1;
-    } else if (name == "tiles" && type == "tiledesc" && size >= 8) {
-      tx = static_cast<uint32_t>(le(p));
-      ty = static_cast<uint32_t>(le(p + 4));
-    } else if (name == "channels" && type == "chlist") {
-      for (size_t q = p; q < p + size && b[q];) {
-        while (q < p + size && b[q]) ++q;
-        q += 17;
-        ++channels;
+    const size_t need = static_cast<size_t>(c.bytes_per_element) * static_cast<size_t>(c.width) * static_cast<size_t>(c.height);
+    if (off + need > scratch.size()) {
+      *why = "chunk " + std::to_string(ci.idx) + " is larger than the file's largest chunk";
+      return EXR_ERR_CORRUPT_CHUNK;
+    }
+    c.user_bytes_per_element = c.bytes_per_element;  // decoded in its own type, converted below
+    c.user_data_type = c.data_type;
+    c.user_pixel_stride = c.bytes_per_element;
+    c.user_line_stride = c.bytes_per_element * c.width;
+    c.decode_to_ptr = scratch.data() + off;
+    chan[k] = i;
+    at[k] = off;
+    off += need;
+  }
+  if ((rc = exr_decoding_choose_default_routines(r.ctx, 0, &r.dec)) != EXR_ERR_SUCCESS) return rc;
+  if ((rc = exr_decoding_run(r.ctx, 0, &r.dec)) != EXR_ERR_SUCCESS) return rc;
+  const size_t w = static_cast<size_t>(img->w);
+  for (int k = 0; k < 4; ++k) {
+    if (chan[k] < 0) continue;
+    const uint16_t type = r.dec.channels[chan[k]].data_type;
+    const unsigned char *src = scratch.data() + at[k];
+    for (int y = 0; y < ci.height; ++y) {
+      float *row = &img->rgba[4 * w * static_cast<size_t>(img->h - 1 - (y0 + y))];  // file row y0+y, top-down
+      for (int x = 0; x < ci.width; ++x)
+        row[4 * static_cast<size_t>(x0 + x) + k] = sample_as_float(src, type, static_cast<size_t>(y) * ci.width + x);
+    }
+  }
+  return EXR_ERR_SUCCESS;
+}
+// OpenEXR 3.1's C core has no DWAA/DWAB decoder, and its tiled B44/B44A results differ from the
+// C++ library's at partial tiles (tests/unit/test_exr_core.cpp): those files are decoded by the
+// C++ InputFile as before, but only after the core has read and checked their whole header
+// within the budget (so InputFile's own copy of the attributes is within it too) and their line
+// buffers (a chunk's unpacked size, a few times) were checked against the memory limit.
+bool read_with_inputfile(const char *fn, const std::string &path, const exr_attr_box2i_t &core_dw, const bool present[4],
+                         ImageF *img, std::string *err) {
+  try {
+    Imf::InputFile in(path.c_str());
+    const Imath::Box2i dw = in.header().dataWindow();
+    if (dw.min.x != core_dw.min.x || dw.min.y != core_dw.min.y || dw.max.x != core_dw.max.x || dw.max.y != core_dw.max.y)
+      return io_error(err, fn, path, "the header reads differently with OpenEXR's C++ library (data window)");
+    if (!in.isComplete()) return io_error(err, fn, path, "file is incomplete (truncated?)");
+    const size_t w = static_cast<size_t>(img->w), h = static_cast<size_t>(img->h);
+    std::vector<float> buf(4 * w * h, 1.0f);  // top-down, then flipped
+    static const char *const names[4] = {"R", "G", "B", "A"};
+    Imf::FrameBuffer fb;
+    for (int c = 0; c < 4; ++c)
+      if (present[c]) {
+        const Imf::Channel *ch = in.header().channels().findChannel(names[c]);
+        if (!ch || ch->xSampling != 1 || ch->ySampling != 1)
+          return io_error(err, fn, path, "the header reads differently with OpenEXR's C++ library (channels)");
+        fb.insert(names[c], Imf::Slice::Make(Imf::FLOAT, &buf[c], dw, 4 * sizeof(float), 4 * sizeof(float) * w));
       }
-    }
-    p += size;
+    in.setFrameBuffer(fb);
+    in.readPixels(dw.min.y, dw.max.y);
+    for (size_t y = 0; y < h; ++y) std::memcpy(&img->rgba[4 * w * (h - 1 - y)], &buf[4 * w * y], sizeof(float) * 4 * w);
+    return true;
+  } catch (const std::exception &e) {
+    return io_error(err, fn, path, e.what());
+  } catch (...) {
+    return io_error(err, fn, path, "unknown error");
   }
-  if (w <= 0 || h <= 0) return true;  // OpenEXR reports it
-  const double px = static_cast<double>(w) * h, ch = static_cast<double>(std::max(1LL, channels));
-  const std::string dims = std::to_string(w) + " x " + std::to_string(h);
-  if (px > static_cast<double>(kMaxImagePixels)) {
-    *why = "data window " + dims + " is more than " + std::to_string(kMaxImagePixels) + " pixels";
-    return false;
-  }
-  // Lines are decoded up to 256 at a time (DWAB), 4 bytes a channel sample at most.
-  return memory_fits(32.0 * px, "a " + dims + " image", why) &&
-      memory_fits(4.0 * ch * static_cast<double>(w) * 256, "a " + dims + " image of " + std::to_string(channels) + " channels", why) &&
-      memory_fits(4.0 * ch * static_cast<double>(tx) * static_cast<double>(ty), "tiles of " + std::to_string(tx) + " x " + std::to_string(ty), why);
 }
 
 }  // namespace
@@ -192,64 +316,97 @@ bool write_exr_half(const std::string &path, const ImageF &img, std::string *err
 bool read_exr(const std::string &path, ImageF *out, std::string *err) {
   static const char fn[] = "read_exr";
   std::string why;
-  if (!regular_file_within(path, 1LL << 31, nullptr, &why) || !exr_header_fits(path, &why))
+  if (!regular_file_within(path, 1LL << 31, nullptr, &why)) return io_error(err, fn, path, why);
+  const double limit = static_cast<double>(memory_limit_mib()) * 1048576.0;
+  CoreRead r;
+  r.budget.left = limit;
+  exr_context_initializer_t init = EXR_DEFAULT_CONTEXT_INITIALIZER;
+  init.error_handler_fn = core_error;
+  init.alloc_fn = core_alloc;
+  init.free_fn = core_free;
+  init.max_image_width = init.max_image_height = static_cast<int>(kMaxImagePixels);
+  init.max_tile_width = init.max_tile_height = 65536;
+  init.flags = EXR_CONTEXT_FLAG_DISABLE_CHUNK_RECONSTRUCTION;  // a broken offset table is an error
+  exr_result_t rc = exr_start_read(&r.ctx, path.c_str(), &init);
+  if (rc != EXR_ERR_SUCCESS) return io_error(err, fn, path, r.why(rc, "bad header"));
+
+  exr_storage_t storage = EXR_STORAGE_LAST_TYPE;
+  exr_attr_box2i_t dw;
+  const exr_attr_chlist_t *chans = nullptr;
+  uint64_t chunk_bytes = 0;
+  if ((rc = exr_get_storage(r.ctx, 0, &storage)) != EXR_ERR_SUCCESS || (rc = exr_get_data_window(r.ctx, 0, &dw)) != EXR_ERR_SUCCESS ||
+      (rc = exr_get_channels(r.ctx, 0, &chans)) != EXR_ERR_SUCCESS || (rc = exr_get_chunk_unpacked_size(r.ctx, 0, &chunk_bytes)) != EXR_ERR_SUCCESS)
+    return io_error(err, fn, path, r.why(rc, "bad header"));
+  if (storage != EXR_STORAGE_SCANLINE && storage != EXR_STORAGE_TILED)
+    return io_error(err, fn, path, "deep data (unsupported: a flat scanline or tiled image is needed)");
+  const long long w = static_cast<long long>(dw.max.x) - dw.min.x + 1;
+  const long long h = static_cast<long long>(dw.max.y) - dw.min.y + 1;
+  if (w <= 0 || h <= 0 || w * h > kMaxImagePixels) return io_error(err, fn, path, "bad or too large data window");
+  const std::string dims = std::to_string(w) + " x " + std::to_string(h);
+  // The image and its flipped copy were 16 bytes a pixel each with the C++ reader: 32 kept as the
+  // stated limit (docs/reliability.md); then a chunk's decoded channels (our copy) and the core's.
+  if (!memory_fits(32.0 * w * h, "a " + dims + " image", &why) ||
+      !memory_fits(16.0 * w * h + 2.0 * static_cast<double>(chunk_bytes), "a " + dims + " image with its chunks of " + std::to_string(chunk_bytes) + " bytes", &why))
     return io_error(err, fn, path, why);
-  {  // OpenEXR's C core reads the header first: it checks every attribute against the file
-     // (the C++ InputFile allocates an attribute's claimed size before reading it)
-    exr_context_t ctx = nullptr;
-    exr_context_initializer_t init = EXR_DEFAULT_CONTEXT_INITIALIZER;
-    init.error_handler_fn = [](exr_const_context_t, exr_result_t, const char *) {};
-    const exr_result_t r = exr_start_read(&ctx, path.c_str(), &init);
-    exr_finish(&ctx);
-    if (r != EXR_ERR_SUCCESS) return io_error(err, fn, path, std::string("bad header (") + exr_get_default_error_message(r) + ")");
+
+  bool present[4] = {false, false, false, false};
+  std::string found;
+  for (int i = 0; i < chans->num_channels; ++i) {
+    const exr_attr_chlist_entry_t &c = chans->entries[i];
+    found += std::string(found.empty() ? "" : ", ") + c.name.str;
+    const int k = rgba_index(c.name.str);
+    if (k < 0) continue;
+    present[k] = true;
+    if (c.x_sampling != 1 || c.y_sampling != 1)
+      return io_error(err, fn, path, std::string("channel ") + c.name.str + " is subsampled (unsupported)");
   }
-  try {
-    Imf::InputFile in(path.c_str());
-    const Imf::Header &header = in.header();
-    const Imath::Box2i dw = header.dataWindow();
-    const long long w = (long long)dw.max.x - dw.min.x + 1;
-    const long long h = (long long)dw.max.y - dw.min.y + 1;
-    if (w <= 0 || h <= 0 || w * h > kMaxImagePixels) return io_error(err, fn, path, "bad or too large data window");
-    // The float buffer read and ImageF's flipped copy: 16 bytes per pixel each.
-    if (!memory_fits(32.0 * w * h, "a " + std::to_string(w) + " x " + std::to_string(h) + " image", &why))
+  if (!present[0] || !present[1] || !present[2])
+    return io_error(err, fn, path, "no R, G, B channels (channels: " + (found.empty() ? "none" : found) + ")");
+
+  ImageF img;
+  img.w = static_cast<int>(w);
+  img.h = static_cast<int>(h);
+  img.rgba.assign(static_cast<size_t>(4 * w * h), 1.0f);  // a missing A reads as 1
+  exr_compression_t comp = EXR_COMPRESSION_NONE;
+  if ((rc = exr_get_compression(r.ctx, 0, &comp)) != EXR_ERR_SUCCESS) return io_error(err, fn, path, r.why(rc, "bad header"));
+  if (comp == EXR_COMPRESSION_DWAA || comp == EXR_COMPRESSION_DWAB ||
+      (storage == EXR_STORAGE_TILED && (comp == EXR_COMPRESSION_B44 || comp == EXR_COMPRESSION_B44A))) {
+    // InputFile: the top-down copy (16 bytes a pixel) and its line buffers and decompressor's
+    // (a chunk's unpacked size, four times)
+    if (!memory_fits(32.0 * w * h + 4.0 * static_cast<double>(chunk_bytes), "a " + dims + " image with its chunks of " + std::to_string(chunk_bytes) + " bytes", &why))
       return io_error(err, fn, path, why);
-    static const char *const names[4] = {"R", "G", "B", "A"};
-    bool present[4];
-    for (int c = 0; c < 4; ++c) {
-      const Imf::Channel *ch = header.channels().findChannel(names[c]);
-      present[c] = ch != nullptr;
-      if (ch && (ch->xSampling != 1 || ch->ySampling != 1))
-        return io_error(err, fn, path, std::string("channel ") + names[c] + " is subsampled (unsupported)");
-    }
-    if (!present[0] || !present[1] || !present[2]) {
-      std::string found;
-      for (auto it = header.channels().begin(); it != header.channels().end(); ++it)
-        found += std::string(found.empty() ? "" : ", ") + it.name();
-      return io_error(err, fn, path, "no R, G, B channels (channels: " + (found.empty() ? "none" : found) + ")");
-    }
-    if (!in.isComplete()) return io_error(err, fn, path, "file is incomplete (truncated?)");
-
-    // Read top-down, then flip to ImageF's bottom-up order.
-    std::vector<float> buf((size_t)4 * w * h, 1.0f);
-    Imf::FrameBuffer fb;
-    for (int c = 0; c < 4; ++c)
-      if (present[c])
-        fb.insert(names[c],
-                  Imf::Slice::Make(Imf::FLOAT, &buf[c], dw, 4 * sizeof(float), 4 * sizeof(float) * (size_t)w));
-    in.setFrameBuffer(fb);
-    in.readPixels(dw.min.y, dw.max.y);
-
-    ImageF img;
-    img.w = (int)w;
-    img.h = (int)h;
-    img.rgba.resize(buf.size());
-    for (long long y = 0; y < h; ++y)
-      std::memcpy(&img.rgba[(size_t)(4 * w * (h - 1 - y))], &buf[(size_t)(4 * w * y)], sizeof(float) * 4 * (size_t)w);
+    if (!read_with_inputfile(fn, path, dw, present, &img, err)) return false;
     *out = std::move(img);
     return true;
-  } catch (const std::exception &e) {
-    return io_error(err, fn, path, e.what());
-  } catch (...) {
-    return io_error(err, fn, path, "unknown error");
   }
+  std::vector<unsigned char> scratch(chunk_bytes);
+  r.budget.left = limit - 16.0 * w * h - static_cast<double>(chunk_bytes);
+  exr_chunk_info_t ci;
+  if (storage == EXR_STORAGE_SCANLINE) {
+    int32_t lines = 0;
+    if ((rc = exr_get_scanlines_per_chunk(r.ctx, 0, &lines)) != EXR_ERR_SUCCESS || lines < 1)
+      return io_error(err, fn, path, r.why(rc ? rc : EXR_ERR_INVALID_ATTR, "bad header"));
+    for (long long y = dw.min.y; y <= dw.max.y; y += lines) {
+      if ((rc = exr_read_scanline_chunk_info(r.ctx, 0, static_cast<int>(y), &ci)) != EXR_ERR_SUCCESS)
+        return io_error(err, fn, path, r.why(rc, "file is incomplete or corrupt at line " + std::to_string(y)));
+      why.clear();
+      if ((rc = decode_chunk(r, ci, 0, static_cast<long long>(ci.start_y) - dw.min.y, scratch, &img, &why)) != EXR_ERR_SUCCESS)
+        return io_error(err, fn, path, why.empty() ? r.why(rc, "cannot decode the lines from " + std::to_string(ci.start_y)) : why);
+    }
+  } else {
+    int32_t tw = 0, th = 0;
+    if ((rc = exr_get_tile_sizes(r.ctx, 0, 0, 0, &tw, &th)) != EXR_ERR_SUCCESS || tw < 1 || th < 1)
+      return io_error(err, fn, path, r.why(rc ? rc : EXR_ERR_INVALID_ATTR, "bad tile description"));
+    for (long long ty = 0; ty * th < h; ++ty)
+      for (long long tx = 0; tx * tw < w; ++tx) {
+        const std::string tile = "tile (" + std::to_string(tx) + ", " + std::to_string(ty) + ")";
+        if ((rc = exr_read_tile_chunk_info(r.ctx, 0, static_cast<int>(tx), static_cast<int>(ty), 0, 0, &ci)) != EXR_ERR_SUCCESS)
+          return io_error(err, fn, path, r.why(rc, "file is incomplete or corrupt at " + tile));
+        why.clear();
+        if ((rc = decode_chunk(r, ci, tx * tw, ty * th, scratch, &img, &why)) != EXR_ERR_SUCCESS)
+          return io_error(err, fn, path, why.empty() ? r.why(rc, "cannot decode " + tile) : why);
+      }
+  }
+  *out = std::move(img);
+  return true;
 }

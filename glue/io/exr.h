@@ -14,7 +14,8 @@ bool write_exr(const std::string &path, const ImageF &img, std::string *err);
 // (round-to-nearest-even); magnitudes above 65504 become +-Inf.
 bool write_exr_half(const std::string &path, const ImageF &img, std::string *err);
 
-// Reads any scanline or tiled single-part EXR that has R, G and B channels (HALF, FLOAT or
-// UINT; full resolution). A missing A channel reads as 1. Missing, truncated or corrupt files
-// fail with a message naming the file.
+// Reads part 0 (level 0 if tiled) of a flat scanline or tiled EXR that has R, G and B channels
+// (HALF, FLOAT or UINT; full resolution), through OpenEXR's C core with every allocation within
+// the memory limit (io/memory_limit.h; docs/reliability.md). A missing A channel reads as 1.
+// Missing, truncated, corrupt or over-limit files fail with a message naming the file.
 bool read_exr(const std::string &path, ImageF *out, std::string *err);

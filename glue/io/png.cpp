@@ -43,6 +43,19 @@ void png_read_cb(png_structp png, png_bytep data, size_t length) {
     png_error(png, std::feof(fp) ? "unexpected end of file (truncated?)" : "read error");
 }
 
+// PNG bytes in memory (a glTF texture), read through png_read_mem_cb.
+struct PngMem {
+  const unsigned char *data;
+  size_t size, at;
+};
+
+void png_read_mem_cb(png_structp png, png_bytep data, size_t length) {
+  PngMem *m = static_cast<PngMem *>(png_get_io_ptr(png));
+  if (length > m->size - m->at) png_error(png, "unexpected end of data (truncated?)");
+  std::memcpy(data, m->data + m->at, length);
+  m->at += length;
+}
+
 bool out_of_memory(PngCtx *ctx) {
   std::snprintf(ctx->msg, sizeof ctx->msg, "out of memory");
   return false;
@@ -87,15 +100,12 @@ struct PngRaw {
   png_bytep *rows;
 };
 
-// Decodes any PNG to RGBA 8/16-bit.  C-style for the same reason as above.
-bool png_read_c(FILE *fp, PngRaw *raw, PngCtx *ctx) {
+// Decodes any PNG to RGBA 8/16-bit, after its 8-byte signature (checked by the caller), through
+// read_fn on io. 16-bit samples stay big-endian as stored unless swap16 (then host order, little-
+// endian here). C-style for the same reason as above.
+bool png_read_c(png_rw_ptr read_fn, void *io, bool swap16, PngRaw *raw, PngCtx *ctx) {
   raw->pixels = nullptr;
   raw->rows = nullptr;
-  unsigned char sig[8];
-  if (std::fread(sig, 1, 8, fp) != 8 || png_sig_cmp(sig, 0, 8) != 0) {
-    std::snprintf(ctx->msg, sizeof ctx->msg, "not a PNG file (bad signature)");
-    return false;
-  }
   png_structp png = png_create_read_struct(PNG_LIBPNG_VER_STRING, ctx, png_error_cb, png_warning_cb);
   if (!png) return out_of_memory(ctx);
   png_infop info = png_create_info_struct(png);
@@ -111,7 +121,7 @@ bool png_read_c(FILE *fp, PngRaw *raw, PngCtx *ctx) {
     raw->rows = nullptr;
     return false;
   }
-  png_set_read_fn(png, fp, png_read_cb);
+  png_set_read_fn(png, io, read_fn);
   png_set_sig_bytes(png, 8);
   png_read_info(png, info);
 
@@ -136,6 +146,7 @@ bool png_read_c(FILE *fp, PngRaw *raw, PngCtx *ctx) {
   if (has_trns) png_set_tRNS_to_alpha(png);
   if (color_type == PNG_COLOR_TYPE_GRAY || color_type == PNG_COLOR_TYPE_GRAY_ALPHA) png_set_gray_to_rgb(png);
   if (!(color_type & PNG_COLOR_MASK_ALPHA) && !has_trns) png_set_add_alpha(png, 0xffff, PNG_FILLER_AFTER);
+  if (swap16 && bit_depth == 16) png_set_swap(png);
   png_set_interlace_handling(png);
   png_read_update_info(png, info);
 
@@ -237,7 +248,12 @@ bool read_png(const std::string &path, ImageF *out, Encode decode, std::string *
   PngCtx ctx;
   ctx.msg[0] = '\0';
   PngRaw raw;
-  const bool ok = png_read_c(fp, &raw, &ctx);
+  unsigned char sig[8];
+  if (std::fread(sig, 1, 8, fp) != 8 || png_sig_cmp(sig, 0, 8) != 0) {
+    std::fclose(fp);
+    return io_error(err, fn, path, "not a PNG file (bad signature)");
+  }
+  const bool ok = png_read_c(png_read_cb, fp, false, &raw, &ctx);
   std::fclose(fp);
   if (!ok) return io_error(err, fn, path, ctx.msg);
 
@@ -267,5 +283,31 @@ bool read_png(const std::string &path, ImageF *out, Encode decode, std::string *
   std::free(raw.pixels);
   std::free(raw.rows);
   *out = std::move(img);
+  return true;
+}
+
+bool is_png(const unsigned char *bytes, size_t size) { return size >= 8 && png_sig_cmp(bytes, 0, 8) == 0; }
+
+bool decode_png_rgba(const unsigned char *bytes, size_t size, std::vector<unsigned char> *out, int *w, int *h, int *bits,
+                     std::string *why) {
+  if (!is_png(bytes, size)) {
+    *why = "not a PNG file (bad signature)";
+    return false;
+  }
+  PngMem mem{bytes, size, 8};
+  PngCtx ctx;
+  ctx.msg[0] = '\0';
+  PngRaw raw;
+  if (!png_read_c(png_read_mem_cb, &mem, true, &raw, &ctx)) {
+    *why = ctx.msg[0] ? ctx.msg : "libpng error";
+    return false;
+  }
+  const size_t n = static_cast<size_t>(raw.w) * raw.h * 4 * (raw.depth / 8);
+  out->assign(raw.pixels, raw.pixels + n);  // rows are contiguous, top-down
+  *w = static_cast<int>(raw.w);
+  *h = static_cast<int>(raw.h);
+  *bits = raw.depth;
+  std::free(raw.pixels);
+  std::free(raw.rows);
   return true;
 }

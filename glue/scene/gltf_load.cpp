@@ -12,6 +12,7 @@
 
 #include "base/image.h"
 #include "io/memory_limit.h"
+#include "io/png.h"
 #include "scene/gltf_util.h"
 
 namespace scene_gltf {
@@ -191,8 +192,12 @@ bool check_accessors(const Model &m, Err &e) {
   return true;
 }
 
-// tinygltf's image callback: the size from the header (stbi_info) checked against the limits
-// before stb decodes, and a failure named by the image's file (or its bufferView / data URI).
+// tinygltf's image callback (SetImageLoader): PNG through libpng (io/png.h decode_png_rgba: the size
+// from the header checked against the limits before any pixel is allocated, and no inflate past
+// the rows, where stb_image grew its buffer without bound on a zip-bomb IDAT), JPEG through stb_image
+// as before (its size from stbi_info checked first); any other format is refused. Pixels as
+// tinygltf's own loader gave them: RGBA, 8 or 16 bits (little-endian). A failure names the image
+// and its file (or its bufferView / data URI).
 struct ImageLoad {
   std::string dir;
   std::string error;  // the first failure, "images[i] (file): reason"
@@ -210,22 +215,37 @@ bool load_image(tinygltf::Image *im, const int idx, std::string *err, std::strin
     if (err) *err += ctx.error + "\n";
     return false;
   };
+  const size_t n = size > 0 ? static_cast<size_t>(size) : 0;
+  if (is_png(bytes, n)) {
+    std::vector<unsigned char> px;
+    int w = 0, h = 0, bits = 8;
+    std::string why;
+    if (!decode_png_rgba(bytes, n, &px, &w, &h, &bits, &why)) return fail("cannot decode the image (libpng: " + why + ")");
+    if ((req_w > 0 && req_w != w) || (req_h > 0 && req_h != h)) return fail("the image is not of the size required");
+    im->width = w;
+    im->height = h;
+    im->component = 4;
+    im->bits = bits;
+    im->pixel_type = bits == 16 ? TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT : TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE;
+    im->image = std::move(px);
+    return true;
+  }
   int w = 0, h = 0, comp = 0;
-  if (!stbi_info_from_memory(bytes, size, &w, &h, &comp)) {
-    const char *r = stbi_failure_reason();
-    return fail(std::string("not a PNG or JPEG image stb_image can read (") + (r ? r : "unknown format") + ")");
+  if (n < 3 || bytes[0] != 0xFF || bytes[1] != 0xD8 || bytes[2] != 0xFF || !stbi_info_from_memory(bytes, size, &w, &h, &comp)) {
+    const char *r = n >= 3 && bytes[0] == 0xFF && bytes[1] == 0xD8 ? stbi_failure_reason() : "neither PNG nor JPEG signature";
+    return fail(std::string("not a PNG or JPEG image (") + (r ? r : "unknown format") + ")");
   }
   if (w < 1 || h < 1 || static_cast<long long>(w) * h > kMaxImagePixels)
     return fail(std::to_string(w) + " x " + std::to_string(h) + " pixels (at most " + std::to_string(kMaxImagePixels) +
                 " pixels)");
   std::string why;
-  const double px = static_cast<double>(w) * h;  // stb's 4 channels (8 or 16 bits) and the float copy
+  const double px = static_cast<double>(w) * h;  // stb's 4 channels (8 bits) and the float copy
   if (!memory_fits(px * (8 + 16), "a " + std::to_string(w) + " x " + std::to_string(h) + " image", &why))
     return fail(why);
   std::string terr;
   if (!tinygltf::LoadImageData(im, idx, &terr, warn, req_w, req_h, bytes, size, nullptr)) {
     const char *r = stbi_failure_reason();
-    return fail(std::string("cannot decode the image (") + (r ? r : "stb_image failed") + ")");
+    return fail(std::string("cannot decode the image (stb_image: ") + (r ? r : "JPEG decoding failed") + ")");
   }
   return true;
 }

@@ -4,7 +4,7 @@
 # The reproductions of issue 15 (hostile input, bounded resources), each built in a temp dir:
 # a FIFO and a /dev/zero symlink as the scene and as LUTs, a 53-byte Radiance header claiming
 # 11585 x 11585 pixels (as a probe and as a lightmap page), extras nested 20,000 deep, an
-# accessor count of 67,108,864 over a 19,600-byte view, a broken PNG texture, an EXR probe,
+# accessor count of 67,108,864 over a 19,600-byte view, a broken and a zip-bomb PNG texture, an EXR probe,
 # a lightmap page too small for the faces, damaged irradiance-volume files in a bake directory, --size overflow and malformed sizes, `lut convert`
 # onto itself, the limits (--size 8192x8192, 64 probes of 512, an 8192 x 8192 page) and demo's
 # output directory. Each checks the exit status, the message (it names the file and the limit),
@@ -155,6 +155,12 @@ head -c 100 "$SC/textures/brick.png" > broken.png
 scene phong_sphere.gltf bad_png.gltf "d['images'][2]['uri'] = os.path.abspath('broken.png')"
 bad broken_png_named 1 "bad_png.gltf: images\[2\] \(.*broken.png\): cannot decode the image" r_png \
   -- render bad_png.gltf --backend cpu -o r_png
+# A zip-bomb PNG texture (fuzz_png's finding: a 4x4 header, an IDAT that inflates without end):
+# stb_image grew its inflate buffer past 1 GiB; libpng stops at the rows the header declares.
+cp "$HERE/tests/fuzz/regressions/png/png_zip_bomb-2c5666476c9d" zip_bomb.png
+scene phong_sphere.gltf bomb_png.gltf "d['images'][2]['uri'] = os.path.abspath('zip_bomb.png')"
+bad zip_bomb_png_named 1 "bomb_png.gltf: images\[2\] \(.*zip_bomb.png\): cannot decode the image \(libpng: " r_bomb \
+  -- render bomb_png.gltf --backend cpu -o r_bomb
 scene world_lighting.gltf page_small.gltf "d['extras']['tiershade']['lightmaps']['image'] = os.path.abspath('probe_src.exr'); del d['extras']['tiershade']['lightmaps']['page']"
 bad small_page_named 1 "^tiershade render: page_small.gltf: extras.tiershade.lightmaps.image .*probe_src.exr: the page cannot hold" r_small \
   -- render page_small.gltf --backend cpu -o r_small

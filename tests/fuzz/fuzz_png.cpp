@@ -1,5 +1,5 @@
 // tiershade fuzz: PNG input both ways a user's file comes in: io/png.h's libpng reader, and a glTF
-// texture (the scene loader's stb_image callback, glue/scene/gltf_load.cpp) from a fixed scene.
+// texture (the scene loader's image callback, libpng for PNG: glue/scene/gltf_load.cpp) from a fixed scene.
 #include "fuzz_util.h"
 #include "io/png.h"
 #include "scene/scene.h"

@@ -25,8 +25,8 @@ inline const std::string &dir() {
     atexit([] { std::string cmd = "rm -rf '" + keep + "'"; if (std::system(cmd.c_str()) != 0) {} });
     // Half the CLI's default: run_fuzz.sh's -rss_limit_mb=1024 (libFuzzer's malloc limit too) must
     // stay above what a reader may take inside the limit, and a decoder's own buffers exceed the
-    // image it checked a little (stb's inflate buffer: a 1040 MiB realloc for an image just under
-    // 1024 MiB, found by make test's fuzz run; tests/fuzz/regressions/png/).
+    // image it checked a little (OpenEXR's chunk buffers, libpng's rows and inflate state; before
+    // libpng, stb's inflate buffer made a 1040 MiB realloc: tests/fuzz/regressions/png/).
     set_memory_limit_mib(kDefaultMemoryLimitMiB / 2);
     return s;
   }();
