@@ -316,48 +316,111 @@ ts_vec3iv ts_saturate3iv(ts_vec3iv v) { return ts_v3iv(ts_saturateiv(v.x), ts_sa
 /* normalize(v) = v * inversesqrt(dot(v, v)) (ESSL 3.00 8.4, derived) */
 ts_vec3iv ts_normalize3iv(ts_vec3iv v) { return ts_scale3iv(v, ts_inversesqrtiv(ts_dot3iv(v, v))); }
 
-/* ---- texture lookups (see ts_interval.h) ---- */
+/* ---- texture lookups (see ts_interval.h) ----
+ * The precision the CTS allows a 2D lookup (dEQP tcuTexLookupVerifier, LookupPrecision, with the
+ * values the GLES 3 2D filtering tests set, es3fTextureFilteringTests.cpp: coordBits 20, uvwBits
+ * 7): the unnormalised coordinate u * size to 20 bits relative, the sub-texel weight to within
+ * 2^-7; LINEAR = bilinear of the 2x2 texels with weights anywhere in that range, NEAREST = the
+ * texels floor(u * size) can reach. A coordinate range over more than two texel cells on an axis
+ * falls back to the hull of the texels it can touch. */
 
-/* the texel indices [*i0, *i1] (unwrapped) an axis coordinate in c can touch; 0 if any */
-static int axis_span(ts_iv c, int len, int *i0, int *i1) {
-  if (c.nan || !has_num(c) || !(fabsf(c.lo) <= 0x1p20f && fabsf(c.hi) <= 0x1p20f)) return 0;
-  /* LINEAR touches floor(c len - 1/2) and the next; NEAREST floor(c len): one texel of margin
-   * each side for the rounding of c * len (dEQP coordBits 22 allows less) */
-  *i0 = (int)floor((double)c.lo * len - 0.5) - 1;
-  *i1 = (int)floor((double)c.hi * len - 0.5) + 2;
-  return *i1 - *i0 + 1 < len;
+#define TS_TEX_COORD_BITS 20
+#define TS_TEX_UVW_BITS 7
+
+typedef struct {
+  int n;          /* 1 or 2 cells (LINEAR) / texels (NEAREST); 0: every texel (hull) */
+  int i[2];       /* first texel of each cell (unwrapped) */
+  double w[2][2]; /* weight range of the cell's second texel */
+} axis_cells;
+
+static axis_cells axis_of(ts_iv c, int len, int linear) {
+  axis_cells a = {0, {0, 0}, {{0, 0}, {0, 0}}};
+  if (c.nan || !has_num(c) || !(fabsf(c.lo) <= 0x1p20f && fabsf(c.hi) <= 0x1p20f)) return a;
+  const double err_lo = fabs((double)c.lo * len) * ldexp(1.0, -TS_TEX_COORD_BITS);
+  const double err_hi = fabs((double)c.hi * len) * ldexp(1.0, -TS_TEX_COORD_BITS);
+  const double lo = (double)c.lo * len - err_lo - (linear ? 0.5 : 0), hi = (double)c.hi * len + err_hi - (linear ? 0.5 : 0);
+  const double f0 = floor(lo), f1 = floor(hi);
+  if (f1 - f0 > 1) return a;
+  const double q = ldexp(1.0, -TS_TEX_UVW_BITS);
+  a.n = (int)(f1 - f0) + 1;
+  a.i[0] = (int)f0;
+  a.i[1] = (int)f1;
+  if (a.n == 1) {
+    a.w[0][0] = fmax(0.0, lo - f0 - q);
+    a.w[0][1] = fmin(1.0, hi - f0 + q);
+  } else {
+    a.w[0][0] = fmax(0.0, lo - f0 - q);
+    a.w[0][1] = 1.0;
+    a.w[1][0] = 0.0;
+    a.w[1][1] = fmin(1.0, hi - f1 + q);
+  }
+  return a;
 }
 static int wrap_index(int i, int len, int wrap) {
   if (wrap == TS_WRAP_REPEAT) return ((i % len) + len) % len;
   return i < 0 ? 0 : (i >= len ? len - 1 : i);
 }
+static const float *texel_at(const ts_tex2d *t, int x, int y) {
+  return t->texels + ((size_t)wrap_index(y, t->h, t->wrap_t) * (size_t)t->w + (size_t)wrap_index(x, t->w, t->wrap_s)) * 4u;
+}
+
+typedef struct {
+  double lo[4], hi[4], mag[4]; /* exact value range and the largest |texel| per channel */
+  int bad[4];                  /* a NaN or Inf texel */
+} tex_acc;
+
+static void acc_value(tex_acc *a, int c, double v, double mag) {
+  if (v < a->lo[c]) a->lo[c] = v;
+  if (v > a->hi[c]) a->hi[c] = v;
+  if (mag > a->mag[c]) a->mag[c] = mag;
+}
 
 ts_vec4iv ts_texture2Div(const ts_tex2d *t, ts_vec2iv uv) {
-  int x0 = 0, x1 = t->w - 1, y0 = 0, y1 = t->h - 1;
-  int sx = axis_span(uv.x, t->w, &x0, &x1), sy = axis_span(uv.y, t->h, &y0, &y1);
-  if (!sx) x0 = 0, x1 = t->w - 1;
-  if (!sy) y0 = 0, y1 = t->h - 1;
-  float lo[4] = {INFINITY, INFINITY, INFINITY, INFINITY}, hi[4] = {-INFINITY, -INFINITY, -INFINITY, -INFINITY};
-  int nan[4] = {0, 0, 0, 0};
-  for (int y = y0; y <= y1; ++y) {
-    const int yy = sy ? wrap_index(y, t->h, t->wrap_t) : y;
-    for (int x = x0; x <= x1; ++x) {
-      const int xx = sx ? wrap_index(x, t->w, t->wrap_s) : x;
-      const float *p = t->texels + ((size_t)yy * (size_t)t->w + (size_t)xx) * 4u;
-      for (int c = 0; c < 4; ++c) {
-        if (isnan(p[c])) nan[c] = 1;
-        else {
-          lo[c] = fminf(lo[c], p[c]);
-          hi[c] = fmaxf(hi[c], p[c]);
+  const int linear = t->filter == TS_FILTER_LINEAR;
+  const axis_cells ax = axis_of(uv.x, t->w, linear), ay = axis_of(uv.y, t->h, linear);
+  tex_acc acc;
+  for (int c = 0; c < 4; ++c) acc.lo[c] = INFINITY, acc.hi[c] = -INFINITY, acc.mag[c] = 0, acc.bad[c] = 0;
+  if (ax.n == 0 || ay.n == 0) { /* the hull of every texel the coordinate can reach */
+    for (int y = 0; y < t->h; ++y)
+      for (int x = 0; x < t->w; ++x) {
+        const float *p = t->texels + ((size_t)y * (size_t)t->w + (size_t)x) * 4u;
+        for (int c = 0; c < 4; ++c) {
+          if (!isfinite(p[c])) acc.bad[c] = 1;
+          else acc_value(&acc, c, p[c], fabs((double)p[c]));
         }
       }
-    }
+  } else {
+    for (int cy = 0; cy < ay.n; ++cy)
+      for (int cx = 0; cx < ax.n; ++cx) {
+        const int x0 = ax.i[cx], y0 = ay.i[cy];
+        const float *p00 = texel_at(t, x0, y0), *p10 = texel_at(t, x0 + linear, y0);
+        const float *p01 = texel_at(t, x0, y0 + linear), *p11 = texel_at(t, x0 + linear, y0 + linear);
+        for (int c = 0; c < 4; ++c) {
+          const double v00 = p00[c], v10 = p10[c], v01 = p01[c], v11 = p11[c];
+          if (!isfinite(v00) || !isfinite(v10) || !isfinite(v01) || !isfinite(v11)) {
+            acc.bad[c] = 1;
+            continue;
+          }
+          const double mag = fmax(fmax(fabs(v00), fabs(v10)), fmax(fabs(v01), fabs(v11)));
+          /* bilinear is linear in each weight: its extremes are at the weight box's corners */
+          for (int k = 0; k < 4; ++k) {
+            const double wx = linear ? ax.w[cx][k & 1] : 0, wy = linear ? ay.w[cy][k >> 1] : 0;
+            const double v = (1 - wy) * ((1 - wx) * v00 + wx * v10) + wy * ((1 - wx) * v01 + wx * v11);
+            acc_value(&acc, c, v, mag);
+          }
+        }
+      }
   }
   ts_iv ch[4];
   for (int c = 0; c < 4; ++c) {
-    /* a NaN texel, or Inf against another texel (Inf - Inf in the lerp): any result */
-    if (nan[c] || (isinf(lo[c]) && lo[c] != hi[c]) || (isinf(hi[c]) && lo[c] != hi[c])) ch[c] = ts_ivany();
-    else ch[c] = ts_ivwiden(ts_ivrange(lo[c], hi[c]), 2);
+    if (acc.bad[c]) { /* NaN or Inf texels: Inf - Inf in a lerp, NaN weights: any result */
+      ch[c] = ts_ivany();
+      continue;
+    }
+    /* three lerps in float32 (mad or not): each rounds by under one ULP of the largest texel, x2
+     * for the difference b - a; 8 ULP of the largest |texel| in all */
+    const double e = 8 * ulpd(acc.mag[c]);
+    ch[c] = mk(acc.lo[c] - e, acc.hi[c] + e);
   }
   return ts_v4iv(ch[0], ch[1], ch[2], ch[3]);
 }

@@ -95,10 +95,9 @@ ts_vec3iv ts_scale3iv(ts_vec3iv v, ts_iv s);
 ts_vec3iv ts_saturate3iv(ts_vec3iv v);
 ts_vec3iv ts_normalize3iv(ts_vec3iv v);
 
-/* ---- texture lookups: the hull of every texel the coordinate interval can touch (NEAREST or
- * LINEAR, either wrap), widened by 2 ULP for the two lerp roundings. A filtered value is a
- * convex combination of its texels whatever the weights' precision (dEQP tcuTexLookupVerifier's
- * uvwBits), so the hull bounds it; it is wider than the verifier's bound. ---- */
+/* ---- texture lookups: every value a lookup may give with the coordinate and weight precision
+ * of dEQP's tcuTexLookupVerifier as the GLES 3 filtering tests set it (coordBits 20, uvwBits 7;
+ * ts_interval.c); a coordinate range over more than two texel cells: the hull of the texels. ---- */
 ts_vec4iv ts_texture2Div(const ts_tex2d *t, ts_vec2iv uv);
 
 #ifdef __cplusplus

@@ -270,7 +270,7 @@ void check_dot(Rng &r) {
   check(wide == 0, "dot3 width without cancellation at most 48 ULP", first_w);
 }
 
-// texture lookups: hull of the reachable texels
+// texture lookups: the dEQP lookup precision (coordBits 20, uvwBits 7), or the hull of the reachable texels
 void check_texture(Rng &r) {
   const int w = 7, h = 5;
   std::vector<float> tx(static_cast<size_t>(w) * h * 4);
@@ -282,7 +282,8 @@ void check_texture(Rng &r) {
       const ts_tex2d t = {w, h, tx.data(), wrap, wrap, filter};
       for (int i = 0; i < 20000; ++i) {
         const float u0 = r.uniform(-1.5f, 2.5f), v0 = r.uniform(-1.5f, 2.5f);
-        const float du = r.uniform(0, 0.2f), dv = r.uniform(0, 0.2f);
+        // wide ranges (the hull fallback) and narrow ones (a point, a fragment's coordinate)
+        const float du = i % 2 ? r.uniform(0, 0.2f) : (i % 4 ? 0.f : r.uniform(0, 1e-3f)), dv = i % 2 ? r.uniform(0, 0.2f) : 0.f;
         const ts_vec4iv iv = ts_texture2Div(&t, ts_v2iv(ts_ivrange(u0, u0 + du), ts_ivrange(v0, v0 + dv)));
         for (int k = 0; k < 4; ++k) {
           ++trials;
@@ -294,7 +295,14 @@ void check_texture(Rng &r) {
         }
       }
     }
-  check(bad == 0, "texture2D llvmpipe mirror inside the texel hull (" + std::to_string(trials) + " lookups)", first);
+  check(bad == 0, "texture2D llvmpipe mirror inside (" + std::to_string(trials) + " lookups)", first);
+  // a point coordinate at a texel centre on a LINEAR texture: within 2^-7 of the weight either side,
+  // so far narrower than the hull of the texture (texels in [-3, 3])
+  const ts_tex2d lin = {w, h, tx.data(), TS_WRAP_CLAMP, TS_WRAP_CLAMP, TS_FILTER_LINEAR};
+  const ts_vec4iv c = ts_texture2Div(&lin, ts_v2iv(ts_ivpoint(2.5f / w), ts_ivpoint(1.5f / h)));
+  const float t21 = tx[(1 * w + 2) * 4];
+  check(ts_ivcontains(c.x, t21) && c.x.hi - c.x.lo < 6.f * 4 / 128 + 1e-5f,
+        "texture2D at a texel centre: the texel, +-2^-7 of its neighbours' differences", fmt(c.x));
 }
 
 // the checks above can fail: a value one ULP past an end is outside, and its excess says so
