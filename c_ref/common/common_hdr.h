@@ -5,10 +5,10 @@
 
 static inline TS_REAL FN(luminance)(V3 c) { return M(dot3)(c, M(v3)(K(0.2125), K(0.7154), K(0.0721))); }
 
-static inline TS_REAL FN(in_bucket)(TS_REAL lum, TS_REAL lo, TS_REAL hi) { return M(step)(lo, lum) * M(step)(lum, hi); }
+static inline TS_REAL FN(in_bucket)(TS_REAL lum, TS_REAL lo, TS_REAL hi) { return MUL(M(step)(lo, lum), M(step)(lum, hi)); }
 
 static inline TS_REAL FN(srgb_decode)(TS_REAL x) {
-  return x <= K(0.04045) ? x / K(12.92) : M(pow)((x + K(0.055)) / K(1.055), K(2.4));
+  return SEL(LE(x, K(0.04045)), DIV(x, K(12.92)), M(pow)(DIV(ADD(x, K(0.055)), K(1.055)), K(2.4)));
 }
 
 static inline V3 FN(srgb_decode3)(V3 c) {

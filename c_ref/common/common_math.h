@@ -6,6 +6,6 @@
  * and double only, like the highp shaders they mirror. */
 static inline V3 FN(safe_normalize)(V3 v) { return M(scale3)(v, M(inversesqrt)(M(max)(M(dot3)(v, v), K(1.0e-30)))); }
 
-static inline V3 FN(xyz)(ts_vec4f v) { return M(v3)((TS_REAL)v.x, (TS_REAL)v.y, (TS_REAL)v.z); }
-static inline V4 FN(vec4_in)(ts_vec4f v) { return M(v4)((TS_REAL)v.x, (TS_REAL)v.y, (TS_REAL)v.z, (TS_REAL)v.w); }
+static inline V3 FN(xyz)(ts_vec4f v) { return M(v3)(FROMF(v.x), FROMF(v.y), FROMF(v.z)); }
+static inline V4 FN(vec4_in)(ts_vec4f v) { return M(v4)(FROMF(v.x), FROMF(v.y), FROMF(v.z), FROMF(v.w)); }
 static inline V3 FN(xyz4)(V4 v) { return M(v3)(v.x, v.y, v.z); }

@@ -6,13 +6,13 @@ static inline V3 FN(output_linear)(V3 c) {
 }
 
 static inline V3 FN(output_gamma22)(V3 c) {
-  const TS_REAL e = K(1.0) / K(2.2);
+  const TS_REAL e = DIV(K(1.0), K(2.2));
   V3 s = M(saturate3)(c);
   return M(saturate3)(M(v3)(M(pow)(s.x, e), M(pow)(s.y, e), M(pow)(s.z, e)));
 }
 
 static inline TS_REAL FN(srgb_encode)(TS_REAL x) {
-  return x <= K(0.0031308) ? K(12.92) * x : K(1.055) * M(pow)(x, K(1.0) / K(2.4)) - K(0.055);
+  return SEL(LE(x, K(0.0031308)), MUL(K(12.92), x), SUB(MUL(K(1.055), M(pow)(x, DIV(K(1.0), K(2.4)))), K(0.055)));
 }
 
 static inline V3 FN(output_srgb)(V3 c) {

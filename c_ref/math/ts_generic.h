@@ -8,6 +8,19 @@
  *   K(0.5)    -> 0.5f / 0.5                 (literals parsed like GLSL's strtof)
  *   SPLAT(k)  -> k                          (a constant operand; on SIMD lanes, ts_generic_lanes.h,
  *                                            the constant in every lane)
+ * A third instance, ts_generic_interval.h (TS_SUFFIX iv, TS_REAL ts_iv, c_ref/math/ts_interval.h),
+ * gives the interval of results GLSL ES 3.00 allows. C has no operators on a struct, so a twin
+ * that has an interval instance writes its arithmetic on TS_REAL through these (TS_OPS plain:
+ * the C operator itself, token for token, so the float and double instances do not change):
+ *   ADD(a, b) SUB MUL DIV    -> ((a) + (b)) ...      / ts_addiv(a, b) ...
+ *   NEG(a)                   -> (-(a))               / ts_negiv(a)
+ *   LE(a, b) LT GE GT        -> ((a) <= (b)) ...     / ts_leiv(a, b): false, true or either
+ *   SEL(c, a, b)             -> ((c) ? (a) : (b))    / ts_seliv(c, a, b): c either joins a and b
+ *   SEL3(c, a, b)            -> the same on a V3
+ *   FROMF(x)                 -> ((TS_REAL)(x))       / ts_ivpoint(x): a float32 input as a TS_REAL
+ * A value-dependent `if` becomes a SEL of both outcomes (both are evaluated in the interval
+ * instance; plain SEL evaluates one, like ?:). Comparisons whose interval straddles the threshold
+ * thus take both branches and join them (issue 14).
  * Operation order in a twin mirrors the GLSL statement by statement: float32
  * arithmetic is not associative, and the reference is bit-exact (0 ULP). */
 #ifndef TS_GENERIC_H
@@ -19,6 +32,31 @@
 #define V2 M(vec2)
 #define V3 M(vec3)
 #define V4 M(vec4)
-#define K(x) TS_CAT(x, TS_LIT)
+#define K(x) TS_CAT(TS_K_, TS_OPS)(TS_CAT(x, TS_LIT))
 #define SPLAT(x) (x)
+
+#define TS_K_plain(v) v
+#define TS_K_iv(v) ts_ivpoint(v)
+#define TS_OP2_plain(name, op, a, b) ((a) op (b))
+#define TS_OP2_iv(name, op, a, b) M(name)(a, b)
+#define ADD(a, b) TS_CAT(TS_OP2_, TS_OPS)(add, +, a, b)
+#define SUB(a, b) TS_CAT(TS_OP2_, TS_OPS)(sub, -, a, b)
+#define MUL(a, b) TS_CAT(TS_OP2_, TS_OPS)(mul, *, a, b)
+#define DIV(a, b) TS_CAT(TS_OP2_, TS_OPS)(div, /, a, b)
+#define LE(a, b) TS_CAT(TS_OP2_, TS_OPS)(le, <=, a, b)
+#define LT(a, b) TS_CAT(TS_OP2_, TS_OPS)(lt, <, a, b)
+#define GE(a, b) TS_CAT(TS_OP2_, TS_OPS)(ge, >=, a, b)
+#define GT(a, b) TS_CAT(TS_OP2_, TS_OPS)(gt, >, a, b)
+#define TS_NEG_plain(a) (-(a))
+#define TS_NEG_iv(a) ts_negiv(a)
+#define NEG(a) TS_CAT(TS_NEG_, TS_OPS)(a)
+#define TS_SEL_plain(c, a, b) ((c) ? (a) : (b))
+#define TS_SEL_iv(c, a, b) ts_seliv(c, a, b)
+#define TS_SEL3_iv(c, a, b) ts_sel3iv(c, a, b)
+#define SEL(c, a, b) TS_CAT(TS_SEL_, TS_OPS)(c, a, b)
+#define SEL3(c, a, b) TS_CAT(TS_SEL3_, TS_OPS)(c, a, b)
+#define TS_SEL3_plain TS_SEL_plain
+#define TS_FROMF_plain(x) ((TS_REAL)(x))
+#define TS_FROMF_iv(x) ts_ivpoint(x)
+#define FROMF(x) TS_CAT(TS_FROMF_, TS_OPS)(x)
 #endif

@@ -2,6 +2,8 @@
 #undef TS_SUFFIX
 #undef TS_REAL
 #undef TS_LIT
+#undef TS_OPS
 #define TS_SUFFIX f
 #define TS_REAL float
 #define TS_LIT f
+#define TS_OPS plain

@@ -7,6 +7,7 @@
 #include "math/ts_math.h"
 #include "twins/twin_api.h"
 #include "math/ts_sampler.h"
+#include "math/ts_interval.h"
 
 /* The input record's slots (enum ht_slot) and its counts (HT_SLOTS, HT_PIXEL_SLOTS, as #defines)
  * come from the one table shaders/hdr_tonemap_slots.glsl. */
@@ -22,5 +23,7 @@ typedef struct {
 
 /* hdr_tonemap_f: float32, bit-exact with llvmpipe; hdr_tonemap_d: double, the accuracy reference */
 TS_TWIN_DECLARE(hdr_tonemap, (const ht_variant *v, const ts_vec4f rec[HT_SLOTS], const ts_tex2d *bloom))
+/* hdr_tonemap_iv: per channel, the interval of every result GLSL ES 3.00 highp allows */
+TS_C_API ts_vec4iv hdr_tonemap_iv(const ht_variant *v, const ts_vec4f rec[HT_SLOTS], const ts_tex2d *bloom);
 
 #endif

@@ -3,6 +3,7 @@
 #include <cstdio>
 #include <map>
 
+#include "conform/bounds.h"
 #include "conform/conform.h"
 #include "families/family.h"
 #include "families/hard_cases.h"
@@ -11,7 +12,7 @@
 // `tiershade conform --help`.
 const char kHelp[] = R"(usage: tiershade conform [--shader S] [--tier T]... [--variant V] [--backend osmesa|egl|all]
                          [--api gl33|gles2|gles3|all] [--size N] [--set random|hard|all] [--seed K] [--json] [--verbose]
-                         [--cases FILE]... [--list-cases]
+                         [--cases FILE]... [--list-cases] [--bounds]
 Renders an N x N grid of per-pixel input records through each variant on llvmpipe,
 reads back RGBA32F and compares every pixel with the C reference (0 ULP allowed).
 Hard inputs: the named cases of tests/conform/<shader>.cases (embedded; zero/denormal/huge/NaN
@@ -19,10 +20,16 @@ normals, light at the point, N.L = -1/0/1, colours up to 65504, Inf/NaN inputs..
 random record; outputs must also be finite and in range. --cases FILE replaces the cases of the
 shader FILE is named after (FILE = .../<shader>.cases; format: docs/conformance.md).
 --list-cases prints the hard cases of the selected shaders and exits.
+--bounds checks instead that every channel lies inside the interval GLSL ES 3.00 highp allows
+(the twin's interval instance, c_ref/math/ts_interval.h; docs/conformance.md "Error bounds") and
+reports per variant the share inside, the worst excess and the median and largest interval width
+of the colour channels in float32 ULP (channels whose interval admits anything are counted as
+unbounded; --verbose names the hard cases that have one). Families without
+an interval instance are listed as skipped (today only hdr_tonemap has one).
 Exit status 1 when any variant fails. --json prints one object per variant, backend, api and set.)";
 
 int cmd_conform(int argc, char **argv) {
-  Args a("conform", argc, argv, {"--help", "--json", "--verbose", "--list-cases"},
+  Args a("conform", argc, argv, {"--help", "--json", "--verbose", "--list-cases", "--bounds"},
          {"--shader", "--tier", "--variant", "--backend", "--api", "--size", "--set", "--seed", "--cases"});
   if (a.help(kHelp)) return 0;
   a.no_positional();
@@ -77,6 +84,8 @@ int cmd_conform(int argc, char **argv) {
   }
 
   long total = 0, failed = 0;
+  const bool bounds = a.flag("--bounds");
+  std::map<std::string, int> skipped;  // --bounds: variants of families without an interval instance
   bool first_json = true;
   if (json) printf("[\n");
   for (const auto &cfg : configs) {
@@ -94,7 +103,30 @@ int cmd_conform(int argc, char **argv) {
     for (const auto &v : sel.variants) {
       const ShaderFamily *f = find_family(v.shader->name);
       const auto &ins = inputs[f->name];
-      for (size_t si = 0; si < sets.size(); ++si) {
+      if (bounds && !has_bounds(f->name)) {
+        ++skipped[f->name];
+        continue;
+      }
+      for (size_t si = 0; si < sets.size() && bounds; ++si) {
+        const BoundsResult res = bounds_variant(run, *f, v, ins[si], sets[si]);
+        ++total;
+        if (!res.passed()) ++failed;
+        if (json) {
+          printf("%s  %s", first_json ? "" : ",\n", bounds_result_json(res).c_str());
+          first_json = false;
+          continue;
+        }
+        printf("%s %s %s %s/%s %s: %.4f %% inside (%ld channels, C twin outside %ld), worst excess %.0f ULP, "
+               "median width %.0f ULP, max %.0f ULP, %ld unbounded\n",
+               res.passed() ? "ok  " : "FAIL", res.shader.c_str(), res.variant.c_str(), res.backend.c_str(),
+               res.api.c_str(), res.set.c_str(), 100.0 * res.share_inside(), res.channels, res.c_outside,
+               res.worst_excess_ulp, res.median_width_ulp, res.max_width_ulp, res.unbounded);
+        if (!res.error.empty()) printf("  error: %s\n", res.error.c_str());
+        if (a.flag("--verbose"))
+          for (const auto &cn : res.unbounded_cases) printf("  unbounded: %s\n", cn.c_str());
+        if (!res.passed() && !res.worst.empty()) printf("  worst pixel:\n%s", res.worst.c_str());
+      }
+      for (size_t si = 0; si < sets.size() && !bounds; ++si) {
         const ConformResult res = conform_variant(run, *f, v, ins[si], sets[si]);
         ++total;
         if (!res.passed()) ++failed;
@@ -117,6 +149,13 @@ int cmd_conform(int argc, char **argv) {
   if (json)
     printf("\n]\n");
   else
-    printf("conform: %ld runs, %ld passed, %ld failed\n", total, total - failed, failed);
+    printf("conform%s: %ld runs, %ld passed, %ld failed\n", bounds ? " --bounds" : "", total, total - failed, failed);
+  for (const auto &sk : skipped)
+    fprintf(stderr, "tiershade conform --bounds: skipped %d variant(s) of %s: no interval instance of its twin yet\n",
+            sk.second, sk.first.c_str());
+  if (bounds && total == 0 && failed == 0) {
+    fprintf(stderr, "tiershade conform --bounds: none of the selected variants has an interval instance\n");
+    return 1;
+  }
   return failed ? 1 : 0;
 }

@@ -1,0 +1,426 @@
+/* tiershade math: interval arithmetic of the GLSL ES 3.00 highp precision rules (ts_interval.h).
+ * Exact results are computed in double (a float32 product is exact in double, a sum is exact
+ * with its TwoSum error term), then rounded outward to float32. ULP allowances follow the CTS
+ * (VK-GL-CTS glsBuiltinPrecisionTests.cpp, ../shared/docs/anchors.md): n ULP of the exact
+ * result, ULP = 2^(exponent - 23), at least 2^-149. libm's double exp2/log2/sqrt are within one
+ * double ULP, covered by adding 1e-6 to every ULP count (a double ULP is 2^-29 float ULP). */
+#include "math/ts_interval.h"
+
+#include <float.h>
+#include <math.h>
+#include <stdint.h>
+
+#include "math/ts_bits.h"
+
+#define TS_IV_SLACK 1e-6 /* ULPs added for the double evaluation (see banner) */
+
+/* ---- outward rounding to float32 with the FTZ rule ---- */
+
+/* the largest float32 <= v (v exact); a result in the denormal range may also be flushed to 0 */
+static float dn(double v) {
+  if (v >= 0 && v < FLT_MIN) return 0.0f;
+  if (v < 0 && v > -FLT_MIN) return -FLT_MIN;
+  float f = (float)v;
+  if ((double)f > v) f = nextafterf(f, -INFINITY);
+  return f;
+}
+/* the smallest float32 >= v (v exact) */
+static float up(double v) {
+  if (v <= 0 && v > -FLT_MIN) return 0.0f;
+  if (v > 0 && v < FLT_MIN) return FLT_MIN;
+  float f = (float)v;
+  if ((double)f < v) f = nextafterf(f, INFINITY);
+  return f;
+}
+/* the same for the exact value s + e (|e| at most half a double ULP of s, TwoSum) */
+static float dn2(double s, double e) {
+  if (e < 0 && (double)(float)s == s) return dn(nextafter(s, -INFINITY));
+  return dn(s);
+}
+static float up2(double s, double e) {
+  if (e > 0 && (double)(float)s == s) return up(nextafter(s, INFINITY));
+  return up(s);
+}
+static double two_sum_err(double a, double b, double s) {
+  const double bb = s - a;
+  return (a - (s - bb)) + (b - bb);
+}
+
+/* float32 ULP of an exact value */
+static double ulpd(double y) {
+  y = fabs(y);
+  if (isinf(y)) return INFINITY;
+  if (y < FLT_MIN) return 0x1p-149;
+  int e;
+  frexp(y, &e); /* y = m 2^e, m in [0.5, 1) */
+  return ldexp(1.0, e - 24);
+}
+/* least value admitted, n ULP allowed, for any exact result in [y, next power of two above y]:
+ * an exact result just past a power of two has twice the ULP */
+static double allow_lo(double y, double n) {
+  if (isinf(y)) return y; /* an exact Inf (an overflow of the exact result) stays */
+  double a = y - n * ulpd(y);
+  if (y > 0 && isfinite(y)) {
+    int e;
+    frexp(y, &e);
+    const double p = ldexp(1.0, e), b = p - n * ulpd(p);
+    if (b < a) a = b;
+  }
+  return a;
+}
+static double allow_hi(double y, double n) { return -allow_lo(-y, n); }
+
+static int has_num(ts_iv a) { return a.lo <= a.hi; }
+static int is_denorm(float f) { return (ts_fbits(f) & 0x7f800000u) == 0 && (ts_fbits(f) & 0x7fffffu) != 0; }
+
+ts_iv ts_ivany(void) {
+  ts_iv r = {-INFINITY, INFINITY, 1};
+  return r;
+}
+static ts_iv nan_only(void) {
+  ts_iv r = {INFINITY, -INFINITY, 1};
+  return r;
+}
+static ts_iv mk(double lo, double hi) {
+  ts_iv r = {dn(lo), up(hi), 0};
+  return r;
+}
+
+ts_iv ts_ivrange(float lo, float hi) {
+  if (isnan(lo) || isnan(hi)) return ts_ivany();
+  ts_iv r = {lo, hi, 0};
+  /* DAZ: a denormal bound may be read as 0; widen it to the nearest normal outward */
+  if (is_denorm(lo)) r.lo = lo < 0 ? -FLT_MIN : 0.0f;
+  if (is_denorm(hi)) r.hi = hi > 0 ? FLT_MIN : 0.0f;
+  if (r.lo == 0.0f) r.lo = 0.0f; /* -0 -> +0: the bounds compare as numbers */
+  if (r.hi == 0.0f) r.hi = 0.0f;
+  return r;
+}
+ts_iv ts_ivpoint(float x) { return isnan(x) ? nan_only() : ts_ivrange(x, x); }
+
+ts_iv ts_ivjoin(ts_iv a, ts_iv b) {
+  ts_iv r;
+  r.lo = a.lo < b.lo ? a.lo : b.lo;
+  r.hi = a.hi > b.hi ? a.hi : b.hi;
+  r.nan = a.nan || b.nan;
+  return r;
+}
+
+int ts_ivcontains(ts_iv a, float x) {
+  if (isnan(x)) return a.nan;
+  return (double)a.lo <= (double)x && (double)x <= (double)a.hi;
+}
+
+/* float32 order as integers: -0 and +0 both map to 0 */
+static int64_t ford(float f) {
+  const uint32_t u = ts_fbits(f);
+  return (u & 0x80000000u) ? -(int64_t)(u & 0x7fffffffu) : (int64_t)u;
+}
+double ts_ivwidth_ulp(ts_iv a) {
+  if (a.nan || !has_num(a) || isinf(a.lo) || isinf(a.hi)) return INFINITY;
+  return (double)(ford(a.hi) - ford(a.lo));
+}
+double ts_ivexcess_ulp(ts_iv a, float x) {
+  if (ts_ivcontains(a, x)) return 0;
+  if (isnan(x) || !has_num(a)) return INFINITY;
+  return (double)x < (double)a.lo ? (double)(ford(a.lo) - ford(x)) : (double)(ford(x) - ford(a.hi));
+}
+ts_iv ts_ivwiden(ts_iv a, int n) {
+  if (!has_num(a)) return a;
+  for (int i = 0; i < n; ++i) {
+    a.lo = nextafterf(a.lo, -INFINITY);
+    a.hi = nextafterf(a.hi, INFINITY);
+  }
+  ts_iv r = ts_ivrange(a.lo, a.hi);
+  r.nan = a.nan;
+  return r;
+}
+
+/* ---- + - * / : an operand that may be NaN gives any result (ESSL 3.00 4.5.1: NaN support is
+ * not required, so nothing is promised of an operation on one) ---- */
+
+ts_iv ts_addiv(ts_iv a, ts_iv b) {
+  if (a.nan || b.nan) return ts_ivany();
+  const double sl = (double)a.lo + b.lo, sh = (double)a.hi + b.hi;
+  if (isnan(sl) || isnan(sh)) return ts_ivany(); /* Inf - Inf */
+  ts_iv r = {dn2(sl, two_sum_err(a.lo, b.lo, sl)), up2(sh, two_sum_err(a.hi, b.hi, sh)), 0};
+  return r;
+}
+ts_iv ts_negiv(ts_iv a) {
+  ts_iv r = {-a.hi, -a.lo, a.nan};
+  if (r.lo == 0.0f) r.lo = 0.0f;
+  if (r.hi == 0.0f) r.hi = 0.0f;
+  return r;
+}
+ts_iv ts_subiv(ts_iv a, ts_iv b) { return ts_addiv(a, ts_negiv(b)); }
+
+ts_iv ts_muliv(ts_iv a, ts_iv b) {
+  if (a.nan || b.nan) return ts_ivany();
+  const double p[4] = {(double)a.lo * b.lo, (double)a.lo * b.hi, (double)a.hi * b.lo, (double)a.hi * b.hi};
+  double lo = p[0], hi = p[0];
+  for (int i = 0; i < 4; ++i) {
+    if (isnan(p[i])) return ts_ivany(); /* 0 * Inf */
+    if (p[i] < lo) lo = p[i];
+    if (p[i] > hi) hi = p[i];
+  }
+  return mk(lo, hi); /* float32 products are exact in double */
+}
+
+/* 2.5 ULP when every |b| is in [2^-126, 2^127] (the CTS's range); otherwise any result */
+ts_iv ts_diviv(ts_iv a, ts_iv b) {
+  if (a.nan || b.nan || !(isfinite(a.lo) && isfinite(a.hi))) return ts_ivany();
+  const int pos = b.lo >= 0x1p-126f && b.hi <= 0x1p127f, neg = b.hi <= -0x1p-126f && b.lo >= -0x1p127f;
+  if (!pos && !neg) return ts_ivany();
+  const double q[4] = {(double)a.lo / b.lo, (double)a.lo / b.hi, (double)a.hi / b.lo, (double)a.hi / b.hi};
+  double lo = q[0], hi = q[0];
+  for (int i = 1; i < 4; ++i) {
+    if (q[i] < lo) lo = q[i];
+    if (q[i] > hi) hi = q[i];
+  }
+  return mk(allow_lo(lo, 2.5 + TS_IV_SLACK), allow_hi(hi, 2.5 + TS_IV_SLACK));
+}
+
+/* ---- comparisons ---- */
+int ts_leiv(ts_iv a, ts_iv b) {
+  if (a.nan || b.nan || !has_num(a) || !has_num(b)) return TS_IV_EITHER;
+  if (a.hi <= b.lo) return TS_IV_TRUE;
+  if (a.lo > b.hi) return TS_IV_FALSE;
+  return TS_IV_EITHER;
+}
+int ts_ltiv(ts_iv a, ts_iv b) {
+  if (a.nan || b.nan || !has_num(a) || !has_num(b)) return TS_IV_EITHER;
+  if (a.hi < b.lo) return TS_IV_TRUE;
+  if (a.lo >= b.hi) return TS_IV_FALSE;
+  return TS_IV_EITHER;
+}
+int ts_geiv(ts_iv a, ts_iv b) { return ts_leiv(b, a); }
+int ts_gtiv(ts_iv a, ts_iv b) { return ts_ltiv(b, a); }
+ts_iv ts_seliv(int c, ts_iv a, ts_iv b) { return c == TS_IV_TRUE ? a : c == TS_IV_FALSE ? b : ts_ivjoin(a, b); }
+ts_vec3iv ts_sel3iv(int c, ts_vec3iv a, ts_vec3iv b) {
+  return ts_v3iv(ts_seliv(c, a.x, b.x), ts_seliv(c, a.y, b.y), ts_seliv(c, a.z, b.z));
+}
+
+/* ---- builtins ---- */
+
+/* exp2: (3 + 2|x|) ULP, with the largest |x| of the interval at both ends */
+ts_iv ts_exp2iv(ts_iv x) {
+  if (x.nan || !has_num(x)) return ts_ivany();
+  const double n = 3 + 2 * fmax(fabs((double)x.lo), fabs((double)x.hi)) + TS_IV_SLACK;
+  ts_iv r = mk(isinf(n) ? 0.0 : allow_lo(exp2(x.lo), n), isinf(n) ? INFINITY : allow_hi(exp2(x.hi), n));
+  if (x.hi == -INFINITY) r.hi = 0.0f; /* exp2(-Inf) = 0 */
+  if (r.lo < 0) r.lo = 0.0f; /* n ULP below a tiny result (or the Inf case): never below 0 */
+  return r;
+}
+
+/* log2: absolute 2^-21 where x may be in [0.5, 2], else 3 ULP; x <= 0 undefined (any) */
+ts_iv ts_log2iv(ts_iv x) {
+  if (x.nan || !has_num(x) || x.lo <= 0.0f) return ts_ivany();
+  const double yl = log2(x.lo), yh = log2(x.hi);
+  double el = ulpd(yl) * (3 + TS_IV_SLACK), eh = ulpd(yh) * (3 + TS_IV_SLACK);
+  if (x.lo <= 2.0f && x.hi >= 0.5f) {
+    const double abs_err = 0x1p-21 * (1 + 1e-9);
+    if (el < abs_err) el = abs_err;
+    if (eh < abs_err) eh = abs_err;
+  }
+  /* |log2| is largest at an end, so ulpd at the ends bounds it inside; a power-of-two crossing
+   * is covered by allow_lo/hi's rule when the error is relative */
+  if (isinf(yl)) return ts_ivpoint(INFINITY); /* log2(Inf) = Inf */
+  const double lo = fmin(yl - el, allow_lo(yl, 3 + TS_IV_SLACK));
+  const double hi = isinf(yh) ? INFINITY : fmax(yh + eh, allow_hi(yh, 3 + TS_IV_SLACK));
+  return mk(lo, hi);
+}
+
+/* pow(x, y) = exp2(y * log2(x)) (ESSL 3.00 8.2: derived precision; undefined for x < 0 and for
+ * x = 0 with y <= 0, and log2(0) is undefined, so any x interval reaching 0 gives any result) */
+ts_iv ts_powiv(ts_iv x, ts_iv y) { return ts_exp2iv(ts_muliv(y, ts_log2iv(x))); }
+
+/* inversesqrt: 2 ULP; x <= 0 undefined */
+ts_iv ts_inversesqrtiv(ts_iv x) {
+  if (x.nan || !has_num(x) || x.lo <= 0.0f) return ts_ivany();
+  const double lo = x.hi == INFINITY ? 0.0 : allow_lo(1.0 / sqrt((double)x.hi), 2 + TS_IV_SLACK);
+  return mk(lo, allow_hi(1.0 / sqrt((double)x.lo), 2 + TS_IV_SLACK));
+}
+
+/* sqrt: 1 / inversesqrt(x) (ESSL 3.00 8.2, the CTS derives it so); sqrt(0) = 0 by the limit,
+ * x < 0 undefined */
+ts_iv ts_sqrtiv(ts_iv x) {
+  if (x.nan || !has_num(x) || x.lo < 0.0f) return ts_ivany();
+  if (x.hi == 0.0f) return ts_ivpoint(0.0f);
+  ts_iv pos = x;
+  if (pos.lo < FLT_MIN) pos.lo = FLT_MIN;
+  ts_iv r = ts_diviv(ts_ivpoint(1.0f), ts_inversesqrtiv(pos));
+  if (!r.nan && x.lo < FLT_MIN) r.lo = 0.0f;
+  return r;
+}
+
+/* min, max: exact; a NaN operand gives any result (ESSL 3.00 does not define it) */
+ts_iv ts_miniv(ts_iv a, ts_iv b) {
+  if (a.nan || b.nan) return ts_ivany();
+  ts_iv r = {fminf(a.lo, b.lo), fminf(a.hi, b.hi), 0};
+  return r;
+}
+ts_iv ts_maxiv(ts_iv a, ts_iv b) {
+  if (a.nan || b.nan) return ts_ivany();
+  ts_iv r = {fmaxf(a.lo, b.lo), fmaxf(a.hi, b.hi), 0};
+  return r;
+}
+/* clamp(x, lo, hi) = min(max(x, lo), hi) (ESSL 3.00 8.3) */
+ts_iv ts_clampiv(ts_iv x, ts_iv lo, ts_iv hi) { return ts_miniv(ts_maxiv(x, lo), hi); }
+ts_iv ts_saturateiv(ts_iv x) { return ts_clampiv(x, ts_ivpoint(0.0f), ts_ivpoint(1.0f)); }
+/* step(edge, x) = x < edge ? 0 : 1; straddling: both */
+ts_iv ts_stepiv(ts_iv edge, ts_iv x) { return ts_seliv(ts_ltiv(x, edge), ts_ivpoint(0.0f), ts_ivpoint(1.0f)); }
+ts_iv ts_absiv(ts_iv x) {
+  if (!has_num(x)) return x;
+  if (x.lo >= 0) return x;
+  if (x.hi <= 0) return ts_negiv(x);
+  ts_iv r = {0.0f, fmaxf(-x.lo, x.hi), x.nan};
+  return r;
+}
+
+/* ---- vectors ---- */
+ts_vec2iv ts_v2iv(ts_iv x, ts_iv y) {
+  ts_vec2iv v = {x, y};
+  return v;
+}
+ts_vec3iv ts_v3iv(ts_iv x, ts_iv y, ts_iv z) {
+  ts_vec3iv v = {x, y, z};
+  return v;
+}
+ts_vec4iv ts_v4iv(ts_iv x, ts_iv y, ts_iv z, ts_iv w) {
+  ts_vec4iv v = {x, y, z, w};
+  return v;
+}
+
+/* dot in any order, each product and sum correctly rounded or fused: the exact sum of the exact
+ * products' ranges, widened by 5 ULP of 2 M (M = sum of the largest |product|s): 3 products and 2
+ * sums each err by under one ULP of a value below 2 M */
+ts_iv ts_dot3iv(ts_vec3iv a, ts_vec3iv b) {
+  const ts_iv p[3] = {ts_muliv(a.x, b.x), ts_muliv(a.y, b.y), ts_muliv(a.z, b.z)};
+  double lo = 0, hi = 0, m = 0;
+  for (int i = 0; i < 3; ++i) {
+    if (p[i].nan || !isfinite(p[i].lo) || !isfinite(p[i].hi)) return ts_ivany();
+    /* the exact products lie in p[i] (outward rounded); their sums in double are exact to
+     * 2^-53 relative, covered by the slack below */
+    lo += p[i].lo;
+    hi += p[i].hi;
+    m += fmax(fabs((double)p[i].lo), fabs((double)p[i].hi));
+  }
+  const double w = (5 + TS_IV_SLACK) * ulpd(2 * m);
+  return mk(lo - w, hi + w);
+}
+ts_vec3iv ts_add3iv(ts_vec3iv a, ts_vec3iv b) { return ts_v3iv(ts_addiv(a.x, b.x), ts_addiv(a.y, b.y), ts_addiv(a.z, b.z)); }
+ts_vec3iv ts_sub3iv(ts_vec3iv a, ts_vec3iv b) { return ts_v3iv(ts_subiv(a.x, b.x), ts_subiv(a.y, b.y), ts_subiv(a.z, b.z)); }
+ts_vec3iv ts_mul3iv(ts_vec3iv a, ts_vec3iv b) { return ts_v3iv(ts_muliv(a.x, b.x), ts_muliv(a.y, b.y), ts_muliv(a.z, b.z)); }
+ts_vec3iv ts_scale3iv(ts_vec3iv v, ts_iv s) { return ts_v3iv(ts_muliv(v.x, s), ts_muliv(v.y, s), ts_muliv(v.z, s)); }
+ts_vec3iv ts_saturate3iv(ts_vec3iv v) { return ts_v3iv(ts_saturateiv(v.x), ts_saturateiv(v.y), ts_saturateiv(v.z)); }
+/* normalize(v) = v * inversesqrt(dot(v, v)) (ESSL 3.00 8.4, derived) */
+ts_vec3iv ts_normalize3iv(ts_vec3iv v) { return ts_scale3iv(v, ts_inversesqrtiv(ts_dot3iv(v, v))); }
+
+/* ---- texture lookups (see ts_interval.h) ----
+ * The precision the CTS allows a 2D lookup (dEQP tcuTexLookupVerifier, LookupPrecision, with the
+ * values the GLES 3 2D filtering tests set, es3fTextureFilteringTests.cpp: coordBits 20, uvwBits
+ * 7): the unnormalised coordinate u * size to 20 bits relative, the sub-texel weight to within
+ * 2^-7; LINEAR = bilinear of the 2x2 texels with weights anywhere in that range, NEAREST = the
+ * texels floor(u * size) can reach. A coordinate range over more than two texel cells on an axis
+ * falls back to the hull of the texels it can touch. */
+
+#define TS_TEX_COORD_BITS 20
+#define TS_TEX_UVW_BITS 7
+
+typedef struct {
+  int n;          /* 1 or 2 cells (LINEAR) / texels (NEAREST); 0: every texel (hull) */
+  int i[2];       /* first texel of each cell (unwrapped) */
+  double w[2][2]; /* weight range of the cell's second texel */
+} axis_cells;
+
+static axis_cells axis_of(ts_iv c, int len, int linear) {
+  axis_cells a = {0, {0, 0}, {{0, 0}, {0, 0}}};
+  if (c.nan || !has_num(c) || !(fabsf(c.lo) <= 0x1p20f && fabsf(c.hi) <= 0x1p20f)) return a;
+  const double err_lo = fabs((double)c.lo * len) * ldexp(1.0, -TS_TEX_COORD_BITS);
+  const double err_hi = fabs((double)c.hi * len) * ldexp(1.0, -TS_TEX_COORD_BITS);
+  const double lo = (double)c.lo * len - err_lo - (linear ? 0.5 : 0), hi = (double)c.hi * len + err_hi - (linear ? 0.5 : 0);
+  const double f0 = floor(lo), f1 = floor(hi);
+  if (f1 - f0 > 1) return a;
+  const double q = ldexp(1.0, -TS_TEX_UVW_BITS);
+  a.n = (int)(f1 - f0) + 1;
+  a.i[0] = (int)f0;
+  a.i[1] = (int)f1;
+  if (a.n == 1) {
+    a.w[0][0] = fmax(0.0, lo - f0 - q);
+    a.w[0][1] = fmin(1.0, hi - f0 + q);
+  } else {
+    a.w[0][0] = fmax(0.0, lo - f0 - q);
+    a.w[0][1] = 1.0;
+    a.w[1][0] = 0.0;
+    a.w[1][1] = fmin(1.0, hi - f1 + q);
+  }
+  return a;
+}
+static int wrap_index(int i, int len, int wrap) {
+  if (wrap == TS_WRAP_REPEAT) return ((i % len) + len) % len;
+  return i < 0 ? 0 : (i >= len ? len - 1 : i);
+}
+static const float *texel_at(const ts_tex2d *t, int x, int y) {
+  return t->texels + ((size_t)wrap_index(y, t->h, t->wrap_t) * (size_t)t->w + (size_t)wrap_index(x, t->w, t->wrap_s)) * 4u;
+}
+
+typedef struct {
+  double lo[4], hi[4], mag[4]; /* exact value range and the largest |texel| per channel */
+  int bad[4];                  /* a NaN or Inf texel */
+} tex_acc;
+
+static void acc_value(tex_acc *a, int c, double v, double mag) {
+  if (v < a->lo[c]) a->lo[c] = v;
+  if (v > a->hi[c]) a->hi[c] = v;
+  if (mag > a->mag[c]) a->mag[c] = mag;
+}
+
+ts_vec4iv ts_texture2Div(const ts_tex2d *t, ts_vec2iv uv) {
+  const int linear = t->filter == TS_FILTER_LINEAR;
+  const axis_cells ax = axis_of(uv.x, t->w, linear), ay = axis_of(uv.y, t->h, linear);
+  tex_acc acc;
+  for (int c = 0; c < 4; ++c) acc.lo[c] = INFINITY, acc.hi[c] = -INFINITY, acc.mag[c] = 0, acc.bad[c] = 0;
+  if (ax.n == 0 || ay.n == 0) { /* the hull of every texel the coordinate can reach */
+    for (int y = 0; y < t->h; ++y)
+      for (int x = 0; x < t->w; ++x) {
+        const float *p = t->texels + ((size_t)y * (size_t)t->w + (size_t)x) * 4u;
+        for (int c = 0; c < 4; ++c) {
+          if (!isfinite(p[c])) acc.bad[c] = 1;
+          else acc_value(&acc, c, p[c], fabs((double)p[c]));
+        }
+      }
+  } else {
+    for (int cy = 0; cy < ay.n; ++cy)
+      for (int cx = 0; cx < ax.n; ++cx) {
+        const int x0 = ax.i[cx], y0 = ay.i[cy];
+        const float *p00 = texel_at(t, x0, y0), *p10 = texel_at(t, x0 + linear, y0);
+        const float *p01 = texel_at(t, x0, y0 + linear), *p11 = texel_at(t, x0 + linear, y0 + linear);
+        for (int c = 0; c < 4; ++c) {
+          const double v00 = p00[c], v10 = p10[c], v01 = p01[c], v11 = p11[c];
+          if (!isfinite(v00) || !isfinite(v10) || !isfinite(v01) || !isfinite(v11)) {
+            acc.bad[c] = 1;
+            continue;
+          }
+          const double mag = fmax(fmax(fabs(v00), fabs(v10)), fmax(fabs(v01), fabs(v11)));
+          /* bilinear is linear in each weight: its extremes are at the weight box's corners */
+          for (int k = 0; k < 4; ++k) {
+            const double wx = linear ? ax.w[cx][k & 1] : 0, wy = linear ? ay.w[cy][k >> 1] : 0;
+            const double v = (1 - wy) * ((1 - wx) * v00 + wx * v10) + wy * ((1 - wx) * v01 + wx * v11);
+            acc_value(&acc, c, v, mag);
+          }
+        }
+      }
+  }
+  ts_iv ch[4];
+  for (int c = 0; c < 4; ++c) {
+    if (acc.bad[c]) { /* NaN or Inf texels: Inf - Inf in a lerp, NaN weights: any result */
+      ch[c] = ts_ivany();
+      continue;
+    }
+    /* three lerps in float32 (mad or not): each rounds by under one ULP of the largest texel, x2
+     * for the difference b - a; 8 ULP of the largest |texel| in all */
+    const double e = 8 * ulpd(acc.mag[c]);
+    ch[c] = mk(acc.lo[c] - e, acc.hi[c] + e);
+  }
+  return ts_v4iv(ch[0], ch[1], ch[2], ch[3]);
+}

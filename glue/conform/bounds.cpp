@@ -1,0 +1,179 @@
+// tiershade conform: per-pixel error bounds (bounds.h): the interval instances of the twins,
+// GL's output checked against them, and the per-variant summary (share inside, worst excess,
+// interval widths in float32 ULP).
+#include "conform/bounds.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "twins/hdr_tonemap.h"
+
+namespace {
+
+// The family's interval twin on pixel (x, y): the same record and texture as its eval_f.
+ts_vec4iv hdr_tonemap_bounds(const Variant &v, const FamilyInputs &in, int x, int y) {
+  ts_vec4f rec[HT_SLOTS];
+  in.gather(x, y, HT_SLOTS, rec);
+  const ht_variant hv = {v.value("OUTPUT_MODE")};  // as glue/families/hdr_tonemap.cpp's to_ht
+  const ts_tex2d bloom = tex2d_of(in.textures.at(0));
+  return hdr_tonemap_iv(&hv, rec, &bloom);
+}
+
+struct BoundsEntry {
+  const char *family;
+  ts_vec4iv (*eval)(const Variant &, const FamilyInputs &, int, int);
+};
+const BoundsEntry kBounds[] = {{"hdr_tonemap", hdr_tonemap_bounds}};
+
+const BoundsEntry *find_bounds(const std::string &family) {
+  for (const auto &e : kBounds)
+    if (family == e.family) return &e;
+  return nullptr;
+}
+
+std::string fmt_iv(ts_iv a) {
+  char b[160];
+  snprintf(b, sizeof b, "[%.9g, %.9g]%s", a.lo, a.hi, a.nan ? " or NaN" : "");
+  return b;
+}
+
+}  // namespace
+
+bool has_bounds(const std::string &family) { return find_bounds(family) != nullptr; }
+
+ts_vec4iv eval_bounds(const ShaderFamily &fam, const Variant &v, const FamilyInputs &in, int x, int y) {
+  return find_bounds(fam.name)->eval(v, in, x, y);
+}
+
+BoundsResult bounds_variant(const ConformRun &run, const ShaderFamily &fam, const Variant &v,
+                            const FamilyInputs &in_given, InputSet set) {
+  FamilyInputs in = in_given;
+  adapt_textures_for_api(run.api, &in);
+  BoundsResult res;
+  res.shader = fam.name;
+  res.variant = v.name();
+  res.tier = tier_name(v.tier);
+  res.backend = backend_name(run.backend);
+  res.api = api_name(run.api);
+  res.set = input_set_name(set);
+  if (!has_bounds(fam.name)) {
+    res.error = "no interval instance of the " + std::string(fam.name) + " twin";
+    return res;
+  }
+  GlRenderer &r = *run.renderer;
+  std::string err;
+  const GLuint prog = build_conform_program(r, run.api, v, &err);
+  if (!prog) {
+    res.error = err;
+    return res;
+  }
+  // the same uniforms and textures as conform_variant
+  const GlFns &g = r.gl();
+  g.UseProgram(prog);
+  const GLint size_loc = g.GetUniformLocation(prog, "ts_record_size");
+  if (size_loc >= 0) g.Uniform2f(size_loc, static_cast<float>(in.w), static_cast<float>(in.h * in.slots));
+  const GLint gh_loc = g.GetUniformLocation(prog, "ts_grid_height");
+  if (gh_loc >= 0) g.Uniform1f(gh_loc, static_cast<float>(in.h));
+  std::vector<std::pair<std::string, GLuint>> texs;
+  texs.push_back({"ts_record", r.upload_texture(in.record_texture())});
+  for (const auto &t : in.textures) texs.push_back({t.sampler, r.upload_texture(t)});
+  ImageF img;
+  const bool ok = r.draw(prog, texs, in.w, in.h, &img, &err);
+  for (auto &t : texs) r.delete_texture(t.second);
+  r.delete_program(prog);
+  if (!ok) {
+    res.error = err;
+    return res;
+  }
+  std::vector<double> widths;
+  long worst_idx = -1;
+  int worst_ch = 0;
+  for (int y = 0; y < in.h; ++y) {
+    for (int x = 0; x < in.w; ++x) {
+      const ts_vec4iv b = eval_bounds(fam, v, in, x, y);
+      const ts_vec4f c = fam.eval_f(v, in, x, y);
+      const ts_iv bi[4] = {b.x, b.y, b.z, b.w};
+      const float cv[4] = {c.x, c.y, c.z, c.w};
+      const float *gp = &img.rgba[(static_cast<size_t>(y) * in.w + x) * 4];
+      for (int ch = 0; ch < 4; ++ch) {
+        ++res.channels;
+        const double wd = ts_ivwidth_ulp(bi[ch]);
+        if (std::isinf(wd)) {
+          ++res.unbounded;
+          if (!in.case_names.empty()) {
+            const std::string &cn = in.case_names[static_cast<size_t>(y) * in.w + x];
+            if (std::find(res.unbounded_cases.begin(), res.unbounded_cases.end(), cn) == res.unbounded_cases.end())
+              res.unbounded_cases.push_back(cn);
+          }
+        } else if (ch < 3) {
+          widths.push_back(wd);  // the widths of the colour channels (alpha is often a constant)
+        }
+        if (!ts_ivcontains(bi[ch], cv[ch])) ++res.c_outside;
+        if (!ts_ivcontains(bi[ch], gp[ch])) {
+          ++res.outside;
+          const double e = ts_ivexcess_ulp(bi[ch], gp[ch]);
+          if (e > res.worst_excess_ulp || worst_idx < 0) {
+            res.worst_excess_ulp = std::max(res.worst_excess_ulp, e);
+            worst_idx = static_cast<long>(y) * in.w + x;
+            worst_ch = ch;
+          }
+        } else if (worst_idx < 0 && !ts_ivcontains(bi[ch], cv[ch])) {
+          worst_idx = static_cast<long>(y) * in.w + x;  // the C twin outside: show that pixel
+          worst_ch = ch;
+        }
+      }
+      ++res.pixels;
+    }
+  }
+  if (!widths.empty()) {
+    std::nth_element(widths.begin(), widths.begin() + static_cast<long>(widths.size() / 2), widths.end());
+    res.median_width_ulp = widths[widths.size() / 2];
+    res.max_width_ulp = *std::max_element(widths.begin(), widths.end());
+  }
+  if (worst_idx >= 0) {
+    const int x = static_cast<int>(worst_idx % in.w), y = static_cast<int>(worst_idx / in.w);
+    const ts_vec4iv b = eval_bounds(fam, v, in, x, y);
+    const ts_iv bi[4] = {b.x, b.y, b.z, b.w};
+    const ts_vec4f c = fam.eval_f(v, in, x, y);
+    const float cv[4] = {c.x, c.y, c.z, c.w};
+    const float *gp = &img.rgba[static_cast<size_t>(worst_idx) * 4];
+    std::ostringstream o;
+    o << describe_pixel(fam, in, x, y);
+    char line[256];
+    snprintf(line, sizeof line, "  ch%d: GL %.9g  C %.9g  interval %s\n", worst_ch, gp[worst_ch], cv[worst_ch],
+             fmt_iv(bi[worst_ch]).c_str());
+    o << line;
+    res.worst = o.str();
+  }
+  return res;
+}
+
+std::string bounds_result_json(const BoundsResult &r) {
+  nlohmann::ordered_json o;
+  o["shader"] = r.shader;
+  o["variant"] = r.variant;
+  o["tier"] = r.tier;
+  o["backend"] = r.backend;
+  o["api"] = r.api;
+  o["set"] = r.set;
+  o["pixels"] = r.pixels;
+  o["channels"] = r.channels;
+  o["outside"] = r.outside;
+  o["c_outside"] = r.c_outside;
+  o["share_inside"] = r.share_inside();
+  o["worst_excess_ulp"] = r.worst_excess_ulp;  // Inf (a NaN outside) is written as null
+  o["unbounded"] = r.unbounded;
+  o["unbounded_cases"] = r.unbounded_cases;
+  o["median_width_ulp"] = r.median_width_ulp;
+  o["max_width_ulp"] = r.max_width_ulp;
+  o["passed"] = r.passed();
+  if (!r.error.empty()) o["error"] = r.error;
+  return o.dump(-1, ' ', false, nlohmann::ordered_json::error_handler_t::replace);
+}
