@@ -1,0 +1,13 @@
+<?xml version="1.0" encoding="UTF-8"?>
+<!-- tiershade examp<ColorCorrectionCollectionle ASC CDL (written for tiers touch more saturation. -->
+<ColorCorrection id="warm">
+  <SOPNode>
+    <Description>warm: red up, blue down</Description>
+    <Slope>1.08 1.0 0.86</Slope>
+    <Offset>0.01 0.0 -0.01</Offset>
+    <Power>0.95 1.0 1.05</Power>
+  </SOPNode>
+  <SatNode>
+    <Saturation>1.15</Saturation>
+  </SatNode>
+</ColorCorrection>
