@@ -110,8 +110,8 @@ for s in tests/cli/test_*.sh; do run "san_$(basename "$s" .sh)" bash "$s" build/
 run san_conform as_checks build/san/tiershade conform --verbose --size 16
 run san_demo demo_check build/san/tiershade
 
-echo "== fuzz harnesses (tests/fuzz: every corpus file and past crash, then ${FUZZ_TEST_SECONDS:-15} s of mutation each)"
-run fuzz bash tests/fuzz/run_fuzz.sh build/fuzz/fuzzers "${FUZZ_TEST_SECONDS:-15}"
+echo "== fuzz harnesses (tests/fuzz: every corpus file and past crash, then ${FUZZ_TEST_RUNS:-4000} mutations each, seed 1)"
+FUZZ_RUNS=${FUZZ_TEST_RUNS:-4000} run fuzz bash tests/fuzz/run_fuzz.sh build/fuzz/fuzzers 15
 
 if [ "$skipped" -gt 0 ]; then
   echo "$skipped check(s) skipped: every skip is unexpected in this suite (see the [name] SKIP lines above)"

@@ -66,13 +66,17 @@ for n in "${names[@]}"; do
   for d in "${seeds[@]}"; do cp "$d"/* "$work/corpus/" 2> /dev/null; done
   # A fixed seed (FUZZ_SEED, default 1): the same mutations in the same order on every run, so a
   # make test that passed here passes on a machine like this one; make fuzz FUZZ_SEED=0 picks one.
-  if (cd "$work" && "$exe" "${LIMITS[@]}" -seed="${FUZZ_SEED:-1}" -max_total_time="$SECONDS_EACH" -print_final_stats=1 -artifact_prefix="$CRASHES/$short/" \
+  # FUZZ_RUNS=N (make test): N mutations instead of SECONDS of them, so the run is the same on every
+  # machine whatever its speed (a time bound made make test find different inputs on each run).
+  budget=(-max_total_time="$SECONDS_EACH")
+  [ -n "${FUZZ_RUNS:-}" ] && budget=(-runs="$FUZZ_RUNS")
+  if (cd "$work" && "$exe" "${LIMITS[@]}" -seed="${FUZZ_SEED:-1}" "${budget[@]}" -print_final_stats=1 -artifact_prefix="$CRASHES/$short/" \
     "$work/corpus") > "$work/fuzz.log" 2>&1; then
     last=$(grep -E '^#[0-9]+.*(DONE|pulse|NEW|REDUCE|INITED)' "$work/fuzz.log" | tail -n 1)
     execs=$(grep -m1 -E '^stat::number_of_executed_units' "$work/fuzz.log" | awk '{print $2}')
     persec=$(grep -m1 -E '^stat::average_exec_per_sec' "$work/fuzz.log" | awk '{print $2}')
     cov=$(echo "$last" | grep -oE 'cov: [0-9]+ ft: [0-9]+')
-    echo "PASS fuzz $n ${SECONDS_EACH}s: ${execs:-?} executions (${persec:-?}/s), ${cov:-cov ?}"
+    echo "PASS fuzz $n ${FUZZ_RUNS:+$FUZZ_RUNS runs, }${FUZZ_RUNS:-${SECONDS_EACH}s}: ${execs:-?} executions (${persec:-?}/s), ${cov:-cov ?}"
   else
     echo "FAIL fuzz $n: $(grep -m1 -E 'ERROR|SUMMARY|runtime error|out-of-memory|timeout|deadly' "$work/fuzz.log") (input in $CRASHES/$short/)"
     grep -m8 -E '^ +#[0-9]+ ' "$work/fuzz.log" | sed 's/^/    /'
