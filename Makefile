@@ -113,7 +113,8 @@ FUZZ_SECONDS ?= 60
 FUZZ_SRC  := $(sort $(wildcard tests/fuzz/fuzz_*.cpp))
 FUZZ_BINS := $(patsubst tests/fuzz/%.cpp,$(BUILD)/fuzzers/%,$(FUZZ_SRC))
 FUZZ_CXX_SRC := $(filter glue/io/% glue/base/% glue/scene/gltf_% glue/scene/textures.cpp \
-                glue/color/ocio_lut_bake.cpp glue/bake/ambient_fit.cpp,$(CXX_SRC))
+                glue/color/ocio_lut_bake.cpp glue/bake/ambient_fit.cpp glue/bake/bake_dir.cpp \
+                glue/bake/bake_checkpoint.cpp glue/bake/volume_file.cpp,$(CXX_SRC))
 FUZZ_OBJ  := $(FUZZ_CXX_SRC:%.cpp=$(BUILD)/obj/%.o)
 FUZZ_REST ?= build/libtiershade.a
 .PHONY: fuzz fuzz-build fuzz-bins

@@ -273,8 +273,98 @@ exr_result_t decode_chunk(CoreRead &r, const exr_chunk_info_t &ci, long long x0,
 // C++ InputFile as before, but only after the core has read and checked their whole header
 // within the budget (so InputFile's own copy of the attributes is within it too) and their line
 // buffers (a chunk's unpacked size, a few times) were checked against the memory limit.
+// InputFile reads every attribute of every header before anything can be checked, and allocates
+// each one's declared size (an opaque attribute of 1.6 GB from a 446-byte file the core had
+// accepted: tests/fuzz/regressions/probe/probe_oom-*). So the headers are walked here as InputFile
+// walks them (OpenEXR file layout: magic, version and flags, then per header `name\0 type\0 int32
+// size, value`, ended by an empty name; a multi-part file's headers end with an empty header), and
+// any attribute whose declared size is negative or runs past the end of the file is refused.
+// A name from the file as it can be printed: other bytes than printable ASCII as \xNN.
+std::string printable(const std::string &s) {
+  std::string o;
+  for (unsigned char c : s) {
+    if (c >= 0x20 && c < 0x7f && c != '\\') {
+      o.push_back(static_cast<char>(c));
+    } else {
+      char b[8];
+      std::snprintf(b, sizeof b, "\\x%02x", c);
+      o += b;
+    }
+  }
+  return o;
+}
+
+bool inputfile_headers_fit(const std::string &path, std::string *why) {
+  FILE *f = std::fopen(path.c_str(), "rb");
+  if (!f) {
+    *why = std::string("cannot open: ") + std::strerror(errno);
+    return false;
+  }
+  std::fseek(f, 0, SEEK_END);
+  const long long file_size = std::ftell(f);
+  std::fseek(f, 0, SEEK_SET);
+  long long pos = 0;
+  auto get = [&](void *dst, size_t n) {
+    const bool ok = std::fread(dst, 1, n, f) == n;
+    pos += static_cast<long long>(n);
+    return ok;
+  };
+  // A name or type: at most 255 bytes with the long-names flag (31 without), then a NUL.
+  auto get_str = [&](std::string *s, size_t max) {
+    s->clear();
+    for (;;) {
+      const int c = std::fgetc(f);
+      if (c == EOF) return false;
+      ++pos;
+      if (c == 0) return true;
+      if (s->size() >= max) return false;
+      s->push_back(static_cast<char>(c));
+    }
+  };
+  unsigned char head[8];
+  bool ok = get(head, 8);
+  const unsigned flags = ok ? static_cast<unsigned>(head[5]) : 0;  // version bits 8..15
+  const size_t max_name = (flags & 0x04) ? 255 : 31;               // 0x400: long names
+  const bool multipart = (flags & 0x10) != 0;                      // 0x1000: multi-part
+  for (int part = 0; ok; ++part) {
+    std::string name, type;
+    bool first = true;
+    for (;;) {
+      const long long at = pos;
+      if (!get_str(&name, max_name)) {
+        ok = false;
+        *why = "header " + std::to_string(part) + ": bad attribute name at byte " + std::to_string(at);
+        break;
+      }
+      if (name.empty()) break;  // end of this header (or, first in a multi-part file, of all)
+      first = false;
+      unsigned char sz[4];
+      if (!get_str(&type, max_name) || !get(sz, 4)) {
+        ok = false;
+        *why = "header " + std::to_string(part) + ": attribute '" + printable(name) + "' at byte " + std::to_string(at) + " is cut short";
+        break;
+      }
+      const int32_t size = static_cast<int32_t>(static_cast<uint32_t>(sz[0]) | static_cast<uint32_t>(sz[1]) << 8 |
+                                                static_cast<uint32_t>(sz[2]) << 16 | static_cast<uint32_t>(sz[3]) << 24);
+      if (size < 0 || size > file_size - pos) {
+        ok = false;
+        *why = "header " + std::to_string(part) + ": attribute '" + printable(name) + "' (" + printable(type) + ") at byte " + std::to_string(at) +
+            " declares " + std::to_string(size) + " bytes, past the end of the file (" + std::to_string(file_size) + " bytes)";
+        break;
+      }
+      std::fseek(f, size, SEEK_CUR);
+      pos += size;
+    }
+    if (!ok || !multipart || (first && part > 0)) break;
+  }
+  std::fclose(f);
+  return ok;
+}
+
 bool read_with_inputfile(const char *fn, const std::string &path, const exr_attr_box2i_t &core_dw, const bool present[4],
                          ImageF *img, std::string *err) {
+  std::string why;
+  if (!inputfile_headers_fit(path, &why)) return io_error(err, fn, path, why);
   try {
     Imf::InputFile in(path.c_str());
     const Imath::Box2i dw = in.header().dataWindow();

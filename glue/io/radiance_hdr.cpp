@@ -62,7 +62,6 @@ bool next_line(const std::vector<unsigned char> &d, size_t *pos, std::string *li
 struct Header {
   int w = 0, h = 0;
   bool top_down = true;  // -Y: the first scanline is the top row
-  size_t res_line = 0;  // offset of the resolution line
   size_t data = 0;  // offset of the first scanline
 };
 
@@ -92,7 +91,6 @@ bool parse_header(const std::vector<unsigned char> &d, Header *hd, std::string *
     *why = "no FORMAT=32-bit_rle_rgbe line in the header";
     return false;
   }
-  hd->res_line = pos;
   if (!next_line(d, &pos, &line)) {
     *why = "missing resolution line";
     return false;
@@ -150,23 +148,33 @@ bool check_pixel_data(const std::vector<unsigned char> &d, const Header &hd, std
   return true;
 }
 
-// stb_image read callbacks over the file in memory.
+// stb_image read callbacks over the file in memory, behind a header of our own: stb reads
+// "#?RADIANCE\nFORMAT=32-bit_rle_rgbe\n\n-Y h +X w\n" (the header parse_header read, in the one
+// form stb takes), then the file's pixel data. stb's header parse then ends where ours did: on a
+// header it parsed differently (a blank line holding a space, which stb does not take for the end
+// of the header), it read the pixel data, and the fill past the end, as header lines forever
+// (tests/fuzz/regressions/hdr/hdr_timeout-*).
 struct Source {
-  const unsigned char *data;
-  size_t size, pos = 0;
+  std::string head;          // the header stb reads
+  const unsigned char *data;  // the file's pixel data
+  size_t size, pos = 0;      // pos: in head, then data (head.size() + offset)
   int lookahead = 0;  // the size of stb's buffer refills (its first request)
   bool overrun = false;
+  size_t total() const { return head.size() + size; }
 };
 
 int source_read(void *user, char *out, int n) {
   Source *s = static_cast<Source *>(user);
   if (s->lookahead == 0) s->lookahead = n;
   const size_t want = static_cast<size_t>(std::max(n, 0));
-  const size_t k = std::min(want, s->size - s->pos);
-  std::memcpy(out, s->data + s->pos, k);
+  const size_t k = std::min(want, s->total() - s->pos);
+  const size_t from_head = s->pos < s->head.size() ? std::min(k, s->head.size() - s->pos) : 0;
+  if (from_head) std::memcpy(out, s->head.data() + s->pos, from_head);
+  if (k > from_head) std::memcpy(out + from_head, s->data + (s->pos + from_head - s->head.size()), k - from_head);
   s->pos += k;
   // A short refill near the end is normal; a read stb needs in full, or any read at the end,
-  // asks for bytes the file does not have.
+  // asks for bytes the file does not have. The fill is 0xFF: a run-length count of 0 would make
+  // stb's scanline decoder loop without advancing, 0xFF ends it ("bad RLE data").
   if (k < want && (k == 0 || n != s->lookahead)) {
     std::memset(out + k, 0xFF, want - k);
     s->overrun = true;
@@ -178,12 +186,12 @@ int source_read(void *user, char *out, int n) {
 void source_skip(void *user, int n) {
   Source *s = static_cast<Source *>(user);
   const long long p = static_cast<long long>(s->pos) + n;
-  s->pos = static_cast<size_t>(std::min(std::max(p, 0LL), static_cast<long long>(s->size)));
+  s->pos = static_cast<size_t>(std::min(std::max(p, 0LL), static_cast<long long>(s->total())));
 }
 
 int source_eof(void *user) {
   const Source *s = static_cast<const Source *>(user);
-  return s->pos >= s->size;
+  return s->pos >= s->total();
 }
 
 std::string stb_reason() {
@@ -206,9 +214,8 @@ bool read_hdr_impl(const std::string &path, ImageF *out, std::string *why) {
                    "a " + std::to_string(hd.w) + " x " + std::to_string(hd.h) + " image", why))
     return false;
   // stb reads only "-Y h +X w": for "+Y" it decodes the same scanlines, stored bottom row first.
-  if (!hd.top_down) d[hd.res_line] = '-';
-
-  Source src{d.data(), d.size()};
+  Source src{"#?RADIANCE\nFORMAT=32-bit_rle_rgbe\n\n-Y " + std::to_string(hd.h) + " +X " + std::to_string(hd.w) + "\n",
+             d.data() + hd.data, d.size() - hd.data};
   const stbi_io_callbacks io = {source_read, source_skip, source_eof};
   int w = 0, h = 0, comp = 0;
   float *pix = stbi_loadf_from_callbacks(&io, &src, &w, &h, &comp, 4);
