@@ -4,8 +4,8 @@
 
 static inline V3 FN(ambient_cube)(V3 n, const V3 c[6]) {
   V3 n2 = M(mul3)(n, n);
-  V3 cx = n.x >= K(0.0) ? c[0] : c[1];
-  V3 cy = n.y >= K(0.0) ? c[2] : c[3];
-  V3 cz = n.z >= K(0.0) ? c[4] : c[5];
+  V3 cx = SEL3(GE(n.x, K(0.0)), c[0], c[1]);
+  V3 cy = SEL3(GE(n.y, K(0.0)), c[2], c[3]);
+  V3 cz = SEL3(GE(n.z, K(0.0)), c[4], c[5]);
   return M(add3)(M(add3)(M(scale3)(cx, n2.x), M(scale3)(cy, n2.y)), M(scale3)(cz, n2.z));
 }

@@ -4,17 +4,19 @@
  * includer (the sampler of each precision). No include guard: included once per precision. */
 
 /* uvw = c * (N-1)/N + 0.5/N: mul, then add (GLSL a*b + c is unfused on llvmpipe). */
-static V3 FN(cc_uvw)(V3 c, V4 lut) { return M(v3)(c.x * lut.x + lut.y, c.y * lut.x + lut.y, c.z * lut.x + lut.y); }
+static V3 FN(cc_uvw)(V3 c, V4 lut) {
+  return M(v3)(ADD(MUL(c.x, lut.x), lut.y), ADD(MUL(c.y, lut.x), lut.y), ADD(MUL(c.z, lut.x), lut.y));
+}
 
 static void FN(cc_cell)(V3 c, V4 lut, V3 *i0, V3 *i1, V3 *f) {
   V3 p = M(scale3)(c, lut.z);
   *i0 = M(v3)(M(floor)(p.x), M(floor)(p.y), M(floor)(p.z));
   *f = M(sub3)(p, *i0);
-  *i1 = M(v3)(M(min)(i0->x + K(1.0), lut.z), M(min)(i0->y + K(1.0), lut.z), M(min)(i0->z + K(1.0), lut.z));
+  *i1 = M(v3)(M(min)(ADD(i0->x, K(1.0)), lut.z), M(min)(ADD(i0->y, K(1.0)), lut.z), M(min)(ADD(i0->z, K(1.0)), lut.z));
 }
 
 static V3 FN(cc_centre)(V3 i, V4 lut) {
-  return M(v3)((i.x + K(0.5)) * lut.w, (i.y + K(0.5)) * lut.w, (i.z + K(0.5)) * lut.w);
+  return M(v3)(MUL(ADD(i.x, K(0.5)), lut.w), MUL(ADD(i.y, K(0.5)), lut.w), MUL(ADD(i.z, K(0.5)), lut.w));
 }
 
 static V3 FN(cc_lerp)(V3 a, V3 b, TS_REAL t) { return M(add3)(a, M(scale3)(M(sub3)(b, a), t)); }

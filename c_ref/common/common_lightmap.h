@@ -2,7 +2,7 @@
  * page addressing and the four texel decodes, fact sheet sections 1 and 2).
  * No include guard on purpose. */
 
-static V2 FN(lightmap_uv)(V2 uv, V2 offset, TS_REAL k) { return M(v2)(uv.x + k * offset.x, uv.y + k * offset.y); }
+static V2 FN(lightmap_uv)(V2 uv, V2 offset, TS_REAL k) { return M(v2)(ADD(uv.x, MUL(k, offset.x)), ADD(uv.y, MUL(k, offset.y))); }
 
 /* (2 t)^2.2: gamma 2.2 after undoing the overbright-2 pre-division. */
 static V3 FN(lightmap_ldr_to_linear)(V3 t) {
@@ -22,6 +22,6 @@ static V3 FN(lightmap_decode)(V4 t, int encoding) {
   V3 rgb = M(v3)(t.x, t.y, t.z);
   if (encoding == 1) return M(scale3)(rgb, K(16.0));
   if (encoding == 2) return FN(lightmap_ldr_to_linear)(rgb);
-  if (encoding == 3) return M(scale3)(rgb, M(exp2)(t.w * K(255.0) - K(128.0)));
+  if (encoding == 3) return M(scale3)(rgb, M(exp2)(SUB(MUL(t.w, K(255.0)), K(128.0))));
   return rgb;
 }

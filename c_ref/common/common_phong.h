@@ -2,26 +2,26 @@
  * Fresnel ranges, Fresnel4, mix()). No include guard (instantiated per precision). */
 
 static inline TS_REAL FN(fresnel_ranges)(TS_REAL NdotV, V3 ranges) {
-  TS_REAL f = M(saturate)(K(1.0) - NdotV);
-  f = f * f;
-  return ranges.y + (f - K(0.5)) * (f >= K(0.5) ? ranges.z : ranges.x);
+  TS_REAL f = M(saturate)(SUB(K(1.0), NdotV));
+  f = MUL(f, f);
+  return ADD(ranges.y, MUL(SUB(f, K(0.5)), SEL(GE(f, K(0.5)), ranges.z, ranges.x)));
 }
 
 static inline TS_REAL FN(fresnel4)(TS_REAL NdotV) {
-  TS_REAL f = M(saturate)(K(1.0) - NdotV);
-  f = f * f;
-  return f * f;
+  TS_REAL f = M(saturate)(SUB(K(1.0), NdotV));
+  f = MUL(f, f);
+  return MUL(f, f);
 }
 
 /* GLSL mix() as llvmpipe lowers NIR's flrp (lower_flrp32; see common_phong.glsl):
  * a + (b - a) * t in general, (1 - t) + b * t when a is the constant 1. Unfused. */
 static inline V3 FN(lerp3)(V3 a, V3 b, TS_REAL t) {
-  return M(v3)(a.x + (b.x - a.x) * t, a.y + (b.y - a.y) * t, a.z + (b.z - a.z) * t);
+  return M(v3)(ADD(a.x, MUL(SUB(b.x, a.x), t)), ADD(a.y, MUL(SUB(b.y, a.y), t)), ADD(a.z, MUL(SUB(b.z, a.z), t)));
 }
 
-static inline TS_REAL FN(lerp_from_one)(TS_REAL b, TS_REAL t) { return (K(1.0) - t) + b * t; }
+static inline TS_REAL FN(lerp_from_one)(TS_REAL b, TS_REAL t) { return ADD(SUB(K(1.0), t), MUL(b, t)); }
 
 static inline V3 FN(lerp3_from_one)(V3 b, TS_REAL t) {
-  const TS_REAL u = K(1.0) - t;
-  return M(v3)(u + b.x * t, u + b.y * t, u + b.z * t);
+  const TS_REAL u = SUB(K(1.0), t);
+  return M(v3)(ADD(u, MUL(b.x, t)), ADD(u, MUL(b.y, t)), ADD(u, MUL(b.z, t)));
 }

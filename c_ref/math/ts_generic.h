@@ -18,6 +18,15 @@
  *   SEL(c, a, b)             -> ((c) ? (a) : (b))    / ts_seliv(c, a, b): c either joins a and b
  *   SEL3(c, a, b)            -> the same on a V3
  *   FROMF(x)                 -> ((TS_REAL)(x))       / ts_ivpoint(x): a float32 input as a TS_REAL
+ *   KC(0.5)                  -> K(0.5)               / {0.5f, 0.5f, 0}: a literal in a static table (a
+ *                                                      normal non-zero number: its own point interval)
+ *   EQ(a, b) NE              -> ((a) == (b)) ...     / ts_eqiv(a, b): false, true or either
+ *   OR(c, d) AND(c, d)       -> ((c) || (d)) ...     / ts_oriv(c, d) on those outcomes (C's 0 / 1
+ *                                                      are TS_IV_FALSE / TS_IV_TRUE)
+ *   SEL4(c, a, b)            -> the same as SEL on a V4
+ *   TOINT(x)                 -> ((int)(x))           / ts_ivtoint(x): TS_IV_UNSURE_INT unless one int
+ *   ANY_IF(c, v)             -> (v)                  / c ? every V4 : v (c is not even compiled in
+ *                                                      the float and double instances)
  * A value-dependent `if` becomes a SEL of both outcomes (both are evaluated in the interval
  * instance; plain SEL evaluates one, like ?:). Comparisons whose interval straddles the threshold
  * thus take both branches and join them (issue 14).
@@ -59,4 +68,22 @@
 #define TS_FROMF_plain(x) ((TS_REAL)(x))
 #define TS_FROMF_iv(x) ts_ivpoint(x)
 #define FROMF(x) TS_CAT(TS_FROMF_, TS_OPS)(x)
+#define TS_KC_plain(v) v
+#define TS_KC_iv(v) {v, v, 0}
+#define KC(x) TS_CAT(TS_KC_, TS_OPS)(TS_CAT(x, TS_LIT))
+#define EQ(a, b) TS_CAT(TS_OP2_, TS_OPS)(eq, ==, a, b)
+#define NE(a, b) TS_CAT(TS_OP2_, TS_OPS)(ne, !=, a, b)
+#define TS_LOG2_plain(name, op, a, b) ((a) op (b))
+#define TS_LOG2_iv(name, op, a, b) ts_##name##iv(a, b)
+#define OR(a, b) TS_CAT(TS_LOG2_, TS_OPS)(or, ||, a, b)
+#define AND(a, b) TS_CAT(TS_LOG2_, TS_OPS)(and, &&, a, b)
+#define TS_SEL4_plain TS_SEL_plain
+#define TS_SEL4_iv(c, a, b) ts_sel4iv(c, a, b)
+#define SEL4(c, a, b) TS_CAT(TS_SEL4_, TS_OPS)(c, a, b)
+#define TS_TOINT_plain(x) ((int)(x))
+#define TS_TOINT_iv(x) ts_ivtoint(x)
+#define TOINT(x) TS_CAT(TS_TOINT_, TS_OPS)(x)
+#define TS_ANY_IF_plain(c, v) (v)
+#define TS_ANY_IF_iv(c, v) ((c) ? ts_v4ivany() : (v))
+#define ANY_IF(c, v) TS_CAT(TS_ANY_IF_, TS_OPS)(c, v)
 #endif

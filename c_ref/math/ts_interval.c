@@ -424,3 +424,204 @@ ts_vec4iv ts_texture2Div(const ts_tex2d *t, ts_vec2iv uv) {
   }
   return ts_v4iv(ch[0], ch[1], ch[2], ch[3]);
 }
+
+/* ---- more comparisons, logic and conversions (the other twin families, issue 14) ---- */
+
+int ts_eqiv(ts_iv a, ts_iv b) {
+  if (a.nan || b.nan || !has_num(a) || !has_num(b)) return TS_IV_EITHER;
+  if (a.lo == a.hi && b.lo == b.hi && a.lo == b.lo) return TS_IV_TRUE;
+  if (a.hi < b.lo || b.hi < a.lo) return TS_IV_FALSE;
+  return TS_IV_EITHER;
+}
+int ts_neiv(ts_iv a, ts_iv b) { return ts_notiv(ts_eqiv(a, b)); }
+int ts_notiv(int c) { return c == TS_IV_EITHER ? c : !c; }
+int ts_oriv(int a, int b) {
+  if (a == TS_IV_TRUE || b == TS_IV_TRUE) return TS_IV_TRUE;
+  return a == TS_IV_FALSE && b == TS_IV_FALSE ? TS_IV_FALSE : TS_IV_EITHER;
+}
+int ts_andiv(int a, int b) {
+  if (a == TS_IV_FALSE || b == TS_IV_FALSE) return TS_IV_FALSE;
+  return a == TS_IV_TRUE && b == TS_IV_TRUE ? TS_IV_TRUE : TS_IV_EITHER;
+}
+ts_vec4iv ts_sel4iv(int c, ts_vec4iv a, ts_vec4iv b) {
+  return ts_v4iv(ts_seliv(c, a.x, b.x), ts_seliv(c, a.y, b.y), ts_seliv(c, a.z, b.z), ts_seliv(c, a.w, b.w));
+}
+int ts_ivtoint(ts_iv x) {
+  if (x.nan || !has_num(x) || !(fabsf(x.lo) < 0x1p30f && fabsf(x.hi) < 0x1p30f)) return TS_IV_UNSURE_INT;
+  const int lo = (int)x.lo, hi = (int)x.hi; /* GLSL int(): truncation */
+  return lo == hi ? lo : TS_IV_UNSURE_INT;
+}
+ts_vec4iv ts_v4ivany(void) { return ts_v4iv(ts_ivany(), ts_ivany(), ts_ivany(), ts_ivany()); }
+
+/* floor: exact, monotonic */
+ts_iv ts_flooriv(ts_iv x) {
+  if (x.nan || !has_num(x)) return ts_ivany();
+  return ts_ivrange(floorf(x.lo), floorf(x.hi));
+}
+
+ts_vec3iv ts_neg3iv(ts_vec3iv v) { return ts_v3iv(ts_negiv(v.x), ts_negiv(v.y), ts_negiv(v.z)); }
+ts_vec3iv ts_max3iv(ts_vec3iv a, ts_vec3iv b) { return ts_v3iv(ts_maxiv(a.x, b.x), ts_maxiv(a.y, b.y), ts_maxiv(a.z, b.z)); }
+ts_vec3iv ts_min3iv(ts_vec3iv a, ts_vec3iv b) { return ts_v3iv(ts_miniv(a.x, b.x), ts_miniv(a.y, b.y), ts_miniv(a.z, b.z)); }
+
+/* ---- cube and 3D lookups (issue 14) ---- */
+
+static ts_vec4iv join4(ts_vec4iv a, ts_vec4iv b) {
+  return ts_v4iv(ts_ivjoin(a.x, b.x), ts_ivjoin(a.y, b.y), ts_ivjoin(a.z, b.z), ts_ivjoin(a.w, b.w));
+}
+static ts_vec4iv empty4(void) {
+  const ts_iv e = {INFINITY, -INFINITY, 0};
+  return ts_v4iv(e, e, e, e);
+}
+
+/* The hull of the texels on the border rows and columns of all six faces, rounded outward: what a
+ * seamless LINEAR lookup (ES 3.00 section 3.8.9.1, always on in ES 3) may blend in from the
+ * neighbouring faces when its footprint crosses a face edge. Conservative: any face's border. */
+static ts_vec4iv cube_border_hull(const ts_texcube *c) {
+  double lo[4], hi[4], mag[4];
+  int bad[4] = {0, 0, 0, 0};
+  for (int k = 0; k < 4; ++k) lo[k] = INFINITY, hi[k] = -INFINITY, mag[k] = 0;
+  for (int f = 0; f < 6; ++f)
+    for (int y = 0; y < c->size; ++y)
+      for (int x = 0; x < c->size; ++x) {
+        if (x != 0 && y != 0 && x != c->size - 1 && y != c->size - 1) continue;
+        const float *p = c->faces[f] + ((size_t)y * (size_t)c->size + (size_t)x) * 4u;
+        for (int k = 0; k < 4; ++k) {
+          if (!isfinite(p[k])) bad[k] = 1;
+          if (p[k] < lo[k]) lo[k] = p[k];
+          if (p[k] > hi[k]) hi[k] = p[k];
+          if (fabs((double)p[k]) > mag[k]) mag[k] = fabs((double)p[k]);
+        }
+      }
+  ts_iv ch[4];
+  for (int k = 0; k < 4; ++k) {
+    const double e = 8 * ulpd(mag[k]); /* the lerps' rounding, as ts_texture2Div */
+    ch[k] = bad[k] ? ts_ivany() : mk(lo[k] - e, hi[k] + e);
+  }
+  return ts_v4iv(ch[0], ch[1], ch[2], ch[3]);
+}
+
+/* range of q / m for q in [ql, qh], m in [ml, mh] (0 < ml <= mh), clamped to [-1, 1] */
+static void quot_range(double ql, double qh, double ml, double mh, double *lo, double *hi) {
+  const double r[4] = {ql / ml, ql / mh, qh / ml, qh / mh};
+  *lo = r[0], *hi = r[0];
+  for (int i = 1; i < 4; ++i) *lo = fmin(*lo, r[i]), *hi = fmax(*hi, r[i]);
+  *lo = fmax(*lo, -1.0), *hi = fmin(*hi, 1.0);
+}
+
+/* textureCube (ES 3.00 section 3.8.10, table 3.21; the face choice as dEQP's
+ * tcuTexLookupVerifier does it, getPossibleCubeFaces: every face whose major axis can be the
+ * largest somewhere in the direction's box, each sampled over the face coordinates the box
+ * projects to). Face coordinates s = (sc / |ma| + 1) / 2 are widened by 2^-20 (the division's
+ * 2.5 ULP and the scale-and-bias, under 2^-21 each near 1), then bounded as a 2D CLAMP_TO_EDGE
+ * lookup (ts_texture2Div: coordBits 20, uvwBits 7). A LINEAR footprint that reaches a face
+ * edge also admits the border texels of the faces (seamless filtering, on in ES 3, off in ES 2
+ * and on llvmpipe's desktop contexts: both are covered). A direction box that contains the zero
+ * vector, or a NaN or Inf component: any result. */
+ts_vec4iv ts_textureCubeiv(const ts_texcube *c, ts_vec3iv d) {
+  const ts_iv comp[3] = {d.x, d.y, d.z};
+  double amin[3];
+  int zero_in_box = 1;
+  for (int a = 0; a < 3; ++a) {
+    const ts_iv v = comp[a];
+    if (v.nan || !has_num(v) || !isfinite(v.lo) || !isfinite(v.hi)) return ts_v4ivany();
+    amin[a] = (v.lo <= 0 && v.hi >= 0) ? 0.0 : fmin(fabs((double)v.lo), fabs((double)v.hi));
+    if (amin[a] > 0) zero_in_box = 0;
+  }
+  if (zero_in_box) return ts_v4ivany();
+  /* face f: major axis f / 2, negative if f odd; (sc, tc) = (sign * axis) per table 3.21 */
+  static const int sc_axis[6] = {2, 2, 0, 0, 0, 0}, tc_axis[6] = {1, 1, 2, 2, 1, 1};
+  static const int sc_sign[6] = {-1, 1, 1, 1, 1, -1}, tc_sign[6] = {-1, -1, 1, -1, -1, -1};
+  ts_vec4iv r = empty4();
+  int any_face = 0, edge = 0;
+  for (int f = 0; f < 6; ++f) {
+    const int a = f / 2, neg = f & 1;
+    const ts_iv v = comp[a];
+    if (neg ? !(v.lo < 0) : !(v.hi > 0)) continue;
+    const double ml0 = neg ? fmax(-(double)v.hi, 0.0) : fmax((double)v.lo, 0.0), mh = neg ? -(double)v.lo : v.hi;
+    const int b = sc_axis[f], e = tc_axis[f];
+    const double ml = fmax(ml0, fmax(amin[b], amin[e]));
+    if (!(ml <= mh) || !(ml > 0)) continue;
+    const ts_iv sb = comp[b], te = comp[e];
+    double sl = sc_sign[f] > 0 ? sb.lo : -(double)sb.hi, sh = sc_sign[f] > 0 ? sb.hi : -(double)sb.lo;
+    double tl = tc_sign[f] > 0 ? te.lo : -(double)te.hi, th = tc_sign[f] > 0 ? te.hi : -(double)te.lo;
+    sl = fmax(sl, -mh), sh = fmin(sh, mh), tl = fmax(tl, -mh), th = fmin(th, mh);
+    double qsl, qsh, qtl, qth;
+    quot_range(sl, sh, ml, mh, &qsl, &qsh);
+    quot_range(tl, th, ml, mh, &qtl, &qth);
+    const double w = 0x1p-20;
+    const double s0 = 0.5 * qsl + 0.5 - w, s1 = 0.5 * qsh + 0.5 + w, t0 = 0.5 * qtl + 0.5 - w, t1 = 0.5 * qth + 0.5 + w;
+    const ts_tex2d face = {c->size, c->size, c->faces[f], TS_WRAP_CLAMP, TS_WRAP_CLAMP, c->filter};
+    r = join4(r, ts_texture2Div(&face, ts_v2iv(mk(s0, s1), mk(t0, t1))));
+    any_face = 1;
+    if (c->filter == TS_FILTER_LINEAR) {
+      const double n = c->size, m = 1e-6 + n * 0x1p-19; /* texel-space margin: coordBits, w */
+      if (s0 * n < 0.5 + m || s1 * n > n - 0.5 - m || t0 * n < 0.5 + m || t1 * n > n - 0.5 - m) edge = 1;
+    }
+  }
+  if (!any_face) return ts_v4ivany();
+  if (edge) r = join4(r, cube_border_hull(c));
+  return r;
+}
+
+/* texture3D: the 2D rule (ts_texture2Div) on three axes; LINEAR is trilinear, whose value is
+ * multilinear in the three weights, so its extremes over the weight box lie at the box's
+ * corners. Seven lerps in float32: 12 ULP of the largest |texel| (as ts_texture2Div's 8 for
+ * three). */
+ts_vec4iv ts_texture3Div(const ts_tex3d *t, ts_vec3iv uvw) {
+  const int linear = t->filter == TS_FILTER_LINEAR;
+  const axis_cells ax = axis_of(uvw.x, t->w, linear), ay = axis_of(uvw.y, t->h, linear), az = axis_of(uvw.z, t->d, linear);
+  tex_acc acc;
+  for (int c = 0; c < 4; ++c) acc.lo[c] = INFINITY, acc.hi[c] = -INFINITY, acc.mag[c] = 0, acc.bad[c] = 0;
+  if (ax.n == 0 || ay.n == 0 || az.n == 0) {
+    const size_t n = (size_t)t->w * (size_t)t->h * (size_t)t->d;
+    for (size_t i = 0; i < n; ++i)
+      for (int c = 0; c < 4; ++c) {
+        const float p = t->texels[i * 4u + (size_t)c];
+        if (!isfinite(p)) acc.bad[c] = 1;
+        else acc_value(&acc, c, p, fabs((double)p));
+      }
+  } else {
+    for (int cz = 0; cz < az.n; ++cz)
+      for (int cy = 0; cy < ay.n; ++cy)
+        for (int cx = 0; cx < ax.n; ++cx) {
+          const float *p[8];
+          for (int k = 0; k < 8; ++k) {
+            const int x = wrap_index(ax.i[cx] + (linear & k), t->w, t->wrap_s);
+            const int y = wrap_index(ay.i[cy] + (linear & (k >> 1)), t->h, t->wrap_t);
+            const int z = wrap_index(az.i[cz] + (linear & (k >> 2)), t->d, t->wrap_r);
+            p[k] = t->texels + (((size_t)z * (size_t)t->h + (size_t)y) * (size_t)t->w + (size_t)x) * 4u;
+          }
+          for (int c = 0; c < 4; ++c) {
+            double v[8], mag = 0;
+            int bad = 0;
+            for (int k = 0; k < 8; ++k) {
+              v[k] = p[k][c];
+              if (!isfinite(v[k])) bad = 1;
+              mag = fmax(mag, fabs(v[k]));
+            }
+            if (bad) {
+              acc.bad[c] = 1;
+              continue;
+            }
+            for (int q = 0; q < 8; ++q) {
+              const double wx = linear ? ax.w[cx][q & 1] : 0, wy = linear ? ay.w[cy][(q >> 1) & 1] : 0;
+              const double wz = linear ? az.w[cz][q >> 2] : 0;
+              const double x0 = (1 - wx) * v[0] + wx * v[1], x1 = (1 - wx) * v[2] + wx * v[3];
+              const double x2 = (1 - wx) * v[4] + wx * v[5], x3 = (1 - wx) * v[6] + wx * v[7];
+              const double y0 = (1 - wy) * x0 + wy * x1, y1 = (1 - wy) * x2 + wy * x3;
+              acc_value(&acc, c, (1 - wz) * y0 + wz * y1, mag);
+            }
+          }
+        }
+  }
+  ts_iv ch[4];
+  for (int c = 0; c < 4; ++c) {
+    if (acc.bad[c]) {
+      ch[c] = ts_ivany();
+      continue;
+    }
+    const double e = 12 * ulpd(acc.mag[c]);
+    ch[c] = mk(acc.lo[c] - e, acc.hi[c] + e);
+  }
+  return ts_v4iv(ch[0], ch[1], ch[2], ch[3]);
+}

@@ -18,6 +18,7 @@
 
 #include "math/ts_math.h"
 #include "math/ts_sampler.h"
+#include "math/ts_sampler3d.h"
 
 #ifdef __cplusplus
 extern "C" {
@@ -70,6 +71,18 @@ int ts_gtiv(ts_iv a, ts_iv b);
 ts_iv ts_seliv(int c, ts_iv a, ts_iv b); /* c ? a : b; EITHER joins both */
 ts_vec3iv ts_sel3iv(int c, ts_vec3iv a, ts_vec3iv b);
 
+/* more outcomes: ==, != (either when an interval is not one point), and ||, && of outcomes */
+int ts_eqiv(ts_iv a, ts_iv b);
+int ts_neiv(ts_iv a, ts_iv b);
+int ts_notiv(int c);
+int ts_oriv(int a, int b);
+int ts_andiv(int a, int b);
+ts_vec4iv ts_sel4iv(int c, ts_vec4iv a, ts_vec4iv b);
+/* int(x) (truncation) when every admitted value gives the same int, else TS_IV_UNSURE_INT */
+#define TS_IV_UNSURE_INT (-2147483647 - 1)
+int ts_ivtoint(ts_iv x);
+ts_vec4iv ts_v4ivany(void); /* every result in each channel */
+
 /* ---- builtins ---- */
 ts_iv ts_exp2iv(ts_iv x);
 ts_iv ts_log2iv(ts_iv x);
@@ -82,6 +95,7 @@ ts_iv ts_clampiv(ts_iv x, ts_iv lo, ts_iv hi);
 ts_iv ts_saturateiv(ts_iv x);
 ts_iv ts_stepiv(ts_iv edge, ts_iv x);
 ts_iv ts_absiv(ts_iv x);
+ts_iv ts_flooriv(ts_iv x);
 
 /* ---- vectors ---- */
 ts_vec2iv ts_v2iv(ts_iv x, ts_iv y);
@@ -94,11 +108,19 @@ ts_vec3iv ts_mul3iv(ts_vec3iv a, ts_vec3iv b);
 ts_vec3iv ts_scale3iv(ts_vec3iv v, ts_iv s);
 ts_vec3iv ts_saturate3iv(ts_vec3iv v);
 ts_vec3iv ts_normalize3iv(ts_vec3iv v);
+ts_vec3iv ts_neg3iv(ts_vec3iv v);
+ts_vec3iv ts_max3iv(ts_vec3iv a, ts_vec3iv b);
+ts_vec3iv ts_min3iv(ts_vec3iv a, ts_vec3iv b);
 
 /* ---- texture lookups: every value a lookup may give with the coordinate and weight precision
  * of dEQP's tcuTexLookupVerifier as the GLES 3 filtering tests set it (coordBits 20, uvwBits 7;
  * ts_interval.c); a coordinate range over more than two texel cells: the hull of the texels. ---- */
 ts_vec4iv ts_texture2Div(const ts_tex2d *t, ts_vec2iv uv);
+/* cube: every face the direction box can select (dEQP getPossibleCubeFaces), each as a 2D
+ * CLAMP_TO_EDGE lookup of the face coordinates; seamless filtering at face edges covered; a box
+ * holding the zero vector: any result. 3D: the 2D rule on three axes (trilinear). ts_interval.c */
+ts_vec4iv ts_textureCubeiv(const ts_texcube *c, ts_vec3iv dir);
+ts_vec4iv ts_texture3Div(const ts_tex3d *t, ts_vec3iv uvw);
 
 #ifdef __cplusplus
 }

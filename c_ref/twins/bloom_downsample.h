@@ -6,6 +6,7 @@
 #define TS_BLOOM_DOWNSAMPLE_H
 #include "math/ts_math.h"
 #include "twins/twin_api.h"
+#include "math/ts_interval.h"
 #include "math/ts_sampler.h"
 
 /* The input record's slots (enum bd_slot) and its counts (BD_SLOTS, BD_PIXEL_SLOTS, as #defines)
@@ -22,5 +23,8 @@ typedef struct {
 
 /* bloom_downsample_f: float32, bit-exact with llvmpipe; bloom_downsample_d: double, the accuracy reference */
 TS_TWIN_DECLARE(bloom_downsample, (const bd_variant *v, const ts_vec4f rec[BD_SLOTS], const ts_tex2d *source))
+/* bloom_downsample_iv: per channel, the interval of every result GLSL ES 3.00 highp allows (the third
+ * instance, ts_generic_interval.h; docs/conformance.md "Error bounds per pixel") */
+TS_C_API ts_vec4iv bloom_downsample_iv(const bd_variant *v, const ts_vec4f rec[BD_SLOTS], const ts_tex2d *source);
 
 #endif

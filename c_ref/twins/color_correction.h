@@ -6,6 +6,7 @@
 #define TS_COLOR_CORRECTION_H
 #include "math/ts_math.h"
 #include "twins/twin_api.h"
+#include "math/ts_interval.h"
 #include "math/ts_sampler.h"
 #include "math/ts_sampler3d.h"
 
@@ -34,5 +35,8 @@ TS_C_API ts_vec4f cc_lut_params(int n);
 
 /* color_correction_f: float32, bit-exact with llvmpipe; color_correction_d: double, the accuracy reference */
 TS_TWIN_DECLARE(color_correction, (const cc_variant *v, const ts_vec4f rec[CC_SLOTS], const cc_luts *luts))
+/* color_correction_iv: per channel, the interval of every result GLSL ES 3.00 highp allows (the third
+ * instance, ts_generic_interval.h; docs/conformance.md "Error bounds per pixel") */
+TS_C_API ts_vec4iv color_correction_iv(const cc_variant *v, const ts_vec4f rec[CC_SLOTS], const cc_luts *luts);
 
 #endif

@@ -1,5 +1,7 @@
 /* tiershade twins: generic body of the color_correction twin; mirrors
- * shaders/color_correction.fs statement by statement. Instantiated by color_correction.c through twin_instances.h; gives color_correction_f / color_correction_d. */
+ * shaders/color_correction.fs statement by statement. Instantiated by color_correction.c through twin_instances.h; gives color_correction_f / color_correction_d, and
+ * color_correction_iv (the GLSL ES 3.00 bounds, ts_generic_interval.h): arithmetic on TS_REAL goes through
+ * ts_generic.h's ADD/MUL/SEL. */
 
 /* The LUT taps common_color_correction.h reads: the rgb of a 2D / 3D texture lookup. */
 static V3 FN(cc_tex2d)(const ts_tex2d *t, TS_REAL u, TS_REAL v) {
@@ -13,7 +15,7 @@ static V3 FN(cc_tex3d)(const ts_tex3d *t, V3 p) {
 #include "common/common_color_correction.h"
 
 /* A record slot in the instantiation's precision (float slots, widened for double). */
-static V4 FN(cc_in)(ts_vec4f v) { return M(v4)((TS_REAL)v.x, (TS_REAL)v.y, (TS_REAL)v.z, (TS_REAL)v.w); }
+static V4 FN(cc_in)(ts_vec4f v) { return M(v4)(FROMF(v.x), FROMF(v.y), FROMF(v.z), FROMF(v.w)); }
 
 static V3 FN(cc_lookup)(const cc_variant *v, const cc_luts *luts, int i, V3 uvw, V2 uv0, V2 uv1, TS_REAL fz, V3 c0,
                         V3 c1, V3 f, V4 u, V2 vv) {
@@ -42,19 +44,20 @@ V4 FN(color_correction)(const cc_variant *v, const ts_vec4f rec[CC_SLOTS], const
       c0 = FN(cc_centre)(i0, lut);
       c1 = FN(cc_centre)(i1, lut);
       if (v->atlas) {
-        u = M(v4)((c0.x + i0.z) * lut.w, (c1.x + i0.z) * lut.w, (c0.x + i1.z) * lut.w, (c1.x + i1.z) * lut.w);
+        u = M(v4)(MUL(ADD(c0.x, i0.z), lut.w), MUL(ADD(c1.x, i0.z), lut.w), MUL(ADD(c0.x, i1.z), lut.w),
+                  MUL(ADD(c1.x, i1.z), lut.w));
         vv = M(v2)(c0.y, c1.y);
       }
     } else {
       uvw = FN(cc_uvw)(c, lut);
       if (v->atlas) {
-        TS_REAL pz = c.z * lut.z;
+        TS_REAL pz = MUL(c.z, lut.z);
         TS_REAL z0 = M(floor)(pz);
         TS_REAL z1;
-        fz = pz - z0;
-        z1 = M(min)(z0 + K(1.0), lut.z);
-        uv0 = M(v2)((uvw.x + z0) * lut.w, uvw.y);
-        uv1 = M(v2)((uvw.x + z1) * lut.w, uvw.y);
+        fz = SUB(pz, z0);
+        z1 = M(min)(ADD(z0, K(1.0)), lut.z);
+        uv0 = M(v2)(MUL(ADD(uvw.x, z0), lut.w), uvw.y);
+        uv1 = M(v2)(MUL(ADD(uvw.x, z1), lut.w), uvw.y);
       }
     }
   }

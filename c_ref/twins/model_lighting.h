@@ -6,6 +6,7 @@
 #define TS_MODEL_LIGHTING_H
 #include "math/ts_math.h"
 #include "twins/twin_api.h"
+#include "math/ts_interval.h"
 #include "math/ts_sampler.h"
 #include "twins/tier_id.h"
 
@@ -38,5 +39,8 @@ typedef struct {
 
 /* model_lighting_f: float32, bit-exact with llvmpipe; model_lighting_d: double, the accuracy reference */
 TS_TWIN_DECLARE(model_lighting, (const ml_variant *v, const ts_vec4f rec[ML_SLOTS], const ml_textures *tex))
+/* model_lighting_iv: per channel, the interval of every result GLSL ES 3.00 highp allows (the third
+ * instance, ts_generic_interval.h; docs/conformance.md "Error bounds per pixel") */
+TS_C_API ts_vec4iv model_lighting_iv(const ml_variant *v, const ts_vec4f rec[ML_SLOTS], const ml_textures *tex);
 
 #endif

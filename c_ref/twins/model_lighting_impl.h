@@ -1,5 +1,7 @@
 /* tiershade twins: generic body of the model_lighting twin; mirrors
- * shaders/model_lighting.fs statement by statement. Instantiated by model_lighting.c through twin_instances.h; gives model_lighting_f / model_lighting_d. */
+ * shaders/model_lighting.fs statement by statement. Instantiated by model_lighting.c through twin_instances.h; gives model_lighting_f / model_lighting_d, and
+ * model_lighting_iv (the GLSL ES 3.00 bounds, ts_generic_interval.h): arithmetic on TS_REAL goes
+ * through ts_generic.h's ADD/MUL/SEL. */
 #include "common/common_math.h"
 #include "common/common_ambient_cube.h"
 #include "common/common_lights.h"
@@ -29,11 +31,11 @@ V4 FN(model_lighting)(const ml_variant *v, const ts_vec4f rec[ML_SLOTS], const m
     N = FN(safe_normalize)(M(add3)(M(add3)(M(scale3)(T, tn.x), M(scale3)(B, tn.y)), M(scale3)(Ng, tn.z)));
     V = FN(safe_normalize)(M(sub3)(FN(xyz)(rec[ML_SLOT_EYE]), P));
     NdotV = M(dot3)(N, V);
-    R = M(sub3)(M(scale3)(N, K(2.0) * NdotV), V);
+    R = M(sub3)(M(scale3)(N, MUL(K(2.0), NdotV)), V);
     phong = FN(vec4_in)(rec[ML_SLOT_PHONG]);
     if (v->exponent_map) {
       expmap = M(texture2D)(tex->exponent_map, M(v2)(uvw.x, uvw.y));
-      k = K(1.0) + phong.y * expmap.x;
+      k = ADD(K(1.0), MUL(phong.y, expmap.x));
     } else {
       k = phong.x;
     }
@@ -45,7 +47,7 @@ V4 FN(model_lighting)(const ml_variant *v, const ts_vec4f rec[ML_SLOTS], const m
   V3 diffuse = FN(ml_ambient)(N, rec);
 
   int loop = v->num_lights;
-  if (v->tier == TS_TIER_ID_SM3) loop = (int)M(clamp)(params.y, K(0.0), (TS_REAL)ML_MAX_LIGHTS);
+  if (v->tier == TS_TIER_ID_SM3) loop = TOINT(M(clamp)(params.y, K(0.0), FROMF(ML_MAX_LIGHTS)));
   for (int i = 0; i < loop && i < ML_MAX_LIGHTS; ++i) {
     V4 l[5];
     for (int j = 0; j < 5; ++j) l[j] = FN(vec4_in)(rec[ML_SLOT_LIGHT0 + 5 * i + j]);
@@ -53,21 +55,21 @@ V4 FN(model_lighting)(const ml_variant *v, const ts_vec4f rec[ML_SLOTS], const m
     TS_REAL att;
     if (v->tier == TS_TIER_ID_PS20) {
       L = FN(light_direction)(l, P);
-      att = i == 0 ? (TS_REAL)rec[ML_SLOT_VERTEX_ATTEN].x : (TS_REAL)rec[ML_SLOT_VERTEX_ATTEN].y;
+      att = i == 0 ? FROMF(rec[ML_SLOT_VERTEX_ATTEN].x) : FROMF(rec[ML_SLOT_VERTEX_ATTEN].y);
     } else {
       att = FN(light_attenuation)(l, P, &L);
     }
     TS_REAL NdotL = M(dot3)(N, L);
     if (v->light_warp) {
-      V4 w = M(texture2D)(tex->light_warp, M(v2)(M(saturate)(K(0.5) * NdotL + K(0.5)), K(0.5)));
+      V4 w = M(texture2D)(tex->light_warp, M(v2)(M(saturate)(ADD(MUL(K(0.5), NdotL), K(0.5))), K(0.5)));
       diffuse = M(add3)(diffuse, M(scale3)(M(mul3)(FN(xyz4)(l[0]), M(scale3)(FN(xyz4)(w), K(2.0))), att));
     } else {
       TS_REAL term = v->half_lambert ? FN(half_lambert)(NdotL) : FN(lambert)(NdotL);
-      diffuse = M(add3)(diffuse, M(scale3)(FN(xyz4)(l[0]), att * term));
+      diffuse = M(add3)(diffuse, M(scale3)(FN(xyz4)(l[0]), MUL(att, term)));
     }
     if (v->phong) {
       TS_REAL RdotL = M(saturate)(M(dot3)(R, L));
-      V3 lit = M(scale3)(FN(xyz4)(l[0]), M(saturate)(NdotL) * att);
+      V3 lit = M(scale3)(FN(xyz4)(l[0]), MUL(M(saturate)(NdotL), att));
       spec = M(add3)(spec, M(scale3)(lit, M(pow)(RdotL, k)));
       if (v->rim_light) rim = M(add3)(rim, M(scale3)(lit, M(pow)(RdotL, rim_params.x)));
     }
@@ -81,35 +83,36 @@ V4 FN(model_lighting)(const ml_variant *v, const ts_vec4f rec[ML_SLOTS], const m
   if (v->phong) {
     V4 fr = FN(vec4_in)(rec[ML_SLOT_FRESNEL]);
     TS_REAL F = FN(fresnel_ranges)(NdotV, FN(xyz4)(fr));
-    TS_REAL mask = phong.w > K(0.5) ? base.w : nmap.w;
-    mask = fr.w > K(0.5) ? K(1.0) - mask : mask;
-    TS_REAL spec_mask = mask * F;
-    if (!spec_const_zero) spec = M(scale3)(spec, spec_mask * phong.z);
+    TS_REAL mask = SEL(GT(phong.w, K(0.5)), base.w, nmap.w);
+    mask = SEL(GT(fr.w, K(0.5)), SUB(K(1.0), mask), mask);
+    TS_REAL spec_mask = MUL(mask, F);
+    if (!spec_const_zero) spec = M(scale3)(spec, MUL(spec_mask, phong.z));
     V4 tint = FN(vec4_in)(rec[ML_SLOT_PHONG_TINT]);
     V3 spec_tint = FN(xyz4)(tint);
-    if (v->exponent_map && tint.w > K(0.5)) spec_tint = FN(lerp3_from_one)(FN(xyz4)(base), expmap.y);
+    if (v->exponent_map) spec_tint = SEL3(GT(tint.w, K(0.5)), FN(lerp3_from_one)(FN(xyz4)(base), expmap.y), spec_tint);
     if (v->rim_light) {
       TS_REAL fresnel4 = FN(fresnel4)(NdotV);
       TS_REAL rim_mask = FN(lerp_from_one)(expmap.w, rim_params.z);
       if (!spec_const_zero) {
-        rim = M(scale3)(rim, rim_mask * fresnel4);
+        rim = M(scale3)(rim, MUL(rim_mask, fresnel4));
         spec = M(max3)(spec, rim);
       }
-      spec = M(add3)(spec, M(scale3)(FN(ml_ambient)(V, rec), rim_params.y * M(saturate)(rim_mask * fresnel4 * N.y)));
+      spec = M(add3)(spec, M(scale3)(FN(ml_ambient)(V, rec), MUL(rim_params.y, M(saturate)(MUL(MUL(rim_mask, fresnel4), N.y)))));
     }
     color = spec_const_zero && !v->rim_light ? spec : M(mul3)(spec, spec_tint);
     if (v->envmap) {
       V4 env = FN(vec4_in)(rec[ML_SLOT_ENVMAP]);
-      TS_REAL env_mask = env.z > K(0.5) ? mask : (fr.w > K(0.5) ? K(1.0) - base.w : base.w);
-      TS_REAL env_scale = env.x * FN(lerp_from_one)(F, env.y) * env_mask;
+      TS_REAL env_mask = SEL(GT(env.z, K(0.5)), mask, SEL(GT(fr.w, K(0.5)), SUB(K(1.0), base.w), base.w));
+      TS_REAL env_scale = MUL(MUL(env.x, FN(lerp_from_one)(F, env.y)), env_mask);
       V4 e = M(textureCube)(tex->envmap, R);
       color = M(add3)(color, M(mul3)(M(scale3)(FN(xyz4)(e), env_scale), FN(xyz)(rec[ML_SLOT_ENVMAP_TINT])));
     }
     V4 si = FN(vec4_in)(rec[ML_SLOT_SELF_ILLUM]);
-    color = M(add3)(color, M(mul3)(FN(xyz4)(base), FN(lerp3)(diffuse, FN(xyz4)(si), base.w * si.w)));
+    color = M(add3)(color, M(mul3)(FN(xyz4)(base), FN(lerp3)(diffuse, FN(xyz4)(si), MUL(base.w, si.w))));
   } else {
     color = M(mul3)(FN(xyz4)(base), diffuse);
   }
   V3 c = FN(final_output)(color, params.x, v->output_mode);
-  return M(v4)(c.x, c.y, c.z, K(1.0));
+  /* an unsure light count (a NaN params.y): the interval instance admits anything */
+  return ANY_IF(loop == TS_IV_UNSURE_INT, M(v4)(c.x, c.y, c.z, K(1.0)));
 }

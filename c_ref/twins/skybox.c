@@ -4,3 +4,7 @@
 
 #define TS_TWIN_IMPL "twins/skybox_impl.h"
 #include "twins/twin_instances.h"
+
+/* the third instance: skybox_iv, the interval of results GLSL ES 3.00 allows */
+#include "math/ts_generic_interval.h"
+#include TS_TWIN_IMPL

@@ -7,6 +7,7 @@
 #include "math/ts_math.h"
 #include "math/ts_sampler.h"
 #include "twins/twin_api.h"
+#include "math/ts_interval.h"
 
 /* The input record's slots (enum sb_slot) and its counts (SB_SLOTS, SB_PIXEL_SLOTS, as #defines)
  * come from the one table shaders/skybox_slots.glsl. */
@@ -22,5 +23,8 @@ typedef struct {
 
 /* skybox_f: float32, bit-exact with llvmpipe; skybox_d: double, the accuracy reference */
 TS_TWIN_DECLARE(skybox, (const sb_variant *v, const ts_vec4f rec[SB_SLOTS], const ts_texcube *sky))
+/* skybox_iv: per channel, the interval of every result GLSL ES 3.00 highp allows (the third
+ * instance, ts_generic_interval.h; docs/conformance.md "Error bounds per pixel") */
+TS_C_API ts_vec4iv skybox_iv(const sb_variant *v, const ts_vec4f rec[SB_SLOTS], const ts_texcube *sky);
 
 #endif

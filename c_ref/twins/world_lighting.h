@@ -6,6 +6,7 @@
 #define TS_WORLD_LIGHTING_H
 #include "math/ts_math.h"
 #include "twins/twin_api.h"
+#include "math/ts_interval.h"
 #include "math/ts_sampler.h"
 #include "twins/tier_id.h"
 
@@ -36,5 +37,8 @@ typedef struct {
 
 /* world_lighting_f: float32, bit-exact with llvmpipe; world_lighting_d: double, the accuracy reference */
 TS_TWIN_DECLARE(world_lighting, (const wl_variant *v, const ts_vec4f rec[WL_SLOTS], const wl_textures *t))
+/* world_lighting_iv: per channel, the interval of every result GLSL ES 3.00 highp allows (the third
+ * instance, ts_generic_interval.h; docs/conformance.md "Error bounds per pixel") */
+TS_C_API ts_vec4iv world_lighting_iv(const wl_variant *v, const ts_vec4f rec[WL_SLOTS], const wl_textures *t);
 
 #endif

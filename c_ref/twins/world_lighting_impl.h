@@ -1,5 +1,7 @@
 /* tiershade twins: generic body of the world_lighting twin; mirrors
- * shaders/world_lighting.fs statement by statement. Instantiated by world_lighting.c through twin_instances.h; gives world_lighting_f / world_lighting_d. */
+ * shaders/world_lighting.fs statement by statement. Instantiated by world_lighting.c through twin_instances.h; gives world_lighting_f / world_lighting_d, and
+ * world_lighting_iv (the GLSL ES 3.00 bounds, ts_generic_interval.h): arithmetic on TS_REAL goes
+ * through ts_generic.h's ADD/MUL/SEL. */
 #include "common/common_math.h"
 #include "common/common_output.h"
 #include "common/common_rnm.h"
@@ -60,16 +62,18 @@ V4 FN(world_lighting)(const wl_variant *v, const ts_vec4f rec[WL_SLOTS], const w
     } else if (v->envmapmask == WL_MASK_NORMAL_ALPHA) {
       spec = M(mul3)(env, M(scale3)(tint, bump.w));
     } else if (v->envmapmask == WL_MASK_INV_BASE_ALPHA) {
-      spec = M(mul3)(env, M(scale3)(tint, K(1.0) - base.w));
+      spec = M(mul3)(env, M(scale3)(tint, SUB(K(1.0), base.w)));
     } else {
       spec = M(mul3)(env, tint);
     }
-    int full = v->tier != TS_TIER_ID_SM3 || env_params.x != K(0.0) || env_params.y != K(1.0) || env_params.w != K(1.0);
-    if (full) {
-      spec = FN(envmap_saturation)(FN(envmap_contrast)(spec, env_params.x), env_params.y);
+    int full = OR(OR(OR(v->tier != TS_TIER_ID_SM3, NE(env_params.x, K(0.0))), NE(env_params.y, K(1.0))),
+                  NE(env_params.w, K(1.0)));
+    if (full) { /* may be true (either, in the interval instance: the identity joins the full form) */
+      V3 s2 = FN(envmap_saturation)(FN(envmap_contrast)(spec, env_params.x), env_params.y);
       TS_REAL NdotV =
           v->tier == TS_TIER_ID_PS20 ? FN(cosine_between)(N, E) : M(dot3)(FN(safe_normalize)(N), FN(safe_normalize)(E));
-      spec = M(scale3)(spec, FN(fresnel)(NdotV, env_params.z, env_params.w));
+      s2 = M(scale3)(s2, FN(fresnel)(NdotV, env_params.z, env_params.w));
+      spec = SEL3(full, s2, spec);
     }
     color = M(scale3)(M(add3)(color, spec), tint_scale.w);
   } else {

@@ -25,7 +25,7 @@ shader FILE is named after (FILE = .../<shader>.cases; format: docs/conformance.
 reports per variant the share inside, the worst excess and the median and largest interval width
 of the colour channels in float32 ULP (channels whose interval admits anything are counted as
 unbounded; --verbose names the hard cases that have one). Families without
-an interval instance are listed as skipped (today only hdr_tonemap has one).
+an interval instance would be listed as skipped (every family has one).
 Exit status 1 when any variant fails. --json prints one object per variant, backend, api and set.)";
 
 int cmd_conform(int argc, char **argv) {

@@ -7,13 +7,25 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <sstream>
 #include <string>
 #include <vector>
 
 #include <nlohmann/json.hpp>
 
+#include "families/color_correction_inputs.h"
+#include "families/model_lighting.h"
+#include "families/world_lighting.h"
+#include "twins/bloom_blur.h"
+#include "twins/bloom_downsample.h"
+#include "twins/color_correction.h"
 #include "twins/hdr_tonemap.h"
+#include "twins/luminance_compare.h"
+#include "twins/luminance_smooth.h"
+#include "twins/model_lighting.h"
+#include "twins/skybox.h"
+#include "twins/world_lighting.h"
 
 namespace {
 
@@ -26,11 +38,102 @@ ts_vec4iv hdr_tonemap_bounds(const Variant &v, const FamilyInputs &in, int x, in
   return hdr_tonemap_iv(&hv, rec, &bloom);
 }
 
+// The other families, each with the variant and texture views its glue/families/<family>.cpp
+// gives its eval_f (the combo values and samplers are the same; the views are rebuilt per call).
+ts_vec4iv model_lighting_bounds(const Variant &v, const FamilyInputs &in, int x, int y) {
+  ts_vec4f rec[ML_SLOTS];
+  in.gather(x, y, ML_SLOTS, rec);
+  const ml_variant mv = ml_variant_of(v);
+  const MlTextureViews views(in);
+  return model_lighting_iv(&mv, rec, &views.tex);
+}
+
+const TextureDesc &texture_named(const FamilyInputs &in, const char *sampler) {
+  for (const TextureDesc &t : in.textures)
+    if (t.sampler == sampler) return t;
+  fprintf(stderr, "tiershade conform --bounds: the inputs have no texture for sampler '%s'\n", sampler);
+  abort();
+}
+
+ts_vec4iv world_lighting_bounds(const Variant &v, const FamilyInputs &in, int x, int y) {
+  ts_vec4f rec[WL_SLOTS];
+  in.gather(x, y, WL_SLOTS, rec);
+  const wl_variant wv = wl_variant_of(v);
+  const ts_tex2d base = tex2d_of(texture_named(in, "u_base")), nmap = tex2d_of(texture_named(in, "u_normalmap"));
+  const ts_tex2d lm = tex2d_of(texture_named(in, "u_lightmap")), mask = tex2d_of(texture_named(in, "u_envmap_mask"));
+  const ts_texcube env = texcube_of(texture_named(in, "u_envmap"));
+  wl_textures t{};
+  t.base = &base;
+  t.normalmap = &nmap;
+  t.lightmap = &lm;
+  t.envmap_mask = &mask;
+  t.envmap = &env;
+  return world_lighting_iv(&wv, rec, &t);
+}
+
+ts_vec4iv skybox_bounds(const Variant &v, const FamilyInputs &in, int x, int y) {
+  ts_vec4f rec[SB_SLOTS];
+  in.gather(x, y, SB_SLOTS, rec);
+  const sb_variant sv = {tier_id(v.tier)};  // as glue/families/skybox.cpp's to_sb
+  const ts_texcube sky = texcube_of(in.textures.at(0));
+  return skybox_iv(&sv, rec, &sky);
+}
+
+ts_vec4iv bloom_blur_bounds(const Variant &v, const FamilyInputs &in, int x, int y) {
+  ts_vec4f rec[BB_SLOTS];
+  in.gather(x, y, BB_SLOTS, rec);
+  const bb_variant bv = {v.value("DIRECTION")};  // as bloom_blur.cpp's to_bb
+  const ts_tex2d src = tex2d_of(in.textures.at(0));
+  return bloom_blur_iv(&bv, rec, &src);
+}
+
+ts_vec4iv bloom_downsample_bounds(const Variant &v, const FamilyInputs &in, int x, int y) {
+  ts_vec4f rec[BD_SLOTS];
+  in.gather(x, y, BD_SLOTS, rec);
+  const bd_variant bv = {v.value("SHAPE")};  // as bloom_downsample.cpp's to_bd
+  const ts_tex2d src = tex2d_of(in.textures.at(0));
+  return bloom_downsample_iv(&bv, rec, &src);
+}
+
+ts_vec4iv color_correction_bounds(const Variant &v, const FamilyInputs &in, int x, int y) {
+  ts_vec4f rec[CC_SLOTS];
+  in.gather(x, y, CC_SLOTS, rec);
+  cc_variant cv;  // as color_correction.cpp's to_cc
+  cv.atlas = v.value("LUT_ATLAS");
+  cv.shader_trilinear = v.value("SHADER_TRILINEAR");
+  cv.num_lookups = v.value("NUM_LOOKUPS");
+  cc_luts luts;
+  cc_luts_of(in, &luts);
+  return color_correction_iv(&cv, rec, &luts);
+}
+
+ts_vec4iv luminance_compare_bounds(const Variant &v, const FamilyInputs &in, int x, int y) {
+  ts_vec4f rec[LC_SLOTS];
+  in.gather(x, y, LC_SLOTS, rec);
+  const lc_variant lv = {v.value("INPUT_ENCODING")};  // as luminance_compare.cpp's to_lc
+  return luminance_compare_iv(&lv, rec);
+}
+
+ts_vec4iv luminance_smooth_bounds(const Variant &v, const FamilyInputs &in, int x, int y) {
+  ts_vec4f rec[LS_SLOTS];
+  in.gather(x, y, LS_SLOTS, rec);
+  const ls_variant lv = {v.value("INPUT_ENCODING")};  // as luminance_smooth.cpp's to_ls
+  return luminance_smooth_iv(&lv, rec);
+}
+
 struct BoundsEntry {
   const char *family;
   ts_vec4iv (*eval)(const Variant &, const FamilyInputs &, int, int);
 };
-const BoundsEntry kBounds[] = {{"hdr_tonemap", hdr_tonemap_bounds}};
+const BoundsEntry kBounds[] = {{"hdr_tonemap", hdr_tonemap_bounds},
+                               {"model_lighting", model_lighting_bounds},
+                               {"world_lighting", world_lighting_bounds},
+                               {"skybox", skybox_bounds},
+                               {"bloom_blur", bloom_blur_bounds},
+                               {"bloom_downsample", bloom_downsample_bounds},
+                               {"color_correction", color_correction_bounds},
+                               {"luminance_compare", luminance_compare_bounds},
+                               {"luminance_smooth", luminance_smooth_bounds}};
 
 const BoundsEntry *find_bounds(const std::string &family) {
   for (const auto &e : kBounds)

@@ -25,7 +25,7 @@ struct BoundsResult {
 };
 
 // The interval of pixel (x, y) for family `name`'s variant v, or false when the family has no
-// interval instance yet (only hdr_tonemap today).
+// interval instance (every family with a C twin has one since issue 14's second step).
 bool has_bounds(const std::string &family);
 ts_vec4iv eval_bounds(const ShaderFamily &fam, const Variant &v, const FamilyInputs &in, int x, int y);
 

@@ -17,6 +17,7 @@
 #include "math/ts_interval.h"
 #include "math/ts_math.h"
 #include "math/ts_sampler.h"
+#include "math/ts_sampler3d.h"
 #include "unit_check.h"
 
 using unit_check::bits_of;
@@ -305,6 +306,100 @@ void check_texture(Rng &r) {
         "texture2D at a texel centre: the texel, +-2^-7 of its neighbours' differences", fmt(c.x));
 }
 
+// cube lookups: every face the direction box can select, seamless or not; the llvmpipe mirror
+// (non-seamless, CLAMP_TO_EDGE per face) inside for directions drawn in the box, near face edges
+// and corners too; a point direction at a face centre is narrow; the zero vector: any result
+void check_cube(Rng &r) {
+  const int n = 5;
+  std::vector<float> faces(static_cast<size_t>(6) * n * n * 4);
+  for (float &v : faces) v = r.uniform(-2, 2);
+  long bad = 0, trials = 0;
+  std::string first;
+  for (int filter = 0; filter < 2; ++filter) {
+    ts_texcube c;
+    c.size = n;
+    c.filter = filter;
+    for (int f = 0; f < 6; ++f) c.faces[f] = faces.data() + static_cast<size_t>(f) * n * n * 4;
+    for (int i = 0; i < 20000; ++i) {
+      // half the boxes near a cube edge or corner (|x| ~ |y|, ~ |z|), half anywhere
+      float d0[3];
+      for (float &v : d0) v = r.uniform(-1, 1);
+      if (i % 2) d0[1] = std::copysign(std::fabs(d0[0]) * r.uniform(0.98f, 1.02f), d0[1]);
+      const float dd = i % 3 == 0 ? 0.f : r.uniform(0, i % 3 == 1 ? 1e-3f : 0.1f);
+      const ts_vec3iv box = ts_v3iv(ts_ivrange(d0[0], d0[0] + dd), ts_ivrange(d0[1], d0[1] + dd), ts_ivrange(d0[2], d0[2] + dd));
+      const ts_vec4iv iv = ts_textureCubeiv(&c, box);
+      for (int k = 0; k < 4; ++k) {
+        ++trials;
+        const ts_vec4f s = ts_textureCubef(&c, ts_v3f(r.uniform(d0[0], d0[0] + dd), r.uniform(d0[1], d0[1] + dd),
+                                                      r.uniform(d0[2], d0[2] + dd)));
+        if ((!ts_ivcontains(iv.x, s.x) || !ts_ivcontains(iv.y, s.y) || !ts_ivcontains(iv.z, s.z) || !ts_ivcontains(iv.w, s.w)) &&
+            bad++ == 0)
+          first = "filter " + std::to_string(filter) + ": " + fmt(s.x) + " vs " + fmt(iv.x);
+      }
+    }
+    // the centre of +X: the centre texel, within 2^-7 of its neighbours' differences (LINEAR), exact (NEAREST)
+    const ts_vec4iv ctr = ts_textureCubeiv(&c, ts_v3iv(ts_ivpoint(1.f), ts_ivpoint(0.f), ts_ivpoint(0.f)));
+    const float t = faces[(2 * n + 2) * 4];
+    check(ts_ivcontains(ctr.x, t) && ctr.x.hi - ctr.x.lo < (filter ? 4.f * 4 / 128 + 1e-5f : 1e-5f),
+          std::string("textureCube at a face centre is narrow, filter ") + std::to_string(filter), fmt(ctr.x));
+    const ts_vec4iv z = ts_textureCubeiv(&c, ts_v3iv(ts_ivrange(-1e-3f, 1e-3f), ts_ivpoint(0.f), ts_ivpoint(0.f)));
+    check(z.x.nan && std::isinf(ts_ivwidth_ulp(z.x)), "textureCube of a box around the zero vector: any result");
+  }
+  check(bad == 0, "textureCube llvmpipe mirror inside (" + std::to_string(trials) + " lookups)", first);
+}
+
+// 3D lookups: the 2D rule on three axes, trilinear at the weight box's corners
+void check_texture3d(Rng &r) {
+  const int w = 5, h = 4, d = 3;
+  std::vector<float> tx(static_cast<size_t>(w) * h * d * 4);
+  for (float &v : tx) v = r.uniform(-3, 3);
+  long bad = 0, trials = 0;
+  std::string first;
+  for (int wrap = 0; wrap < 2; ++wrap)
+    for (int filter = 0; filter < 2; ++filter) {
+      const ts_tex3d t = {w, h, d, tx.data(), wrap, wrap, wrap, filter};
+      for (int i = 0; i < 20000; ++i) {
+        float c0[3];
+        for (float &v : c0) v = r.uniform(-1.5f, 2.5f);
+        const float dc = i % 2 ? r.uniform(0, 0.2f) : (i % 4 ? 0.f : r.uniform(0, 1e-3f));
+        const ts_vec4iv iv = ts_texture3Div(
+            &t, ts_v3iv(ts_ivrange(c0[0], c0[0] + dc), ts_ivrange(c0[1], c0[1] + dc), ts_ivrange(c0[2], c0[2] + dc)));
+        for (int k = 0; k < 4; ++k) {
+          ++trials;
+          const ts_vec4f s =
+              ts_texture3Df(&t, ts_v3f(r.uniform(c0[0], c0[0] + dc), r.uniform(c0[1], c0[1] + dc), r.uniform(c0[2], c0[2] + dc)));
+          if ((!ts_ivcontains(iv.x, s.x) || !ts_ivcontains(iv.y, s.y) || !ts_ivcontains(iv.z, s.z) ||
+               !ts_ivcontains(iv.w, s.w)) &&
+              bad++ == 0)
+            first = "wrap " + std::to_string(wrap) + " filter " + std::to_string(filter) + ": " + fmt(s.x) + " vs " + fmt(iv.x);
+        }
+      }
+    }
+  check(bad == 0, "texture3D llvmpipe mirror inside (" + std::to_string(trials) + " lookups)", first);
+  const ts_tex3d lin = {w, h, d, tx.data(), TS_WRAP_CLAMP, TS_WRAP_CLAMP, TS_WRAP_CLAMP, TS_FILTER_LINEAR};
+  const ts_vec4iv c = ts_texture3Div(&lin, ts_v3iv(ts_ivpoint(2.5f / w), ts_ivpoint(1.5f / h), ts_ivpoint(1.5f / d)));
+  const float t211 = tx[((1 * h + 1) * w + 2) * 4];
+  check(ts_ivcontains(c.x, t211) && c.x.hi - c.x.lo < 6.f * 6 / 128 + 1e-5f,
+        "texture3D at a texel centre: the texel, +-2^-7 of its neighbours' differences", fmt(c.x));
+}
+
+// the helpers the twins' generic source uses: floor, ==, !=, ||, &&, int(), neg3/max3
+void check_helpers() {
+  const ts_iv f = ts_flooriv(ts_ivrange(-1.5f, 2.5f));
+  check(f.lo == -2 && f.hi == 2 && !f.nan, "floor of an interval", fmt(f));
+  check(ts_eqiv(ts_ivpoint(1.f), ts_ivpoint(1.f)) == TS_IV_TRUE && ts_neiv(ts_ivpoint(1.f), ts_ivpoint(2.f)) == TS_IV_TRUE &&
+            ts_eqiv(ts_ivrange(0, 2), ts_ivpoint(1.f)) == TS_IV_EITHER && ts_neiv(ts_ivpoint(NAN), ts_ivpoint(0)) == TS_IV_EITHER,
+        "== and != are true, false or either");
+  check(ts_oriv(TS_IV_FALSE, TS_IV_EITHER) == TS_IV_EITHER && ts_oriv(TS_IV_EITHER, TS_IV_TRUE) == TS_IV_TRUE &&
+            ts_andiv(TS_IV_EITHER, TS_IV_FALSE) == TS_IV_FALSE && ts_andiv(TS_IV_TRUE, TS_IV_TRUE) == TS_IV_TRUE,
+        "|| and && of outcomes");
+  check(ts_ivtoint(ts_ivpoint(3.7f)) == 3 && ts_ivtoint(ts_ivrange(2.5f, 3.5f)) == TS_IV_UNSURE_INT &&
+            ts_ivtoint(ts_ivany()) == TS_IV_UNSURE_INT,
+        "int() of a point truncates; of a range over two ints, unsure");
+  const ts_vec3iv m = ts_max3iv(ts_v3iv(ts_ivpoint(1), ts_ivrange(-1, 1), ts_ivpoint(0)), ts_neg3iv(ts_v3iv(ts_ivpoint(-2), ts_ivpoint(0), ts_ivpoint(1))));
+  check(m.x.lo == 2 && m.y.lo == 0 && m.y.hi == 1 && m.z.lo == 0 && m.z.hi == 0, "max3 and neg3", fmt(m.y));
+}
+
 // the checks above can fail: a value one ULP past an end is outside, and its excess says so
 void check_checker() {
   const ts_iv a = ts_addiv(ts_ivpoint(1.f), ts_ivpoint(0x1p-30f));
@@ -323,6 +418,9 @@ int main() {
   check_builtins(r);
   check_dot(r);
   check_texture(r);
+  check_cube(r);
+  check_texture3d(r);
+  check_helpers();
   check_checker();
   return unit_check::finish();
 }
