@@ -17,18 +17,20 @@
 #include "cli/select_args.h"
 
 struct TierLimits {
-  int alu, tex, total;
+  int alu, tex, total, constants;
 };  // -1: no limit
+// Float constant registers: ps_2_0 and ps_2_b 32, ps_3_0 224 (DirectX 9 pixel shader
+// registers; docs/budget_model.md, "Constant registers").
 static TierLimits limits_for(Tier t) {
   switch (t) {
     case Tier::PS20:
-      return {64, 32, 96};
+      return {64, 32, 96, 32};
     case Tier::PS2B:
-      return {-1, -1, 512};
+      return {-1, -1, 512, 32};
     case Tier::SM3:
-      return {-1, -1, -1};
+      return {-1, -1, -1, 224};
   }
-  return {-1, -1, -1};
+  return {-1, -1, -1, -1};
 }
 static std::string lim(int v) { return v < 0 ? "null" : std::to_string(v); }
 static nlohmann::ordered_json lim_json(int v) {
@@ -50,7 +52,9 @@ int cmd_budget(int argc, char **argv) {
         "(GLSL 3.30 -> SPIR-V -> the spirv-opt -O passes -> weight table, in process with the\n"
         "glslang and SPIRV-Tools libraries) and checks the tier limits:\n"
         "ps20 <= 64 arithmetic and <= 32 texture slots, ps2b <= 512 slots. Exit status 1 when\n"
-        "a variant is over budget or fails to compile.\n"
+        "a variant is over budget or fails to compile. Constant registers (the vec4 uniform slots\n"
+        "the fragment stage uses, arrays at their used size) are checked too: ps20 and ps2b <= 32,\n"
+        "sm3 <= 224 (DX9's ps_2_0, ps_2_b and ps_3_0).\n"
         "--nir also links each production program on OSMesa GL 3.3 with ST_DEBUG=nir, counts\n"
         "the scalar ALU and texture ops of Mesa's fragment NIR (nir_alu, nir_tex; JSON also\n"
         "nir_ratio = nir_alu / alu), and fails a variant (exit status 1) whose nir_alu / alu\n"
@@ -89,7 +93,8 @@ int cmd_budget(int argc, char **argv) {
     if (!ok) err = map_compile_log(err, fs);
     const TierLimits L = limits_for(v.tier);
     const bool fits =
-        ok && (L.alu < 0 || c.alu <= L.alu) && (L.tex < 0 || c.tex <= L.tex) && (L.total < 0 || c.total() <= L.total);
+        ok && (L.alu < 0 || c.alu <= L.alu) && (L.tex < 0 || c.tex <= L.tex) && (L.total < 0 || c.total() <= L.total) &&
+        (L.constants < 0 || c.constants <= L.constants);
     if (!fits) ++over;
     // NIR cross-check.
     NirCounts nc;
@@ -125,6 +130,8 @@ int cmd_budget(int argc, char **argv) {
       o["limit_alu"] = lim_json(L.alu);
       o["limit_tex"] = lim_json(L.tex);
       o["limit_total"] = lim_json(L.total);
+      o["constants"] = c.constants;
+      o["limit_constants"] = lim_json(L.constants);
       o["fits"] = fits;
       if (nir) {
         o["nir_alu"] = nir_counted ? nlohmann::ordered_json(nc.alu) : nlohmann::ordered_json(nullptr);
@@ -149,12 +156,12 @@ int cmd_budget(int argc, char **argv) {
           snprintf(b, sizeof b, " ratio    -");
         extra += b;
       }
-      printf("%s %-15s %-60s alu %3d tex %2d total %3d  (limits alu %s tex %s total %s)%s\n",
+      printf("%s %-15s %-60s alu %3d tex %2d total %3d const %3d  (limits alu %s tex %s total %s const %s)%s\n",
              !fits        ? "OVER"
                  : nir_ok ? "ok  "
                           : "FAIL",
-             v.shader->name.c_str(), v.name().c_str(), c.alu, c.tex, c.total(), lim(L.alu).c_str(), lim(L.tex).c_str(),
-             lim(L.total).c_str(), extra.c_str());
+             v.shader->name.c_str(), v.name().c_str(), c.alu, c.tex, c.total(), c.constants, lim(L.alu).c_str(),
+             lim(L.tex).c_str(), lim(L.total).c_str(), lim(L.constants).c_str(), extra.c_str());
       if (!ok) printf("  error: %s\n", err.c_str());
       if (!nir_ok) printf("  nir: %s\n", nir_err.c_str());
       if (a.flag("--verbose")) {
