@@ -26,9 +26,9 @@ bool budget_count_fragment(const std::string &glsl330_source, BudgetCounts *out,
   budget::Counter counter(m);
   BudgetCounts r;
   if (!counter.count(&r, &e)) return false;
-  // Constant registers: the uniforms the stage uses, from its unoptimised SPIR-V (interface.h).
+  // Constant registers: the uniforms the stage uses once its loops are unrolled (interface.h).
   ProgramInterface iface;
-  if (!reflect_stage(glsl330_source, false, &iface, &e)) return false;
+  if (!reflect_fragment_unrolled(glsl330_source, &iface, &e)) return false;
   r.constants = fragment_constant_registers(iface);
   *out = r;
   return true;

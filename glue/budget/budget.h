@@ -35,7 +35,8 @@ struct BudgetCounts {
   int tex = 0;  // DX9 texture instruction slots (texld*, texkill)
   int total() const { return alu + tex; }  // instruction slots (constants are not slots)
   // DX9 float constant registers (c#): one per vec4-or-smaller uniform the stage uses, matCxR C,
-  // arrays at their used size (max constant index + 1; declared size when indexed dynamically).
+  // arrays at their used size once constant-trip loops are unrolled and dead loads removed (max
+  // constant index + 1; the declared size where an index stays dynamic, as in sm3's light loop).
   // ps_2_0 and ps_2_b have 32, ps_3_0 224 (docs/budget_model.md, "Constant registers").
   int constants = 0;
   std::map<std::string, int> by_op;  // slots per op name (non-zero entries only;

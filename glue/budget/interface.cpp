@@ -294,6 +294,32 @@ bool reflect_stage(const std::string &glsl330_source, bool vertex, ProgramInterf
   return true;
 }
 
+bool reflect_fragment_unrolled(const std::string &glsl330_source, ProgramInterface *out, std::string *err) {
+  *out = ProgramInterface();
+  std::string prepared;
+  std::vector<uint32_t> words, optimized;
+  if (!budget::prepare_source(glsl330_source, &prepared, err) ||
+      !budget::compile_glsl_stage(prepared, false, true, &words, err))
+    return false;
+  // Every loop asks to be unrolled (OpLoopMerge's loop control: Unroll set, DontUnroll cleared;
+  // SPIR-V spec 3.23), so that spirv-opt's loop unroller unrolls each loop whose trip count is a
+  // constant, as fxc did for ps_2_0 / ps_2_b, which cannot index constants with a register.
+  for (size_t i = 5; i < words.size();) {
+    const uint32_t n = words[i] >> 16;
+    if (n == 0) break;
+    if (static_cast<Op>(words[i] & 0xffff) == Op::OpLoopMerge && n >= 4 && i + 3 < words.size()) {
+      words[i + 3] |= static_cast<uint32_t>(spv::LoopControlMask::Unroll);
+      words[i + 3] &= ~static_cast<uint32_t>(spv::LoopControlMask::DontUnroll);
+    }
+    i += n;
+  }
+  if (!budget::optimize_spirv(words, &optimized, err)) return false;
+  Reader r;
+  if (!r.read(optimized, err)) return false;
+  r.mark_uses();
+  return r.collect(false, out, err);
+}
+
 bool reflect_program(const std::string &vertex330, const std::string &fragment330, ProgramInterface *out,
                      std::string *err) {
   ProgramInterface vs, fs;

@@ -34,13 +34,19 @@ struct ProgramInterface {
 // stage's flag set. On a compile failure false with glslang's log in *err.
 bool reflect_stage(const std::string &glsl330_source, bool vertex, ProgramInterface *out, std::string *err);
 
+// The fragment stage as a DX9 compiler allocates its constants: compiled, every loop marked for
+// unrolling, through the spirv-opt -O passes (loops with a constant trip count unrolled, dead loads
+// removed), then read as above. used_size is then the last element the remaining code addresses.
+bool reflect_fragment_unrolled(const std::string &glsl330_source, ProgramInterface *out, std::string *err);
+
 // Both stages, merged by name (the stage flags or'd; a uniform both stages use must agree in
 // type and declared size, else false naming it).
 bool reflect_program(const std::string &vertex330, const std::string &fragment330, ProgramInterface *out,
                      std::string *err);
 
 // DX9 float constant registers of a fragment stage: every uniform it uses, arrays at their used
-// size (ps_2_0 and ps_2_b had 32, ps_3_0 224; docs/budget_model.md).
+// size (ps_2_0 and ps_2_b had 32, ps_3_0 224; docs/budget_model.md). Give it the interface of
+// reflect_fragment_unrolled for fxc's count.
 int fragment_constant_registers(const ProgramInterface &fragment);
 // The same in WebGL 1's measure of fragment uniform vectors: arrays at their declared size (an ES
 // 2.0 implementation must accept 16; GLSL ES 1.00 appendix A.7 packing of vec4s is exact here,
