@@ -16,7 +16,8 @@ const char kHelp[] = R"(usage: tiershade variants [--list] [--json] [--count] [-
        tiershade variants --shader S [--variant V]... [--tier T]... [--target T] -o DIR
 Lists every variant: tier x static combos x dynamic combos, minus the skip rules
 declared in shaders/<shader>.variants. A variant is named TIER:NAME=V,... and can
-also be given by its index in the full list of its shader. With --target, only the variants
+also be given by its index in the full list of its shader. With --target and --list, --json
+or --count, only the variants
 that target offers: essl100 (WebGL 1) leaves out those needing an extension no browser
 exposes (color_correction's 3D LUTs: sampler3D needs OES_texture_3D).
 With -o DIR it writes a shader bundle for engines (docs/bundles.md): the self-contained
@@ -33,7 +34,9 @@ int cmd_variants(int argc, char **argv) {
   if (!a.positional().empty() && !a.has("-o"))
     a.fail("unexpected argument '" + a.positional()[0] +
            "' (a scene bundle: tiershade variants SCENE --tier T -o DIR)");
-  if (a.has("-o") || !a.positional().empty()) return cmd_variants_bundle(a);
+  // --target alone means a bundle (which then wants -o); with --list, --json or --count it filters.
+  const bool listing = a.flag("--list") || a.flag("--json") || a.flag("--count");
+  if (a.has("-o") || !a.positional().empty() || (a.has("--target") && !listing)) return cmd_variants_bundle(a);
   Selection sel;
   select_variants(a, &sel);
   if (a.has("--target")) {
