@@ -95,8 +95,9 @@ echo "== unit tests"
 unit_tests build ""
 echo "== command line"
 for s in tests/cli/test_*.sh; do run "$(basename "$s" .sh)" bash "$s" build/tiershade; done
+run test_webgl_bundle bash tests/bundle/test_webgl_bundle.sh build/tiershade
 echo "== budgets"
-run budget as_checks build/tiershade budget --verbose
+run budget as_checks build/tiershade budget --verbose --known-over tests/bundle/budget_known_over.txt
 echo "== conformance (0 ULP, all variants, 4 backend/API pairs, random + hard inputs)"
 run conform as_checks build/tiershade conform --verbose --size 64
 echo "== demo"

@@ -4,6 +4,7 @@
 #include "budget/budget.h"
 
 #include "budget/glsl_to_spirv.h"
+#include "budget/interface.h"
 #include "budget/slot_counter.h"
 #include "budget/spirv_module.h"
 #include "budget/weight_table.h"
@@ -25,6 +26,10 @@ bool budget_count_fragment(const std::string &glsl330_source, BudgetCounts *out,
   budget::Counter counter(m);
   BudgetCounts r;
   if (!counter.count(&r, &e)) return false;
+  // Constant registers: the uniforms the stage uses once its loops are unrolled (interface.h).
+  ProgramInterface iface;
+  if (!reflect_fragment_unrolled(glsl330_source, &iface, &e)) return false;
+  r.constants = fragment_constant_registers(iface);
   *out = r;
   return true;
 }

@@ -3,7 +3,8 @@
 // tiershade reproduces Valve Source engine shading in shader-model tiers:
 //   ps20 : the DX9 ps_2_0 budget, at most 64 arithmetic + 32 texture slots
 //   ps2b : at most 512 slots in total
-//   sm3  : no limit
+//   sm3  : no slot limit
+// and, in every tier, DX9's float constant registers (32 on ps_2_0/ps_2_b, 224 on ps_3_0).
 // This module estimates how many DX9 instruction slots a GLSL fragment shader
 // would take, so each variant can be checked against its tier's budget.
 //
@@ -32,7 +33,12 @@
 struct BudgetCounts {
   int alu = 0;  // DX9 arithmetic instruction slots
   int tex = 0;  // DX9 texture instruction slots (texld*, texkill)
-  int total() const { return alu + tex; }
+  int total() const { return alu + tex; }  // instruction slots (constants are not slots)
+  // DX9 float constant registers (c#): one per vec4-or-smaller uniform the stage uses, matCxR C,
+  // arrays at their used size once constant-trip loops are unrolled and dead loads removed (max
+  // constant index + 1; the declared size where an index stays dynamic, as in sm3's light loop).
+  // ps_2_0 and ps_2_b have 32, ps_3_0 224 (docs/budget_model.md, "Constant registers").
+  int constants = 0;
   std::map<std::string, int> by_op;  // slots per op name (non-zero entries only;
       // their sum equals total()), for --verbose
 };

@@ -86,14 +86,21 @@ bool prepare_source(const std::string &src, std::string *out, std::string *err) 
 }
 
 bool compile_glsl_fragment(const std::string &prepared_source, std::vector<uint32_t> *spirv, std::string *err) {
+  return compile_glsl_stage(prepared_source, false, false, spirv, err);
+}
+
+bool compile_glsl_stage(const std::string &prepared_source, bool vertex, bool opengl_client, std::vector<uint32_t> *spirv,
+                        std::string *err) {
   init_glslang_once();
   // -V: Vulkan 1.0 client, SPIR-V 1.0, Vulkan input semantics 100; -R: relaxed Vulkan rules
   // (uniforms outside blocks); --amb / --aml: automatic bindings and locations.
   glslang_input_t input = {};
   input.language = GLSLANG_SOURCE_GLSL;
-  input.stage = GLSLANG_STAGE_FRAGMENT;
-  input.client = GLSLANG_CLIENT_VULKAN;
-  input.client_version = GLSLANG_TARGET_VULKAN_1_0;
+  input.stage = vertex ? GLSLANG_STAGE_VERTEX : GLSLANG_STAGE_FRAGMENT;
+  // The OpenGL client (glslangValidator -G) keeps loose uniforms as separate variables, as
+  // the program interface reads them (glue/budget/interface.h); the budget keeps -V.
+  input.client = opengl_client ? GLSLANG_CLIENT_OPENGL : GLSLANG_CLIENT_VULKAN;
+  input.client_version = opengl_client ? GLSLANG_TARGET_OPENGL_450 : GLSLANG_TARGET_VULKAN_1_0;
   input.target_language = GLSLANG_TARGET_SPV;
   input.target_language_version = GLSLANG_TARGET_SPV_1_0;
   input.code = prepared_source.c_str();
@@ -101,13 +108,13 @@ bool compile_glsl_fragment(const std::string &prepared_source, std::vector<uint3
   input.default_profile = GLSLANG_NO_PROFILE;
   input.force_default_version_and_profile = 0;
   input.forward_compatible = 0;
-  input.messages = static_cast<glslang_messages_t>(GLSLANG_MSG_SPV_RULES_BIT | GLSLANG_MSG_VULKAN_RULES_BIT);
+  input.messages = static_cast<glslang_messages_t>(
+      opengl_client ? GLSLANG_MSG_SPV_RULES_BIT : (GLSLANG_MSG_SPV_RULES_BIT | GLSLANG_MSG_VULKAN_RULES_BIT));
   input.resource = glslang_default_resource();
 
   Handle<glslang_shader_t> shader(glslang_shader_create(&input), glslang_shader_delete);
-  glslang_shader_set_options(
-      shader.get(),
-      GLSLANG_SHADER_AUTO_MAP_BINDINGS | GLSLANG_SHADER_AUTO_MAP_LOCATIONS | GLSLANG_SHADER_VULKAN_RULES_RELAXED);
+  glslang_shader_set_options(shader.get(), GLSLANG_SHADER_AUTO_MAP_BINDINGS | GLSLANG_SHADER_AUTO_MAP_LOCATIONS |
+                                               (opengl_client ? 0 : GLSLANG_SHADER_VULKAN_RULES_RELAXED));
   // The C interface parses the text glslang_shader_preprocess leaves (which keeps the
   // positions: it writes #line directives where lines or source strings change).
   if (!glslang_shader_preprocess(shader.get(), &input) || !glslang_shader_parse(shader.get(), &input)) {
@@ -133,6 +140,27 @@ bool compile_glsl_fragment(const std::string &prepared_source, std::vector<uint3
   }
   spirv->assign(words, 0u);
   glslang_program_SPIRV_get(program.get(), spirv->data());
+  return true;
+}
+
+bool preprocess_glsl(const std::string &source, bool vertex, std::string *out, std::string *err) {
+  init_glslang_once();
+  glslang_input_t input = {};
+  input.language = GLSLANG_SOURCE_GLSL;
+  input.stage = vertex ? GLSLANG_STAGE_VERTEX : GLSLANG_STAGE_FRAGMENT;
+  input.client = GLSLANG_CLIENT_NONE;  // any version, ESSL 1.00 included: no SPIR-V rules
+  input.target_language = GLSLANG_TARGET_NONE;
+  input.code = source.c_str();
+  input.default_version = 100;
+  input.default_profile = GLSLANG_NO_PROFILE;
+  input.messages = GLSLANG_MSG_DEFAULT_BIT;
+  input.resource = glslang_default_resource();
+  Handle<glslang_shader_t> shader(glslang_shader_create(&input), glslang_shader_delete);
+  if (!glslang_shader_preprocess(shader.get(), &input)) {
+    *err = "GLSL preprocessing failed:\n" + log_lines(glslang_shader_get_info_log(shader.get()));
+    return false;
+  }
+  *out = glslang_shader_get_preprocessed_code(shader.get());
   return true;
 }
 

@@ -16,6 +16,15 @@ bool prepare_source(const std::string &src, std::string *out, std::string *err);
 // and glslang's log, whose positions read "0:L:" (source string 0; "M:L:" after "#line L M").
 bool compile_glsl_fragment(const std::string &prepared_source, std::vector<uint32_t> *spirv, std::string *err);
 
+// The same for either stage; opengl_client: SPIR-V for OpenGL (glslangValidator -G: loose
+// uniforms stay separate variables) instead of -V's Vulkan relaxed rules.
+bool compile_glsl_stage(const std::string &prepared_source, bool vertex, bool opengl_client, std::vector<uint32_t> *spirv,
+                        std::string *err);
+
+// The text glslang's preprocessor leaves (macros expanded, #if resolved), for any GLSL or GLSL ES
+// version, ESSL 1.00 included.
+bool preprocess_glsl(const std::string &source, bool vertex, std::string *out, std::string *err);
+
 // Runs the performance passes of `spirv-opt -O` (after validating the module, as spirv-opt does).
 bool optimize_spirv(const std::vector<uint32_t> &in, std::vector<uint32_t> *out, std::string *err);
 

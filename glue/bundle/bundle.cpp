@@ -1,12 +1,16 @@
 // tiershade bundle: shader bundles for engines (see bundle.h and docs/bundles.md).
 #include "bundle/bundle.h"
 
+#include <algorithm>
 #include <cstdio>
+#include <iterator>
 #include <memory>
 #include <nlohmann/json.hpp>
 #include <set>
 
 #include "budget/budget.h"
+#include "budget/interface.h"
+#include "bundle/webgl.h"
 #include "io/atomic_dir.h"
 #include "families/family.h"
 #include "gl/context.h"
@@ -47,6 +51,30 @@ bool bundle_variant(GlRenderer &r, Target target, const BundleEntry &e, DirWrite
     *err = where + *err;
     return false;
   }
+  bool offered = true;
+  std::string why_not;
+  if (!target_offers(v, target, &offered, &why_not, err)) {
+    *err = where + *err;
+    return false;
+  }
+  if (!offered) {
+    *err = where + "not offered on " + target_name(target) + ": " + why_not;
+    return false;
+  }
+  // The declared interface, from the GLSL 3.30 text of both stages (the declarations are the same
+  // on every target: ts_portability.glsl changes only how textures are read and written).
+  Assembled vs330;
+  ProgramInterface iface;
+  if (!assemble(v.shader->vertex, Target::GLSL330, Stage::Vertex, defs, &vs330, err) ||
+      !reflect_program(vs330.text, fs330.text, &iface, err)) {
+    *err = where + "declared interface: " + *err;
+    return false;
+  }
+  std::vector<ExtensionNeed> exts;
+  if (!variant_extensions(v, target, &iface, &exts, err)) {
+    *err = where + *err;
+    return false;
+  }
   const GLuint prog = r.build_program(vs, fs, err);
   if (!prog) {
     *err = where + *err;
@@ -64,10 +92,53 @@ bool bundle_variant(GlRenderer &r, Target target, const BundleEntry &e, DirWrite
     *err = where + "slot count: " + *err;
     return false;
   }
+  // Mesa's active set must lie inside the declared interface (a name, type and size it reports
+  // beyond the source's declarations would be a reflection bug here).
+  json trim_a = json::array(), trim_u = json::array(), trim_s = json::array();
+  auto find_gl = [](const std::vector<ProgramVar> &vars, const std::string &name) -> const ProgramVar * {
+    for (const auto &x : vars)
+      if (x.name == name) return &x;
+    return nullptr;
+  };
+  auto declared = [&](const std::vector<InterfaceVar> &d, const ProgramVar &g) {
+    for (const auto &x : d)
+      if (x.name == g.name)
+        return x.type == gl_type_glsl_name(g.type) && (x.array_size ? x.array_size >= g.array_size : !g.is_array);
+    return false;
+  };
+  for (const auto &g : attribs)
+    if (!declared(iface.attributes, g)) {
+      *err = where + "Mesa reports attribute '" + g.name + "', not in the declared interface";
+      return false;
+    }
+  for (const auto &g : uniforms)
+    if (!declared(gl_type_is_sampler(g.type) ? iface.samplers : iface.uniforms, g)) {
+      *err = where + "Mesa reports uniform '" + g.name + "' (" + gl_type_glsl_name(g.type) +
+          "), not in the declared interface";
+      return false;
+    }
+  for (const auto &a : iface.attributes)
+    if (!find_gl(attribs, a.name)) trim_a.push_back(a.name);
+  for (const auto &u : iface.uniforms) {
+    const ProgramVar *g = find_gl(uniforms, u.name);
+    if (!g)
+      trim_u.push_back({{"name", u.name}, {"array_size", 0}});
+    else if (u.array_size && g->array_size < u.array_size)
+      trim_u.push_back({{"name", u.name}, {"array_size", g->array_size}});
+  }
+  for (const auto &u : iface.samplers)
+    if (!find_gl(uniforms, u.name)) trim_s.push_back(u.name);
+
   const std::string stem = v.shader->name + "/" + bundle_file_stem(v);
   if (!w.mkdir(v.shader->name, err) || !w.write(stem + ".vert", vs.text, err) || !w.write(stem + ".frag", fs.text, err))
     return false;
 
+  auto stages = [](const InterfaceVar &x) {
+    json st = json::array();
+    if (x.vertex) st.push_back("vertex");
+    if (x.fragment) st.push_back("fragment");
+    return st;
+  };
   json j;
   j["shader"] = v.shader->name;
   j["tier"] = tier_name(v.tier);
@@ -78,25 +149,50 @@ bool bundle_variant(GlRenderer &r, Target target, const BundleEntry &e, DirWrite
   for (const auto &def : defs) d[def.name] = std::stoi(def.value);
   j["defines"] = d;
   j["why"] = e.why;
+  // Attributes in the order a_position, a_normal, a_uv, a_tangent, a_lightmap, a_corner, then by name.
+  static const char *kOrder[] = {"a_position", "a_normal", "a_uv", "a_tangent", "a_lightmap", "a_corner"};
+  std::vector<const InterfaceVar *> attr_order;
+  for (const char *n : kOrder)
+    for (const auto &a : iface.attributes)
+      if (a.name == n) attr_order.push_back(&a);
+  for (const auto &a : iface.attributes)
+    if (std::find(std::begin(kOrder), std::end(kOrder), a.name) == std::end(kOrder)) attr_order.push_back(&a);
   json ja = json::array();
-  for (const auto &a : attribs) ja.push_back({{"name", a.name}, {"type", gl_type_glsl_name(a.type)}});
+  for (const auto *a : attr_order) ja.push_back({{"name", a->name}, {"type", a->type}});
   j["attributes"] = ja;
   json ju = json::array(), js = json::array();
-  for (const auto &u : uniforms) {
-    if (gl_type_is_sampler(u.type)) {
-      const int unit = static_cast<int>(js.size());
-      js.push_back({{"name", u.name}, {"type", gl_type_glsl_name(u.type)}, {"unit", unit}});
-    } else {
-      ju.push_back(
-          {{"name", u.name}, {"type", gl_type_glsl_name(u.type)}, {"array_size", u.is_array ? u.array_size : 0}});
-    }
-  }
+  for (const auto &u : iface.uniforms)
+    ju.push_back({{"name", u.name}, {"type", u.type}, {"array_size", u.array_size}, {"stages", stages(u)}});
+  for (const auto &u : iface.samplers)
+    js.push_back({{"name", u.name}, {"type", u.type}, {"unit", static_cast<int>(js.size())}, {"stages", stages(u)}});
   j["uniforms"] = ju;
   j["samplers"] = js;
+  j["may_trim"] = {{"reported_by", std::string("Mesa llvmpipe, ") + api_name(api_for(target))},
+                   {"attributes", trim_a},
+                   {"uniforms", trim_u},
+                   {"samplers", trim_s}};
   json o = {{"name", target == Target::ESSL100 ? "gl_FragColor" : "ts_FragColor"}, {"type", "vec4"}};
   if (target != Target::ESSL100) o["location"] = 0;
   j["outputs"] = json::array({o});
+  json je = json::array();
+  for (const auto &x : exts) {
+    json one = {{"name", x.name}};
+    if (!x.alternatives.empty()) one["or"] = x.alternatives;
+    one["why"] = x.why;
+    je.push_back(one);
+  }
+  j["extensions"] = je;
   j["slots"] = {{"alu", slots.alu}, {"tex", slots.tex}};
+  j["constant_registers"] = slots.constants;
+  int vert_vectors = 0;
+  for (const auto &u : iface.uniforms)
+    if (u.vertex) vert_vectors += u.registers(false);
+  j["uniform_vectors"] = {{"vertex", vert_vectors}, {"fragment", fragment_uniform_vectors(iface)}};
+  j["texture_units"] = {{"fragment", [&] {
+                           int n = 0;
+                           for (const auto &u : iface.samplers) n += u.fragment ? (u.array_size ? u.array_size : 1) : 0;
+                           return n;
+                         }()}};
   *out = j;
   return true;
 }
@@ -137,6 +233,11 @@ bool write_bundle(const std::vector<BundleEntry> &entries, Target target, const 
   m["api"] = api_name(api_for(target));
   m["source"] = source_desc;
   m["sampler_units"] = "each variant's samplers in the listed order (sorted by name) take units 0..n-1";
+  json all_ext = json::array();
+  for (const auto &v : variants)
+    for (const auto &x : v["extensions"])
+      if (std::find(all_ext.begin(), all_ext.end(), x["name"]) == all_ext.end()) all_ext.push_back(x["name"]);
+  m["extensions"] = all_ext;
   m["variants"] = variants;
   if (!w.write("manifest.json", m.dump(2) + "\n", err)) return false;
   return w.commit(err);

@@ -6,7 +6,10 @@
 // the model: nir_alu / alu must lie in [kNirRatioLo, kNirRatioHi].
 #include <cmath>
 #include <cstdio>
+#include <fstream>
+#include <map>
 #include <memory>
+#include <sstream>
 
 #include <nlohmann/json.hpp>
 
@@ -17,18 +20,20 @@
 #include "cli/select_args.h"
 
 struct TierLimits {
-  int alu, tex, total;
+  int alu, tex, total, constants;
 };  // -1: no limit
+// Float constant registers: ps_2_0 and ps_2_b 32, ps_3_0 224 (DirectX 9 pixel shader
+// registers; docs/budget_model.md, "Constant registers").
 static TierLimits limits_for(Tier t) {
   switch (t) {
     case Tier::PS20:
-      return {64, 32, 96};
+      return {64, 32, 96, 32};
     case Tier::PS2B:
-      return {-1, -1, 512};
+      return {-1, -1, 512, 32};
     case Tier::SM3:
-      return {-1, -1, -1};
+      return {-1, -1, -1, 224};
   }
-  return {-1, -1, -1};
+  return {-1, -1, -1, -1};
 }
 static std::string lim(int v) { return v < 0 ? "null" : std::to_string(v); }
 static nlohmann::ordered_json lim_json(int v) {
@@ -42,7 +47,8 @@ static constexpr double kNirRatioLo = 0.8;
 static constexpr double kNirRatioHi = 5.0;
 
 int cmd_budget(int argc, char **argv) {
-  Args a("budget", argc, argv, {"--help", "--json", "--verbose", "--nir"}, {"--shader", "--tier", "--variant"});
+  Args a("budget", argc, argv, {"--help", "--json", "--verbose", "--nir"},
+         {"--shader", "--tier", "--variant", "--known-over"});
   if (a.flag("--help")) {
     printf(
         "usage: tiershade budget [--json] [--verbose] [--nir] [--shader S] [--tier T]... [--variant V]\n"
@@ -50,7 +56,11 @@ int cmd_budget(int argc, char **argv) {
         "(GLSL 3.30 -> SPIR-V -> the spirv-opt -O passes -> weight table, in process with the\n"
         "glslang and SPIRV-Tools libraries) and checks the tier limits:\n"
         "ps20 <= 64 arithmetic and <= 32 texture slots, ps2b <= 512 slots. Exit status 1 when\n"
-        "a variant is over budget or fails to compile.\n"
+        "a variant is over budget or fails to compile. Constant registers (the vec4 uniform slots\n"
+        "the fragment stage uses, arrays at their used size) are checked too: ps20 and ps2b <= 32,\n"
+        "sm3 <= 224 (DX9's ps_2_0, ps_2_b and ps_3_0).\n"
+        "--known-over FILE: lines 'SHADER VARIANT' known to exceed the constant registers alone;\n"
+        "such a variant is reported ok (known over) while it does, and fails once it fits.\n"
         "--nir also links each production program on OSMesa GL 3.3 with ST_DEBUG=nir, counts\n"
         "the scalar ALU and texture ops of Mesa's fragment NIR (nir_alu, nir_tex; JSON also\n"
         "nir_ratio = nir_alu / alu), and fails a variant (exit status 1) whose nir_alu / alu\n"
@@ -59,6 +69,23 @@ int cmd_budget(int argc, char **argv) {
     return 0;
   }
   a.no_positional();
+  // shader + " " + variant -> "FILE:LINE" of the --known-over list.
+  std::map<std::string, std::string> known_over;
+  if (a.has("--known-over")) {
+    const std::string path = a.get("--known-over");
+    std::ifstream in(path);
+    if (!in) a.fail(path + ": cannot read");
+    std::string line;
+    for (int n = 1; std::getline(in, line); ++n) {
+      const size_t hash = line.find('#');
+      if (hash != std::string::npos) line.resize(hash);
+      std::istringstream ls(line);
+      std::string shader, variant, extra;
+      if (!(ls >> shader)) continue;
+      if (!(ls >> variant) || (ls >> extra)) a.fail(path + ":" + std::to_string(n) + ": 'SHADER VARIANT' expected");
+      known_over[shader + " " + variant] = path + ":" + std::to_string(n);
+    }
+  }
   const bool nir = a.flag("--nir");
   // Mesa reads ST_DEBUG once, when the first screen is created: before any context.
   if (nir) nir_capture_setup_env();
@@ -88,8 +115,23 @@ int cmd_budget(int argc, char **argv) {
         budget_count_fragment(fs.text, &c, &err);
     if (!ok) err = map_compile_log(err, fs);
     const TierLimits L = limits_for(v.tier);
-    const bool fits =
+    const bool slots_fit =
         ok && (L.alu < 0 || c.alu <= L.alu) && (L.tex < 0 || c.tex <= L.tex) && (L.total < 0 || c.total() <= L.total);
+    const bool constants_fit = L.constants < 0 || c.constants <= L.constants;
+    bool fits = slots_fit && constants_fit;
+    auto known = known_over.find(v.shader->name + " " + v.name());
+    std::string known_note;
+    if (known != known_over.end()) {
+      if (fits) {
+        ok = false;
+        err = "listed as over its constant registers (" + known->second + ") but fits: delete the line";
+        fits = false;
+      } else if (slots_fit) {
+        known_note = "  (known over: constants " + std::to_string(c.constants) + " > " + lim(L.constants) + ", " +
+            known->second + ")";
+        fits = true;
+      }
+    }
     if (!fits) ++over;
     // NIR cross-check.
     NirCounts nc;
@@ -125,7 +167,10 @@ int cmd_budget(int argc, char **argv) {
       o["limit_alu"] = lim_json(L.alu);
       o["limit_tex"] = lim_json(L.tex);
       o["limit_total"] = lim_json(L.total);
+      o["constants"] = c.constants;
+      o["limit_constants"] = lim_json(L.constants);
       o["fits"] = fits;
+      if (!known_note.empty()) o["known_over"] = true;
       if (nir) {
         o["nir_alu"] = nir_counted ? nlohmann::ordered_json(nc.alu) : nlohmann::ordered_json(nullptr);
         o["nir_tex"] = nir_counted ? nlohmann::ordered_json(nc.tex) : nlohmann::ordered_json(nullptr);
@@ -149,12 +194,12 @@ int cmd_budget(int argc, char **argv) {
           snprintf(b, sizeof b, " ratio    -");
         extra += b;
       }
-      printf("%s %-15s %-60s alu %3d tex %2d total %3d  (limits alu %s tex %s total %s)%s\n",
+      printf("%s %-15s %-60s alu %3d tex %2d total %3d const %3d  (limits alu %s tex %s total %s const %s)%s\n",
              !fits        ? "OVER"
                  : nir_ok ? "ok  "
                           : "FAIL",
-             v.shader->name.c_str(), v.name().c_str(), c.alu, c.tex, c.total(), lim(L.alu).c_str(), lim(L.tex).c_str(),
-             lim(L.total).c_str(), extra.c_str());
+             v.shader->name.c_str(), v.name().c_str(), c.alu, c.tex, c.total(), c.constants, lim(L.alu).c_str(),
+             lim(L.tex).c_str(), lim(L.total).c_str(), lim(L.constants).c_str(), (extra + known_note).c_str());
       if (!ok) printf("  error: %s\n", err.c_str());
       if (!nir_ok) printf("  nir: %s\n", nir_err.c_str());
       if (a.flag("--verbose")) {

@@ -3,6 +3,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "bundle/webgl.h"
 #include "shaderlib/assembler.h"
 #include "families/family.h"
 #include "cli/select_args.h"
@@ -10,16 +11,21 @@
 int cmd_variants_bundle(const Args &a);  // glue/cli/cmd_variants_bundle.cpp
 
 // `tiershade variants --help`.
-const char kHelp[] = R"(usage: tiershade variants [--list] [--json] [--count] [--shader S] [--tier ps20|ps2b|sm3]...
+const char kHelp[] = R"(usage: tiershade variants [--list] [--json] [--count] [--shader S] [--tier ps20|ps2b|sm3]... [--target T]
        tiershade variants SCENE --tier T [--target essl100|essl300|glsl330] [--hdr integer|float] -o DIR
        tiershade variants --shader S [--variant V]... [--tier T]... [--target T] -o DIR
 Lists every variant: tier x static combos x dynamic combos, minus the skip rules
 declared in shaders/<shader>.variants. A variant is named TIER:NAME=V,... and can
-also be given by its index in the full list of its shader.
+also be given by its index in the full list of its shader. With --target and --list, --json
+or --count, only the variants
+that target offers: essl100 (WebGL 1) leaves out those needing an extension no browser
+exposes (color_correction's 3D LUTs: sampler3D needs OES_texture_3D).
 With -o DIR it writes a shader bundle for engines (docs/bundles.md): the self-contained
 production GLSL of the variants a scene needs (or of the variants given), and
 DIR/manifest.json with their defines, attributes, uniforms, sampler units and slots.
---target defaults to essl300. An existing DIR is replaced only if it is a bundle.)";
+--target defaults to essl300. An existing DIR is replaced only if it is a bundle. The manifest
+lists each variant's WebGL extensions; a scene on the float HDR path is refused for essl100
+(WebGL 1 has no fp16 render targets: --hdr integer).)";
 
 int cmd_variants(int argc, char **argv) {
   Args a("variants", argc, argv, {"--list", "--json", "--help", "--count"},
@@ -28,9 +34,27 @@ int cmd_variants(int argc, char **argv) {
   if (!a.positional().empty() && !a.has("-o"))
     a.fail("unexpected argument '" + a.positional()[0] +
            "' (a scene bundle: tiershade variants SCENE --tier T -o DIR)");
-  if (a.has("-o") || a.has("--target") || !a.positional().empty()) return cmd_variants_bundle(a);
+  // --target alone means a bundle (which then wants -o); with --list, --json or --count it filters.
+  const bool listing = a.flag("--list") || a.flag("--json") || a.flag("--count");
+  if (a.has("-o") || !a.positional().empty() || (a.has("--target") && !listing)) return cmd_variants_bundle(a);
   Selection sel;
   select_variants(a, &sel);
+  if (a.has("--target")) {
+    Target t;
+    if (!parse_target(a.get("--target"), &t))
+      a.fail("unknown target '" + a.get("--target") + "' (essl100, essl300, glsl330)");
+    std::vector<Variant> kept;
+    for (const auto &v : sel.variants) {
+      bool offered = true;
+      std::string why, err;
+      if (!target_offers(v, t, &offered, &why, &err)) {
+        fprintf(stderr, "tiershade variants: %s %s: %s\n", v.shader->name.c_str(), v.name().c_str(), err.c_str());
+        return 1;
+      }
+      if (offered) kept.push_back(v);
+    }
+    sel.variants = kept;
+  }
   if (a.flag("--count")) {
     printf("%zu\n", sel.variants.size());
     return 0;

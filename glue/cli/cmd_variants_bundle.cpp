@@ -3,11 +3,20 @@
 #include <cstdio>
 
 #include "bundle/bundle.h"
+#include "bundle/webgl.h"
 #include "cli/args.h"
 #include "scene/selection.h"
 #include "cli/select_args.h"
 
 namespace {
+
+// Whether `target` offers v; a.fail()s on an assembly error (an internal error: shipped shaders assemble).
+bool offered_on(const Args &a, const Variant &v, Target target, std::string *why) {
+  bool offered = true;
+  std::string err;
+  if (!target_offers(v, target, &offered, why, &err)) a.fail(v.shader->name + " " + v.name() + ": " + err);
+  return offered;
+}
 
 Target bundle_target(const Args &a) {
   Target t = Target::ESSL300;
@@ -33,6 +42,22 @@ int explicit_bundle(const Args &a, Target target) {
       sel.variants.push_back(v);
     }
   }
+  // Named variants the target does not offer are refused; of a whole selection (--tier, or
+  // --shader alone) they are left out, and said so.
+  std::vector<Variant> kept;
+  int left_out = 0;
+  for (const auto &v : sel.variants) {
+    std::string why;
+    if (offered_on(a, v, target, &why)) {
+      kept.push_back(v);
+    } else if (a.has("--variant")) {
+      a.fail(v.shader->name + " " + v.name() + " is not offered on " + target_name(target) + ": " + why);
+    } else {
+      ++left_out;
+    }
+  }
+  if (kept.empty()) a.fail(std::string("none of the selected variants is offered on ") + target_name(target));
+  sel.variants = kept;
   std::vector<BundleEntry> entries;
   for (const auto &v : sel.variants) entries.push_back({&v, {}});
   if (!write_bundle(entries, target, a.get("-o"), "explicit variants", &err)) {
@@ -42,6 +67,9 @@ int explicit_bundle(const Args &a, Target target) {
   for (const auto &v : sel.variants)
     printf("%s %s -> %s\n", v.shader->name.c_str(), v.name().c_str(), bundle_file_stem(v).c_str());
   printf("%zu variants written to %s (%s)\n", sel.variants.size(), a.get("-o").c_str(), target_name(target));
+  if (left_out)
+    printf("%d variants left out: %s does not offer them (tiershade variants --target %s --list)\n", left_out,
+           target_name(target), target_name(target));
   return 0;
 }
 
@@ -58,6 +86,20 @@ int scene_bundle(const Args &a, Target target) {
   SceneSelection sel;
   std::string err;
   if (!load_scene(path, &scene, &err) || !select_scene_variants(scene, tier, a.get("--hdr"), &sel, &err)) a.fail(err);
+  // WebGL 1 / ES 2.0 cannot render the float HDR path: it draws linear radiance into RGBA16F
+  // targets and its post passes read them back filtered (docs/hdr.md); ES 2.0 has neither
+  // half-float colour targets nor their filtering in core, and tiershade's float path needs both.
+  if (target == Target::ESSL100 && sel.hdr_path == "float")
+    a.fail(path + ": the scene runs the float HDR path (" +
+           (a.get("--hdr").empty() ? std::string("its hdr.path is \"float\"") : std::string("--hdr float")) +
+           "), which needs fp16 render targets that essl100 (WebGL 1, ES 2.0) lacks; bundle it with --hdr integer, or for "
+           "essl300");
+  for (const auto &v : sel.variants) {
+    std::string why;
+    if (!offered_on(a, v, target, &why))
+      a.fail(path + ": needs " + v.shader->name + " " + v.name() + ", which " + target_name(target) +
+             " does not offer: " + why);
+  }
   std::vector<BundleEntry> entries;
   for (size_t i = 0; i < sel.variants.size(); ++i)
     entries.push_back({&sel.variants[i], i < sel.variant_why.size() ? sel.variant_why[i] : std::vector<std::string>()});

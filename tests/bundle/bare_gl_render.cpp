@@ -204,6 +204,20 @@ GLuint compile(const Gl &gl, GLenum type, const std::string &path) {
   return s;
 }
 
+// Whether the manifest entry says a driver may trim `name` from `kind` ("attributes" and
+// "samplers": a list of names; "uniforms": objects whose array_size 0 means the whole uniform).
+bool trimmed(const json &entry, const char *kind, const std::string &name, const std::string &where) {
+  if (!entry.contains("may_trim")) return false;
+  const json &t = entry["may_trim"];
+  if (!t.is_object() || !t.contains(kind) || !t[kind].is_array()) throw Error(where + ": malformed may_trim." + kind);
+  for (const auto &x : t[kind]) {
+    if (x.is_string() && x == name) return true;
+    if (x.is_object() && x.contains("name") && x["name"] == name && x.contains("array_size") && x["array_size"] == 0)
+      return true;
+  }
+  return false;
+}
+
 // One bundle variant, linked with its attributes at locations 0..n-1 in manifest order.
 struct Program {
   GLuint id = 0;
@@ -400,18 +414,23 @@ long run(const Options &o, int *w_out, int *h_out, size_t *draws_out) {
     if (pit == programs.end()) pit = programs.emplace(key, link(gl, o.bundle, vit->second, mpath + ": " + key)).first;
     const Program &p = pit->second;
     gl.UseProgram(p.id);
-    // Uniforms: the dump must set exactly the manifest's uniforms.
+    // Uniforms: the dump sets the manifest's declared uniforms, except those the manifest says a
+    // driver may trim (docs/bundles.md, "may_trim"), and nothing else.
     const json &mu = arr(p.entry, "uniforms", mpath);
     const json &du = arr(d, "uniforms", where);
     std::map<std::string, const json *> given;
     for (size_t k = 0; k < du.size(); ++k) given[str(du[k], "name", where)] = &du[k];
-    if (given.size() != mu.size())
-      throw Error(where + ": sets " + std::to_string(given.size()) + " uniforms, the manifest lists " +
-                  std::to_string(mu.size()));
+    std::map<std::string, bool> declared;
+    for (size_t k = 0; k < mu.size(); ++k) declared[str(mu[k], "name", mpath)] = true;
+    for (const auto &g : given)
+      if (!declared.count(g.first)) throw Error(where + ": sets " + g.first + ", which the manifest does not list");
     for (size_t k = 0; k < mu.size(); ++k) {
       const std::string name = str(mu[k], "name", mpath);
       auto g = given.find(name);
-      if (g == given.end()) throw Error(where + ": no value for the manifest's uniform " + name);
+      if (g == given.end()) {
+        if (trimmed(p.entry, "uniforms", name, mpath)) continue;
+        throw Error(where + ": no value for the manifest's uniform " + name);
+      }
       set_uniform(gl, p.id, *g->second, where + ".uniforms." + name);
     }
     // Samplers: each at the manifest's unit, with the dump's texture of that name.
@@ -424,10 +443,12 @@ long run(const Options &o, int *w_out, int *h_out, size_t *draws_out) {
       const json *tex = nullptr;
       for (const auto &t : dt)
         if (t.is_object() && t.contains("sampler") && t["sampler"] == name) tex = &t;
+      if (!tex && trimmed(p.entry, "samplers", name, mpath)) continue;
       if (!tex) throw Error(where + ": no texture for the sampler " + name);
       gl.ActiveTexture(GL_TEXTURE0 + static_cast<GLenum>(unit));
       textures.push_back(upload_texture(gl, o.api, o.dump, *tex, where + ".textures." + name));
       const GLint loc = gl.GetUniformLocation(p.id, name.c_str());
+      if (loc < 0 && trimmed(p.entry, "samplers", name, mpath)) continue;
       if (loc < 0) throw Error(mpath + ": " + key + ": no sampler " + name);
       gl.Uniform1i(loc, static_cast<GLint>(unit));
     }
@@ -445,6 +466,10 @@ long run(const Options &o, int *w_out, int *h_out, size_t *draws_out) {
           : a == "a_lightmap"                  ? "lightmap_file"
                                                : nullptr;
       const int comps = a == "a_uv" ? 2 : a == "a_tangent" || a == "a_lightmap" ? 4 : 3;
+      const bool may_skip = trimmed(p.entry, "attributes", a, mpath);
+      if (!key_file || !d.contains(key_file) || !d[key_file].is_string()) {
+        if (may_skip) continue;  // the driver does not read it (the manifest's may_trim)
+      }
       if (!key_file) throw Error(where + ": the dump has no data for attribute " + a);
       if (!field(d, key_file, where).is_string()) throw Error(where + ": no " + key_file + " for attribute " + a);
       const auto data = read_array<float>(file_in(o.dump, str(d, key_file, where), where, false), nv * comps);

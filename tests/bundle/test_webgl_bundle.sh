@@ -1,0 +1,105 @@
+#!/usr/bin/env bash
+# tiershade — tests/bundle/test_webgl_bundle.sh
+#
+# Bundles and tiers a browser accepts (issue 14; docs/bundles.md "Extensions" and "The declared
+# interface", docs/budget_model.md "Constant registers").
+#   usage: tests/bundle/test_webgl_bundle.sh path/to/tiershade
+# Checks: essl100 offers every variant but the 9 colour-correction 3D-LUT ones (a named one is
+# refused, status 2); a float-HDR scene is refused for essl100 with a message naming the path,
+# and bundles with --hdr integer; a ps20 manifest lists u_lights at its declared 20 with Mesa's
+# 10 under may_trim, and the extensions the variant uses; the budget fails the ps2b Phong
+# 4-light variants on constant registers unless the known-over list names them, and fails a
+# listed variant that fits. About 30 s (the three budget runs compile ~30 variants).
+# Prints "PASS name" / "FAIL name: detail"; exits 1 if any check failed.
+set -u
+. "$(dirname "${BASH_SOURCE[0]}")/../cli/lib.sh"
+cli_setup webgl_bundle 300 "$@"
+
+# --- which variants essl100 offers ---------------------------------------------------------
+run variants --count; all=$(cat "$OUT")
+run variants --count --target essl100; es2=$(cat "$OUT")
+run variants --count --target essl300; es3=$(cat "$OUT")
+if [ -n "$all" ] && [ "$es2" = $((all - 9)) ] && [ "$es3" = "$all" ]; then
+  pass "essl100 offers all but 9 variants ($es2 of $all), essl300 all"
+else fail "essl100 offers all but 9 variants" "all '$all' essl100 '$es2' essl300 '$es3'"; fi
+run variants --list --target essl100 --shader color_correction
+if [ "$RC" -eq 0 ] && ! grep -q 'LUT_ATLAS=0' "$OUT" && [ "$(grep -c 'LUT_ATLAS=1' "$OUT")" -eq 16 ]; then
+  pass "essl100 lists the 16 atlas colour-correction variants and no 3D one"
+else fail "essl100 lists the atlas colour-correction variants" "status $RC: $(tr '\n' ' ' < "$OUT" | head -c 300)"; fi
+
+V3D='ps2b:LUT_ATLAS=0,SHADER_TRILINEAR=0,NUM_LOOKUPS=2'
+run variants --shader color_correction --variant "$V3D" --target essl100 -o b3d
+if [ "$RC" -eq 2 ] && grep -q 'not offered on essl100' "$ERR" && grep -q 'OES_texture_3D' "$ERR" && [ ! -e b3d ]; then
+  pass "a named 3D-LUT variant is refused for essl100"
+else fail "a named 3D-LUT variant is refused for essl100" "status $RC: $(head -n 1 "$ERR")"; fi
+run variants --shader color_correction --variant "$V3D" --target essl300 -o b3d
+if [ "$RC" -eq 0 ] && grep -q '"type": "sampler3D"' b3d/manifest.json; then pass "the same variant bundles for essl300"
+else fail "the same variant bundles for essl300" "status $RC: $(head -n 1 "$ERR")"; fi
+run variants --shader color_correction --tier ps2b --target essl100 -o bcc
+if [ "$RC" -eq 0 ] && grep -q '9 variants left out' "$OUT" && ! grep -q 'LUT_ATLAS=0' bcc/manifest.json; then
+  pass "a whole-tier essl100 bundle leaves the 3D variants out, and says so"
+else fail "a whole-tier essl100 bundle leaves the 3D variants out" "status $RC: $(tail -n 1 "$OUT") $(head -n 1 "$ERR")"; fi
+
+# --- the float HDR path and WebGL 1 ---------------------------------------------------------
+SC="$HERE/scenes/hdr_atrium.gltf"
+run variants "$SC" --tier sm3 --target essl100 -o bhdr
+if [ "$RC" -eq 2 ] && grep -q 'float HDR path' "$ERR" && grep -q 'fp16 render targets' "$ERR" && grep -q 'hdr_atrium.gltf' "$ERR" &&
+  [ "$(grep -c '' "$ERR")" -eq 1 ] && [ ! -e bhdr ]; then
+  pass "a float-HDR scene is refused for essl100 with one line naming it"
+else fail "a float-HDR scene is refused for essl100" "status $RC: $(head -n 2 "$ERR" | tr '\n' ' ')"; fi
+run variants "$SC" --tier sm3 --target essl100 --hdr integer -o bhdr
+if [ "$RC" -eq 0 ] && [ -s bhdr/manifest.json ]; then pass "the same scene bundles for essl100 with --hdr integer"
+else fail "the same scene bundles for essl100 with --hdr integer" "status $RC: $(head -n 1 "$ERR")"; fi
+run variants "$SC" --tier sm3 --target essl300 -o bhdr3
+if [ "$RC" -eq 0 ]; then pass "the float-HDR scene bundles for essl300"
+else fail "the float-HDR scene bundles for essl300" "status $RC: $(head -n 1 "$ERR")"; fi
+
+# --- the declared interface against Mesa's, and the extensions -----------------------------
+V20='ps20:ALBEDO_TEXTURE=1,HALF_LAMBERT=1,OUTPUT_MODE=0,NUM_LIGHTS=2'
+run variants --shader model_lighting --variant "$V20" --target essl100 -o b20
+if [ "$RC" -ne 0 ]; then fail "ps20 essl100 bundle" "status $RC: $(head -n 1 "$ERR")"
+else
+  got=$(python3 - b20/manifest.json << 'EOF'
+import json, sys
+m = json.load(open(sys.argv[1]))
+v = m["variants"][0]
+u = {x["name"]: x for x in v["uniforms"]}
+t = {x["name"]: x["array_size"] for x in v["may_trim"]["uniforms"]}
+e = [x["name"] for x in v["extensions"]]
+print("declared", u["u_lights"]["array_size"], "stages", "+".join(u["u_lights"]["stages"]),
+      "mesa", t.get("u_lights"), "ext", ",".join(e), "top", ",".join(m["extensions"]),
+      "dx9", v["constant_registers"], "webgl", v["uniform_vectors"]["fragment"], "units", v["texture_units"]["fragment"])
+EOF
+  )
+  case "$got" in
+    "declared 20 stages vertex+fragment mesa 10 "*) pass "u_lights: declared 20, Mesa's 10 under may_trim ($got)" ;;
+    *) fail "u_lights: declared 20, Mesa's 10 under may_trim" "$got" ;;
+  esac
+  missing=""
+  for x in OES_texture_float OES_texture_float_linear WEBGL_color_buffer_float OES_element_index_uint; do
+    echo "$got" | grep -q "ext [^ ]*$x" || missing+=" $x"
+  done
+  if [ -z "$missing" ] && ! echo "$got" | grep -q OES_texture_3D; then pass "ps20 extensions for WebGL 1"
+  else fail "ps20 extensions for WebGL 1" "missing$missing: $got"; fi
+  # ps20 model_lighting, 2 lights, albedo texture (u_albedo_color unused): DX9 registers
+  # u_ambient_cube 6 + u_lights 8 (light 1's position is element 7) + u_params = 15; WebGL's
+  # measure takes u_lights at its declared 20: 6 + 20 + 1 = 27 > WebGL 1's 16 (docs/tiers.md).
+  case "$got" in *"dx9 15 webgl 27 units 1"*) pass "ps20 counts: 15 DX9 constants, 27 uniform vectors, 1 unit" ;;
+    *) fail "ps20 counts: 15 DX9 constants, 27 uniform vectors, 1 unit" "$got" ;; esac
+fi
+
+# --- the budget's constant registers --------------------------------------------------------
+P4='ps2b:ALBEDO_TEXTURE=1,HALF_LAMBERT=1,OUTPUT_MODE=0,PHONG=1,PHONG_EXPONENT_MAP=1,RIM_LIGHT=1,ENVMAP=1,LIGHT_WARP=1,NUM_LIGHTS=4'
+KNOWN="$HERE/tests/bundle/budget_known_over.txt"
+run budget --shader model_lighting --variant "$P4"
+if [ "$RC" -eq 1 ] && grep -q '^OVER .*const  35 .*const 32' "$OUT"; then pass "budget fails ps2b Phong with 4 lights: 35 constants > 32"
+else fail "budget fails ps2b Phong with 4 lights on constants" "status $RC: $(head -n 1 "$OUT")"; fi
+run budget --shader model_lighting --variant "$P4" --known-over "$KNOWN"
+if [ "$RC" -eq 0 ] && grep -q '^ok .*known over: constants 35 > 32' "$OUT"; then pass "the known-over list names it"
+else fail "the known-over list names it" "status $RC: $(head -n 1 "$OUT")"; fi
+echo "model_lighting $V20" > fits.txt
+run budget --shader model_lighting --variant "$V20" --known-over fits.txt
+if [ "$RC" -eq 1 ] && grep -q 'but fits' "$OUT"; then pass "a listed variant that fits fails"
+else fail "a listed variant that fits fails" "status $RC: $(head -n 2 "$OUT" | tr '\n' ' ')"; fi
+
+cli_finish
