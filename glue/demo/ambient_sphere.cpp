@@ -4,7 +4,7 @@
 // diffuse sphere (its +Z and its -Z hemisphere of normals), five panels: the sphere lit by the exact
 // irradiance E(n)/pi (glue/bake/ambient_fit.h: probe_irradiance_at, every texel summed), by the
 // least-squares cube (`lsq`), by Source's per-axis mean cube (`mean`), then each cube's signed error
-// (luminance, red: the cube too bright, blue: too dark). Cube at a normal: fact sheet section 3,
+// (luminance, orange: the cube too bright, blue: too dark). Cube at a normal: fact sheet section 3,
 // n.x^2 C[x sign] + n.y^2 C[y sign] + n.z^2 C[z sign] (c_ref/offline/ambient_cube_fit.h: ts_ac_eval).
 #include <algorithm>
 #include <cmath>
@@ -21,8 +21,9 @@ namespace {
 
 int g_panel = 128;  // each sphere's square, pixels: 2/5 of the demo's height (128 at the default 640 x 320), >= 24
 const int kGap = 4;
-// The error panels' scale: full colour at this share of the exact sphere's mean luminance.
-const double kErrorFull = 0.25;
+// The error panels' scale: full colour at this share of the exact sphere's mean luminance (linear
+// display values: brightness proportional to the error).
+const double kErrorFull = 0.5;
 
 double luminance(const double c[3]) { return 0.2126 * c[0] + 0.7152 * c[1] + 0.0722 * c[2]; }
 
@@ -111,7 +112,7 @@ bool run(const DemoOptions &opt, std::string *err) {
         const double t = std::min(1.0, std::fabs(d) / full);
         const double rgb[3] = {d > 0 ? t : 0.0, d > 0 ? 0.35 * t : 0.5 * t, d > 0 ? 0.0 : t};
         for (int k = 0; k < 3; ++k)
-          panels[view * 5 + 3 + c].rgba[px * 4 + k] = static_cast<float>(srgb_encode_clamped(rgb[k]));
+          panels[view * 5 + 3 + c].rgba[px * 4 + k] = static_cast<float>(rgb[k]);
       }
     }
     for (int view = 0; view < 2; ++view) {
