@@ -126,6 +126,33 @@ std::vector<double> probe_irradiance(const ImageF &probe, int threads) {
   return out;
 }
 
+std::vector<double> probe_irradiance_at(const ImageF &probe, const std::vector<double> &n, int threads) {
+  const size_t texels = static_cast<size_t>(probe.w) * probe.h, count = n.size() / 3;
+  // Each texel's direction and radiance x solid angle / pi: E(n)/pi = sum max(0, n . w) L dw / pi.
+  std::vector<double> dir(texels * 3), ldw(texels * 3);
+  for (int y = 0; y < probe.h; ++y)
+    for (int x = 0; x < probe.w; ++x) {
+      const size_t t = static_cast<size_t>(y) * probe.w + x;
+      double dw;
+      latlong_texel(probe.w, probe.h, x, y, &dir[t * 3], &dw);
+      for (int k = 0; k < 3; ++k) ldw[t * 3 + k] = probe.rgba[t * 4 + k] * dw / kPi;
+    }
+  std::vector<double> out(count * 3, 0.0);
+  const int rows = static_cast<int>((count + 255) / 256);
+  parallel_rows(rows, threads, [&](int r) {
+    for (size_t i = static_cast<size_t>(r) * 256; i < std::min(count, static_cast<size_t>(r + 1) * 256); ++i) {
+      double e[3] = {0, 0, 0};
+      for (size_t t = 0; t < texels; ++t) {
+        const double c = n[i * 3] * dir[t * 3] + n[i * 3 + 1] * dir[t * 3 + 1] + n[i * 3 + 2] * dir[t * 3 + 2];
+        if (c <= 0) continue;
+        for (int k = 0; k < 3; ++k) e[k] += c * ldw[t * 3 + k];
+      }
+      for (int k = 0; k < 3; ++k) out[i * 3 + k] = e[k];
+    }
+  });
+  return out;
+}
+
 void fit_cube_to_irradiance(const std::vector<double> &exact, int w, int h, bool solid_angle, float cube[6][3]) {
   double g[6][6] = {}, b[6][3] = {};
   for (int y = 0; y < h; ++y)

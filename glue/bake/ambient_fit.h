@@ -37,6 +37,12 @@ void fit_probe_cube(const ImageF &probe, AmbientFit fit, float cube[6][3], int t
 // any count). RGB, 3 per texel, rows bottom-up.
 std::vector<double> probe_irradiance(const ImageF &probe, int threads);
 
+// The exact E(n)/pi of the probe at each of the unit directions `n` (3 per direction; texels as above:
+// constant radiance over their exact solid angle, summed in double), directions on `threads` workers
+// (0 = all cores; the same bytes for any count). RGB, 3 per direction. The sphere picture's reference
+// (glue/demo/ambient_sphere.cpp).
+std::vector<double> probe_irradiance_at(const ImageF &probe, const std::vector<double> &n, int threads);
+
 // Probulator's way (ExperimentAmbientCube: non-negative least squares of the basis against an
 // irradiance image, one equation per lat-long pixel): the cube fitted to E/pi given at every texel
 // centre (from probe_irradiance), each pixel weighted alike (solid_angle false) or by its solid angle.

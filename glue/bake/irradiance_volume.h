@@ -3,10 +3,12 @@
 // ambient cube fitted (glue/bake/ambient_fit.h) to the radiance seen along 162 ray directions through
 // the bake's ray scene (fact sheet section 3, vrad's ComputeAmbientFromSphericalSamples): a world
 // face's front returns its radiosity (flat lightmap x reflectivity + emission, bounce.h's
-// luxel_exitant), a back face or other geometry counts as a back-face hit (radiance 0), a miss returns
-// the sky hook's radiance (0 without one). Samples inside geometry (most rays on back faces) are
-// invalid. A model's cube: trilinear over the valid samples around it, or Source's inverse-square
-// weights 1/(d^2 + 1) (d in Source units, inches; fact sheet section 3, Mod_LeafAmbientColorAtPos).
+// luxel_exitant), a face's back counts as a back-face hit (radiance 0), other geometry (models) is
+// passed through to the world behind (as vrad, which never sees dynamic models; with
+// VolumeSettings::models_occlude it is a black back-face hit instead), a miss returns the sky hook's
+// radiance (0 without one). Samples inside the world's solids (most rays on back faces) are invalid.
+// A model's cube: trilinear over the valid samples around it, or Source's inverse-square weights
+// 1/(d^2 + 1) (d in Source units, inches; fact sheet section 3, Mod_LeafAmbientColorAtPos).
 // docs/irradiance_volume.md.
 #pragma once
 #include <array>
@@ -32,14 +34,30 @@ struct VolumeSettings {
   // Sample spacing along x, y, z in scene units (glTF metres, +Y up): Source's 4 ft x 8 ft (up) x 4 ft.
   double spacing[3] = {1.2192, 2.4384, 1.2192};
   AmbientFit fit = AmbientFit::Lsq;  // Mean, Lsq or LsqRadiance (LsqPixels is for probes only)
-  // A sample whose share of back-face hits (back faces and other geometry) is above this is invalid.
+  // A sample whose share of back-face hits (back faces, and other geometry when models_occlude) is
+  // above this is invalid.
   double max_back_share = 0.5;
   // The sky hook: the radiance of a ray that misses everything (null: 0). The sky bake adds it.
   std::function<glm::dvec3(const glm::dvec3 &dir)> sky_radiance;
   int threads = 0;  // 0: all cores (the result is the same for any count)
-  // Whether other geometry (models) stops a ray as a black back-face hit (true, the scenes') or the
-  // ray goes on through it to the world (false: the world alone, measured by `bench --section ambient`).
-  bool models_occlude = true;
+  // Whether other geometry (models) stops a ray as a black back-face hit (true) or the ray goes on
+  // through it to the world (false, the default: the world alone, as vrad, which never sees dynamic
+  // models; a denser volume's samples next to or inside models are not darkened by them; measured by
+  // `bench --section ambient`, docs/irradiance_volume.md). The accuracy bench's reference keeps true.
+  bool models_occlude = false;
+};
+
+// What a volume's samples depend on, in parts (glue/bake/volume_file.h: volume_inputs), so that a
+// stale volume in a bake directory can say what changed: hashes of the box, the settings, the
+// geometry (world faces' frames and every triangle the rays see), the faces' materials (reflectivity,
+// emission), their flat lightmaps and the sky; and the box's and settings' values themselves (the
+// manifest records them, a stale volume names the ones that differ).
+struct VolumeInputs {
+  uint64_t bounds = 0, settings = 0, geometry = 0, materials = 0, lightmaps = 0, sky = 0;
+  double lo[3] = {0, 0, 0}, hi[3] = {0, 0, 0}, spacing[3] = {0, 0, 0};
+  AmbientFit fit = AmbientFit::Lsq;
+  double max_back_share = 0;
+  bool models_occlude = false;
 };
 
 struct IrradianceVolume {
@@ -52,8 +70,9 @@ struct IrradianceVolume {
   double bake_ms = 0;
   long rays = 0;
   // The content hash of what the samples depend on (glue/bake/volume_file.h: volume_inputs_hash): the
-  // bake directory's copy is refused when it differs from the scene's.
+  // bake directory's copy is refused when it differs from the scene's; `inputs`: its parts.
   uint64_t inputs_hash = 0;
+  VolumeInputs inputs;
   size_t index(int i, int j, int k) const { return (static_cast<size_t>(k) * n[1] + j) * n[0] + i; }
   glm::dvec3 position(int i, int j, int k) const;
   size_t bytes() const;  // the samples' memory (cubes, validity, back-face shares)
@@ -79,8 +98,9 @@ bool bake_irradiance_volume(const double lo[3], const double hi[3], const std::v
                             IrradianceVolume *out, std::string *err);
 
 // The radiance a ray from p along unit d sees (what a sample's and the ground truth's rays add up): a
-// world face's front: its radiosity at the hit; a miss: the sky hook; a face's back or other geometry:
-// 0 with *back set (may be null); with set.models_occlude false, other geometry is passed through.
+// world face's front: its radiosity at the hit; a miss: the sky hook; a face's back: 0 with *back set
+// (may be null); other geometry: passed through (set.models_occlude false, the default) or 0 with
+// *back set (true).
 glm::dvec3 volume_ray_radiance(const glm::dvec3 &p, const glm::dvec3 &d, const std::vector<WorldFace> &faces,
                                const std::vector<LuxelGrid> &grids, const RayScene &rays, const VolumeSettings &set,
                                bool *back);

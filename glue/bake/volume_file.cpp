@@ -53,37 +53,110 @@ uint64_t bytes_hash(const std::string &b) {
 
 }  // namespace
 
-uint64_t volume_inputs_hash(const double lo[3], const double hi[3], const VolumeSettings &set,
-                            const std::vector<WorldFace> &faces, const std::vector<LuxelGrid> &grids,
-                            uint64_t rays_hash, uint64_t sky_hash) {
-  ContentHash h;
-  h.value(kVersion);
+VolumeInputs volume_inputs(const double lo[3], const double hi[3], const VolumeSettings &set,
+                           const std::vector<WorldFace> &faces, const std::vector<LuxelGrid> &grids,
+                           uint64_t rays_hash, uint64_t sky_hash) {
+  VolumeInputs in;
+  ContentHash box, st, geo, mat, lm, sky;
+  st.value(kVersion);
   for (int a = 0; a < 3; ++a) {
-    h.value(lo[a]);
-    h.value(hi[a]);
-    h.value(set.spacing[a]);
+    in.lo[a] = lo[a];
+    in.hi[a] = hi[a];
+    in.spacing[a] = set.spacing[a];
+    box.value(lo[a]);
+    box.value(hi[a]);
+    st.value(set.spacing[a]);
   }
-  h.value(static_cast<int>(set.fit));
-  h.value(set.max_back_share);
-  h.value(set.models_occlude);
-  h.value(rays_hash);
-  h.value(sky_hash);
+  in.fit = set.fit;
+  in.max_back_share = set.max_back_share;
+  in.models_occlude = set.models_occlude;
+  st.value(static_cast<int>(set.fit));
+  st.value(set.max_back_share);
+  st.value(set.models_occlude);
+  geo.value(rays_hash);
+  sky.value(sky_hash);
   for (const WorldFace &f : faces) {
-    vec(h, f.origin);
-    vec(h, f.u);
-    vec(h, f.v);
-    h.value(f.su);
-    h.value(f.sv);
-    vec(h, f.normal);
-    vec(h, f.reflectivity);
-    vec(h, f.emission);
+    vec(geo, f.origin);
+    vec(geo, f.u);
+    vec(geo, f.v);
+    geo.value(f.su);
+    geo.value(f.sv);
+    vec(geo, f.normal);
+    vec(mat, f.reflectivity);
+    vec(mat, f.emission);
   }
   for (const LuxelGrid &g : grids) {
-    h.value(g.w);
-    h.value(g.h);
-    for (size_t i = 0; i < g.v.size(); i += 4) vec(h, g.v[i]);  // value k = 0: the flat lightmap
+    lm.value(g.w);
+    lm.value(g.h);
+    for (size_t i = 0; i < g.v.size(); i += 4) vec(lm, g.v[i]);  // value k = 0: the flat lightmap
   }
+  in.bounds = box.h;
+  in.settings = st.h;
+  in.geometry = geo.h;
+  in.materials = mat.h;
+  in.lightmaps = lm.h;
+  in.sky = sky.h;
+  return in;
+}
+
+uint64_t volume_inputs_hash(const VolumeInputs &in) {
+  ContentHash h;
+  for (uint64_t v : {in.bounds, in.settings, in.geometry, in.materials, in.lightmaps, in.sky}) h.value(v);
   return h.h;
+}
+
+namespace {
+
+json vec3_json(const double v[3]) { return json::array({v[0], v[1], v[2]}); }
+
+// The entry's record of the inputs: the parts' hashes and the box's and settings' values.
+json inputs_json(const VolumeInputs &in) {
+  return {{"hash",
+           {{"bounds", hash_hex(in.bounds)},
+            {"settings", hash_hex(in.settings)},
+            {"geometry", hash_hex(in.geometry)},
+            {"materials", hash_hex(in.materials)},
+            {"lightmaps", hash_hex(in.lightmaps)},
+            {"sky", hash_hex(in.sky)}}},
+          {"bounds", json::array({vec3_json(in.lo), vec3_json(in.hi)})},
+          {"spacing", vec3_json(in.spacing)},
+          {"fit", ambient_fit_name(in.fit)},
+          {"max_back_share", in.max_back_share},
+          {"models_occlude", in.models_occlude}};
+}
+
+const char *const kPartWords[6] = {
+    "the volume's bounds", "the volume's settings", "the geometry (world faces or any triangle the rays see)",
+    "the world faces' materials (reflectivity, emission)", "the lightmaps", "the sky"};
+
+// What differs between a recorded inputs object (the manifest's) and `now`, in words; "" when the
+// record is not readable (an older manifest) or nothing differs.
+std::string inputs_changed(const json &was, const VolumeInputs &now) {
+  const json n = inputs_json(now);
+  if (!was.is_object() || !was.contains("hash") || !was["hash"].is_object()) return "";
+  const char *keys[6] = {"bounds", "settings", "geometry", "materials", "lightmaps", "sky"};
+  std::string s;
+  for (int i = 0; i < 6; ++i) {
+    if (was["hash"].contains(keys[i]) && was["hash"][keys[i]] == n["hash"][keys[i]]) continue;
+    std::string what = kPartWords[i], values;
+    // The box's and settings' values that differ, by name (the manifest's -> the scene's).
+    const std::vector<const char *> named = i == 0 ? std::vector<const char *>{"bounds"}
+        : i == 1 ? std::vector<const char *>{"spacing", "fit", "max_back_share", "models_occlude"}
+                 : std::vector<const char *>{};
+    for (const char *k : named)
+      if (!was.contains(k) || was[k] != n[k])
+        values += std::string(values.empty() ? " (" : ", ") + k + " " + (was.contains(k) ? was[k].dump() : "?") +
+            " -> " + n[k].dump();
+    if (!values.empty()) what += values + ")";
+    s += (s.empty() ? "" : ", ") + what;
+  }
+  return s;
+}
+
+}  // namespace
+
+std::string volume_inputs_changed(const VolumeInputs &was, const VolumeInputs &now) {
+  return inputs_changed(inputs_json(was), now);
 }
 
 std::string volume_file_bytes(const IrradianceVolume &v) {
@@ -116,6 +189,7 @@ json volume_manifest_entry(const IrradianceVolume &v, const std::string &bytes) 
           {"bytes", bytes.size()},
           {"content_hash", hash_hex(bytes_hash(bytes))},
           {"inputs_hash", hash_hex(v.inputs_hash)},
+          {"inputs", inputs_json(v.inputs)},
           {"samples", {v.n[0], v.n[1], v.n[2]}},
           {"valid", valid},
           {"origin", {v.origin[0], v.origin[1], v.origin[2]}},
@@ -128,7 +202,8 @@ json volume_manifest_entry(const IrradianceVolume &v, const std::string &bytes) 
            "f32 cube[6][3] (+X -X +Y -Y +Z -Z; docs/irradiance_volume.md)"}};
 }
 
-bool read_volume_dir(const std::string &dir, uint64_t inputs_hash, IrradianceVolume *out, std::string *err) {
+bool read_volume_dir(const std::string &dir, const VolumeInputs &inputs, IrradianceVolume *out, std::string *err) {
+  const uint64_t inputs_hash = volume_inputs_hash(inputs);
   *out = IrradianceVolume();
   const std::string mf = dir + "/manifest.json", vf = dir + "/" + kVolumeFile;
   const std::string rebake = "; rebake with tiershade bake SCENE -o " + dir;
@@ -173,8 +248,17 @@ bool read_volume_dir(const std::string &dir, uint64_t inputs_hash, IrradianceVol
     return false;
   }
   if (ihash->get<std::string>() != hash_hex(inputs_hash)) {
-    *err = mf + ": /volume/inputs_hash: stale irradiance volume: the world, its lightmaps, the sky or the volume "
-                "settings changed since it was baked" + rebake;
+    // What changed, from the entry's record of the parts (a manifest without one: the generic words).
+    const json *rec = e.contains("inputs") ? &e["inputs"] : nullptr;
+    const std::string what = rec ? inputs_changed(*rec, inputs) : std::string();
+    const bool readable = rec && rec->is_object() && rec->contains("hash") && (*rec)["hash"].is_object();
+    if (readable && what.empty())
+      *err = mf + ": /volume/inputs_hash: stale irradiance volume: the hash is not the one of its parts "
+                  "(/volume/inputs/hash: the manifest was edited)" + rebake;
+    else
+      *err = mf + ": /volume/inputs_hash: stale irradiance volume: " +
+          (what.empty() ? std::string("the world, its lightmaps, the sky or the volume settings") : what) +
+          " changed since it was baked" + rebake;
     return false;
   }
   const auto fsize = fs::file_size(vf, ec);
@@ -265,6 +349,7 @@ bool read_volume_dir(const std::string &dir, uint64_t inputs_hash, IrradianceVol
           }
       }
   if (e.contains("rays") && e["rays"].is_number_integer()) v.rays = e["rays"].get<long>();
+  v.inputs = inputs;  // the hash says they are the scene's
   *out = std::move(v);
   return true;
 }

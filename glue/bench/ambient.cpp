@@ -141,7 +141,13 @@ bool run(const BenchOptions &opt, std::string *md, std::string *err) {
     << "at every texel\ncentre (docs/irradiance_volume.md): RMS over the lat-long pixels (Probulator's metric) and "
     << "solid-angle weighted; ms per fit: median\nof the runs (lsq-pixels: one run, it computes the exact irradiance "
     << "first).\n\n";
-  if (!probe_rows(opt, o, err) || !volume_rows(o, err) || !ambient_volume_rows(o, err)) return false;
+  if (!probe_rows(opt, o, err)) return false;
+  o << "\nThe per-pixel error of a cube against the exact irradiance of the same probe (`make demo`, section "
+       "ambient_sphere: glue/demo/ambient_sphere.cpp): a diffuse sphere from +Z and from -Z per probe (rows: grace, "
+       "grace, uffizi, uffizi), lit by\nthe exact irradiance, by the lsq cube, by the mean cube, then the lsq and the "
+       "mean cube's signed luminance error (orange: too bright, blue: too dark, linear, full colour at 50 % of the\nexact "
+       "sphere's mean luminance).\n\n![ambient cube error on a sphere](images/ambient_sphere.png)\n";
+  if (!volume_rows(o, err) || !ambient_volume_rows(o, err)) return false;
   *md = o.str();
   return true;
 }

@@ -2,10 +2,11 @@
 // shipped scene with world faces and models (scenes/large_hall_40.gltf), each model pixel's ambient
 // term (the cube at its normal, white albedo, linear) against the exact irradiance over pi at that
 // shaded point, ray traced through the bake's Embree scene (glue/bake/ray_scene.h) with the baked
-// world's radiosity and the sky (volume_ray_radiance: what the volume's own rays see), many
-// cosine-weighted rays per pixel; for the hand-placed samples (nearest), the volume (nearest,
-// trilinear, inverse-square), the mean and least-squares fits, and Source's density, half and double
-// with bake time and memory. Not a test: nothing here passes or fails.
+// world's radiosity and the sky (volume_ray_radiance: what the volume's own rays see; the models
+// occlude), many cosine-weighted rays per pixel; for the hand-placed samples (nearest), the volume
+// (nearest, trilinear, inverse-square), the mean and least-squares fits, and Source's density, half
+// and double with bake time and memory, with the volume's rays passing through the models (the
+// default) and stopped by them. Not a test: nothing here passes or fails.
 #include "bench/ambient_volume.h"
 
 #include <chrono>
@@ -77,8 +78,8 @@ bool world_of(const Scene &s, const SceneSelection &sel, const PreparedScene &p,
   w->grids = flat_grids_from_page(p.lightmap_places, p.lightmap_page, p.lightmap_w);
   if (!build_scene_rays(s, face_of_draw, &w->rays, err)) return false;
   w->setup = scene_volume_setup(s, w->faces);
-  const uint64_t h = volume_inputs_hash(w->setup.lo, w->setup.hi, w->setup.set, w->faces, w->grids,
-                                        w->rays.content_hash(), w->setup.sky_hash);
+  const uint64_t h = volume_inputs_hash(volume_inputs(w->setup.lo, w->setup.hi, w->setup.set, w->faces, w->grids,
+                                                      w->rays.content_hash(), w->setup.sky_hash));
   if (h != p.volume.inputs_hash) {
     *err = "ambient bench: the rebuilt world is not the one the volume was baked from (inputs hash differs)";
     return false;
@@ -89,6 +90,9 @@ bool world_of(const Scene &s, const SceneSelection &sel, const PreparedScene &p,
 // The model pixels of the G-buffer and their exact E / pi (kStrata^2 stratified cosine-weighted rays).
 std::vector<ModelPixel> model_pixels(const SceneGBufferCpu &g, const World &w, long *rays, double *ms) {
   const auto t0 = Clock::now();
+  // The truth at a model pixel: every model (itself and the others) stops light, whatever the volume does.
+  VolumeSettings truth = w.setup.set;
+  truth.models_occlude = true;
   std::vector<ModelPixel> px;
   for (size_t i = 0; i < g.draw.size(); ++i) {
     const int d = g.draw[i];
@@ -112,7 +116,7 @@ std::vector<ModelPixel> model_pixels(const SceneGBufferCpu &g, const World &w, l
         const double u1 = (a + uniform(&seed)) / kStrata, u2 = (c + uniform(&seed)) / kStrata;
         const double r = std::sqrt(u1), phi = 2 * 3.14159265358979323846 * u2;
         const glm::dvec3 d = t * (r * std::cos(phi)) + b * (r * std::sin(phi)) + m.n * std::sqrt(1 - u1);
-        const glm::dvec3 l = volume_ray_radiance(o, d, w.faces, w.grids, w.rays, w.setup.set, nullptr);
+        const glm::dvec3 l = volume_ray_radiance(o, d, w.faces, w.grids, w.rays, truth, nullptr);
         sum += l;
         sum2 += l * l;
       }
@@ -214,8 +218,9 @@ bool ambient_volume_rows(std::ostringstream &o, std::string *err) {
            "hand-placed ambient samples) at %d x %d, its camera: %zu model pixels. Reference: the exact irradiance "
            "over pi at each shaded point (G-buffer position and normal), %d cosine-weighted stratified rays per pixel "
            "(%ld rays, %.0f ms) through the bake's Embree scene, each seeing the baked world's radiosity (flat "
-           "lightmap x reflectivity + emission) or the sky, other models as occluders (radiance 0), as the volume's "
-           "own rays do; its mean %.4f, Monte Carlo standard error (RMS, an upper bound) %.5f. Error: the ambient "
+           "lightmap x reflectivity + emission) or the sky, as the volume's own rays do, and the models as "
+           "occluders (radiance 0; the volume's rays pass through them); its mean %.4f, Monte Carlo standard error "
+           "(RMS, an upper bound) %.5f. Error: the ambient "
            "term cube(n) (white albedo, linear, before lights are folded in; the lights are shaded the same way in "
            "every row) minus the reference, RMS over model pixels and channels, relative to the reference's mean; "
            "bias: the mean signed error.\n\n",
@@ -258,8 +263,9 @@ bool ambient_volume_rows(std::ostringstream &o, std::string *err) {
   o << "\nAgainst density (lsq fit): the volume over the world faces' box, 162 rays per sample; bake ms: the "
        "volume alone (not the lightmaps), one run; memory: the samples (cubes, validity, back-face shares) and "
        "volume.bin's size in the bake directory.\n\n"
-    << "Rows \"rays through the models\": the volume's rays pass through the models to the world behind "
-       "(`VolumeSettings::models_occlude` false), an experiment: the scenes' volumes stop at the models.\n\n"
+    << "The volume's rays pass through the models to the world behind (as vrad, which never sees dynamic "
+       "models). Rows \"rays stopped by the models\": the models are black back-face hits for the volume's rays "
+       "too (`VolumeSettings::models_occlude` true), what the scenes baked before.\n\n"
     << "| density | spacing (m) | samples | valid | rays | bake ms | memory KiB | volume.bin KiB | RMS trilinear | "
        "bias trilinear | RMS inverse-square | RMS nearest | mean back-face share of the samples used |\n"
        "|---|---|---|---|---|---|---|---|---|---|---|---|---|\n";
@@ -299,16 +305,16 @@ bool ambient_volume_rows(std::ostringstream &o, std::string *err) {
     if (!volume_of(s, r.scale, "lsq", &p, err)) return false;
     density_row(r.label, p.volume);
   }
-  // The same densities with the volume's rays passing through the models (the world alone): not what
-  // the scenes bake (VolumeSettings::models_occlude), measured to show what the models' own
-  // occlusion costs; the reference still has the other models as occluders.
+  // The same densities with the models stopping the volume's rays as black back-face hits
+  // (VolumeSettings::models_occlude true): not what the scenes bake, measured to show what the models'
+  // occlusion of their own samples costs.
   for (const Density &r : rows) {
     VolumeSettings vs = w.setup.set;
     for (double &x : vs.spacing) x *= r.scale;
-    vs.models_occlude = false;
+    vs.models_occlude = true;
     IrradianceVolume wv;
     if (!bake_irradiance_volume(w.setup.lo, w.setup.hi, w.faces, w.grids, w.rays, vs, &wv, err)) return false;
-    density_row(std::string(r.label) + ", rays through the models", wv);
+    density_row(std::string(r.label) + ", rays stopped by the models", wv);
   }
   return true;
 }

@@ -44,14 +44,15 @@ bool bake_scene_volume(const Scene &s, const SceneSelection &sel, const std::vec
   if (!models || faces.empty() || !s.ambient.empty() || !s.volume.enabled) return true;  // only what the scene calls for
   const SceneVolumeSetup u = scene_volume_setup(s, faces);
   const std::vector<LuxelGrid> grids = flat_grids_from_page(bake.place, bake.page, page_w);
-  const uint64_t hash = volume_inputs_hash(u.lo, u.hi, u.set, faces, grids, rays.content_hash(), u.sky_hash);
+  const VolumeInputs in = volume_inputs(u.lo, u.hi, u.set, faces, grids, rays.content_hash(), u.sky_hash);
   if (!s.lightmaps.bake.empty())  // the bake directory's volume, refused when stale (glue/bake/volume_file.h)
-    return read_volume_dir(s.lightmaps.bake, hash, out, err);
+    return read_volume_dir(s.lightmaps.bake, in, out, err);
   if (!bake_irradiance_volume(u.lo, u.hi, faces, grids, rays, u.set, out, err)) {
     *err = s.path + ": extras.tiershade.volume: " + *err;
     return false;
   }
-  out->inputs_hash = hash;
+  out->inputs_hash = volume_inputs_hash(in);
+  out->inputs = in;
   return true;
 }
 

@@ -11,7 +11,9 @@
 # (trilinear and inverse-square; tolerance 1e-12: at most 8 weights divided by their sum in double,
 # each rounding < 2^-53 relative), every contributing sample is valid in volume.bin, and at a sample's
 # own position (trilinear, nearest) the one contribution is that sample with weight 1 and the cube is
-# its six colours in volume.bin bit for bit (inverse-square: the sample weighs the most, 1 / the sum); a scene with hand-typed samples has no volume (text and JSON say so).
+# its six colours in volume.bin bit for bit (inverse-square: the sample weighs the most, 1 / the sum); a scene with hand-typed samples has no volume (text and JSON say so);
+# a scene whose volume spacing or bounds differ from the bake's is refused naming that part and its
+# old and new values (the manifest's /volume/inputs record), and writes no frame.
 # Bad volume files are in tests/cli/test_bad_input.sh.
 #   usage: tests/cli/test_volume.sh path/to/tiershade
 # Prints "PASS name" / "FAIL name: detail"; exits 1 if any check failed.
@@ -162,6 +164,26 @@ run light "$HERE/scenes/large_hall_40.gltf" --at 0.3,1.9,0.7 --json
 if [ "$RC" -eq 0 ] && python3 -c 'import json,sys; sys.exit(0 if json.load(open(sys.argv[1]))["volume"] is None else 1)' "$OUT"; then
   pass "light --at on a scene with hand-typed samples: no volume (null)"
 else fail "light --at without a volume" "status $RC: $(head -c 300 "$ERR")"; fi
+# A stale volume says what changed: the scene's volume spacing or bounds differ from the bake's (the
+# lightmaps do not depend on them, so the page is current and the volume alone is refused).
+for what in spacing bounds; do
+  python3 - dir.gltf stale_$what.gltf $what << 'EOF'
+import json, sys
+d = json.load(open(sys.argv[1]))
+d['extras']['tiershade']['volume'] = {'spacing': [2.4384, 2.4384, 2.4384]} if sys.argv[3] == 'spacing' else \
+    {'bounds': [[-1, 0, -1], [1, 2, 1]]}
+json.dump(d, open(sys.argv[2], 'w'))
+EOF
+done
+run render stale_spacing.gltf --size 32x18 --quiet --backend cpu -o stale
+if [ "$RC" -eq 1 ] && grep -q "hall\.bake/manifest\.json: /volume/inputs_hash: stale irradiance volume: the volume's settings (spacing \[1\.2192,2\.4384,1\.2192\] -> \[2\.4384,2\.4384,2\.4384\]) changed since it was baked; rebake" "$ERR" &&
+  [ ! -e stale.exr ]; then pass "a stale volume names what changed: the settings, the spacing's old and new values"
+else fail "stale volume: the settings" "status $RC: $(head -n 2 "$ERR")"; fi
+run render stale_bounds.gltf --size 32x18 --quiet --backend cpu -o stale
+if [ "$RC" -eq 1 ] && grep -q "stale irradiance volume: the volume's bounds (bounds \[\[.*\]\] -> \[\[-1\.0,0\.0,-1\.0\],\[1\.0,2\.0,1\.0\]\]) changed since it was baked" "$ERR" &&
+  ! grep -q "settings" "$ERR" && [ ! -e stale.exr ]; then pass "a stale volume names what changed: the bounds alone, old and new"
+else fail "stale volume: the bounds" "status $RC: $(head -n 2 "$ERR")"; fi
+
 run light load.gltf --at 0,0,0 --lookup cubic
 if [ "$RC" -eq 2 ] && grep -q "\-\-lookup 'cubic': expected trilinear, inverse_square or nearest" "$ERR"; then
   pass "light --lookup: a bad value is refused"

@@ -1,6 +1,6 @@
 // tiershade tests: the irradiance volume (glue/bake/irradiance_volume.cpp): its 162 ray directions,
-// a closed emitting room gives its emission everywhere, a model stops the rays or (models_occlude
-// false) is passed through, a sample inside a solid is invalid and never
+// a closed emitting room gives its emission everywhere, a model is passed through (the default) or
+// (models_occlude) stops the rays, a sample inside a solid is invalid and never
 // used, a point moving in small steps changes its cube by a bounded amount per step, and the
 // inverse-square option reproduces Source's 1/(d^2 + 1) on a hand case.
 #include <cmath>
@@ -17,6 +17,7 @@
 #include "scene/prepare.h"
 #include "scene/scene.h"
 #include "scene/selection.h"
+#include "twins/model_lighting.h"
 #include "unit_check.h"
 
 namespace {
@@ -252,7 +253,8 @@ int main() {
   }
   // 6. The scene hook (glue/scene/scene_volume.cpp via prepare.cpp): world_lighting's room with a
   //    small model added gets a volume cube (non-zero: the room is lit); a hand-typed ambient sample
-  //    overrides it; "enabled": false leaves the cube zero.
+  //    overrides it; "enabled": false leaves the cube zero; lights beyond the tier fold into the
+  //    volume's cube; the room without the model bakes no volume.
   {
     Scene room;
     if (!load_scene("scenes/world_lighting.gltf", &room, &err)) {
@@ -280,15 +282,22 @@ int main() {
       for (size_t i = 0; i < model.position.size(); ++i)
         model.position[i] = static_cast<float>((model.position[i] - c[i % 3]) * 0.05 + at[i % 3]);
       room.primitives.push_back(model);
-      auto model_cube = [&](const Scene &sc, float out[6][3]) {
+      PreparedScene last;  // the latest prepared scene (its volume)
+      float folded[6][3] = {};  // the latest model's shader cube (slots ML_SLOT_AMBIENT..: lights folded in)
+      auto model_cube = [&](const Scene &sc, float out[6][3], Tier tier = Tier::SM3) {
         SceneSelection sel;
-        PreparedScene ps;
-        if (!select_scene_variants(sc, Tier::SM3, "", &sel, &err) ||
+        PreparedScene &ps = last;
+        ps = PreparedScene();
+        if (!select_scene_variants(sc, tier, "", &sel, &err) ||
             !prepare_scene(sc, sel, 32, 32, Api::GL33, 1.f, &ps, &err))
           return false;
         for (const PreparedDraw &d : ps.draws)
           if (!d.world) {
             std::memcpy(out, d.ambient, sizeof d.ambient);
+            for (int f = 0; f < 6; ++f) {
+              const ts_vec4f &a = d.shared.at(ML_SLOT_AMBIENT + f);
+              folded[f][0] = a.x, folded[f][1] = a.y, folded[f][2] = a.z;
+            }
             return true;
           }
         err = "no model draw";
@@ -316,12 +325,47 @@ int main() {
       for (int f = 0; f < 6; ++f)
         for (int k = 0; k < 3; ++k) osum += off[f][k];
       check(ok3 && osum == 0, "volume.enabled false: no volume", err);
+      // Lights beyond the tier's limit fold into the volume's cube (docs/light_folding.md): the room's
+      // 4 lights fit sm3's 4, so the sm3 shader cube is the volume's at the model's centre (tolerance
+      // 1e-5: the centre from float positions differs from `at` by ~1e-7 m, the cube's slope is ~1 per
+      // m); ps20 keeps 2 and folds 2: its shader cube is the sm3 one plus non-negative amounts (>= -1e-6,
+      // float additions), more than 1e-4 on some face.
+      float sm3[6][3], ps20[6][3], at_vol[6][3], unused[6][3];
+      const bool ok4 = model_cube(room, unused, Tier::SM3);
+      std::memcpy(sm3, folded, sizeof sm3);
+      volume_cube_at(last.volume, at, VolumeLookup::Trilinear, at_vol, nullptr);
+      const bool ok5 = ok4 && model_cube(room, unused, Tier::PS20);
+      std::memcpy(ps20, folded, sizeof ps20);
+      double d_vol = 0, d_min = 1e30, d_max = -1e30;
+      for (int f = 0; f < 6; ++f)
+        for (int k = 0; k < 3; ++k) {
+          d_vol = std::fmax(d_vol, std::fabs(sm3[f][k] - at_vol[f][k]));
+          d_min = std::fmin(d_min, ps20[f][k] - sm3[f][k]);
+          d_max = std::fmax(d_max, ps20[f][k] - sm3[f][k]);
+        }
+      char fd[160];
+      snprintf(fd, sizeof fd, "%zu lights; sm3 - volume %.3g; ps20 - sm3 in [%.3g, %.3g]", room.lights.size(), d_vol,
+               d_min, d_max);
+      printf("light folding on the volume's cube: %s\n", fd);
+      check(ok5 && room.lights.size() == 4 && d_vol < 1e-5 && d_min >= -1e-6 && d_max > 1e-4,
+            "lights beyond the tier's limit fold into the volume's cube (ps20), none within it (sm3)", ok5 ? fd : err);
+      // No models, no volume: the room alone bakes none.
+      Scene world_only = room;
+      world_only.primitives.pop_back();
+      world_only.materials.pop_back();
+      SceneSelection wsel;
+      PreparedScene wps;
+      const bool ok6 = select_scene_variants(world_only, Tier::SM3, "", &wsel, &err) &&
+          prepare_scene(world_only, wsel, 32, 32, Api::GL33, 1.f, &wps, &err);
+      check(ok6 && wps.volume.cube.empty() && !last.volume.cube.empty(), "no volume for a scene without models",
+            ok6 ? std::to_string(wps.volume.cube.size()) + " samples" : err);
     }
   }
-  // 8. A model (a closed box of id -2, other geometry) in the emitting room: with models_occlude (the
-  //    scenes' setting) a ray into it stops as a black back-face hit and a sample inside it is invalid;
-  //    with models_occlude false the ray passes through both of its walls to the room (radiance L,
-  //    exact: the emission is read unchanged) and the sample inside sees the room: valid, cube L.
+  // 8. A model (a closed box of id -2, other geometry) in the emitting room: by default (models_occlude
+  //    false, the scenes' setting, as vrad) the ray passes through both of its walls to the room
+  //    (radiance L, exact: the emission is read unchanged) and the sample inside sees the room: valid,
+  //    cube L; with models_occlude a ray into it stops as a black back-face hit and a sample inside it
+  //    is invalid.
   {
     std::vector<WorldFace> faces;
     const glm::dvec3 em[6] = {L, L, L, L, L, L};
@@ -348,14 +392,14 @@ int main() {
       check(false, "room with a model box", err);
     } else {
       const std::vector<LuxelGrid> grids = dark_grids(faces.size());
-      VolumeSettings occ, through;
-      through.models_occlude = false;
+      VolumeSettings occ, through;  // through: the default
+      occ.models_occlude = true;
       const glm::dvec3 from(2, 1.5, 0.5), dir(0, 0, 1);  // towards the model, the room's z+ wall behind it
       bool b1 = false, b2 = true;
       const glm::dvec3 r1 = volume_ray_radiance(from, dir, faces, grids, rays, occ, &b1);
       const glm::dvec3 r2 = volume_ray_radiance(from, dir, faces, grids, rays, through, &b2);
       check(b1 && r1 == glm::dvec3(0.0) && !b2 && r2 == L,
-            "a ray into a model: a black back-face hit (models_occlude), else through it to the room",
+            "a ray into a model: through it to the room (the default), a black back-face hit with models_occlude",
             "occlude " + std::to_string(r1.x) + ", through " + std::to_string(r2.x));
       float c1[6][3], c2[6][3];
       const double s1 = volume_sample_cube(glm::dvec3(2, 1.5, 2.5), faces, grids, rays, occ, c1);
@@ -365,7 +409,7 @@ int main() {
         for (int c = 0; c < 3; ++c) worst = std::fmax(worst, std::fabs(c2[f][c] - L[c]) / L[c]);
       // Tolerance 1e-6 relative: float rounding of the fitted cube, as in check 2.
       check(s1 == 1.0 && s2 == 0.0 && worst < 1e-6,
-            "a sample inside a model: all back-face hits (models_occlude), else the room's cube L",
+            "a sample inside a model: the room's cube L (the default), all back-face hits with models_occlude",
             "shares " + std::to_string(s1) + " / " + std::to_string(s2) + ", worst " + std::to_string(worst));
     }
   }
