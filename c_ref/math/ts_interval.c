@@ -425,44 +425,6 @@ ts_vec4iv ts_texture2Div(const ts_tex2d *t, ts_vec2iv uv) {
   return ts_v4iv(ch[0], ch[1], ch[2], ch[3]);
 }
 
-/* ---- more comparisons, logic and conversions (the other twin families, issue 14) ---- */
-
-int ts_eqiv(ts_iv a, ts_iv b) {
-  if (a.nan || b.nan || !has_num(a) || !has_num(b)) return TS_IV_EITHER;
-  if (a.lo == a.hi && b.lo == b.hi && a.lo == b.lo) return TS_IV_TRUE;
-  if (a.hi < b.lo || b.hi < a.lo) return TS_IV_FALSE;
-  return TS_IV_EITHER;
-}
-int ts_neiv(ts_iv a, ts_iv b) { return ts_notiv(ts_eqiv(a, b)); }
-int ts_notiv(int c) { return c == TS_IV_EITHER ? c : !c; }
-int ts_oriv(int a, int b) {
-  if (a == TS_IV_TRUE || b == TS_IV_TRUE) return TS_IV_TRUE;
-  return a == TS_IV_FALSE && b == TS_IV_FALSE ? TS_IV_FALSE : TS_IV_EITHER;
-}
-int ts_andiv(int a, int b) {
-  if (a == TS_IV_FALSE || b == TS_IV_FALSE) return TS_IV_FALSE;
-  return a == TS_IV_TRUE && b == TS_IV_TRUE ? TS_IV_TRUE : TS_IV_EITHER;
-}
-ts_vec4iv ts_sel4iv(int c, ts_vec4iv a, ts_vec4iv b) {
-  return ts_v4iv(ts_seliv(c, a.x, b.x), ts_seliv(c, a.y, b.y), ts_seliv(c, a.z, b.z), ts_seliv(c, a.w, b.w));
-}
-int ts_ivtoint(ts_iv x) {
-  if (x.nan || !has_num(x) || !(fabsf(x.lo) < 0x1p30f && fabsf(x.hi) < 0x1p30f)) return TS_IV_UNSURE_INT;
-  const int lo = (int)x.lo, hi = (int)x.hi; /* GLSL int(): truncation */
-  return lo == hi ? lo : TS_IV_UNSURE_INT;
-}
-ts_vec4iv ts_v4ivany(void) { return ts_v4iv(ts_ivany(), ts_ivany(), ts_ivany(), ts_ivany()); }
-
-/* floor: exact, monotonic */
-ts_iv ts_flooriv(ts_iv x) {
-  if (x.nan || !has_num(x)) return ts_ivany();
-  return ts_ivrange(floorf(x.lo), floorf(x.hi));
-}
-
-ts_vec3iv ts_neg3iv(ts_vec3iv v) { return ts_v3iv(ts_negiv(v.x), ts_negiv(v.y), ts_negiv(v.z)); }
-ts_vec3iv ts_max3iv(ts_vec3iv a, ts_vec3iv b) { return ts_v3iv(ts_maxiv(a.x, b.x), ts_maxiv(a.y, b.y), ts_maxiv(a.z, b.z)); }
-ts_vec3iv ts_min3iv(ts_vec3iv a, ts_vec3iv b) { return ts_v3iv(ts_miniv(a.x, b.x), ts_miniv(a.y, b.y), ts_miniv(a.z, b.z)); }
-
 /* ---- cube and 3D lookups (issue 14) ---- */
 
 static ts_vec4iv join4(ts_vec4iv a, ts_vec4iv b) {
