@@ -50,10 +50,11 @@ bool readable_file(const std::string &path, std::string *err) {
   return true;
 }
 
-// OpenColorIO 2.1 takes a file for an ASC CDL collection when the text "<ColorCorrectionCollection"
-// appears anywhere in it (a comment included) and then dereferences the collection a file whose
-// root is another element does not have: SIGSEGV inside Config::getProcessor (found by fuzz_ocio,
-// tests/fuzz/regressions/ocio/). Such a file is refused here, before OpenColorIO reads it.
+// OpenColorIO 2.1 picks its ASC CDL reader by searching the text for "<ColorCorrectionCollection"
+// or "<ColorDecisionList" anywhere in it (a comment included) and then dereferences the
+// collection or list a file whose root is another element does not have: SIGSEGV inside
+// Config::getProcessor (both found by fuzz_ocio, tests/fuzz/regressions/ocio/). A file that
+// mentions either element other than as its root is refused here, before OpenColorIO reads it.
 bool cdl_collection_mention_ok(const std::string &path, std::string *err) {
   FILE *f = std::fopen(path.c_str(), "rb");
   if (!f) {
@@ -66,36 +67,35 @@ bool cdl_collection_mention_ok(const std::string &path, std::string *err) {
   const size_t kMaxScan = size_t(64) << 20;  // LUT files beyond 64 MiB: only their start is scanned
   while (text.size() < kMaxScan && (n = std::fread(buf, 1, sizeof buf, f)) > 0) text.append(buf, n);
   std::fclose(f);
-  const std::string tag = "<ColorCorrectionCollection";
-  const size_t mention = text.find(tag);
-  if (mention == std::string::npos) return true;
   // The root element: the first "<name" after the prolog, comments and declarations.
-  size_t i = 0;
-  while (i < text.size()) {
-    i = text.find('<', i);
-    if (i == std::string::npos) break;
-    if (text.compare(i, 4, "<!--") == 0) {
-      const size_t e = text.find("-->", i + 4);
-      if (e == std::string::npos) break;
-      i = e + 3;
-    } else if (text.compare(i, 2, "<?") == 0 || text.compare(i, 2, "<!") == 0) {
-      const size_t e = text.find('>', i + 2);
-      if (e == std::string::npos) break;
-      i = e + 1;
+  size_t root = 0;
+  while (root < text.size()) {
+    root = text.find('<', root);
+    if (root == std::string::npos) break;
+    if (text.compare(root, 4, "<!--") == 0) {
+      const size_t e = text.find("-->", root + 4);
+      root = e == std::string::npos ? e : e + 3;
+    } else if (text.compare(root, 2, "<?") == 0 || text.compare(root, 2, "<!") == 0) {
+      const size_t e = text.find('>', root + 2);
+      root = e == std::string::npos ? e : e + 1;
     } else {
       break;
     }
   }
-  if (i != std::string::npos && i < text.size() && i == mention) {
-    const char after = mention + tag.size() < text.size() ? text[mention + tag.size()] : '\0';
-    if (after == '>' || after == ' ' || after == '\t' || after == '\n' || after == '\r' || after == '/') return true;
+  for (const std::string tag : {"<ColorCorrectionCollection", "<ColorDecisionList"}) {
+    const size_t mention = text.find(tag);
+    if (mention == std::string::npos) continue;
+    if (root != std::string::npos && root == mention) {
+      const char after = mention + tag.size() < text.size() ? text[mention + tag.size()] : '\0';
+      if (after == '>' || after == ' ' || after == '\t' || after == '\n' || after == '\r' || after == '/') continue;
+    }
+    size_t line = 1;
+    for (size_t k = 0; k < mention; ++k) line += text[k] == '\n';
+    *err = path + ":" + std::to_string(line) + ": mentions " + tag +
+        " but that is not the file's root element (OpenColorIO 2.1 crashes on such a file; refused)";
+    return false;
   }
-  size_t line = 1;
-  for (size_t k = 0; k < mention; ++k) line += text[k] == '\n';
-  *err = path + ":" + std::to_string(line) +
-      ": mentions <ColorCorrectionCollection but that is not the file's root element (OpenColorIO 2.1 "
-      "crashes on such a file; refused)";
-  return false;
+  return true;
 }
 
 bool ends_with(const std::string &s, const char *suffix) {
