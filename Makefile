@@ -32,6 +32,8 @@ LDLIBS   := -lEGL -lglslang-default-resource-limits -lembree3 $(shell pkg-config
 
 SHADER_FILES := $(sort $(wildcard shaders/*.glsl shaders/*.fs shaders/*.vs shaders/*.variants))
 CASE_FILES   := $(sort $(wildcard tests/conform/*.cases))
+# The browser pages tiershade opens in headless Chromium (glue/browser), embedded by their paths.
+PAGE_FILES   := $(sort $(wildcard glue/browser/*.html glue/browser/*.js))
 C_SRC   := $(sort $(shell find c_ref -name '*.c'))
 CXX_SRC := $(sort $(shell find glue -name '*.cpp'))
 C_OBJ   := $(C_SRC:%.c=$(BUILD)/obj/%.o)
@@ -48,7 +50,7 @@ all: $(BUILD)/tiershade $(UNIT_TESTS)
 DEB_PKGS := build-essential pkg-config libosmesa6-dev libegl-dev libegl-mesa0 libgles-dev libgbm-dev \
             libglm-dev libopenexr-dev libopencolorio-dev libtinygltf-dev nlohmann-json3-dev libstb-dev \
             libpng-dev glslang-dev spirv-tools spirv-headers libembree-dev \
-            clang libclang-rt-14-dev
+            clang libclang-rt-14-dev chromium
 deps:
 	@missing=$$(for p in $(DEB_PKGS); do dpkg-query -W -f='$${Status}\n' $$p 2>/dev/null | grep -q 'install ok installed' || echo $$p; done); \
 	if [ -n "$$missing" ]; then \
@@ -65,12 +67,12 @@ $(BUILD)/tools/embed_files: tools/embed_files.c
 # older time stamp than the generated sources still regenerates them.
 $(BUILD)/gen/embedded_files.list: FORCE
 	@mkdir -p $(dir $@)
-	@echo '$(SHADER_FILES) $(CASE_FILES)' | cmp -s - $@ || echo '$(SHADER_FILES) $(CASE_FILES)' > $@
+	@echo '$(SHADER_FILES) $(CASE_FILES) $(PAGE_FILES)' | cmp -s - $@ || echo '$(SHADER_FILES) $(CASE_FILES) $(PAGE_FILES)' > $@
 FORCE:
 
-$(BUILD)/gen/shader_sources.cpp: $(SHADER_FILES) $(CASE_FILES) $(BUILD)/gen/embedded_files.list $(BUILD)/tools/embed_files
+$(BUILD)/gen/shader_sources.cpp: $(SHADER_FILES) $(CASE_FILES) $(PAGE_FILES) $(BUILD)/gen/embedded_files.list $(BUILD)/tools/embed_files
 	@mkdir -p $(dir $@)
-	$(BUILD)/tools/embed_files $@ $(foreach f,$(SHADER_FILES),$(notdir $(f))=$(f)) $(foreach f,$(CASE_FILES),$(f)=$(f))
+	$(BUILD)/tools/embed_files $@ $(foreach f,$(SHADER_FILES),$(notdir $(f))=$(f)) $(foreach f,$(CASE_FILES),$(f)=$(f)) $(foreach f,$(PAGE_FILES),$(f)=$(f))
 
 $(BUILD)/obj/gen/shader_sources.o: $(BUILD)/gen/shader_sources.cpp
 	@mkdir -p $(dir $@)

@@ -7,6 +7,7 @@
 #   3. instruction budgets: every ps20/ps2b variant within its tier's limits,
 #   4. per-pixel conformance: every variant x {OSMesa GL 3.3, EGL GLES 2.0, GLES 3.0, GL 3.3}
 #      x {random, hard} input grids, 0 ULP against the C reference (glue/conform/conform.h),
+#      and in headless Chromium (WebGL 1 and 2) against the GLSL ES error bounds,
 #   5. the demo frames (GL = C on every backend),
 #   6. the same unit, CLI and (smaller) conformance checks under AddressSanitizer + UBSan,
 #   7. the libFuzzer harnesses over their corpora and past crashes, then briefly (tests/fuzz).
@@ -146,6 +147,11 @@ section "== budgets"
 run budget as_checks build/tiershade budget --verbose --known-over tests/bundle/budget_known_over.txt
 section "== conformance (0 ULP, all variants, 4 backend/API pairs, random + hard inputs)"
 run conform as_checks build/tiershade conform --verbose --size 64
+section "== conformance in a browser (headless Chromium, WebGL 1 and 2: every offered variant inside its bounds)"
+for api in webgl1 webgl2; do
+  run "conform_chromium_$api" as_checks build/tiershade conform --backend chromium --api "$api" --verbose --size 16 \
+    --known-outside tests/conform/chromium_known_outside.txt
+done
 section "== demo"
 run demo demo_check build/tiershade
 

@@ -155,6 +155,81 @@ ts_vec4iv eval_bounds(const ShaderFamily &fam, const Variant &v, const FamilyInp
   return find_bounds(fam.name)->eval(v, in, x, y);
 }
 
+void check_bounds_image(const ShaderFamily &fam, const Variant &v, const FamilyInputs &in, const ImageF &img,
+                        BoundsResult *out) {
+  BoundsResult &res = *out;
+  if (img.w != in.w || img.h != in.h || img.rgba.size() != static_cast<size_t>(in.w) * in.h * 4) {
+    res.error = "the image is " + std::to_string(img.w) + "x" + std::to_string(img.h) + ", the grid " +
+                std::to_string(in.w) + "x" + std::to_string(in.h);
+    return;
+  }
+  std::vector<double> widths;
+  long worst_idx = -1;
+  int worst_ch = 0;
+  for (int y = 0; y < in.h; ++y) {
+    for (int x = 0; x < in.w; ++x) {
+      const ts_vec4iv b = eval_bounds(fam, v, in, x, y);
+      const ts_vec4f c = fam.eval_f(v, in, x, y);
+      const ts_iv bi[4] = {b.x, b.y, b.z, b.w};
+      const float cv[4] = {c.x, c.y, c.z, c.w};
+      const float *gp = &img.rgba[(static_cast<size_t>(y) * in.w + x) * 4];
+      for (int ch = 0; ch < 4; ++ch) {
+        ++res.channels;
+        const double wd = ts_ivwidth_ulp(bi[ch]);
+        if (std::isinf(wd)) {
+          ++res.unbounded;
+          if (!in.case_names.empty()) {
+            const std::string &cn = in.case_names[static_cast<size_t>(y) * in.w + x];
+            if (std::find(res.unbounded_cases.begin(), res.unbounded_cases.end(), cn) == res.unbounded_cases.end())
+              res.unbounded_cases.push_back(cn);
+          }
+        } else if (ch < 3) {
+          widths.push_back(wd);  // the widths of the colour channels (alpha is often a constant)
+        }
+        if (!ts_ivcontains(bi[ch], cv[ch])) ++res.c_outside;
+        if (!ts_ivcontains(bi[ch], gp[ch])) {
+          ++res.outside;
+          if (!in.case_names.empty()) {
+            const std::string &cn = in.case_names[static_cast<size_t>(y) * in.w + x];
+            if (std::find(res.outside_cases.begin(), res.outside_cases.end(), cn) == res.outside_cases.end())
+              res.outside_cases.push_back(cn);
+          }
+          const double e = ts_ivexcess_ulp(bi[ch], gp[ch]);
+          if (e > res.worst_excess_ulp || worst_idx < 0) {
+            res.worst_excess_ulp = std::max(res.worst_excess_ulp, e);
+            worst_idx = static_cast<long>(y) * in.w + x;
+            worst_ch = ch;
+          }
+        } else if (worst_idx < 0 && !ts_ivcontains(bi[ch], cv[ch])) {
+          worst_idx = static_cast<long>(y) * in.w + x;  // the C twin outside: show that pixel
+          worst_ch = ch;
+        }
+      }
+      ++res.pixels;
+    }
+  }
+  if (!widths.empty()) {
+    std::nth_element(widths.begin(), widths.begin() + static_cast<long>(widths.size() / 2), widths.end());
+    res.median_width_ulp = widths[widths.size() / 2];
+    res.max_width_ulp = *std::max_element(widths.begin(), widths.end());
+  }
+  if (worst_idx >= 0) {
+    const int x = static_cast<int>(worst_idx % in.w), y = static_cast<int>(worst_idx / in.w);
+    const ts_vec4iv b = eval_bounds(fam, v, in, x, y);
+    const ts_iv bi[4] = {b.x, b.y, b.z, b.w};
+    const ts_vec4f c = fam.eval_f(v, in, x, y);
+    const float cv[4] = {c.x, c.y, c.z, c.w};
+    const float *gp = &img.rgba[static_cast<size_t>(worst_idx) * 4];
+    std::ostringstream o;
+    o << describe_pixel(fam, in, x, y);
+    char line[256];
+    snprintf(line, sizeof line, "  ch%d: GL %.9g  C %.9g  interval %s\n", worst_ch, gp[worst_ch], cv[worst_ch],
+             fmt_iv(bi[worst_ch]).c_str());
+    o << line;
+    res.worst = o.str();
+  }
+}
+
 BoundsResult bounds_variant(const ConformRun &run, const ShaderFamily &fam, const Variant &v,
                             const FamilyInputs &in_given, InputSet set) {
   FamilyInputs in = in_given;
@@ -195,66 +270,7 @@ BoundsResult bounds_variant(const ConformRun &run, const ShaderFamily &fam, cons
     res.error = err;
     return res;
   }
-  std::vector<double> widths;
-  long worst_idx = -1;
-  int worst_ch = 0;
-  for (int y = 0; y < in.h; ++y) {
-    for (int x = 0; x < in.w; ++x) {
-      const ts_vec4iv b = eval_bounds(fam, v, in, x, y);
-      const ts_vec4f c = fam.eval_f(v, in, x, y);
-      const ts_iv bi[4] = {b.x, b.y, b.z, b.w};
-      const float cv[4] = {c.x, c.y, c.z, c.w};
-      const float *gp = &img.rgba[(static_cast<size_t>(y) * in.w + x) * 4];
-      for (int ch = 0; ch < 4; ++ch) {
-        ++res.channels;
-        const double wd = ts_ivwidth_ulp(bi[ch]);
-        if (std::isinf(wd)) {
-          ++res.unbounded;
-          if (!in.case_names.empty()) {
-            const std::string &cn = in.case_names[static_cast<size_t>(y) * in.w + x];
-            if (std::find(res.unbounded_cases.begin(), res.unbounded_cases.end(), cn) == res.unbounded_cases.end())
-              res.unbounded_cases.push_back(cn);
-          }
-        } else if (ch < 3) {
-          widths.push_back(wd);  // the widths of the colour channels (alpha is often a constant)
-        }
-        if (!ts_ivcontains(bi[ch], cv[ch])) ++res.c_outside;
-        if (!ts_ivcontains(bi[ch], gp[ch])) {
-          ++res.outside;
-          const double e = ts_ivexcess_ulp(bi[ch], gp[ch]);
-          if (e > res.worst_excess_ulp || worst_idx < 0) {
-            res.worst_excess_ulp = std::max(res.worst_excess_ulp, e);
-            worst_idx = static_cast<long>(y) * in.w + x;
-            worst_ch = ch;
-          }
-        } else if (worst_idx < 0 && !ts_ivcontains(bi[ch], cv[ch])) {
-          worst_idx = static_cast<long>(y) * in.w + x;  // the C twin outside: show that pixel
-          worst_ch = ch;
-        }
-      }
-      ++res.pixels;
-    }
-  }
-  if (!widths.empty()) {
-    std::nth_element(widths.begin(), widths.begin() + static_cast<long>(widths.size() / 2), widths.end());
-    res.median_width_ulp = widths[widths.size() / 2];
-    res.max_width_ulp = *std::max_element(widths.begin(), widths.end());
-  }
-  if (worst_idx >= 0) {
-    const int x = static_cast<int>(worst_idx % in.w), y = static_cast<int>(worst_idx / in.w);
-    const ts_vec4iv b = eval_bounds(fam, v, in, x, y);
-    const ts_iv bi[4] = {b.x, b.y, b.z, b.w};
-    const ts_vec4f c = fam.eval_f(v, in, x, y);
-    const float cv[4] = {c.x, c.y, c.z, c.w};
-    const float *gp = &img.rgba[static_cast<size_t>(worst_idx) * 4];
-    std::ostringstream o;
-    o << describe_pixel(fam, in, x, y);
-    char line[256];
-    snprintf(line, sizeof line, "  ch%d: GL %.9g  C %.9g  interval %s\n", worst_ch, gp[worst_ch], cv[worst_ch],
-             fmt_iv(bi[worst_ch]).c_str());
-    o << line;
-    res.worst = o.str();
-  }
+  check_bounds_image(fam, v, in, img, &res);
   return res;
 }
 
@@ -274,6 +290,7 @@ std::string bounds_result_json(const BoundsResult &r) {
   o["worst_excess_ulp"] = r.worst_excess_ulp;  // Inf (a NaN outside) is written as null
   o["unbounded"] = r.unbounded;
   o["unbounded_cases"] = r.unbounded_cases;
+  o["outside_cases"] = r.outside_cases;
   o["median_width_ulp"] = r.median_width_ulp;
   o["max_width_ulp"] = r.max_width_ulp;
   o["passed"] = r.passed();

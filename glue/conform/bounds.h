@@ -19,6 +19,7 @@ struct BoundsResult {
   double worst_excess_ulp = 0;  // largest distance of a GL value outside its interval, float32 ULP
   double median_width_ulp = 0, max_width_ulp = 0;  // over the bounded colour channels (RGB)
   std::vector<std::string> unbounded_cases;  // hard set: the cases with an unbounded channel
+  std::vector<std::string> outside_cases;  // hard set: the cases with a channel outside its interval
   std::string error, worst;
   bool passed() const { return error.empty() && outside == 0 && c_outside == 0; }
   double share_inside() const { return channels ? 1.0 - static_cast<double>(outside) / channels : 1.0; }
@@ -33,4 +34,9 @@ ts_vec4iv eval_bounds(const ShaderFamily &fam, const Variant &v, const FamilyInp
 // against its interval (GL and the C float twin).
 BoundsResult bounds_variant(const ConformRun &run, const ShaderFamily &fam, const Variant &v, const FamilyInputs &in,
                             InputSet set);
+// Checks an implementation's output `img` (in.w x in.h, the variant drawn over `in`) against the
+// intervals, channel by channel, and the C float twin too; fills res's counts, widths and worst pixel.
+// bounds_variant draws on llvmpipe and calls it; glue/browser brings the image from a browser.
+void check_bounds_image(const ShaderFamily &fam, const Variant &v, const FamilyInputs &in, const ImageF &img,
+                        BoundsResult *res);
 std::string bounds_result_json(const BoundsResult &r);

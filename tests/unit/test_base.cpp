@@ -2,9 +2,11 @@
 // (base/stats.h) and the host sRGB curve (base/srgb.h) against IEC 61966-2-1 values, the
 // float and double evaluations and the display encoding of an image.
 #include <cmath>
+#include <cstring>
 #include <cstdio>
 #include <vector>
 
+#include "base/base64.h"
 #include "base/image.h"
 #include "base/stats.h"
 #include "base/srgb.h"
@@ -57,9 +59,35 @@ void test_srgb() {
         "srgb.display_image_alpha_kept");
 }
 
+// RFC 4648 section 10's test vectors, a float array round trip (what the WebGL page exchanges), and
+// the malformed inputs refused.
+void test_base64() {
+  const char *plain[] = {"", "f", "fo", "foo", "foob", "fooba", "foobar"};
+  const char *coded[] = {"", "Zg==", "Zm8=", "Zm9v", "Zm9vYg==", "Zm9vYmE=", "Zm9vYmFy"};
+  bool enc = true, dec = true;
+  for (int i = 0; i < 7; ++i) {
+    const std::string p = plain[i];
+    enc = enc && base64_encode(p.data(), p.size()) == coded[i];
+    std::vector<uint8_t> b;
+    dec = dec && base64_decode(coded[i], &b) && std::string(b.begin(), b.end()) == p;
+  }
+  check(enc, "base64.rfc4648_vectors_encode");
+  check(dec, "base64.rfc4648_vectors_decode");
+  std::vector<float> f = {0.0f, -0.0f, 1.5f, 65504.0f, 1e-45f, NAN, INFINITY, 0.113141268f};
+  std::vector<uint8_t> b;
+  const bool ok = base64_decode(base64_encode(f.data(), f.size() * 4), &b) && b.size() == f.size() * 4 &&
+                  std::memcmp(b.data(), f.data(), b.size()) == 0;
+  check(ok, "base64.float_bits_round_trip");
+  const char *bad[] = {"Zg=", "Zg=a", "Z===", "Zm9v!A==", "Zg==Zg==", "Zm\n8="};
+  bool refused = true;
+  for (const char *s : bad) refused = refused && !base64_decode(s, &b);
+  check(refused, "base64.malformed_refused");
+}
+
 }  // namespace
 
 int main() {
+  test_base64();
   test_median();
   test_srgb();
   return finish();
