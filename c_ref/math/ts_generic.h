@@ -27,6 +27,11 @@
  *   TOINT(x)                 -> ((int)(x))           / ts_ivtoint(x): TS_IV_UNSURE_INT unless one int
  *   ANY_IF(c, v)             -> (v)                  / c ? every V4 : v (c is not even compiled in
  *                                                      the float and double instances)
+ *   ALT(a, b)                -> (a)                  / ts_ivjoin(a, b): two forms of one GLSL expression
+ *                                                      that implementations compute either way (mix():
+ *                                                      x (1 - t) + y t, the spec's, or x + (y - x) t); a is
+ *                                                      llvmpipe's, b is not even compiled in the float and
+ *                                                      double instances
  * A value-dependent `if` becomes a SEL of both outcomes (both are evaluated in the interval
  * instance; plain SEL evaluates one, like ?:). Comparisons whose interval straddles the threshold
  * thus take both branches and join them (issue 14).
@@ -86,4 +91,7 @@
 #define TS_ANY_IF_plain(c, v) (v)
 #define TS_ANY_IF_iv(c, v) ((c) ? ts_v4ivany() : (v))
 #define ANY_IF(c, v) TS_CAT(TS_ANY_IF_, TS_OPS)(c, v)
+#define TS_ALT_plain(a, b) (a)
+#define TS_ALT_iv(a, b) ts_ivjoin(a, b)
+#define ALT(a, b) TS_CAT(TS_ALT_, TS_OPS)(a, b)
 #endif
