@@ -10,26 +10,25 @@ static V3 FN(reflect_unnormalized)(V3 N, V3 E) {
  * ST_DEBUG=nir prints), unfused:
  * mix(s, s*s, contrast): nir_opt_algebraic turns flrp(a, a*b, t) into a * flrp(1, b, t), and
  * flrp(1, b, t) is lowered to (1 - t) + b*t: s * ((1 - c) + s*c).
- * The interval instance joins the forms another implementation may compute (ALT, ts_generic.h):
- * the spec's s (1 - c) + (s s) c and s + (s s - s) c (SwiftShader's). */
-static TS_REAL FN(contrast1)(TS_REAL s, TS_REAL c, TS_REAL u) {
-  return ALT(ALT(MUL(ADD(u, MUL(s, c)), s), ADD(MUL(s, u), MUL(MUL(s, s), c))), ADD(s, MUL(SUB(MUL(s, s), s), c)));
-}
-
+ * The interval instance widens it to every form an implementation may compute (ALT_LERP,
+ * ts_generic.h): the spec's s (1 - c) + (s s) c, and s + (s s - s) c. */
 static V3 FN(envmap_contrast)(V3 s, TS_REAL contrast) {
   const TS_REAL u = SUB(K(1.0), contrast);
-  return M(v3)(FN(contrast1)(s.x, contrast, u), FN(contrast1)(s.y, contrast, u), FN(contrast1)(s.z, contrast, u));
+  return M(v3)(ALT_LERP(MUL(ADD(u, MUL(s.x, contrast)), s.x), s.x, MUL(s.x, s.x), contrast),
+               ALT_LERP(MUL(ADD(u, MUL(s.y, contrast)), s.y), s.y, MUL(s.y, s.y), contrast),
+               ALT_LERP(MUL(ADD(u, MUL(s.z, contrast)), s.z), s.z, MUL(s.z, s.z), contrast));
 }
 
 /* mix(vec3(luma), s, saturation): the same a and t in all three lanes, so nir_lower_flrp picks the
- * form whose a*(1 - t) the lanes share: luma*(1 - t) + s*t. The interval instance joins
- * luma + (s - luma) t, SwiftShader's (measured: 16-53 ULP outside without it on a dim channel). */
+ * form whose a*(1 - t) the lanes share: luma*(1 - t) + s*t. The interval instance widens it to
+ * luma + (s - luma) t too, SwiftShader's (measured: 16-53 ULP outside without it, on a channel
+ * much dimmer than the luma). */
 static V3 FN(envmap_saturation)(V3 s, TS_REAL saturation) {
   TS_REAL luma = M(dot3)(s, M(v3)(K(0.299), K(0.587), K(0.114)));
   const TS_REAL a = MUL(luma, SUB(K(1.0), saturation));
-  return M(v3)(ALT(ADD(a, MUL(s.x, saturation)), ADD(luma, MUL(SUB(s.x, luma), saturation))),
-               ALT(ADD(a, MUL(s.y, saturation)), ADD(luma, MUL(SUB(s.y, luma), saturation))),
-               ALT(ADD(a, MUL(s.z, saturation)), ADD(luma, MUL(SUB(s.z, luma), saturation))));
+  return M(v3)(ALT_LERP(ADD(a, MUL(s.x, saturation)), luma, s.x, saturation),
+               ALT_LERP(ADD(a, MUL(s.y, saturation)), luma, s.y, saturation),
+               ALT_LERP(ADD(a, MUL(s.z, saturation)), luma, s.z, saturation));
 }
 
 /* N.E / sqrt((N.N)(E.E)), the product clamped to 1e-30 (ps20; TS_MIN_LENGTH2, not an fp16

@@ -15,11 +15,9 @@ static inline TS_REAL FN(fresnel4)(TS_REAL NdotV) {
 
 /* GLSL mix() as llvmpipe lowers NIR's flrp (lower_flrp32; see common_phong.glsl):
  * a + (b - a) * t in general, (1 - t) + b * t when a is the constant 1. Unfused. The interval
- * instance joins the other form an implementation may compute (ALT, ts_generic.h): the spec's
- * a (1 - t) + b t for the first, 1 + (b - 1) t for the others (measured: SwiftShader computes
- * mix as x + (y - x) t, docs/conformance.md "In a browser"). */
+ * instance widens each to every form an implementation may compute (ALT_LERP, ts_generic.h). */
 static inline TS_REAL FN(lerp1)(TS_REAL a, TS_REAL b, TS_REAL t) {
-  return ALT(ADD(a, MUL(SUB(b, a), t)), ADD(MUL(a, SUB(K(1.0), t)), MUL(b, t)));
+  return ALT_LERP(ADD(a, MUL(SUB(b, a), t)), a, b, t);
 }
 
 static inline V3 FN(lerp3)(V3 a, V3 b, TS_REAL t) {
@@ -27,12 +25,11 @@ static inline V3 FN(lerp3)(V3 a, V3 b, TS_REAL t) {
 }
 
 static inline TS_REAL FN(lerp_from_one)(TS_REAL b, TS_REAL t) {
-  return ALT(ADD(SUB(K(1.0), t), MUL(b, t)), ADD(K(1.0), MUL(SUB(b, K(1.0)), t)));
+  return ALT_LERP(ADD(SUB(K(1.0), t), MUL(b, t)), K(1.0), b, t);
 }
 
 static inline V3 FN(lerp3_from_one)(V3 b, TS_REAL t) {
   const TS_REAL u = SUB(K(1.0), t);
-  return M(v3)(ALT(ADD(u, MUL(b.x, t)), ADD(K(1.0), MUL(SUB(b.x, K(1.0)), t))),
-               ALT(ADD(u, MUL(b.y, t)), ADD(K(1.0), MUL(SUB(b.y, K(1.0)), t))),
-               ALT(ADD(u, MUL(b.z, t)), ADD(K(1.0), MUL(SUB(b.z, K(1.0)), t))));
+  return M(v3)(ALT_LERP(ADD(u, MUL(b.x, t)), K(1.0), b.x, t), ALT_LERP(ADD(u, MUL(b.y, t)), K(1.0), b.y, t),
+               ALT_LERP(ADD(u, MUL(b.z, t)), K(1.0), b.z, t));
 }

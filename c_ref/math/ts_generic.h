@@ -27,11 +27,11 @@
  *   TOINT(x)                 -> ((int)(x))           / ts_ivtoint(x): TS_IV_UNSURE_INT unless one int
  *   ANY_IF(c, v)             -> (v)                  / c ? every V4 : v (c is not even compiled in
  *                                                      the float and double instances)
- *   ALT(a, b)                -> (a)                  / ts_ivjoin(a, b): two forms of one GLSL expression
- *                                                      that implementations compute either way (mix():
- *                                                      x (1 - t) + y t, the spec's, or x + (y - x) t); a is
- *                                                      llvmpipe's, b is not even compiled in the float and
- *                                                      double instances
+ *   ALT_LERP(a, x, y, t)     -> (a)                  / ts_ivlerp_forms(a, x, y, t): a is mix(x, y, t) in
+ *                                                      llvmpipe's form; the interval widens it to every
+ *                                                      form an implementation may compute (x (1 - t) +
+ *                                                      y t, x + (y - x) t); x, y, t are not even
+ *                                                      compiled in the float and double instances
  * A value-dependent `if` becomes a SEL of both outcomes (both are evaluated in the interval
  * instance; plain SEL evaluates one, like ?:). Comparisons whose interval straddles the threshold
  * thus take both branches and join them (issue 14).
@@ -91,7 +91,7 @@
 #define TS_ANY_IF_plain(c, v) (v)
 #define TS_ANY_IF_iv(c, v) ((c) ? ts_v4ivany() : (v))
 #define ANY_IF(c, v) TS_CAT(TS_ANY_IF_, TS_OPS)(c, v)
-#define TS_ALT_plain(a, b) (a)
-#define TS_ALT_iv(a, b) ts_ivjoin(a, b)
-#define ALT(a, b) TS_CAT(TS_ALT_, TS_OPS)(a, b)
+#define TS_ALT_LERP_plain(a, x, y, t) (a)
+#define TS_ALT_LERP_iv(a, x, y, t) ts_ivlerp_forms(a, x, y, t)
+#define ALT_LERP(a, x, y, t) TS_CAT(TS_ALT_LERP_, TS_OPS)(a, x, y, t)
 #endif

@@ -55,6 +55,9 @@ double ts_ivwidth_ulp(ts_iv a);
 double ts_ivexcess_ulp(ts_iv a, float x);
 /* widens a by n float ULPs at each end (n >= 0), FTZ rule applied */
 ts_iv ts_ivwiden(ts_iv a, int n);
+/* a = one form of mix(x, y, t), widened to contain every form an implementation may compute
+ * (ts_interval_logic.c; ts_generic.h ALT_LERP) */
+ts_iv ts_ivlerp_forms(ts_iv a, ts_iv x, ts_iv y, ts_iv t);
 
 /* ---- arithmetic (names follow ts_generic.h: M(add) -> ts_addiv) ---- */
 ts_iv ts_addiv(ts_iv a, ts_iv b);

@@ -3,6 +3,7 @@
  * the same true / false / either outcomes as ts_interval.c's comparisons (ESSL 3.00 section 4.5.1:
  * a NaN operand or an interval that straddles the test gives either). An interval with lo > hi
  * holds no number (only NaN). */
+#include <float.h>
 #include <math.h>
 
 #include "math/ts_interval.h"
@@ -44,3 +45,35 @@ ts_iv ts_flooriv(ts_iv x) {
 ts_vec3iv ts_neg3iv(ts_vec3iv v) { return ts_v3iv(ts_negiv(v.x), ts_negiv(v.y), ts_negiv(v.z)); }
 ts_vec3iv ts_max3iv(ts_vec3iv a, ts_vec3iv b) { return ts_v3iv(ts_maxiv(a.x, b.x), ts_maxiv(a.y, b.y), ts_maxiv(a.z, b.z)); }
 ts_vec3iv ts_min3iv(ts_vec3iv a, ts_vec3iv b) { return ts_v3iv(ts_miniv(a.x, b.x), ts_miniv(a.y, b.y), ts_miniv(a.z, b.z)); }
+
+/* ---- mix() in another implementation's form (ts_generic.h ALT_LERP) ----
+ * GLSL ES 3.00 defines mix(x, y, t) as x (1 - t) + y t and lets its precision be inherited from
+ * that expression, so an implementation may compute it as x (1 - t) + y t, x + (y - x) t or
+ * (1 - t) + y t with x = 1 (llvmpipe lowers NIR's flrp to the second, or the third; SwiftShader was
+ * measured computing the second where llvmpipe computes the first: docs/conformance.md "In a
+ * browser"). Each form rounds at most 3 times, each time by less than one ULP of its result (< 2^-23
+ * of it), and each intermediate is bounded by |x| (1 + |t|) + |y| |t|: every form lies within
+ * 2^-21 (|x| (1 + |t|) + |y| |t|) of the exact value, plus FLT_MIN per operation for a flushed
+ * denormal. `a` (one form, outward-rounded like every interval here) contains the exact value, so
+ * widening it by that much contains every form: the join of the forms without taking the operands
+ * apart again (the x + (y - x) t form evaluated on intervals counts x twice, and on wide operands
+ * came out 18 times wider). */
+static double mag(ts_iv v) {
+  const double l = fabs((double)v.lo), h = fabs((double)v.hi);
+  return l > h ? l : h;
+}
+
+ts_iv ts_ivlerp_forms(ts_iv a, ts_iv x, ts_iv y, ts_iv t) {
+  if (a.nan || x.nan || y.nan || t.nan || a.lo > a.hi || x.lo > x.hi || y.lo > y.hi || t.lo > t.hi) return ts_ivany();
+  const double mt = mag(t);
+  const double e = ldexp(mag(x) * (1.0 + mt) + mag(y) * mt, -21) + 4.0 * FLT_MIN;
+  if (!isfinite(e)) return ts_ivany();
+  const double lo = (double)a.lo - e, hi = (double)a.hi + e;
+  /* outward to float: the next float at or beyond each end */
+  float flo = (float)lo, fhi = (float)hi;
+  if ((double)flo > lo) flo = nextafterf(flo, -INFINITY);
+  if ((double)fhi < hi) fhi = nextafterf(fhi, INFINITY);
+  ts_iv r = ts_ivrange(flo, fhi);
+  r.nan = 0;
+  return r;
+}

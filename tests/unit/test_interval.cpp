@@ -383,6 +383,47 @@ void check_texture3d(Rng &r) {
         "texture3D at a texel centre: the texel, +-2^-7 of its neighbours' differences", fmt(c.x));
 }
 
+// mix() in the other forms (ts_ivlerp_forms, ALT_LERP in ts_generic.h): llvmpipe's x + (y - x) t as
+// the interval, then x (1 - t) + y t and (fused) fmaf(y - x, t, x) computed in float32 (FTZ, as
+// set by ts_math_init) must lie inside; so must the saturation case the browser found (a dim
+// channel next to a bright luma). The widening stays within 8 ULP of the largest magnitude.
+void check_lerp_forms(Rng &r) {
+  long bad = 0, wide = 0, n = 0;
+  std::string first, first_w;
+  for (int i = 0; i < 200000; ++i) {
+    const float scale = std::ldexp(1.0f, static_cast<int>(r.next() % 40) - 20);
+    const float x = r.uniform(-1.f, 1.f) * scale, y = r.uniform(-1.f, 1.f) * scale * (i % 3 ? 1.f : 0.01f);
+    const float t = i % 5 ? r.uniform(-0.5f, 1.5f) : (i % 2 ? 0.f : 1.f);
+    const ts_iv X = ts_ivpoint(x), Y = ts_ivpoint(y), T = ts_ivpoint(t);
+    const ts_iv a = ts_addiv(X, ts_muliv(ts_subiv(Y, X), T));
+    const ts_iv w = ts_ivlerp_forms(a, X, Y, T);
+    volatile float omt = 1.0f - t;
+    volatile float f1 = x * omt;
+    volatile float f2 = y * t;
+    const float spec_form = f1 + f2;
+    const float fused = std::fmaf(y - x, t, x);
+    ++n;
+    if (!ts_ivcontains(w, spec_form) || !ts_ivcontains(w, fused) || !ts_ivcontains(w, x + (y - x) * t)) {
+      if (!bad++) first = "x " + std::to_string(x) + " y " + std::to_string(y) + " t " + std::to_string(t) + " " + fmt(w);
+    }
+    const double big = std::max(std::fabs(x), std::fabs(y)) * (1.0 + std::fabs(t));
+    if ((double)w.hi - (double)w.lo > 16.0 * std::ldexp(big, -23) + 1e-37) {
+      if (!wide++) first_w = fmt(w);
+    }
+  }
+  check(bad == 0, "lerp forms: x (1 - t) + y t, fused and llvmpipe's inside (" + std::to_string(n) + " cases)", first);
+  check(wide == 0, "lerp forms: widening within 8 ULP of the largest term at each end", first_w);
+  // the browser's case: saturation 1 of a green channel 15x dimmer than the luma
+  const float luma = 0.5f, s = 0.5f / 15.0f, sat = 1.0f;
+  const ts_iv a = ts_addiv(ts_muliv(ts_ivpoint(luma), ts_subiv(ts_ivpoint(1.f), ts_ivpoint(sat))),
+                           ts_muliv(ts_ivpoint(s), ts_ivpoint(sat)));
+  const float swiftshader = luma + (s - luma) * sat;
+  check(!ts_ivcontains(a, swiftshader) || swiftshader == s, "lerp forms: the dim-channel case differs between forms",
+        fmt(a));
+  check(ts_ivcontains(ts_ivlerp_forms(a, ts_ivpoint(luma), ts_ivpoint(s), ts_ivpoint(sat)), swiftshader),
+        "lerp forms: luma + (s - luma) t inside the widened saturation", fmt(a));
+}
+
 // the helpers the twins' generic source uses: floor, ==, !=, ||, &&, int(), neg3/max3
 void check_helpers() {
   const ts_iv f = ts_flooriv(ts_ivrange(-1.5f, 2.5f));
@@ -421,6 +462,7 @@ int main() {
   check_cube(r);
   check_texture3d(r);
   check_helpers();
+  check_lerp_forms(r);
   check_checker();
   return unit_check::finish();
 }
