@@ -41,10 +41,12 @@ Exit status 1 when any variant fails. --json prints one object per variant, back
 // Prints one --bounds result (text form).
 static void print_bounds_line(const BoundsResult &res, bool verbose) {
   printf("%s %s %s %s/%s %s: %.4f %% inside (%ld channels, C twin outside %ld), worst excess %.0f ULP, "
-         "median width %.0f ULP, max %.0f ULP, %ld unbounded\n",
+         "median width %.0f ULP, max %.0f ULP, %ld unbounded; from the C double median %.0f max %.0f ULP, %.2f %% "
+         "equal to the C float twin\n",
          res.passed() ? "ok  " : "FAIL", res.shader.c_str(), res.variant.c_str(), res.backend.c_str(), res.api.c_str(),
          res.set.c_str(), 100.0 * res.share_inside(), res.channels, res.c_outside, res.worst_excess_ulp,
-         res.median_width_ulp, res.max_width_ulp, res.unbounded);
+         res.median_width_ulp, res.max_width_ulp, res.unbounded, res.median_double_ulp, res.max_double_ulp,
+         res.compared ? 100.0 * static_cast<double>(res.equal_to_c) / static_cast<double>(res.compared) : 100.0);
   if (!res.error.empty()) printf("  error: %s\n", res.error.c_str());
   if (verbose)
     for (const auto &cn : res.unbounded_cases) printf("  unbounded: %s\n", cn.c_str());

@@ -8,12 +8,14 @@
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <cstring>
 #include <sstream>
 #include <string>
 #include <vector>
 
 #include <nlohmann/json.hpp>
 
+#include "base/image_diff.h"
 #include "families/color_correction_inputs.h"
 #include "families/model_lighting.h"
 #include "families/world_lighting.h"
@@ -163,13 +165,15 @@ void check_bounds_image(const ShaderFamily &fam, const Variant &v, const FamilyI
                 std::to_string(in.w) + "x" + std::to_string(in.h);
     return;
   }
-  std::vector<double> widths;
+  std::vector<double> widths, to_double;
   long worst_idx = -1;
   int worst_ch = 0;
   for (int y = 0; y < in.h; ++y) {
     for (int x = 0; x < in.w; ++x) {
       const ts_vec4iv b = eval_bounds(fam, v, in, x, y);
       const ts_vec4f c = fam.eval_f(v, in, x, y);
+      const ts_vec4d cd = fam.eval_d(v, in, x, y);
+      const double dv[4] = {cd.x, cd.y, cd.z, cd.w};
       const ts_iv bi[4] = {b.x, b.y, b.z, b.w};
       const float cv[4] = {c.x, c.y, c.z, c.w};
       const float *gp = &img.rgba[(static_cast<size_t>(y) * in.w + x) * 4];
@@ -185,6 +189,12 @@ void check_bounds_image(const ShaderFamily &fam, const Variant &v, const FamilyI
           }
         } else if (ch < 3) {
           widths.push_back(wd);  // the widths of the colour channels (alpha is often a constant)
+          const float g = gp[ch], d = static_cast<float>(dv[ch]);
+          if (std::isfinite(g) && std::isfinite(d)) {
+            to_double.push_back(static_cast<double>(ulp_distance(g, d)));
+            ++res.compared;
+            if (std::memcmp(&g, &cv[ch], sizeof g) == 0) ++res.equal_to_c;
+          }
         }
         if (!ts_ivcontains(bi[ch], cv[ch])) ++res.c_outside;
         if (!ts_ivcontains(bi[ch], gp[ch])) {
@@ -212,6 +222,11 @@ void check_bounds_image(const ShaderFamily &fam, const Variant &v, const FamilyI
     std::nth_element(widths.begin(), widths.begin() + static_cast<long>(widths.size() / 2), widths.end());
     res.median_width_ulp = widths[widths.size() / 2];
     res.max_width_ulp = *std::max_element(widths.begin(), widths.end());
+  }
+  if (!to_double.empty()) {
+    std::nth_element(to_double.begin(), to_double.begin() + static_cast<long>(to_double.size() / 2), to_double.end());
+    res.median_double_ulp = to_double[to_double.size() / 2];
+    res.max_double_ulp = *std::max_element(to_double.begin(), to_double.end());
   }
   if (worst_idx >= 0) {
     const int x = static_cast<int>(worst_idx % in.w), y = static_cast<int>(worst_idx / in.w);
@@ -293,6 +308,10 @@ std::string bounds_result_json(const BoundsResult &r) {
   o["outside_cases"] = r.outside_cases;
   o["median_width_ulp"] = r.median_width_ulp;
   o["max_width_ulp"] = r.max_width_ulp;
+  o["median_double_ulp"] = r.median_double_ulp;
+  o["max_double_ulp"] = r.max_double_ulp;
+  o["compared"] = r.compared;
+  o["equal_to_c"] = r.equal_to_c;
   o["passed"] = r.passed();
   if (!r.error.empty()) o["error"] = r.error;
   return o.dump(-1, ' ', false, nlohmann::ordered_json::error_handler_t::replace);

@@ -18,6 +18,11 @@ struct BoundsResult {
   long unbounded = 0;  // channels whose interval admits anything (NaN input, log2 of 0...)
   double worst_excess_ulp = 0;  // largest distance of a GL value outside its interval, float32 ULP
   double median_width_ulp = 0, max_width_ulp = 0;  // over the bounded colour channels (RGB)
+  // The implementation against the references, over the bounded colour channels: its distance in
+  // float32 ULP from the C double twin (rounded to float), and how many channels equal the C float
+  // twin bit for bit (the llvmpipe mirror: on llvmpipe itself, all of them).
+  double median_double_ulp = 0, max_double_ulp = 0;
+  long compared = 0, equal_to_c = 0;
   std::vector<std::string> unbounded_cases;  // hard set: the cases with an unbounded channel
   std::vector<std::string> outside_cases;  // hard set: the cases with a channel outside its interval
   std::string error, worst;
