@@ -28,3 +28,13 @@ struct WebglConformOutcome {
 bool webgl_conform(const std::vector<Variant> &variants, const std::map<std::string, std::vector<FamilyInputs>> &inputs,
                    const std::vector<InputSet> &sets, const WebglConformOptions &opt, WebglConformOutcome *out,
                    std::string *err);
+
+// The conformance page a user opens in their own browser (docs/conformance.md "On your device"):
+// writes DIR/index.html, webgl_conform.js and job.js (atomically: DIR.tmp.<pid>, then renamed; an
+// existing DIR is replaced only if it holds job.js). The job carries every offered variant's program,
+// grids and, per pixel, the intervals; the page draws, checks and shows per variant inside / outside
+// / width with the worst pixel's inputs. *programs_written: the variants in it.
+bool webgl_conform_write_page(const std::vector<Variant> &variants,
+                              const std::map<std::string, std::vector<FamilyInputs>> &inputs,
+                              const std::vector<InputSet> &sets, int webgl, const std::string &dir,
+                              std::vector<std::string> *not_offered, size_t *programs_written, std::string *err);

@@ -10,7 +10,11 @@
 //   E <program> <message>            the program failed to compile or link (message JSON-quoted)
 //   R <program> <draw> <base64>      the draw's w*h*4 floats, little-endian, rows bottom first
 //   X <message>                      the page itself failed (an extension missing, an exception)
+//   V <program> <draw> <channels> <outside> <unbounded>   the page's own check (job.programs[p].bounds:
+//                                    the intervals shipped with the page, `conform --page`)
 //   DONE                             the last line when the page ran to its end
+// With bounds, the page also shows a table (per program and draw: inside, the worst excess, the
+// median width, the worst pixel's inputs): the conformance page a user opens on their own device.
 (function () {
   'use strict';
   const out = [];
@@ -30,6 +34,34 @@
     const u = b64ToBytes(b64);
     return new Float32Array(u.buffer, 0, u.length / 4);
   }
+  const f32 = new Float32Array(1), u32 = new Uint32Array(f32.buffer);
+  function ord(x) {  // float32 order as integers (-0 and +0 both 0), as glue/conform/bounds.cpp
+    f32[0] = x;
+    const u = u32[0];
+    return (u & 0x80000000) ? -(u & 0x7fffffff) : u;
+  }
+  function bytesOf(b64) { return b64ToBytes(b64); }
+  // px against the intervals b (lo, hi: w*h*4 floats; nan: w*h*4 bytes, 1 = NaN admitted)
+  function checkDraw(px, b) {
+    const lo = floatsOf(b.lo), hi = floatsOf(b.hi), nan = bytesOf(b.nan);
+    const r = {channels: px.length, outside: 0, unbounded: 0, worst: null, widths: []};
+    for (let i = 0; i < px.length; ++i) {
+      const v = px[i], l = lo[i], h = hi[i];
+      const unb = nan[i] || !isFinite(l) || !isFinite(h);
+      if (unb) ++r.unbounded;
+      else if (i % 4 !== 3) r.widths.push(ord(h) - ord(l));
+      const inside = isNaN(v) ? !!nan[i] : (l <= v && v <= h);
+      if (!inside) {
+        ++r.outside;
+        const ex = isNaN(v) ? Infinity : (v < l ? ord(l) - ord(v) : ord(v) - ord(h));
+        if (!r.worst || ex > r.worst.excess) r.worst = {i: i, excess: ex, v: v, lo: l, hi: h};
+      }
+    }
+    r.widths.sort(function (a, b) { return a - b; });
+    r.median = r.widths.length ? r.widths[r.widths.length >> 1] : 0;
+    return r;
+  }
+  const report = [];
   function run() {
     const job = window.TS_JOB;
     if (!job) throw new Error('job.js did not define TS_JOB');
@@ -80,7 +112,8 @@
     const grids = job.grids.map(function (g) {
       const rec = upload({sampler: 'ts_record', kind: '2d', w: g.w, h: g.h * g.slots, linear: false, repeat: false,
                           data: g.records});
-      return {w: g.w, h: g.h, slots: g.slots, textures: [rec].concat(g.textures.map(upload))};
+      return {w: g.w, h: g.h, slots: g.slots, textures: [rec].concat(g.textures.map(upload)),
+              records: job.report ? floatsOf(g.records) : null, cases: g.cases || null, slotNames: g.slot_names || null};
     });
     const vbo = gl.createBuffer();
     gl.bindBuffer(gl.ARRAY_BUFFER, vbo);
@@ -171,16 +204,55 @@
           out.push('E ' + pi + ' ' + JSON.stringify('draw ' + di + ': GL error 0x' + e.toString(16)));
           break;
         }
-        out.push('R ' + pi + ' ' + di + ' ' + floatsToB64(px));
+        if (p.bounds) {
+          const c = checkDraw(px, p.bounds[di]);
+          out.push('V ' + pi + ' ' + di + ' ' + c.channels + ' ' + c.outside + ' ' + c.unbounded);
+          report.push({p: p, g: g, c: c, set: p.sets ? p.sets[di] : String(di)});
+        } else {
+          out.push('R ' + pi + ' ' + di + ' ' + floatsToB64(px));
+        }
       }
       gl.deleteProgram(prog);
     }
+  }
+  function esc(t) { return String(t).replace(/&/g, '&amp;').replace(/</g, '&lt;').replace(/>/g, '&gt;'); }
+  function showReport() {
+    const ok = report.filter(function (r) { return r.c.outside === 0; }).length;
+    let h = '<h1>tiershade conformance on this device</h1><p>' + esc(out[0] ? out[0].slice(2) : '') + '</p>' +
+            '<p>' + ok + ' of ' + report.length + ' runs inside their GLSL ES bounds</p>' +
+            '<table border="1" cellspacing="0" cellpadding="3"><tr><th>shader</th><th>variant</th><th>set</th>' +
+            '<th>inside</th><th>outside channels</th><th>worst excess (ULP)</th><th>median width (ULP)</th>' +
+            '<th>unbounded</th><th>worst pixel</th></tr>';
+    for (const r of report) {
+      const c = r.c, g = r.g;
+      let worst = '';
+      if (c.worst) {
+        const px = (c.worst.i >> 2), x = px % g.w, y = (px / g.w) | 0, ch = c.worst.i & 3;
+        worst = '(' + x + ', ' + y + ') ch' + ch + ': ' + c.worst.v + ' not in [' + c.worst.lo + ', ' + c.worst.hi + ']';
+        if (g.cases && g.cases[px]) worst += '<br>hard case: ' + esc(g.cases[px]);
+        if (g.records) {
+          for (let k = 0; k < g.slots; ++k) {
+            const o = ((y + k * g.h) * g.w + x) * 4;
+            worst += '<br>' + esc(g.slotNames ? g.slotNames[k] : 'slot ' + k) + ': ' +
+                     Array.prototype.slice.call(g.records.subarray(o, o + 4)).join(' ');
+          }
+        }
+      }
+      h += '<tr><td>' + esc(r.p.shader) + '</td><td>' + esc(r.p.variant) + '</td><td>' + esc(r.set) + '</td><td>' +
+           (100 * (1 - c.outside / c.channels)).toFixed(4) + ' %</td><td>' + c.outside + '</td><td>' +
+           (c.worst ? c.worst.excess : 0) + '</td><td>' + c.median + '</td><td>' + c.unbounded + '</td><td>' +
+           worst + '</td></tr>';
+    }
+    const div = document.createElement('div');
+    div.innerHTML = h + '</table>';
+    document.body.insertBefore(div, document.body.firstChild);
   }
   try {
     run();
   } catch (e) {
     out.push('X ' + JSON.stringify(String(e.message || e)));
   }
+  if (report.length) showReport();
   out.push('DONE');
   document.getElementById('out').textContent = out.join('\n');
   document.title = 'done';

@@ -33,7 +33,10 @@ an interval instance would be listed as skipped (every family has one).
 --backend chromium runs the grids in headless Chromium (WebGL through ANGLE on SwiftShader, the page
 glue/browser/webgl_conform.html; --api webgl1, webgl2 or all, default all) and checks them against
 the bounds, as --bounds does (the 0-ULP check holds on llvmpipe only); variants the WebGL version
-does not offer are listed, not run (docs/conformance.md "In a browser"). --known-outside FILE
+does not offer are listed, not run (docs/conformance.md "In a browser"). --page DIR writes,
+instead, the conformance page a user opens on their own device (DIR/index.html: the programs, grids
+and per-pixel intervals of the selected variants for --api webgl1 or webgl2; the page checks and
+shows the result). --known-outside FILE
 (chromium only): lines 'SHADER VARIANT HARD CASE NAME' where the browser is known to land outside;
 a run outside on listed cases only passes with a note, a listed case found inside fails (stale).
 Exit status 1 when any variant fails. --json prints one object per variant, backend, api and set.)";
@@ -161,7 +164,7 @@ static int conform_in_browser(const std::vector<Variant> &variants,
 int cmd_conform(int argc, char **argv) {
   Args a("conform", argc, argv, {"--help", "--json", "--verbose", "--list-cases", "--bounds"},
          {"--shader", "--tier", "--variant", "--backend", "--api", "--size", "--set", "--seed", "--cases",
-          "--known-outside"});
+          "--known-outside", "--page"});
   if (a.help(kHelp)) return 0;
   a.no_positional();
   const int size = a.get_int("--size", 64, 1, 1024);
@@ -199,10 +202,12 @@ int cmd_conform(int argc, char **argv) {
     return 0;
   }
   const bool json = a.flag("--json");
-  const bool browser = a.get("--backend", "all") == "chromium";
+  const bool page = a.has("--page");
+  if (page && a.has("--backend")) a.fail("--page writes a page for any browser: it takes no --backend");
+  const bool browser = page || a.get("--backend", "all") == "chromium";
   std::vector<int> webgl_versions;
   if (browser) {
-    const std::string api = a.get("--api", "all");
+    const std::string api = a.get("--api", page ? "webgl2" : "all");
     if (api == "webgl1" || api == "all") webgl_versions.push_back(1);
     if (api == "webgl2" || api == "all") webgl_versions.push_back(2);
     if (webgl_versions.empty()) a.fail("--backend chromium runs WebGL: --api webgl1, webgl2 or all, not '" + api + "'");
@@ -226,6 +231,22 @@ int cmd_conform(int argc, char **argv) {
     }
   }
 
+  if (page) {
+    if (webgl_versions.size() != 1) a.fail("--page is for one WebGL version: --api webgl1 or webgl2");
+    std::vector<std::string> not_offered;
+    size_t written = 0;
+    std::string perr;
+    if (!webgl_conform_write_page(sel.variants, inputs, sets, webgl_versions[0], a.get("--page"), &not_offered, &written,
+                                  &perr)) {
+      fprintf(stderr, "tiershade conform --page %s: %s\n", a.get("--page").c_str(), perr.c_str());
+      return 1;
+    }
+    printf("wrote %s: %zu variant(s) for WebGL %d (%zu not offered by it), %zu input set(s) of %dx%d; open %s/index.html "
+           "in the browser to check\n",
+           a.get("--page").c_str(), written, webgl_versions[0], not_offered.size(), sets.size(), size, size,
+           a.get("--page").c_str());
+    return 0;
+  }
   if (browser) {
     std::map<std::string, std::string> known;
     std::string kerr;

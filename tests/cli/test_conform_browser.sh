@@ -73,4 +73,30 @@ else
   fail missing_browser_named "status $RC: $(head -n 2 "$ERR")"
 fi
 
+# The page a user opens on their own device (conform --page): written atomically, it checks itself
+# in the browser; its own count of channels outside must equal what tiershade counts from the same
+# browser's results (two implementations of the check, JavaScript and C++, agree).
+run conform --page page --shader skybox --size 16
+if [ "$RC" -eq 0 ] && [ -s page/index.html ] && [ -s page/job.js ] && [ -s page/webgl_conform.js ] && ! ls -d page.tmp.* > /dev/null 2>&1; then
+  pass page_written
+else
+  fail page_written "status $RC: $(head -n 2 "$ERR")"
+fi
+BROWSER=${TIERSHADE_CHROMIUM:-$(command -v chromium || command -v chromium-browser)}
+"${TIMEOUT[@]}" "$BROWSER" --headless=new --no-sandbox --use-angle=swiftshader --enable-unsafe-swiftshader --disable-gpu-sandbox \
+  --disable-background-networking --disable-component-update --disable-sync --no-first-run --user-data-dir="$TMP/profile" \
+  --dump-dom "file://$TMP/page/index.html" > page_dom.txt 2> /dev/null
+page_out=$(grep -o '^V [0-9]* [0-9]* [0-9]* [0-9]*' page_dom.txt | awk '{s += $5} END {print NR, s}')
+run conform --backend chromium --api webgl2 --shader skybox --size 16 --json
+cpp_out=$(python3 -c 'import json,sys; r=json.load(open(sys.argv[1])); print(len(r), sum(x["outside"] for x in r))' "$OUT" 2> /dev/null)
+if [ -n "$page_out" ] && [ "$page_out" = "$cpp_out" ] && [ "${page_out#* }" -gt 0 ] && grep -q 'runs inside their GLSL ES bounds' page_dom.txt; then
+  pass "page_checks_itself_as_tiershade_does (runs, channels outside: $page_out)"
+else
+  fail page_checks_itself_as_tiershade_does "page '$page_out', tiershade '$cpp_out'"
+fi
+mkdir -p mine && echo keep > mine/notes.txt
+run conform --page mine --shader skybox --size 4
+if [ "$RC" -ne 0 ] && grep -q 'mine' "$ERR" && [ -s mine/notes.txt ]; then pass page_keeps_a_foreign_directory
+else fail page_keeps_a_foreign_directory "status $RC: $(head -n 2 "$ERR")"; fi
+
 cli_finish
