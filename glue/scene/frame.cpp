@@ -22,6 +22,7 @@
 #include "scene/gl_renderer.h"
 #include "scene/msaa.h"
 #include "scene/prepare.h"
+#include "scene/probe_render.h"
 #include "hdr/srgb_rgba8_codes.h"
 #include "hdr/still_frame_exposure.h"
 #include "base/image_diff.h"
@@ -172,7 +173,10 @@ bool SceneRenderer::init(const Scene &s, const SceneSelection &sel, const SceneR
   }
   auto t0 = Clock::now();
   const Api cube_api = m.cpu ? Api::GL33 : cfg.api;
-  if (!prepare_scene(s, sel, cfg.w, cfg.h, cube_api, s.hdr.tone_map_scale, &m.p, err)) return false;
+  PrepareOptions popt;  // the world probes' cubes: by the frame's renderer (glue/scene/probe_render.h)
+  popt.gl_probe_cubes = !m.cpu;
+  popt.threads = cfg.threads;
+  if (!prepare_scene(s, sel, cfg.w, cfg.h, cube_api, s.hdr.tone_map_scale, &m.p, err, popt)) return false;
   if (msaa) {
     *err = msaa_refusal(m.p, m.float_path, m.cpu, cfg.api, cfg.msaa);
     if (!err->empty()) return false;
@@ -187,14 +191,13 @@ bool SceneRenderer::init(const Scene &s, const SceneSelection &sel, const SceneR
   }
   m.prepare_ms = ms_since(t0);
   if (m.cpu) return true;
-  m.start_warmup();
   m.ctx = GlContext::create(cfg.backend, cfg.api, err);
-  if (!m.ctx) {
-    m.main_next.store(1 << 30);
-    m.join_warmup();
-    return false;
-  }
+  if (!m.ctx) return false;
   m.renderer.reset(new GlRenderer(*m.ctx));
+  // The probes' cubes first: the warm-up context uploads the textures they are rendered into.
+  const std::string gl_name = std::string(backend_name(cfg.backend)) + "/" + api_name(cfg.api);
+  if (!render_probe_cubes_gl(s, &m.p, *m.renderer, cfg.api, gl_name, cfg.check, err)) return false;
+  m.start_warmup();
   m.sgl.reset(new SceneGl(*m.renderer, cfg.api));
   m.sgl->set_msaa(msaa ? cfg.msaa : 0);
   if (!m.sgl->init(m.p, err, &m.compile_ms)) return false;
