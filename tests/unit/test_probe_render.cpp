@@ -6,7 +6,8 @@
 // 2. Only what the scene calls for: a probe that no envmapped material uses is not rendered.
 // 3. The best probe: the nearest with a clear line of sight, an occluded nearer probe skipped; the
 //    material's own probe wins; without rays, the nearest.
-// 4. cube_face_axes agrees with cube_face_direction (the faces' camera is the cube's table).
+// 4. An emitting face shows its emission in the cube.
+// 5. cube_face_axes agrees with cube_face_direction (the faces' camera is the cube's table).
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -254,6 +255,37 @@ void test_face_axes() {
   check(worst < 1e-15, "cube_face_axes: forward + sc right + tc up is GL's face table; right x up = -forward");
 }
 
+
+// Emitters in the cube: the room's ceiling made emissive (radiance 5): the room centre's +Y face
+// looks straight at it, its centre texel shows emission + reflectivity x lightmap (>= 5; the
+// range fog starts at 3 m, the ceiling is 1.5 m above the probe); without the emission, < 5.
+void test_emitter() {
+  auto centre_up = [](Scene s, float e, float *out, std::string *err) {
+    for (SceneMaterial &m : s.materials)
+      if (m.name == "ceiling_plaster") m.emission[0] = m.emission[1] = m.emission[2] = e;
+    SceneSelection sel;
+    PreparedScene ps;
+    if (!prepare(s, &sel, &ps, false, err)) return false;
+    for (const PreparedProbeCube &pc : ps.probe_cubes)
+      if (pc.probe == 0) {
+        const TextureDesc &t = ps.textures.at(pc.texture);
+        const int n = t.w;
+        *out = t.rgba[((2 * static_cast<size_t>(n) + n / 2) * n + n / 2) * 4 + 1];  // +Y, centre, green
+        return true;
+      }
+    *err = "no cube for probe 0";
+    return false;
+  };
+  Scene s;
+  std::string err;
+  float lit = 0, dark = 0;
+  if (!load_room(&s, &err) || !centre_up(s, 5.f, &lit, &err) || !centre_up(s, 0.f, &dark, &err)) {
+    check(false, "the emissive ceiling in the room centre's cube", err);
+    return;
+  }
+  check(lit >= 5.f && dark < 5.f && lit > dark, "an emitting face shows its emission in the cube",
+        "with emission " + std::to_string(lit) + ", without " + std::to_string(dark));
+}
 }  // namespace
 
 int main() {
@@ -261,6 +293,7 @@ int main() {
   test_face_axes();
   test_best_probe();
   test_only_used();
+  test_emitter();
   test_room();
   return unit_check::finish();
 }
