@@ -37,6 +37,10 @@ const int kSize = 16;
 bool load_room(Scene *s, std::string *err) {
   if (!load_scene(kRoom, s, err)) return false;
   for (SceneProbe &p : s->probes) p.size = kSize;
+  // A coarser, quicker bake (what the cubes show is the page, whatever its density): seconds under ASan.
+  s->lightmaps.luxels_per_unit = 2;
+  s->lightmaps.supersample = 1;
+  s->sky.samples = 4;
   return true;
 }
 
@@ -138,8 +142,8 @@ void test_room() {
              "99th percentile %.2g, max %.3g",
              same_cov, n, exact, over, p50, p99, mx);
     printf("  %s: C fallback vs GL: %s\n", name.c_str(), d);
-    // Bound (measured at 16 texels: coverage equal on 1535 and 1534 of 1536; median 2.2e-5 and 2.3e-4,
-    // 99th percentile 0.016 and 0.028, max 0.043 and 0.28 relative): coverage equal on 99% of the
+    // Bound (measured at 16 texels: coverage equal on 1535 and 1534 of 1536; median 1.9e-5 and 2.3e-4,
+    // 99th percentile 0.016 and 0.028, max 0.052 and 0.28 relative): coverage equal on 99% of the
     // texels; where equal, median 1e-3, 99th percentile 0.1 and every texel within 0.5 relative.
     check(same_cov * 100 >= 99 * static_cast<long>(n) && p50 <= 1e-3 && p99 <= 0.1 && mx <= 0.5,
           name + ": C fallback's own cube within the raster bound of GL's", d);
