@@ -35,7 +35,9 @@ static_assert(sizeof(WorldFace) == 200, "WorldFace changed: hash the new field i
 static_assert(sizeof(rnm_light) == 160, "rnm_light changed: hash the new field in bake_input_hash");
 // (BounceSettings::emission_sampled is set by bake_world from area_samples, which is hashed.)
 static_assert(sizeof(BounceSettings) == 40, "BounceSettings changed: hash the new field in bake_input_hash");
-static_assert(sizeof(WorldBakeInput) == 240, "WorldBakeInput changed: hash the new field in bake_input_hash");
+// (WorldBakeInput::trace_cube is not hashed: which probes' cubes are ray traced changes no page texel,
+// and the cubes are not stored here; they are made at load, glue/scene/probe_render.h.)
+static_assert(sizeof(WorldBakeInput) == 264, "WorldBakeInput changed: hash the new field in bake_input_hash");
 
 void vec(ContentHash &h, const ts_vec3d &v) {
   h.value(v.x);
@@ -186,6 +188,8 @@ bool bake_world_dir(const BakeDirUse &use, WorldBakeInput in, const std::vector<
   sum->supersample = in.supersample;
   sum->cube_size = in.cube_size;
   sum->probes = static_cast<int>(in.probes.size());
+  sum->traced_cubes = 0;
+  for (const TextureDesc &c : out->cubes) sum->traced_cubes += c.w > 0;
   sum->lights = static_cast<int>(in.lights.size());
   sum->bounce = in.bounce;
   sum->luxels = out->luxels;

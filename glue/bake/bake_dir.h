@@ -42,6 +42,7 @@ struct BakeSummary {
   int page_w = 0, page_h = 0;
   double luxels_per_unit = 0;
   int supersample = 0, cube_size = 0, probes = 0, lights = 0;
+  int traced_cubes = 0;  // probes whose cube the bake ray traced (the others are rendered in-engine at load)
   BounceSettings bounce;
   std::vector<BakeFace> faces;
   long luxels = 0, direct_rays = 0;

@@ -334,8 +334,14 @@ bool bake_world(const WorldBakeInput &in, WorldBake *out, std::string *err) {
     out->face_probe.push_back(p);
   }
   out->cubes.clear();
+  const auto t_cubes = std::chrono::steady_clock::now();
   const int N = s.cube_size;
   for (const ts_vec3d &pos : s.probes) {
+    const size_t pi = static_cast<size_t>(&pos - s.probes.data());
+    if (pi < s.trace_cube.size() && !s.trace_cube[pi]) {
+      out->cubes.emplace_back();  // rendered in-engine by the scene
+      continue;
+    }
     TextureDesc c = blank_texture("u_envmap", N, N * 6, true, false);
     c.kind = TexKind::Cube;
     c.h = N;
@@ -385,6 +391,7 @@ bool bake_world(const WorldBakeInput &in, WorldBake *out, std::string *err) {
     }
     out->cubes.push_back(c);
   }
+  out->cubes_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t_cubes).count();
   return true;
 }
 

@@ -23,6 +23,9 @@ struct WorldBakeInput {
   double luxels_per_unit = 6;
   int page_w = 512, page_h = 256;
   int cube_size = 64;
+  // Per probe: whether its cube is ray traced here (empty: every probe's). An untraced probe's
+  // cube is left empty (w 0): the scene renders it in-engine (glue/scene/probe_render.h).
+  std::vector<char> trace_cube;
   // A page read from a file (page_w x page_h RGBA, this input's layout), used instead of baking the
   // luxels; the probes still see it (their faces' exitant radiance comes from the page).
   const std::vector<float> *page_in = nullptr;
@@ -61,10 +64,11 @@ struct WorldBake {
   std::vector<float> page;  // page_w x (pages x page_h) RGBA32F, alpha 1: the pages stacked
   int pages = 1;
   std::vector<int> face_probe;
-  std::vector<TextureDesc> cubes;  // "u_envmap", LINEAR (a frame for GLES switches them to NEAREST)
+  std::vector<TextureDesc> cubes;  // per probe: "u_envmap", LINEAR; w 0 when not traced (trace_cube) (a frame for GLES switches them to NEAREST)
   BounceReport bounce;  // what the interreflection passes did
   long luxels = 0;  // luxel grid points of every face (each with 4 values)
   double direct_ms = 0, bounce_ms = 0;  // the direct pass (samples, shadow rays) and the bounces
+  double cubes_ms = 0;  // ray tracing the probes' cubes (trace_cube)
   long direct_rays = 0;  // shadow rays of the direct pass
   int resumed_after = -1;  // the saved pass the bake resumed after (hooks->resume), -1: none
   SkyReport sky;  // the sky pass (rays 0 without a sky)

@@ -103,8 +103,11 @@ std::vector<std::string> bake_report(const BakeSummary &s) {
              s.report.passes, s.bounce.max_bounces, s.bounce.threshold, s.bounce.gather_rays);
     r.push_back(b);
   }
-  snprintf(b, sizeof b, "%d probe cube maps of %d x %d texels rendered from the bake", s.probes, s.cube_size,
-           s.cube_size);
+  // Where the probes' cube maps come from (not stored here: made at load from this page).
+  snprintf(b, sizeof b,
+           "%d world probes: %d cube maps ray traced from the bake (probes[].source \"rays\" or an ambient "
+           "sample's from_probe), %d rendered in-engine from it at load by the frame's renderer",
+           s.probes, s.traced_cubes, s.probes - s.traced_cubes);
   r.push_back(b);
   // Baking everything: every luxel gathers 4 values of m rays in every pass (some fall behind the face
   // and are not traced: this is an upper bound of what the bake would trace).

@@ -94,6 +94,7 @@ const char kHelp[] = R"(usage: tiershade render SCENE.gltf [--tier ps20|ps2b|sm3
                         [--api gles3|gles2|gl33] [--hdr integer|float] [--size WxH] -o OUT
                         [--check] [--compile-all] [--threads N] [--progress] [--quiet]
                         [--dump-draws DIR] [--frames N] [--msaa 2|4|8] [--max-memory MIB]
+                        [--probe-cubes c|gl]
 Renders a glTF 2.0 scene (docs/scenes.md) with only the shader variants it needs and writes
 OUT.exr (the lit pass, RGBA32F as the shaders wrote it) and OUT.png (the final frame).
 Defaults: sm3, EGL surfaceless GLES 3.0 (OSMesa: GL 3.3), the scene's HDR path, 1280x720.
@@ -112,6 +113,9 @@ the C fallback rasterises the same pattern (2 and 8: the standard patterns). The
 GLES 2.0 refuse MSAA and say why (docs/rendering.md, "MSAA"). --check then compares GL's
 interior pixels with the C twin bit for bit (on GL's multisample G-buffer) and reports the edge
 pixels against the C fallback's MSAA frame.
+--probe-cubes gl: a GL frame renders the world probes' cube maps on GL (the float target read
+back; --check compares each face with the C twin on GL's G-buffer); c (default): the C fallback
+renders them while preparing, the same cubes on every backend (docs/world_lighting.md).
 
 --max-memory MIB: what input files and the render may take (default 1024): an image, accessor,
 probe set, lightmap page or --size that needs more is refused before it is read, naming the
@@ -120,7 +124,7 @@ limit (docs/reliability.md). --size is at most 8192x8192.)";
 int cmd_render(int argc, char **argv) {
   Args a("render", argc, argv, {"--help", "--check", "--quiet", "--progress", "--compile-all", "--report-memory"},
          {"--tier", "--backend", "--api", "--hdr", "--size", "-o", "--threads", "--exposure-frames", "--dump-draws",
-          "--frames", "--max-memory", "--msaa"});
+          "--frames", "--max-memory", "--msaa", "--probe-cubes"});
   if (a.help(kHelp)) return 0;
   if (a.positional().size() != 1) a.fail("expected one scene file (tiershade render SCENE.gltf -o OUT)");
   if (!a.has("-o")) a.fail("-o OUT is required");
@@ -146,6 +150,12 @@ int cmd_render(int argc, char **argv) {
   cfg.threads = a.get_int("--threads", 0, 0, 256);
   cfg.exposure_frames = a.get_int("--exposure-frames", cfg.exposure_frames, 1, 10000);
   cfg.check = a.flag("--check");
+  if (a.has("--probe-cubes")) {
+    const std::string pc = a.get("--probe-cubes");
+    if (pc != "c" && pc != "gl") a.fail("--probe-cubes " + pc + ": expected c or gl");
+    if (pc == "gl" && cfg.backend == Backend::CPU) a.fail("--probe-cubes gl renders the cubes on GL: it needs a GL backend");
+    cfg.gl_probe_cubes = pc == "gl";
+  }
   const int warm_frames = a.get_int("--frames", 0, 0, 10000);
   const int msaa_arg = a.has("--msaa") ? a.get_int("--msaa", 0, 1, 8) : -1;
   if (msaa_arg > 1 && msaa_arg != 2 && msaa_arg != 4 && msaa_arg != 8)
@@ -380,7 +390,10 @@ int cmd_render(int argc, char **argv) {
     printf(
         "check: HDR path and colour correction on GL vs their C twins on GL's lit frame: %ld of %ld channels differ\n",
         res.check_post_mismatched, res.check_post_channels);
-    if (res.check_mismatched != 0 || res.check_post_mismatched != 0) return 1;
+    if (res.check_cube_mismatched >= 0)
+      printf("check: probe cube maps on GL vs the C twin on GL's G-buffer of each face: %ld of %ld texels differ\n",
+             res.check_cube_mismatched, res.check_cube_texels);
+    if (res.check_mismatched != 0 || res.check_post_mismatched != 0 || res.check_cube_mismatched > 0) return 1;
   }
   return 0;
 }

@@ -1,6 +1,7 @@
 // tiershade scene: a scene frame end to end (glue/scene/frame.h).
 #include "scene/frame.h"
 
+#include <algorithm>
 #include <atomic>
 #include <chrono>
 #include <cstring>
@@ -22,6 +23,7 @@
 #include "scene/gl_renderer.h"
 #include "scene/msaa.h"
 #include "scene/prepare.h"
+#include "scene/probe_render.h"
 #include "hdr/srgb_rgba8_codes.h"
 #include "hdr/still_frame_exposure.h"
 #include "base/image_diff.h"
@@ -172,7 +174,10 @@ bool SceneRenderer::init(const Scene &s, const SceneSelection &sel, const SceneR
   }
   auto t0 = Clock::now();
   const Api cube_api = m.cpu ? Api::GL33 : cfg.api;
-  if (!prepare_scene(s, sel, cfg.w, cfg.h, cube_api, s.hdr.tone_map_scale, &m.p, err)) return false;
+  PrepareOptions popt;  // the world probes' cubes: by the frame's renderer (glue/scene/probe_render.h)
+  popt.gl_probe_cubes = !m.cpu && cfg.gl_probe_cubes;
+  popt.threads = cfg.threads;
+  if (!prepare_scene(s, sel, cfg.w, cfg.h, cube_api, s.hdr.tone_map_scale, &m.p, err, popt)) return false;
   if (msaa) {
     *err = msaa_refusal(m.p, m.float_path, m.cpu, cfg.api, cfg.msaa);
     if (!err->empty()) return false;
@@ -187,14 +192,14 @@ bool SceneRenderer::init(const Scene &s, const SceneSelection &sel, const SceneR
   }
   m.prepare_ms = ms_since(t0);
   if (m.cpu) return true;
-  m.start_warmup();
   m.ctx = GlContext::create(cfg.backend, cfg.api, err);
-  if (!m.ctx) {
-    m.main_next.store(1 << 30);
-    m.join_warmup();
-    return false;
-  }
+  if (!m.ctx) return false;
   m.renderer.reset(new GlRenderer(*m.ctx));
+  // The probes' cubes first: the warm-up context uploads the textures they are rendered into.
+  const std::string gl_name = std::string(backend_name(cfg.backend)) + "/" + api_name(cfg.api);
+  if (popt.gl_probe_cubes && !render_probe_cubes_gl(s, &m.p, *m.renderer, cfg.api, gl_name, cfg.check, err))
+    return false;
+  m.start_warmup();
   m.sgl.reset(new SceneGl(*m.renderer, cfg.api));
   m.sgl->set_msaa(msaa ? cfg.msaa : 0);
   if (!m.sgl->init(m.p, err, &m.compile_ms)) return false;
@@ -404,6 +409,11 @@ bool SceneRenderer::frame(SceneRenderResult *out, std::string *err) {
   res.w = cfg.w;
   res.h = cfg.h;
   res.notes = p.notes;
+  for (const PreparedProbeCube &pc : p.probe_cubes) {  // --check of the cubes rendered on GL
+    if (pc.check_mismatched < 0) continue;
+    res.check_cube_mismatched = std::max(0L, res.check_cube_mismatched) + pc.check_mismatched;
+    res.check_cube_texels += pc.check_texels;
+  }
   res.prepare_ms = m.prepare_ms;
   res.compile_ms = m.compile_ms;
   const bool cpu = m.cpu;

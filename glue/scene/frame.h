@@ -29,6 +29,9 @@ struct SceneRenderConfig {
   // MSAA samples per pixel (0 or 1: none; 2, 4, 8: the integer path's multisampled RGBA8
   // target, glue/scene/msaa.h).
   int msaa = 0;
+  // GL frames: the world probes' cube maps rendered on GL (glue/scene/probe_render.h); false: by
+  // the C fallback while preparing, as on every backend (the same cubes for GL and C frames).
+  bool gl_probe_cubes = false;
   int exposure_frames = 300;  // auto exposure: frames (at 30 fps) of the running histogram on the still frame
   // Progress of long stages: (stage, fraction done).
   std::function<void(const char *, double)> progress;
@@ -54,6 +57,8 @@ struct SceneRenderResult {
   // --check: display channels where GL's HDR path and colour correction differ from their C twins
   // run on GL's lit frame (-1: not run).
   long check_post_mismatched = -1, check_post_channels = 0;
+  // --check with gl_probe_cubes: cube texels where GL differs from the C twin on GL's G-buffer (-1: not run).
+  long check_cube_mismatched = -1, check_cube_texels = 0;
   // MSAA: the samples per pixel the frame was rendered with (0: none); --check: interior
   // pixels against the C twin on GL's G-buffer, edge pixels against the C fallback's MSAA frame.
   int msaa_samples = 0;

@@ -212,7 +212,9 @@ void SceneGl::begin_pass() {
   const GlFns &g = gl();
   g.BindFramebuffer(GL_FRAMEBUFFER, gbm_pass_ ? gbm_fbo_ : ms_pass_ ? ms_fbo_ : fbo_);
   g.BindVertexArray(vao_);
-  g.Viewport(0, 0, tw_, th_);
+  // The frame's size within the target (a probe's cube face of a smaller edge than the largest one's
+  // target, glue/scene/probe_render.h); warm-up contexts draw a larger frame squeezed into their small one.
+  g.Viewport(0, 0, p_->w < tw_ ? p_->w : tw_, p_->h < th_ ? p_->h : th_);
   g.Disable(GL_BLEND);
   g.Disable(GL_CULL_FACE);
   g.Enable(GL_DEPTH_TEST);

@@ -98,7 +98,7 @@ bool read_probes(const tinygltf::Value &v, const std::string &place, const std::
   for (size_t i = 0; i < v.ArrayLen(); ++i) {
     const std::string pp = place + "[" + std::to_string(i) + "]";
     const tinygltf::Value &o = v.Get(static_cast<int>(i));
-    if (!check_keys(o, pp, {"name", "position", "image", "scale", "size"}, e)) return false;
+    if (!check_keys(o, pp, {"name", "position", "image", "scale", "size", "source"}, e)) return false;
     SceneProbe p;
     p.name = "probes[" + std::to_string(i) + "]";
     if (o.Has("name") && !read_string(o.Get("name"), pp + ".name", &p.name, e)) return false;
@@ -110,6 +110,13 @@ bool read_probes(const tinygltf::Value &v, const std::string &place, const std::
       p.scale = static_cast<float>(d);
     }
     if (o.Has("size") && !read_int(o.Get("size"), pp + ".size", 4, 512, &p.size, e)) return false;
+    if (o.Has("source")) {  // a world probe's cube: rendered in-engine or ray traced (docs/scenes.md)
+      std::string src;
+      if (!read_string(o.Get("source"), pp + ".source", &src, e)) return false;
+      if (src != "render" && src != "rays") return e.fail(pp + ".source", "expected \"render\" or \"rays\", got \"" + src + "\"");
+      if (o.Has("image")) return e.fail(pp + ".source", "a probe with an image has no world source");
+      p.traced = src == "rays";
+    }
     if (o.Has("image")) {
       std::string rel, msg;
       if (!read_string(o.Get("image"), pp + ".image", &rel, e)) return false;

@@ -9,6 +9,7 @@
 #include <cmath>
 #include <cstring>
 #include <map>
+#include <memory>
 
 #include <glm/glm.hpp>
 #include <glm/gtc/matrix_transform.hpp>
@@ -17,6 +18,8 @@
 #include "bake/ray_scene.h"
 #include "bake/world_bake.h"
 #include "scene/bake_inputs.h"
+#include "scene/probe_render.h"
+#include "scene/scene_probes.h"
 #include "scene/scene_volume.h"
 #include "scene/textures.h"
 #include "twins/model_lighting.h"
@@ -114,54 +117,6 @@ std::string key_solid(const char *sampler, float r, float g, float b, float a) {
       "," + std::to_string(a);
 }
 
-// Probe cube maps and irradiance (ambient) cubes, made on first use.
-struct Probes {
-  const Scene &s;
-  int size_override;
-  std::map<int, TextureDesc> cubes;
-  std::map<int, std::array<std::array<float, 3>, 6>> ambient;
-  std::vector<TextureDesc> world_cubes;  // from the bake, index = probe
-  bool have_world = false;
-  bool cube(int p, TextureDesc *out, float amb[6][3], std::string *err) {
-    if (!cubes.count(p)) {
-      const SceneProbe &pr = s.probes.at(p);
-      TextureDesc c;
-      float a[6][3] = {};
-      if (pr.image >= 0) {
-        if (!cube_from_probe(s.images.at(pr.image).path, "u_envmap", pr.size, &c, a, err)) {
-          *err = s.path + ": probes[" + std::to_string(p) + "]: " + *err;
-          return false;
-        }
-      } else if (have_world && p < static_cast<int>(world_cubes.size())) {
-        c = world_cubes[p];
-        // The world cube's irradiance: the mean of each face (a coarse ambient for models).
-        for (int f = 0; f < 6; ++f) {
-          double m[3] = {0, 0, 0};
-          const int n = c.w * c.w;
-          for (int i = 0; i < n; ++i)
-            for (int k = 0; k < 3; ++k) m[k] += c.rgba[(static_cast<size_t>(f) * n + i) * 4 + k];
-          for (int k = 0; k < 3; ++k) a[f][k] = static_cast<float>(m[k] / n);
-        }
-      } else {
-        *err = s.path + ": probes[" + std::to_string(p) + "] (\"" + pr.name +
-            "\") has no image and the scene has no world geometry to render it from";
-        return false;
-      }
-      for (float &v : c.rgba) v *= pr.scale;
-      std::array<std::array<float, 3>, 6> aa;
-      for (int f = 0; f < 6; ++f)
-        for (int k = 0; k < 3; ++k) aa[f][k] = a[f][k] * pr.scale;
-      cubes[p] = c;
-      ambient[p] = aa;
-    }
-    if (out) *out = cubes[p];
-    if (amb)
-      for (int f = 0; f < 6; ++f)
-        for (int k = 0; k < 3; ++k) amb[f][k] = ambient[p][f][k];
-    return true;
-  }
-};
-
 // The mean linear colour of a texture's image (sRGB-decoded: base colour and emissive textures are
 // sRGB); 1 without an image.
 glm::dvec3 mean_linear(const Scene &s, const SceneTextureRef &t) {
@@ -191,10 +146,6 @@ int nearest_of(const std::vector<T> &items, const double c[3]) {
   return best;
 }
 
-int nearest_probe(const Scene &s, const double c[3], int explicit_index) {
-  return explicit_index >= 0 ? explicit_index : nearest_of(s.probes, c);
-}
-
 void primitive_center(const ScenePrimitive &p, double c[3]) {
   double lo[3] = {1e300, 1e300, 1e300}, hi[3] = {-1e300, -1e300, -1e300};
   for (size_t i = 0; i + 2 < p.position.size(); i += 3)
@@ -220,7 +171,7 @@ void copy_geometry(const ScenePrimitive &p, PreparedDraw *d) {
   d->indices = p.indices;
 }
 
-bool model_draw(const Scene &s, const PreparedScene &ps, const SceneDrawChoice &c, Tier tier, Probes *probes, Api api,
+bool model_draw(const Scene &s, const PreparedScene &ps, const SceneDrawChoice &c, Tier tier, SceneProbeSet *probes, Api api,
                 TexturePool *pool, PreparedDraw *d, std::string *err) {
   const ScenePrimitive &p = s.primitives[c.primitive];
   const SceneMaterial &m = s.materials[p.material];
@@ -329,7 +280,7 @@ bool model_draw(const Scene &s, const PreparedScene &ps, const SceneDrawChoice &
     }));
   int pi = -1;
   if (v.value("ENVMAP") && !s.probes.empty()) {
-    pi = nearest_probe(s, center, m.probe);
+    pi = m.probe >= 0 ? m.probe : nearest_of(s.probes, center);  // a model moves: the nearest probe
     if (!probes->cube(pi, nullptr, nullptr, err)) return false;
   }
   d->tex.push_back(pool->get("u_envmap|" + std::to_string(pi), [&] {
@@ -359,7 +310,7 @@ void set_scene_tone_map_scale(PreparedScene *p, float scale) {
 }
 
 bool prepare_scene(const Scene &s, const SceneSelection &sel, int w, int h, Api api, float tone_map_scale,
-                   PreparedScene *out, std::string *err) {
+                   PreparedScene *out, std::string *err, const PrepareOptions &opt) {
   PreparedScene ps;
   ps.w = w;
   ps.h = h;
@@ -383,7 +334,7 @@ bool prepare_scene(const Scene &s, const SceneSelection &sel, int w, int h, Api 
   }
   for (int k = 0; k < 3; ++k) ps.eye[k] = static_cast<float>(cam.eye[k]);
   const Tier tier = sel.variants.empty() ? Tier::SM3 : sel.variants[0].tier;
-  Probes probes{s, 0, {}, {}, {}, false};
+  SceneProbeSet probes(s);
   TexturePool pool{&ps.textures, {}};
 
   // World: faces from the World primitives, baked only if some draw is a world draw.
@@ -425,6 +376,7 @@ bool prepare_scene(const Scene &s, const SceneSelection &sel, int w, int h, Api 
     face_frame.push_back({frame_min[0], frame_min[1], 0, 0});
   }
   WorldBake bake;
+  std::unique_ptr<RayScene> rays;  // every triangle of the scene: the bake's visibility, the probes' sight
   if (!ws.faces.empty()) {
     const auto t0 = Clock::now();
     bake_lights_of(s, &ws);  // the lights and the suns' spread (glue/scene/bake_inputs.h)
@@ -436,10 +388,11 @@ bool prepare_scene(const Scene &s, const SceneSelection &sel, int w, int h, Api 
     for (size_t i = 0; i < s.probes.size(); ++i) {
       if (s.probes[i].image >= 0) continue;
       world_probe_index[i] = static_cast<int>(ws.probes.size());
+      ws.trace_cube.push_back(probe_traced(s, static_cast<int>(i)));  // else rendered (scene/probe_render.h)
       ws.probes.push_back(ts_v3d(s.probes[i].position[0], s.probes[i].position[1], s.probes[i].position[2]));
       cube_size = std::max(cube_size, s.probes[i].size);
     }
-    if (ws.probes.empty()) ws.probes.push_back(ts_v3d(0, 0, 0));  // bake_world picks a probe per face
+    if (ws.probes.empty()) ws.probes.push_back(ts_v3d(0, 0, 0)), ws.trace_cube.push_back(0);  // bake_world picks one per face
     for (WorldFace &f : ws.faces)
       if (f.probe >= 0) f.probe = world_probe_index.at(f.probe) >= 0 ? world_probe_index[f.probe] : -1;
     ws.luxels_per_unit = s.lightmaps.luxels_per_unit;
@@ -453,9 +406,9 @@ bool prepare_scene(const Scene &s, const SceneSelection &sel, int w, int h, Api 
     const bool from_file = !s.lightmaps.image_rgba.empty();
     if (from_file) ws.page_in = &s.lightmaps.image_rgba;
     // Visibility: one BVH of every triangle of the scene, world and model (glue/bake/ray_scene.h).
-    RayScene rays;
-    if (!build_scene_rays(s, face_of_draw, &rays, err)) return false;
-    ws.rays = &rays;
+    rays.reset(new RayScene);
+    if (!build_scene_rays(s, face_of_draw, rays.get(), err)) return false;
+    ws.rays = rays.get();
     const BakeDirUse use{s.lightmaps.bake, s.lightmaps.bake_checkpoint, s.lightmaps.bake_progress};
     if (!bake_world_dir(use, ws, face_where, &bake, &ps.bake_summary, err)) {
       *err = s.path + (s.lightmaps.image.empty() ? std::string(": lightmap bake: ")
@@ -471,9 +424,9 @@ bool prepare_scene(const Scene &s, const SceneSelection &sel, int w, int h, Api 
     ps.lightmap_h = ws.page_h * bake.pages;  // the pages stacked (c_ref/offline/lightmap_page.h)
     ps.lightmap_pages = bake.pages;
     probes.have_world = true;
-    probes.world_cubes.assign(s.probes.size(), TextureDesc());
+    probes.traced.assign(s.probes.size(), TextureDesc());
     for (size_t i = 0; i < s.probes.size(); ++i)
-      if (world_probe_index[i] >= 0) probes.world_cubes[i] = bake.cubes.at(world_probe_index[i]);
+      if (world_probe_index[i] >= 0) probes.traced[i] = bake.cubes.at(world_probe_index[i]);
     ps.lightmap_texels = ws.page_w * ws.page_h;
     ps.bake_ms = std::chrono::duration<double, std::milli>(Clock::now() - t0).count();
     ps.bake_luxels = bake.luxels;
@@ -483,8 +436,8 @@ bool prepare_scene(const Scene &s, const SceneSelection &sel, int w, int h, Api 
     ps.bake_bounce_ms = bake.bounce_ms;
     ps.bake_direct_rays = bake.direct_rays;
     ps.bake_sky_rays = bake.sky.rays, ps.bake_area_rays = bake.area.rays;
-    ps.bake_sky_ms = bake.sky.ms, ps.bake_area_ms = bake.area.ms;
-    if (!bake_scene_volume(s, sel, ws.faces, bake, ws.page_w, rays, &ps.volume, err)) return false;
+    ps.bake_sky_ms = bake.sky.ms, ps.bake_area_ms = bake.area.ms, ps.bake_cubes_ms = bake.cubes_ms;
+    if (!bake_scene_volume(s, sel, ws.faces, bake, ws.page_w, *rays, &ps.volume, err)) return false;
   }
   for (size_t di = 0; di < sel.draws.size(); ++di) {
     const SceneDrawChoice &c = sel.draws[di];
@@ -505,6 +458,10 @@ bool prepare_scene(const Scene &s, const SceneSelection &sel, int w, int h, Api 
     const int fi = face_of_draw[di];
     if (fi < 0) continue;
     const WorldFace &f = ws.faces[fi];
+    d.face = fi;
+    const double rf[3] = {f.reflectivity.x, f.reflectivity.y, f.reflectivity.z};  // the probe cubes draw
+    const double em[3] = {f.emission.x, f.emission.y, f.emission.z};  // emitters with them (probe_render.h)
+    for (int k = 0; k < 3; ++k) d.reflectivity[k] = static_cast<float>(rf[k]), d.emission[k] = static_cast<float>(em[k]);
     copy_geometry(p, &d);
     // Per-vertex lightmap coordinates: the face's (a, b) in [0, 1] placed on the page.
     const size_t n = p.position.size() / 3;
@@ -579,7 +536,8 @@ bool prepare_scene(const Scene &s, const SceneSelection &sel, int w, int h, Api 
     int pi = -1;
     if (v.value("ENVMAP") && !s.probes.empty()) {
       const glm::dvec3 mid = d3(f.origin) + t * (f.su / 2) + b * (f.sv / 2);
-      pi = nearest_probe(s, glm::value_ptr(mid), m.probe);
+      const double fn[3] = {f.normal.x, f.normal.y, f.normal.z};
+      pi = best_probe(s, rays.get(), glm::value_ptr(mid), fn, m.probe);  // the nearest in sight
       if (!probes.cube(pi, nullptr, nullptr, err)) return false;
     }
     d.tex.push_back(pool.get("u_envmap|" + std::to_string(pi), [&] {
@@ -593,7 +551,17 @@ bool prepare_scene(const Scene &s, const SceneSelection &sel, int w, int h, Api 
     ps.draws.push_back(std::move(d));
   }
   ps.probes_made = static_cast<int>(probes.cubes.size());
+  for (const auto &c : probes.cubes) {  // where each cube comes from; the pending ones rendered below
+    const std::string key = "u_envmap|" + std::to_string(c.first);
+    if (!pool.index.count(key)) continue;  // only an ambient sample's
+    PreparedProbeCube pc;
+    pc.probe = c.first;
+    pc.texture = pool.index.at(key);
+    pc.source = s.probes[c.first].image >= 0 ? "image" : probes.pending.count(c.first) ? "pending" : "rays";
+    ps.probe_cubes.push_back(pc);
+  }
   if (!prepare_skybox(s, sel.sky, api, &ps, err)) return false;
+  if (!opt.gl_probe_cubes && !render_probe_cubes_cpu(s, &ps, opt.threads, err)) return false;
   *out = std::move(ps);
   return true;
 }

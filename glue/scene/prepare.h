@@ -32,6 +32,20 @@ struct PreparedDraw {
   bool display_encoded = false;  // output already sRGB-encoded (model OUTPUT_MODE 2)
   float ambient[6][3] = {};  // model: the draw's ambient cube before lights were folded
       // into it (the reference shades every light locally)
+  int face = -1;  // world: its face (index into PreparedScene::lightmap_places)
+  float reflectivity[3] = {0, 0, 0}, emission[3] = {0, 0, 0};  // world: its face's, as the bake took them
+};
+
+// A probe's cube map in PreparedScene::textures and where it came from: "image" (a lat-long probe),
+// "rays" (the baker's ray-traced cube, probes[].source "rays" or an ambient sample's from_probe),
+// "pending" (a world probe to render in-engine: glue/scene/probe_render.h), then "C fallback" or
+// "GL <backend>/<api>" once rendered.
+struct PreparedProbeCube {
+  int probe = -1, texture = -1;
+  std::string source;
+  double ms = 0;  // rendering it (six faces)
+  // GL with check: the C twin on GL's G-buffer of each face against GL's texels (-1: not run).
+  long check_texels = 0, check_mismatched = -1;
 };
 
 struct PreparedScene {
@@ -62,16 +76,25 @@ struct PreparedScene {
   // area_lights.h).
   long bake_direct_rays = 0, bake_sky_rays = 0, bake_area_rays = 0;
   double bake_sky_ms = 0, bake_area_ms = 0;
+  double bake_cubes_ms = 0;  // the baker's ray-traced probe cubes (probes[].source "rays")
   IrradianceVolume volume;  // the models' irradiance volume (docs/irradiance_volume.md); no samples: none
   std::vector<std::string> notes;
   PreparedSky sky;  // the skybox (glue/scene/skybox_pass.h); absent without a sky
+  std::vector<PreparedProbeCube> probe_cubes;  // the probes the draws sample, each once
+};
+
+struct PrepareOptions {
+  // The world probes' cubes are rendered by the caller on GL after preparing (render_probe_cubes_gl,
+  // glue/scene/probe_render.h); false: by the C fallback, here, on `threads` workers (0: all cores).
+  bool gl_probe_cubes = false;
+  int threads = 0;
 };
 
 // api: cube maps are NEAREST on GLES (Mesa forces seamless filtering there; docs/conformance.md),
 // so that the C twin samples what GL samples. tone_map_scale: the scale the integer path's
 // shaders apply (ignored by the float path, whose shaders write scale 1).
 bool prepare_scene(const Scene &s, const SceneSelection &sel, int w, int h, Api api, float tone_map_scale,
-                   PreparedScene *out, std::string *err);
+                   PreparedScene *out, std::string *err, const PrepareOptions &opt = PrepareOptions());
 
 // Sets the tone-map scale of every draw's shared slots (auto exposure changes it per frame).
 void set_scene_tone_map_scale(PreparedScene *p, float scale);

@@ -122,6 +122,9 @@ struct SceneProbe {
   int image = -1;  // index into images (.hdr/.exr equirect), -1 = from the world
   float scale = 1.f;  // radiance multiplier
   int size = 64;  // cube face edge
+  // World probes (no image): "source": "render" (default: the frame's renderer draws the baked world
+  // into the cube, glue/scene/probe_render.h) or "rays" (traced: true, the baker's rays per texel).
+  bool traced = false;
 };
 
 // An ambient-cube sample of the irradiance volume ("ambient" in the scene's extras):

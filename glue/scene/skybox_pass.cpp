@@ -48,6 +48,20 @@ void skybox_camera_vectors(const float view_proj[16], double forward[3], double 
   for (int k = 0; k < 3; ++k) forward[k] = f[k], right[k] = r[k], up[k] = u[k];
 }
 
+void skybox_set_camera(PreparedSky *sky, const float view_proj[16], int w, int h) {
+  double f[3], r[3], u[3];
+  skybox_camera_vectors(view_proj, f, r, u);
+  sky->shared.resize(SB_SLOTS, ts_v4f(0, 0, 0, 0));
+  sky->shared[SB_SLOT_SIZE] =
+      ts_v4f(static_cast<float>(w), static_cast<float>(h), 1.0f / static_cast<float>(w), 1.0f / static_cast<float>(h));
+  auto v3 = [](const double *a) {
+    return ts_v4f(static_cast<float>(a[0]), static_cast<float>(a[1]), static_cast<float>(a[2]), 0.f);
+  };
+  sky->shared[SB_SLOT_FORWARD] = v3(f);
+  sky->shared[SB_SLOT_RIGHT] = v3(r);
+  sky->shared[SB_SLOT_UP] = v3(u);
+}
+
 bool prepare_skybox(const Scene &s, const Variant *sel_variant, Api api, PreparedScene *p, std::string *err) {
   PreparedSky &sky = p->sky;
   sky = PreparedSky();
@@ -74,17 +88,8 @@ bool prepare_skybox(const Scene &s, const Variant *sel_variant, Api api, Prepare
   // Stored as Source's float-HDR sky is (fp16 texels): clamped to 65504, rounded to half.
   if (!clamp_texels_to_fp16(c.rgba.data(), c.rgba.size(), s.path + ": the sky's cube map", nullptr, err)) return false;
   for (float &v : c.rgba) v = ts_quantize_half(v);
-  double f[3], r[3], u[3];
-  skybox_camera_vectors(p->view_proj, f, r, u);
   sky.shared.assign(SB_SLOTS, ts_v4f(0, 0, 0, 0));
-  sky.shared[SB_SLOT_SIZE] = ts_v4f(static_cast<float>(p->w), static_cast<float>(p->h), 1.0f / static_cast<float>(p->w),
-                                    1.0f / static_cast<float>(p->h));
-  auto v3 = [](const double *a) {
-    return ts_v4f(static_cast<float>(a[0]), static_cast<float>(a[1]), static_cast<float>(a[2]), 0.f);
-  };
-  sky.shared[SB_SLOT_FORWARD] = v3(f);
-  sky.shared[SB_SLOT_RIGHT] = v3(r);
-  sky.shared[SB_SLOT_UP] = v3(u);
+  skybox_set_camera(&sky, p->view_proj, p->w, p->h);
   const float k = s.sky.scale;
   sky.shared[SB_SLOT_COLOR] = ts_v4f(k, k, k, p->tone_map_scale);
   if (!check_finite(&sky.shared.data()->x, sky.shared.size() * 4, "the skybox's uniforms", err)) return false;

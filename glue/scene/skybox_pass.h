@@ -40,6 +40,10 @@ void skybox_camera_vectors(const float view_proj[16], double forward[3], double 
 // api: cube maps are NEAREST on GLES (Mesa forces seamless filtering there; docs/conformance.md).
 bool prepare_skybox(const Scene &s, const Variant *sel_variant, Api api, PreparedScene *p, std::string *err);
 
+// The camera slots of the sky's record (its size and direction vectors) for a view-projection matrix and
+// a w x h target (a probe's cube face, glue/scene/probe_render.h, draws the sky from the probe).
+void skybox_set_camera(PreparedSky *sky, const float view_proj[16], int w, int h);
+
 // The tone-map scale of the sky's record (set_scene_tone_map_scale calls it).
 void skybox_set_tone_map_scale(PreparedSky *sky, float scale);
 

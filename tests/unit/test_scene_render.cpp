@@ -118,6 +118,10 @@ void test_selection() {
 // NEAREST-sampled RGBE lightmap (measured at 160x90: model 0.6%, world 3.5%, HDR 0.1% of
 // channels beyond 2 codes; max 20 / 71 / 30 codes): at most 5% of channels beyond 2 codes,
 // none beyond 128 (half the range: a real shading error shows as whole regions, not edges).
+// The world scene: 8%. Its probes' cubes are rendered in-engine (glue/scene/probe_render.h:
+// textured walls, the sky through the window), sampled NEAREST by the GLES frame and LINEAR by
+// the C fallback (prepared for GL 3.3), so the envmapped floor's reflection differs more where
+// its texels contrast: measured 5.8% (max 79 codes), against 3.5% with the old smooth ray-traced cubes.
 void test_cpu_vs_gl() {
   for (const char *name : {"scenes/model_lighting.gltf", "scenes/world_lighting.gltf", "scenes/hdr_atrium.gltf"}) {
     Scene s;
@@ -160,7 +164,8 @@ void test_cpu_vs_gl() {
            name, cover_diff, n, both, maxd, 100.0 * over2 / std::max(1L, 3 * both));
     check(cover_diff <= static_cast<long>(n / 100), std::string(name) + ": C rasteriser coverage within 1% of GL's",
           std::to_string(cover_diff));
-    check(over2 <= 3 * both * 5 / 100 && maxd <= 128,
+    const long pct = std::string(name) == "scenes/world_lighting.gltf" ? 8 : 5;
+    check(over2 <= 3 * both * pct / 100 && maxd <= 128,
           std::string(name) + ": C fallback display within tolerance of GL's",
           "max " + std::to_string(maxd) + ", >2 codes: " + std::to_string(over2));
   }
