@@ -8,6 +8,7 @@
 #include <chrono>
 #include <cmath>
 #include <cstring>
+#include <ctime>
 #include <map>
 
 #include <glm/glm.hpp>
@@ -392,6 +393,20 @@ bool prepare_scene(const Scene &s, const SceneSelection &sel, int w, int h, Api 
   std::vector<std::array<double, 4>> face_frame;  // min a, min b (projection offsets)
   std::vector<int> world_probe_index(s.probes.size(), -1);
   std::vector<std::string> face_where;  // each face's primitive, for the bake directory
+  // The bake's quality (glue/bake/bake_quality.h): the scene's, or, for a page read from a bake
+  // directory, the one its manifest records (its layout follows the luxel density it was baked
+  // at; a render reports a quality other than the scene's).
+  BakeQuality quality = s.lightmaps.quality;
+  std::string quality_note;
+  if (!s.lightmaps.bake.empty()) {
+    BakeQuality baked;
+    if (read_bake_quality(s.lightmaps.bake, &baked)) {
+      if (!bake_quality_same(baked, quality))
+        quality_note = s.lightmaps.bake + " was baked at quality " + bake_quality_text(baked) +
+            "; the scene's is " + bake_quality_text(quality) + ": the frame shows the bake's";
+      quality = baked;
+    }
+  }
   for (size_t di = 0; di < sel.draws.size(); ++di) {
     const SceneDrawChoice &c = sel.draws[di];
     if (c.family != "world_lighting") continue;
@@ -402,7 +417,7 @@ bool prepare_scene(const Scene &s, const SceneSelection &sel, int w, int h, Api 
     double frame_min[2];
     if (!p.uv1.empty()) {  // TEXCOORD_1: the mesh's own lightmap chart (glue/bake/charts.h)
       if (!world_face_from_chart(p.position, p.normal, p.tangent, p.uv1, p.indices, m.name.c_str(), m.probe,
-                                 s.lightmaps.luxels_per_unit, p.where, &f, err)) {
+                                 quality.luxels_per_unit, p.where, &f, err)) {
         *err = s.path + ": " + *err;
         return false;
       }
@@ -427,10 +442,12 @@ bool prepare_scene(const Scene &s, const SceneSelection &sel, int w, int h, Api 
   WorldBake bake;
   if (!ws.faces.empty()) {
     const auto t0 = Clock::now();
+    timespec cpu0{}, cpu1{};
+    clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &cpu0);
     bake_lights_of(s, &ws);  // the lights and the suns' spread (glue/scene/bake_inputs.h)
     if (s.sky.image >= 0) {  // the sky pass (glue/bake/sky.h)
       const SceneImage &si = s.images.at(static_cast<size_t>(s.sky.image));
-      ws.sky = BakeSky{si.rgba.data(), si.w, si.h, s.sky.scale, s.sky.samples};
+      ws.sky = BakeSky{si.rgba.data(), si.w, si.h, s.sky.scale};
     }
     int cube_size = 16;
     for (size_t i = 0; i < s.probes.size(); ++i) {
@@ -442,14 +459,12 @@ bool prepare_scene(const Scene &s, const SceneSelection &sel, int w, int h, Api 
     if (ws.probes.empty()) ws.probes.push_back(ts_v3d(0, 0, 0));  // bake_world picks a probe per face
     for (WorldFace &f : ws.faces)
       if (f.probe >= 0) f.probe = world_probe_index.at(f.probe) >= 0 ? world_probe_index[f.probe] : -1;
-    ws.luxels_per_unit = s.lightmaps.luxels_per_unit;
+    apply_bake_quality(quality, &ws);  // density, samples, bounces (and the sky's samples)
     ws.page_w = s.lightmaps.page_w;
     ws.page_h = s.lightmaps.page_h;
     ws.cube_size = cube_size;
-    ws.bounce.max_bounces = s.lightmaps.bounces;
-    ws.bounce.gather_rays = s.lightmaps.gather_rays;
-    ws.supersample = s.lightmaps.supersample;
     ws.bounce.seed = static_cast<uint64_t>(s.lightmaps.seed);
+    ws.bounce.threads = s.lightmaps.threads;  // the same bytes for any count
     const bool from_file = !s.lightmaps.image_rgba.empty();
     if (from_file) ws.page_in = &s.lightmaps.image_rgba;
     // Visibility: one BVH of every triangle of the scene, world and model (glue/bake/ray_scene.h).
@@ -463,6 +478,9 @@ bool prepare_scene(const Scene &s, const SceneSelection &sel, int w, int h, Api 
                                                         ": the page cannot hold the scene's faces: ") + *err;
       return false;
     }
+    ps.bake_summary.quality = quality;
+    ps.bake_summary.quality_note = quality_note;
+    if (!quality_note.empty()) ps.notes.push_back(quality_note);
     // A page from the scene's lightmaps.image: the placement above is its layout (the same
     // faces, density and page size as the bake that wrote it; docs/scenes.md).
     ps.lightmap_page = bake.page;
@@ -476,6 +494,8 @@ bool prepare_scene(const Scene &s, const SceneSelection &sel, int w, int h, Api 
       if (world_probe_index[i] >= 0) probes.world_cubes[i] = bake.cubes.at(world_probe_index[i]);
     ps.lightmap_texels = ws.page_w * ws.page_h;
     ps.bake_ms = std::chrono::duration<double, std::milli>(Clock::now() - t0).count();
+    clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &cpu1);
+    ps.bake_cpu_ms = (cpu1.tv_sec - cpu0.tv_sec) * 1e3 + (cpu1.tv_nsec - cpu0.tv_nsec) / 1e6;
     ps.bake_luxels = bake.luxels;
     ps.bake_gather_rays = bake.bounce.rays;
     ps.bake_passes = bake.bounce.passes;
