@@ -50,10 +50,8 @@ struct BakeSummary {
   int emitters = 0, area_samples = 0;  // faces with emission, sampled as area lights
   int spread_samples = 0, sky_samples = 0;
   // The quality the bake was made at (glue/bake/bake_quality.h; set by its caller: the preset's name
-  // goes into the manifest) and, for a page read from a bake directory made at another quality
-  // than the scene's, what the render reports ("": the same).
+  // goes into the manifest).
   BakeQuality quality;
-  std::string quality_note;
   SkyReport sky_pass;  // rays 0 on a resumed bake (the saved pass 0 holds it)
   AreaLightReport area_pass;
   BounceReport report;

@@ -8,7 +8,6 @@
 #include <chrono>
 #include <cmath>
 #include <cstring>
-#include <ctime>
 #include <map>
 
 #include <glm/glm.hpp>
@@ -393,20 +392,8 @@ bool prepare_scene(const Scene &s, const SceneSelection &sel, int w, int h, Api 
   std::vector<std::array<double, 4>> face_frame;  // min a, min b (projection offsets)
   std::vector<int> world_probe_index(s.probes.size(), -1);
   std::vector<std::string> face_where;  // each face's primitive, for the bake directory
-  // The bake's quality (glue/bake/bake_quality.h): the scene's, or, for a page read from a bake
-  // directory, the one its manifest records (its layout follows the luxel density it was baked
-  // at; a render reports a quality other than the scene's).
-  BakeQuality quality = s.lightmaps.quality;
-  std::string quality_note;
-  if (!s.lightmaps.bake.empty()) {
-    BakeQuality baked;
-    if (read_bake_quality(s.lightmaps.bake, &baked)) {
-      if (!bake_quality_same(baked, quality))
-        quality_note = s.lightmaps.bake + " was baked at quality " + bake_quality_text(baked) +
-            "; the scene's is " + bake_quality_text(quality) + ": the frame shows the bake's";
-      quality = baked;
-    }
-  }
+  std::string quality_note;  // the bake's quality (scene/bake_inputs.h: a bake directory's own)
+  const BakeQuality quality = scene_bake_quality(s, &quality_note);
   for (size_t di = 0; di < sel.draws.size(); ++di) {
     const SceneDrawChoice &c = sel.draws[di];
     if (c.family != "world_lighting") continue;
@@ -442,8 +429,7 @@ bool prepare_scene(const Scene &s, const SceneSelection &sel, int w, int h, Api 
   WorldBake bake;
   if (!ws.faces.empty()) {
     const auto t0 = Clock::now();
-    timespec cpu0{}, cpu1{};
-    clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &cpu0);
+    const double cpu0 = process_cpu_ms();
     bake_lights_of(s, &ws);  // the lights and the suns' spread (glue/scene/bake_inputs.h)
     if (s.sky.image >= 0) {  // the sky pass (glue/bake/sky.h)
       const SceneImage &si = s.images.at(static_cast<size_t>(s.sky.image));
@@ -460,9 +446,7 @@ bool prepare_scene(const Scene &s, const SceneSelection &sel, int w, int h, Api 
     for (WorldFace &f : ws.faces)
       if (f.probe >= 0) f.probe = world_probe_index.at(f.probe) >= 0 ? world_probe_index[f.probe] : -1;
     apply_bake_quality(quality, &ws);  // density, samples, bounces (and the sky's samples)
-    ws.page_w = s.lightmaps.page_w;
-    ws.page_h = s.lightmaps.page_h;
-    ws.cube_size = cube_size;
+    ws.page_w = s.lightmaps.page_w, ws.page_h = s.lightmaps.page_h, ws.cube_size = cube_size;
     ws.bounce.seed = static_cast<uint64_t>(s.lightmaps.seed);
     ws.bounce.threads = s.lightmaps.threads;  // the same bytes for any count
     const bool from_file = !s.lightmaps.image_rgba.empty();
@@ -479,8 +463,7 @@ bool prepare_scene(const Scene &s, const SceneSelection &sel, int w, int h, Api 
       return false;
     }
     ps.bake_summary.quality = quality;
-    ps.bake_summary.quality_note = quality_note;
-    if (!quality_note.empty()) ps.notes.push_back(quality_note);
+    if (!quality_note.empty()) ps.notes.push_back(quality_note);  // a render says so
     // A page from the scene's lightmaps.image: the placement above is its layout (the same
     // faces, density and page size as the bake that wrote it; docs/scenes.md).
     ps.lightmap_page = bake.page;
@@ -494,13 +477,11 @@ bool prepare_scene(const Scene &s, const SceneSelection &sel, int w, int h, Api 
       if (world_probe_index[i] >= 0) probes.world_cubes[i] = bake.cubes.at(world_probe_index[i]);
     ps.lightmap_texels = ws.page_w * ws.page_h;
     ps.bake_ms = std::chrono::duration<double, std::milli>(Clock::now() - t0).count();
-    clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &cpu1);
-    ps.bake_cpu_ms = (cpu1.tv_sec - cpu0.tv_sec) * 1e3 + (cpu1.tv_nsec - cpu0.tv_nsec) / 1e6;
+    ps.bake_cpu_ms = process_cpu_ms() - cpu0;
     ps.bake_luxels = bake.luxels;
     ps.bake_gather_rays = bake.bounce.rays;
     ps.bake_passes = bake.bounce.passes;
-    ps.bake_direct_ms = bake.direct_ms;
-    ps.bake_bounce_ms = bake.bounce_ms;
+    ps.bake_direct_ms = bake.direct_ms, ps.bake_bounce_ms = bake.bounce_ms;
     ps.bake_direct_rays = bake.direct_rays;
     ps.bake_sky_rays = bake.sky.rays, ps.bake_area_rays = bake.area.rays;
     ps.bake_sky_ms = bake.sky.ms, ps.bake_area_ms = bake.area.ms;
