@@ -262,7 +262,7 @@ bool run(const BenchOptions &opt, std::string *md, std::string *err) {
     << "settings changed, against a converged bake ("
     << kRef.q.supersample << " x " << kRef.q.supersample << " direct\nsamples, " << kRef.q.sky_samples << " sky rays, "
     << kRef.q.spread_samples << " sun rays per luxel, " << kRef.q.gather_rays << " gather rays per value, bounces to the "
-    << kRef.q.threshold << " threshold: " << ref.passes << " passes, " << ref.ms / 1000 << " s; another seed than the rows').\n"
+    << std::defaultfloat << kRef.q.threshold << std::fixed << " threshold: " << ref.passes << " passes, " << ref.ms / 1000 << " s; another seed than the rows').\n"
     << "**lightmap RMS**: the RMS of the page's values (rgb of every luxel of every block: flat, b0, b1, b2)\nagainst the converged "
     << "page, and **/ ref** the same over the converged page's RMS. The converged bake's own noise\n(the RMS between it and a "
     << "bake of another seed, over sqrt 2): ";

@@ -112,6 +112,8 @@ the C fallback rasterises the same pattern (2 and 8: the standard patterns). The
 GLES 2.0 refuse MSAA and say why (docs/rendering.md, "MSAA"). --check then compares GL's
 interior pixels with the C twin bit for bit (on GL's multisample G-buffer) and reports the edge
 pixels against the C fallback's MSAA frame.
+--threads N: the C fallback's threads and those of a bake at load (0 = all cores, the default; the
+bake gives the same bytes for any N).
 
 --max-memory MIB: what input files and the render may take (default 1024): an image, accessor,
 probe set, lightmap page or --size that needs more is refused before it is read, naming the
@@ -207,6 +209,7 @@ int cmd_render(int argc, char **argv) {
     return 1;
   }
   scene.lightmaps.bake_progress = !quiet;  // a long bake at load shows its passes (docs/baking.md)
+  scene.lightmaps.threads = cfg.threads;  // and runs on --threads (the same bytes for any count)
   cfg.msaa = msaa_arg >= 0 ? msaa_arg : scene.hdr.msaa;
   if (cfg.msaa > 1 && a.has("--dump-draws")) {
     fprintf(stderr, "tiershade render: %s: --dump-draws captures the one-sample frame a bare engine replays "
