@@ -233,7 +233,7 @@ bool read_lightmaps(const tinygltf::Value &v, const std::string &place, const st
                   e))
     return false;
   // The quality (glue/bake/bake_quality.h): a preset and the keys that override it, within the
-  // ranges `tiershade bake` takes (kBakeRanges).
+  // ranges `tiershade bake`'s options take (glue/cli/cmd_bake.cpp).
   if (v.Has("quality")) {
     BakeQuality q;
     if (!read_string(v.Get("quality"), place + ".quality", &l->quality_preset, e)) return false;
