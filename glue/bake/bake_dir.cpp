@@ -145,11 +145,16 @@ struct Progress {
   }
 };
 
-json settings_json(double luxels_per_unit, int page_w, int page_h, int supersample, const BounceSettings &b,
-                   int cube_size) {
+// The hashed settings by name (the quality's values among them: bake_quality.h), for the manifest
+// and for saying which of them a stale bake differs in.
+json settings_json(double luxels_per_unit, int page_w, int page_h, int supersample, int area_samples,
+                   int spread_samples, int sky_samples, const BounceSettings &b, int cube_size) {
   return {{"luxels_per_unit", luxels_per_unit},
           {"page", {page_w, page_h}},
           {"supersample", supersample},
+          {"area_samples", area_samples},
+          {"spread_samples", spread_samples},
+          {"sky_samples", sky_samples},
           {"bounces", b.max_bounces},
           {"gather_rays", b.gather_rays},
           {"threshold", b.threshold},
@@ -198,6 +203,8 @@ bool bake_world_dir(const BakeDirUse &use, WorldBakeInput in, const std::vector<
   sum->report = out->bounce;
   sum->sky = in.sky.present();
   sum->area_samples = in.area_samples;
+  sum->spread_samples = in.spread_samples;
+  sum->sky_samples = in.sky.samples;
   for (const WorldFace &f : in.faces)
     sum->emitters += f.emission.x > 0 || f.emission.y > 0 || f.emission.z > 0;
   sum->sky_pass = out->sky;
@@ -239,7 +246,9 @@ bool write_bake_dir(const std::string &dir, const std::string &scene_name, const
                {"pages", img.h / sum.page_h},
                {"texels", "RGBA float32, row 0 at the bottom; flat, b0, b1, b2 blocks per face (docs/baking.md)"}};
   m["settings"] =
-      settings_json(sum.luxels_per_unit, sum.page_w, sum.page_h, sum.supersample, sum.bounce, sum.cube_size);
+      settings_json(sum.luxels_per_unit, sum.page_w, sum.page_h, sum.supersample, sum.area_samples, sum.spread_samples,
+                    sum.sky_samples, sum.bounce, sum.cube_size);
+  m["settings"]["quality"] = sum.quality.preset;  // the preset's name (not hashed: the values are)
   json faces = json::array();
   for (const BakeFace &f : sum.faces)
     faces.push_back({{"material", f.name},
@@ -303,11 +312,8 @@ struct ManifestReader {
   }
 };
 
-}  // namespace
-
-bool read_bake_dir(const std::string &dir, const WorldBakeInput &in, std::vector<float> *page, std::string *err) {
-  const BakeHash expect = bake_input_hash(in);
-  const int page_w = in.page_w, page_h = in.page_h;
+// DIR/manifest.json parsed (bounded in size); errors name the file.
+bool load_manifest(const std::string &dir, json *m, std::string *err) {
   const std::string mf = dir + "/" + kManifest;
   std::error_code ec;
   if (!fs::is_directory(dir, ec)) {
@@ -326,11 +332,56 @@ bool read_bake_dir(const std::string &dir, const WorldBakeInput &in, std::vector
   std::ifstream f(mf, std::ios::binary);
   std::stringstream ss;
   ss << f.rdbuf();
-  json m = json::parse(ss.str(), nullptr, false);
-  if (m.is_discarded()) {
+  *m = json::parse(ss.str(), nullptr, false);
+  if (m->is_discarded()) {
     *err = mf + ": not valid JSON";
     return false;
   }
+  return true;
+}
+
+}  // namespace
+
+bool read_bake_quality(const std::string &dir, BakeQuality *q) {
+  json m;
+  std::string err;
+  if (!load_manifest(dir, &m, &err) || !m.is_object() || !m.contains("settings") || !m["settings"].is_object())
+    return false;
+  const json &s = m["settings"];
+  BakeQuality got;
+  if (!s.contains("quality") || !s["quality"].is_string() ||
+      !bake_quality_preset(s["quality"].get<std::string>(), &got))
+    return false;
+  // Each value a number within the range its scene key takes (glue/scene/gltf_extras.cpp).
+  auto num = [&](const char *key, double lo, double hi, double *out) {
+    if (!s.contains(key) || !s[key].is_number()) return false;
+    const double v = s[key].get<double>();
+    if (!(v >= lo && v <= hi)) return false;
+    *out = v;
+    return true;
+  };
+  auto integer = [&](const char *key, int lo, int hi, int *out) {
+    double v = 0;
+    if (!num(key, lo, hi, &v) || v != static_cast<int>(v)) return false;
+    *out = static_cast<int>(v);
+    return true;
+  };
+  if (!num("luxels_per_unit", 0.01, 1024, &got.luxels_per_unit) || !integer("supersample", 1, 8, &got.supersample) ||
+      !integer("area_samples", 0, 1024, &got.area_samples) ||
+      !integer("spread_samples", 1, 1024, &got.spread_samples) || !integer("sky_samples", 1, 4096, &got.sky_samples) ||
+      !integer("bounces", 0, 100, &got.bounces) || !integer("gather_rays", 1, 1024, &got.gather_rays) ||
+      !num("threshold", 0, 1, &got.threshold))
+    return false;
+  *q = got;
+  return true;
+}
+
+bool read_bake_dir(const std::string &dir, const WorldBakeInput &in, std::vector<float> *page, std::string *err) {
+  const BakeHash expect = bake_input_hash(in);
+  const int page_w = in.page_w, page_h = in.page_h;
+  const std::string mf = dir + "/" + kManifest;
+  json m;
+  if (!load_manifest(dir, &m, err)) return false;
   ManifestReader r{mf, err};
   const json *fmt = r.get(m, "", "format", json::value_t::string);
   if (!fmt) return false;
@@ -370,7 +421,8 @@ bool read_bake_dir(const std::string &dir, const WorldBakeInput &in, std::vector
   if (got.all() != expect.all()) {
     // The settings that differ, by name (the manifest's against the scene's).
     std::string diff;
-    const json now = settings_json(in.luxels_per_unit, in.page_w, in.page_h, in.supersample, in.bounce, in.cube_size);
+    const json now = settings_json(in.luxels_per_unit, in.page_w, in.page_h, in.supersample, in.area_samples,
+                                   in.spread_samples, in.sky.samples, in.bounce, in.cube_size);
     if (m.contains("settings") && m["settings"].is_object())
       for (const auto &kv : now.items())
         if (!m["settings"].contains(kv.key()) || m["settings"][kv.key()] != kv.value())

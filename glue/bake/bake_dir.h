@@ -49,6 +49,10 @@ struct BakeSummary {
   double direct_ms = 0;
   bool sky = false;  // the scene has a sky (glue/bake/sky.h)
   int emitters = 0, area_samples = 0;  // faces with emission, sampled as area lights
+  int spread_samples = 0, sky_samples = 0;
+  // The quality the bake was made at (glue/bake/bake_quality.h; set by its caller: the preset's name
+  // goes into the manifest).
+  BakeQuality quality;
   SkyReport sky_pass;  // rays 0 on a resumed bake (the saved pass 0 holds it)
   AreaLightReport area_pass;
   BounceReport report;
@@ -75,6 +79,11 @@ bool write_bake_dir(const std::string &dir, const std::string &scene_name, const
 // Reads DIR/manifest.json and DIR/page.exr: every error names the file and the JSON place; a
 // manifest whose hash is not bake_input_hash(in) is refused, naming what changed.
 bool read_bake_dir(const std::string &dir, const WorldBakeInput &in, std::vector<float> *page, std::string *err);
+
+// The quality DIR/manifest.json records (its /settings: the preset's name and every value, each
+// within the range a scene key takes): true with *q filled; false when the manifest cannot be read
+// or records none (a render then takes the scene's quality, and read_bake_dir says what differs).
+bool read_bake_quality(const std::string &dir, BakeQuality *q);
 
 // The checkpoint area of DIR: DIR.partial (beside DIR, which appears only when complete).
 std::string bake_checkpoint_dir(const std::string &dir);

@@ -11,6 +11,7 @@
 #include <string>
 #include <vector>
 
+#include "bake/bake_quality.h"
 #include "math/ts_math.h"
 
 class RayScene;
@@ -26,9 +27,9 @@ struct LuxelGrid {
 };
 
 struct BounceSettings {
-  int max_bounces = 0;  // 0: direct light only
-  int gather_rays = 64;  // per luxel, pass and value (flat, b0, b1, b2; rounded up to a square: stratified)
-  double threshold = 1e-3;  // stop when a pass adds at most this share of the flat light so far (summed over luxels)
+  int max_bounces = kBakeDraft.bounces;  // 0: direct light only
+  int gather_rays = kBakeDraft.gather_rays;  // per luxel, pass and value (flat, b0, b1, b2; rounded up to a square: stratified)
+  double threshold = kBakeDraft.threshold;  // stop when a pass adds at most this share of the flat light so far (summed over luxels)
   int threads = 0;  // 0: all cores; the result is the same for any count
   uint64_t seed = 0;  // mixed into every luxel's stream: another seed, independent noise
   // The faces' emission already reached the luxels as area lights (glue/bake/area_lights.h): the

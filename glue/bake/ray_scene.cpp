@@ -7,6 +7,8 @@
 
 #include <glm/geometric.hpp>
 
+#include <atomic>
+#include <chrono>
 #include <cmath>
 #include <cstring>
 #include <limits>
@@ -106,6 +108,14 @@ bool RayScene::commit(std::string *err) {
 }
 
 namespace {
+std::atomic<bool> g_timing{false};
+std::atomic<int64_t> g_timed_ns{0};
+using Clock = std::chrono::steady_clock;
+// Adds the time since t0 to the sum (only while timing is on).
+void timed_since(bool on, Clock::time_point t0) {
+  if (on) g_timed_ns.fetch_add(std::chrono::duration_cast<std::chrono::nanoseconds>(Clock::now() - t0).count(),
+                               std::memory_order_relaxed);
+}
 void set_ray(RTCRay *r, const glm::dvec3 &o, const glm::dvec3 &d, double tnear, double tfar) {
   r->org_x = static_cast<float>(o.x);
   r->org_y = static_cast<float>(o.y);
@@ -122,13 +132,23 @@ void set_ray(RTCRay *r, const glm::dvec3 &o, const glm::dvec3 &d, double tnear, 
 }
 }  // namespace
 
+void RayScene::set_timing(bool on) {
+  g_timed_ns.store(0);
+  g_timing.store(on);
+}
+
+double RayScene::timed_ms() { return static_cast<double>(g_timed_ns.load()) / 1e6; }
+
 bool RayScene::occluded(const glm::dvec3 &origin, const glm::dvec3 &dir, double tnear, double tfar) const {
   if (!impl_->committed) return false;
   RTCRay r;
   set_ray(&r, origin, dir, tnear, tfar);
   RTCIntersectContext ctx;
   rtcInitIntersectContext(&ctx);
+  const bool timing = g_timing.load(std::memory_order_relaxed);
+  const Clock::time_point t0 = timing ? Clock::now() : Clock::time_point();
   rtcOccluded1(impl_->scene, &ctx, &r);
+  timed_since(timing, t0);
   return r.tfar == -std::numeric_limits<float>::infinity();
 }
 
@@ -141,7 +161,10 @@ RayScene::Hit RayScene::intersect(const glm::dvec3 &origin, const glm::dvec3 &di
   rh.hit.primID = RTC_INVALID_GEOMETRY_ID;
   RTCIntersectContext ctx;
   rtcInitIntersectContext(&ctx);
+  const bool timing = g_timing.load(std::memory_order_relaxed);
+  const Clock::time_point t0 = timing ? Clock::now() : Clock::time_point();
   rtcIntersect1(impl_->scene, &ctx, &rh);
+  timed_since(timing, t0);
   if (rh.hit.geomID == RTC_INVALID_GEOMETRY_ID) return h;
   h.t = rh.ray.tfar;
   h.id = rh.hit.geomID < impl_->ids.size() ? impl_->ids[rh.hit.geomID] : -1;

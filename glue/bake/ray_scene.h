@@ -35,6 +35,11 @@ class RayScene {
   Hit intersect(const glm::dvec3 &origin, const glm::dvec3 &dir, double tnear, double tfar) const;
 
   long triangles() const { return triangles_; }
+  // The time spent inside Embree's queries (rtcOccluded1 / rtcIntersect1), summed over every thread
+  // and ray scene, for the bench's "Embree's share" (docs/accuracy_cost.md): off by default; on,
+  // each query reads the clock twice. set_timing(true) also starts the sum from 0.
+  static void set_timing(bool on);
+  static double timed_ms();
   // A hash of every mesh added (ids, positions, indices, in order; glue/bake/content_hash.h): what
   // the rays see, for the bake directory's staleness check (glue/bake/bake_dir.h).
   uint64_t content_hash() const { return hash_; }

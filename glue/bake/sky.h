@@ -25,7 +25,7 @@ struct BakeSky {
   const float *rgba = nullptr;
   int w = 0, h = 0;
   double scale = 1;  // radiance multiplier
-  int samples = 64;  // rays per luxel and value (rounded up to a square: stratified)
+  int samples = kBakeDraft.sky_samples;  // rays per luxel and value (rounded up to a square: stratified)
   bool present() const { return rgba != nullptr && w > 0 && h > 0 && scale > 0; }
 };
 

@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "bake/area_lights.h"
+#include "bake/bake_quality.h"
 #include "bake/bounce.h"
 #include "bake/sky.h"
 #include "bake/world_faces.h"
@@ -20,7 +21,7 @@ struct WorldBakeInput {
   std::vector<WorldFace> faces;
   std::vector<rnm_light> lights;
   std::vector<ts_vec3d> probes;  // at least one
-  double luxels_per_unit = 6;
+  double luxels_per_unit = kBakeDraft.luxels_per_unit;
   int page_w = 512, page_h = 256;
   int cube_size = 64;
   // Per probe: whether its cube is ray traced here (empty: every probe's). An untraced probe's
@@ -34,7 +35,7 @@ struct WorldBakeInput {
   const RayScene *rays = nullptr;
   // Samples per luxel along each axis (vrad: 4 samples, 2 x 2, for direct lighting; fact sheet
   // section 1), a regular grid over the luxel's footprint on the face, clipped to the face.
-  int supersample = 2;
+  int supersample = kBakeDraft.supersample;
   BounceSettings bounce;  // interreflection (glue/bake/bounce.h); max_bounces 0: direct light only
   // Checkpoints and progress (glue/bake/bounce.h BakeHooks, glue/bake/bake_dir.h): resume from a
   // saved pass, a call after each finished pass (the direct one included), progress per face.
@@ -44,13 +45,13 @@ struct WorldBakeInput {
   BakeSky sky;
   // Emitting faces sampled as area lights (glue/bake/area_lights.h): points per luxel and emitter;
   // 0: the emission reaches the luxels through the bounces' gather alone.
-  int area_samples = 16;
+  int area_samples = kBakeDraft.area_samples;
   // Per light (empty, or one per light): a sun's angular radius in radians (vrad's
   // _sunspreadangle): its shadow rays are jittered within that cone, `spread_samples` per luxel
   // (vrad: 30 per sample point) shared among its supersamples, each taking a square of strata
   // (2 x 2 supersamples: 3 x 3 rays each), so its shadows are soft. 0: one ray.
   std::vector<double> light_spread;
-  int spread_samples = 30;
+  int spread_samples = kBakeDraft.spread_samples;
 };
 
 // The pages a bake may fill (page_w x page_h each; c_ref/offline/lightmap_page.h stacks them):

@@ -2,6 +2,8 @@
 #include "cli/args.h"
 
 #include <algorithm>
+#include <cerrno>
+#include <cmath>
 #include <cstdio>
 #include <cstdlib>
 
@@ -61,6 +63,20 @@ int Args::get_int(const std::string &name, int def, int lo, int hi) const {
     fail("option " + name + " wants an integer in [" + std::to_string(lo) + ", " + std::to_string(hi) + "], got '" + s +
          "'");
   return static_cast<int>(v);
+}
+
+double Args::get_number(const std::string &name, double def, double lo, double hi) const {
+  if (!has(name)) return def;
+  const std::string s = get(name);
+  char *end = nullptr;
+  errno = 0;
+  const double v = std::strtod(s.c_str(), &end);
+  if (s.empty() || *end || errno || !std::isfinite(v) || v < lo || v > hi) {
+    char range[64];
+    snprintf(range, sizeof range, "[%g, %g]", lo, hi);
+    fail("option " + name + " wants a number in " + range + ", got '" + s + "'");
+  }
+  return v;
 }
 
 namespace {

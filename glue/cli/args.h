@@ -19,6 +19,8 @@ class Args {
   std::string get(const std::string &name, const std::string &def = "") const;
   std::vector<std::string> all(const std::string &name) const;
   int get_int(const std::string &name, int def, int lo, int hi) const;
+  // A finite decimal number in [lo, hi] (strtod syntax, nothing after it).
+  double get_number(const std::string &name, double def, double lo, double hi) const;
   const std::vector<std::string> &positional() const { return pos_; }
   // --help given: prints text (and a newline) and returns true (the command then exits 0).
   bool help(const char *text) const;

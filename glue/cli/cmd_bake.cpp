@@ -18,17 +18,27 @@
 #include "scene/selection.h"
 
 // `tiershade bake --help`.
-const char kHelp[] = R"(usage: tiershade bake SCENE.gltf -o DIR [--max-memory MIB]
-       tiershade bake SCENE.gltf -o PAGE.exr
+const char kHelp[] = R"(usage: tiershade bake SCENE.gltf -o DIR [--quality draft|default|final] [OVERRIDES] [--threads N]
+                      [--max-memory MIB]
+       tiershade bake SCENE.gltf -o PAGE.exr [the same options]
 Bakes the scene's lightmaps (flat and three RNM lightmaps per LightmappedGeneric face: direct light
-with shadows, then extras.tiershade.lightmaps.bounces bounces) and writes the bake directory DIR:
+with shadows, the sky, emitters, then the bounces) and writes the bake directory DIR:
 page.exr (RGBA float32, rows as GL texture rows) and manifest.json (the scene's content hash, the
 faces' places, the settings, each pass's rays and time), and for a scene with models the irradiance
 volume (volume.bin, docs/irradiance_volume.md). Each finished pass is saved in DIR.partial:
 a bake that was killed resumes from it; DIR appears only when the bake is complete. Name DIR in the
 scene's extras.tiershade.lightmaps.bake to render from it (a stale bake is refused). With a .exr
 name, writes the page alone (for extras.tiershade.lightmaps.image). --max-memory MIB: what the
-scene's files and the bake may take (default 1024; docs/reliability.md). docs/baking.md.)";
+scene's files and the bake may take (default 1024; docs/reliability.md).
+Quality (docs/baking.md, "Quality"): the preset (--quality P, else the scene's lightmaps.quality,
+else default), then the scene's own keys (lightmaps.bounces, ..., sky.samples), then these options:
+  --luxel-density X (0.01..1024)  --supersample N (1..8, N x N direct samples)
+  --area-samples N (0..1024)      --spread-samples N (1..1024)   --sky-samples N (1..4096)
+  --bounces N (0..100)            --gather-rays N (1..1024)      --threshold X (0..1)
+Presets: draft (direct light only: what render bakes at load), default (+ up to 100 bounces to the
+threshold 1e-3), final (4 x the samples, 256 gather rays, threshold 1e-4). The manifest records the
+quality; a render of DIR takes it (and says so when the scene's differs). --threads N: the bake's
+threads (0 = all cores, default); the same bytes for any N.)";
 
 namespace fs = std::filesystem;
 
@@ -135,9 +145,27 @@ std::vector<std::string> bake_report(const BakeSummary &s) {
 }  // namespace
 
 int cmd_bake(int argc, char **argv) {
-  Args a("bake", argc, argv, {"--help"}, {"-o", "--max-memory"});
+  Args a("bake", argc, argv, {"--help"},
+         {"-o", "--max-memory", "--quality", "--luxel-density", "--supersample", "--area-samples", "--spread-samples",
+          "--sky-samples", "--bounces", "--gather-rays", "--threshold", "--threads"});
   if (a.help(kHelp)) return 0;
   apply_max_memory(a);  // --max-memory MIB: what the scene's files may take (docs/reliability.md)
+  // The quality (glue/bake/bake_quality.h): each option checked before anything is read; the
+  // ranges are those of the scene's keys (glue/scene/gltf_extras.cpp).
+  const std::string preset = a.get("--quality");
+  BakeQuality q;
+  if (a.has("--quality") && !bake_quality_preset(preset, &q))
+    a.fail("--quality: '" + preset + "' is not a preset (" + bake_quality_preset_names() + ")");
+  BakeQualityKeys opt;
+  opt.luxels_per_unit = a.get_number("--luxel-density", -1, 0.01, 1024);
+  opt.supersample = a.get_int("--supersample", -1, 1, 8);
+  opt.area_samples = a.get_int("--area-samples", -1, 0, 1024);
+  opt.spread_samples = a.get_int("--spread-samples", -1, 1, 1024);
+  opt.sky_samples = a.get_int("--sky-samples", -1, 1, 4096);
+  opt.bounces = a.get_int("--bounces", -1, 0, 100);
+  opt.gather_rays = a.get_int("--gather-rays", -1, 1, 1024);
+  opt.threshold = a.get_number("--threshold", -1, 0, 1);
+  const int threads = a.get_int("--threads", 0, 0, 256);
   if (a.positional().size() != 1) a.fail("expected one scene file (tiershade bake SCENE.gltf -o DIR)");
   if (!a.has("-o")) a.fail("-o DIR is required (the bake directory; or -o PAGE.exr for the page alone)");
   const std::string out = a.get("-o");
@@ -167,6 +195,17 @@ int cmd_bake(int argc, char **argv) {
     scene.lightmaps.image_rgba.clear();
     scene.lightmaps.bake.clear();
   }
+  // The preset (--quality, else the scene's, else default), the scene's own keys, the options.
+  const std::string base = a.has("--quality")                  ? preset
+                           : scene.lightmaps.quality_preset.empty() ? std::string("default")
+                                                                    : scene.lightmaps.quality_preset;
+  bake_quality_preset(base, &q);
+  scene.lightmaps.quality = bake_quality_with(bake_quality_with(q, scene.lightmaps.keys), opt);
+  scene.lightmaps.threads = threads;
+  printf("quality: %s\n", bake_quality_text(scene.lightmaps.quality).c_str());
+  if (!scene.lightmaps.keys.names().empty())
+    printf("note: the scene's keys %s override the preset %s (the command line's options override both)\n",
+           scene.lightmaps.keys.names().c_str(), base.c_str());
   if (!page_only) scene.lightmaps.bake_checkpoint = out;
   scene.lightmaps.bake_progress = true;
   if (!render_fits_memory(scene, 1, 1, false, false, &err)) {  // the page's bake, checked before it starts

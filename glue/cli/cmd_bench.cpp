@@ -240,9 +240,9 @@ std::string basename_of(const std::string &p) {
 }  // namespace
 
 // `tiershade bench --help`.
-const char kHelp[] = R"(usage: tiershade bench [-o docs/accuracy_cost.md] [--size N] [--runs K] [--section NAME]
---section NAME runs one registered section (e.g. scenes, world_lighting) and prints its
-markdown without writing any file.
+const char kHelp[] = R"(usage: tiershade bench [-o docs/accuracy_cost.md] [--size N] [--runs K] [--section NAME [--plots DIR]]
+--section NAME runs one registered section (e.g. scenes, world_lighting, baking) and prints its
+markdown without writing any file (--plots DIR: but the section's SVG plots, into DIR).
 Measures, for each tier of each shader family, in one run: instruction slots, llvmpipe
 milliseconds per N x N frame (median of K draws; OSMesa GL 3.3 and EGL GLES 3.0), the
 cold first frame (compile + JIT, Mesa's shader cache off), the C fallback's milliseconds
@@ -251,7 +251,7 @@ the full model (every light local, exact sRGB), in 8-bit display code values.
 Writes the markdown tables to -o and SVG plots next to it. Default N = 1024, K = 7.)";
 
 int cmd_bench(int argc, char **argv) {
-  Args a("bench", argc, argv, {"--help"}, {"-o", "--size", "--runs", "--section"});
+  Args a("bench", argc, argv, {"--help"}, {"-o", "--size", "--runs", "--section", "--plots"});
   if (a.help(kHelp)) return 0;
   a.no_positional();
   const std::string out_path = a.get("-o", "docs/accuracy_cost.md");
@@ -261,10 +261,12 @@ int cmd_bench(int argc, char **argv) {
   cx.cores = std::max(1u, std::thread::hardware_concurrency());
   // Cold compile + JIT for the first-frame column; identical output either way.
   setenv("MESA_SHADER_CACHE_DISABLE", "true", 1);
+  if (a.has("--plots") && !a.has("--section")) a.fail("--plots DIR goes with --section NAME (a full run writes its plots beside -o)");
   if (a.has("--section")) {
     BenchOptions bopt;
     bopt.size = cx.n;
     bopt.runs = cx.runs;
+    bopt.plot_dir = a.get("--plots");
     for (const BenchSection *s : bench_sections()) {
       if (a.get("--section") != s->name) continue;
       std::string section, e;
@@ -398,6 +400,10 @@ int cmd_bench(int argc, char **argv) {
   BenchOptions bopt;
   bopt.size = n;
   bopt.runs = cx.runs;
+  {  // the sections' plots beside the markdown
+    const size_t slash = out_path.rfind('/');
+    bopt.plot_dir = slash == std::string::npos ? "." : out_path.substr(0, slash);
+  }
   for (const BenchSection *s : bench_sections()) {
     std::string section;
     fprintf(stderr, "bench: %s\n", s->name);

@@ -116,6 +116,8 @@ pixels against the C fallback's MSAA frame.
 --probe-cubes gl: a GL frame renders the world probes' cube maps on GL (the float target read
 back; --check compares each face with the C twin on GL's G-buffer); c (default): the C fallback
 renders them while preparing, the same cubes on every backend (docs/world_lighting.md).
+--threads N: the C fallback's threads and those of a bake at load (0 = all cores, the default; the
+bake gives the same bytes for any N).
 
 --max-memory MIB: what input files and the render may take (default 1024): an image, accessor,
 probe set, lightmap page or --size that needs more is refused before it is read, naming the
@@ -217,6 +219,7 @@ int cmd_render(int argc, char **argv) {
     return 1;
   }
   scene.lightmaps.bake_progress = !quiet;  // a long bake at load shows its passes (docs/baking.md)
+  scene.lightmaps.threads = cfg.threads;  // and runs on --threads (the same bytes for any count)
   cfg.msaa = msaa_arg >= 0 ? msaa_arg : scene.hdr.msaa;
   if (cfg.msaa > 1 && a.has("--dump-draws")) {
     fprintf(stderr, "tiershade render: %s: --dump-draws captures the one-sample frame a bare engine replays "

@@ -131,7 +131,7 @@ bool run(const DemoOptions &opt, std::string *err) {
   std::vector<ImageF> pair;
   for (const int bounces : {0, 8}) {
     Scene r = room;
-    r.lightmaps.bounces = bounces;
+    r.lightmaps.quality.bounces = bounces;
     SceneRenderResult res;
     if (!lit_frame(r, Tier::SM3, cfg, &res, err)) return false;
     pair.push_back(srgb_display(res.lit));

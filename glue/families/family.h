@@ -94,6 +94,7 @@ struct DemoSection {
 };
 struct BenchOptions {
   int size = 1024, runs = 7;
+  std::string plot_dir;  // where a section may write its SVG plots ("": none)
 };
 struct BenchSection {
   const char *name;

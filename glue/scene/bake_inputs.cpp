@@ -1,6 +1,10 @@
 // tiershade scene: the bake's inputs from a scene (bake_inputs.h).
 #include "scene/bake_inputs.h"
 
+#include <ctime>
+
+#include "bake/bake_dir.h"
+
 void bake_lights_of(const Scene &s, WorldBakeInput *in) {
   for (const SceneLight &l : s.lights) {
     rnm_light r{};
@@ -34,4 +38,20 @@ bool build_scene_rays(const Scene &s, const std::vector<int> &face_of_draw, RayS
     return false;
   }
   return true;
+}
+
+BakeQuality scene_bake_quality(const Scene &s, std::string *note) {
+  BakeQuality quality = s.lightmaps.quality, baked;
+  note->clear();
+  if (s.lightmaps.bake.empty() || !read_bake_quality(s.lightmaps.bake, &baked)) return quality;
+  if (!bake_quality_same(baked, quality))
+    *note = s.lightmaps.bake + " was baked at quality " + bake_quality_text(baked) + "; the scene's is " +
+        bake_quality_text(quality) + ": the frame shows the bake's";
+  return baked;
+}
+
+double process_cpu_ms() {
+  timespec t{};
+  clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &t);
+  return t.tv_sec * 1e3 + t.tv_nsec / 1e6;
 }

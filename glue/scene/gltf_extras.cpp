@@ -234,16 +234,35 @@ bool read_hdr_settings(const tinygltf::Value &v, const std::string &place, const
 
 bool read_lightmaps(const tinygltf::Value &v, const std::string &place, const std::string &dir, SceneLightmaps *l,
                     Err &e) {
-  if (!check_keys(v, place, {"luxels_per_unit", "encoding", "page", "image", "bounces", "gather_rays", "supersample", "seed", "bake"}, e))
+  if (!check_keys(v, place,
+                  {"luxels_per_unit", "encoding", "page", "image", "quality", "bounces", "gather_rays", "supersample",
+                   "area_samples", "spread_samples", "threshold", "seed", "bake"},
+                  e))
     return false;
-  if (v.Has("bounces") && !read_int(v.Get("bounces"), place + ".bounces", 0, 100, &l->bounces, e)) return false;
+  // The quality (glue/bake/bake_quality.h): a preset and the keys that override it, within the
+  // ranges `tiershade bake`'s options take (glue/cli/cmd_bake.cpp).
+  if (v.Has("quality")) {
+    BakeQuality q;
+    if (!read_string(v.Get("quality"), place + ".quality", &l->quality_preset, e)) return false;
+    if (!bake_quality_preset(l->quality_preset, &q))
+      return e.fail(place + ".quality", quoted(l->quality_preset) + " is not a preset (" +
+                                            bake_quality_preset_names() + ")");
+  }
+  BakeQualityKeys &k = l->keys;
+  if (v.Has("bounces") && !read_int(v.Get("bounces"), place + ".bounces", 0, 100, &k.bounces, e)) return false;
   if (v.Has("seed") && !read_int(v.Get("seed"), place + ".seed", 0, 1 << 30, &l->seed, e)) return false;
-  if (v.Has("supersample") && !read_int(v.Get("supersample"), place + ".supersample", 1, 8, &l->supersample, e))
+  if (v.Has("supersample") && !read_int(v.Get("supersample"), place + ".supersample", 1, 8, &k.supersample, e))
     return false;
-  if (v.Has("gather_rays") && !read_int(v.Get("gather_rays"), place + ".gather_rays", 1, 1024, &l->gather_rays, e))
+  if (v.Has("gather_rays") && !read_int(v.Get("gather_rays"), place + ".gather_rays", 1, 1024, &k.gather_rays, e))
     return false;
+  if (v.Has("area_samples") && !read_int(v.Get("area_samples"), place + ".area_samples", 0, 1024, &k.area_samples, e))
+    return false;
+  if (v.Has("spread_samples") &&
+      !read_int(v.Get("spread_samples"), place + ".spread_samples", 1, 1024, &k.spread_samples, e))
+    return false;
+  if (v.Has("threshold") && !read_number(v.Get("threshold"), place + ".threshold", 0, 1, &k.threshold, e)) return false;
   if (v.Has("luxels_per_unit") &&
-      !read_number(v.Get("luxels_per_unit"), place + ".luxels_per_unit", 0.01, 1024, &l->luxels_per_unit, e))
+      !read_number(v.Get("luxels_per_unit"), place + ".luxels_per_unit", 0.01, 1024, &k.luxels_per_unit, e))
     return false;
   if (v.Has("encoding")) {
     if (!read_string(v.Get("encoding"), place + ".encoding", &l->encoding, e)) return false;
@@ -326,7 +345,9 @@ bool read_sky(const tinygltf::Value &v, const std::string &place, const std::str
     if (!read_number(v.Get("scale"), place + ".scale", 0, 1e6, &d, e)) return false;
     s->sky.scale = static_cast<float>(d);
   }
-  if (v.Has("samples") && !read_int(v.Get("samples"), place + ".samples", 1, 4096, &s->sky.samples, e)) return false;
+  if (v.Has("samples") &&
+      !read_int(v.Get("samples"), place + ".samples", 1, 4096, &s->lightmaps.keys.sky_samples, e))
+    return false;
   if (v.Has("sun")) {
     const std::string sp = place + ".sun";
     const tinygltf::Value &o = v.Get("sun");
@@ -433,6 +454,10 @@ bool convert_tiershade_extras(const tinygltf::Model &m, const std::string &dir, 
     if (t.Has("sky") && !read_sky(t.Get("sky"), place + ".sky", dir, s, e)) return false;
     if (t.Has("volume") && !read_volume(t.Get("volume"), place + ".volume", &s->volume, e)) return false;
   }
+  // The quality at load: the scene's preset (else draft) with its own keys (glue/bake/bake_quality.h).
+  BakeQuality q;
+  bake_quality_preset(s->lightmaps.quality_preset.empty() ? "draft" : s->lightmaps.quality_preset, &q);
+  s->lightmaps.quality = bake_quality_with(q, s->lightmaps.keys);
   for (const SceneMaterial &mat : s->materials)
     if (mat.probe >= static_cast<int>(s->probes.size()))
       return e.fail(mat.where + ".extras.source.probe",

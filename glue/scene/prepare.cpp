@@ -343,6 +343,8 @@ bool prepare_scene(const Scene &s, const SceneSelection &sel, int w, int h, Api 
   std::vector<std::array<double, 4>> face_frame;  // min a, min b (projection offsets)
   std::vector<int> world_probe_index(s.probes.size(), -1);
   std::vector<std::string> face_where;  // each face's primitive, for the bake directory
+  std::string quality_note;  // the bake's quality (scene/bake_inputs.h: a bake directory's own)
+  const BakeQuality quality = scene_bake_quality(s, &quality_note);
   for (size_t di = 0; di < sel.draws.size(); ++di) {
     const SceneDrawChoice &c = sel.draws[di];
     if (c.family != "world_lighting") continue;
@@ -353,7 +355,7 @@ bool prepare_scene(const Scene &s, const SceneSelection &sel, int w, int h, Api 
     double frame_min[2];
     if (!p.uv1.empty()) {  // TEXCOORD_1: the mesh's own lightmap chart (glue/bake/charts.h)
       if (!world_face_from_chart(p.position, p.normal, p.tangent, p.uv1, p.indices, m.name.c_str(), m.probe,
-                                 s.lightmaps.luxels_per_unit, p.where, &f, err)) {
+                                 quality.luxels_per_unit, p.where, &f, err)) {
         *err = s.path + ": " + *err;
         return false;
       }
@@ -379,10 +381,11 @@ bool prepare_scene(const Scene &s, const SceneSelection &sel, int w, int h, Api 
   std::unique_ptr<RayScene> rays;  // every triangle of the scene: the bake's visibility, the probes' sight
   if (!ws.faces.empty()) {
     const auto t0 = Clock::now();
+    const double cpu0 = process_cpu_ms();
     bake_lights_of(s, &ws);  // the lights and the suns' spread (glue/scene/bake_inputs.h)
     if (s.sky.image >= 0) {  // the sky pass (glue/bake/sky.h)
       const SceneImage &si = s.images.at(static_cast<size_t>(s.sky.image));
-      ws.sky = BakeSky{si.rgba.data(), si.w, si.h, s.sky.scale, s.sky.samples};
+      ws.sky = BakeSky{si.rgba.data(), si.w, si.h, s.sky.scale};
     }
     int cube_size = 16;
     for (size_t i = 0; i < s.probes.size(); ++i) {
@@ -395,14 +398,10 @@ bool prepare_scene(const Scene &s, const SceneSelection &sel, int w, int h, Api 
     if (ws.probes.empty()) ws.probes.push_back(ts_v3d(0, 0, 0)), ws.trace_cube.push_back(0);  // bake_world picks one per face
     for (WorldFace &f : ws.faces)
       if (f.probe >= 0) f.probe = world_probe_index.at(f.probe) >= 0 ? world_probe_index[f.probe] : -1;
-    ws.luxels_per_unit = s.lightmaps.luxels_per_unit;
-    ws.page_w = s.lightmaps.page_w;
-    ws.page_h = s.lightmaps.page_h;
-    ws.cube_size = cube_size;
-    ws.bounce.max_bounces = s.lightmaps.bounces;
-    ws.bounce.gather_rays = s.lightmaps.gather_rays;
-    ws.supersample = s.lightmaps.supersample;
+    apply_bake_quality(quality, &ws);  // density, samples, bounces (and the sky's samples)
+    ws.page_w = s.lightmaps.page_w, ws.page_h = s.lightmaps.page_h, ws.cube_size = cube_size;
     ws.bounce.seed = static_cast<uint64_t>(s.lightmaps.seed);
+    ws.bounce.threads = s.lightmaps.threads;  // the same bytes for any count
     const bool from_file = !s.lightmaps.image_rgba.empty();
     if (from_file) ws.page_in = &s.lightmaps.image_rgba;
     // Visibility: one BVH of every triangle of the scene, world and model (glue/bake/ray_scene.h).
@@ -416,6 +415,8 @@ bool prepare_scene(const Scene &s, const SceneSelection &sel, int w, int h, Api 
                                                         ": the page cannot hold the scene's faces: ") + *err;
       return false;
     }
+    ps.bake_summary.quality = quality;
+    if (!quality_note.empty()) ps.notes.push_back(quality_note);  // a render says so
     // A page from the scene's lightmaps.image: the placement above is its layout (the same
     // faces, density and page size as the bake that wrote it; docs/scenes.md).
     ps.lightmap_page = bake.page;
@@ -429,11 +430,11 @@ bool prepare_scene(const Scene &s, const SceneSelection &sel, int w, int h, Api 
       if (world_probe_index[i] >= 0) probes.traced[i] = bake.cubes.at(world_probe_index[i]);
     ps.lightmap_texels = ws.page_w * ws.page_h;
     ps.bake_ms = std::chrono::duration<double, std::milli>(Clock::now() - t0).count();
+    ps.bake_cpu_ms = process_cpu_ms() - cpu0;
     ps.bake_luxels = bake.luxels;
     ps.bake_gather_rays = bake.bounce.rays;
     ps.bake_passes = bake.bounce.passes;
-    ps.bake_direct_ms = bake.direct_ms;
-    ps.bake_bounce_ms = bake.bounce_ms;
+    ps.bake_direct_ms = bake.direct_ms, ps.bake_bounce_ms = bake.bounce_ms;
     ps.bake_direct_rays = bake.direct_rays;
     ps.bake_sky_rays = bake.sky.rays, ps.bake_area_rays = bake.area.rays;
     ps.bake_sky_ms = bake.sky.ms, ps.bake_area_ms = bake.area.ms, ps.bake_cubes_ms = bake.cubes_ms;

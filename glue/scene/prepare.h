@@ -77,6 +77,7 @@ struct PreparedScene {
   long bake_direct_rays = 0, bake_sky_rays = 0, bake_area_rays = 0;
   double bake_sky_ms = 0, bake_area_ms = 0;
   double bake_cubes_ms = 0;  // the baker's ray-traced probe cubes (probes[].source "rays")
+  double bake_cpu_ms = 0;  // the bake's process CPU time, every thread's (the bench's Embree share)
   IrradianceVolume volume;  // the models' irradiance volume (docs/irradiance_volume.md); no samples: none
   std::vector<std::string> notes;
   PreparedSky sky;  // the skybox (glue/scene/skybox_pass.h); absent without a sky

@@ -6,6 +6,7 @@
 #include <string>
 #include <vector>
 
+#include "bake/bake_quality.h"
 #include "offline/light_folding.h"
 
 // An image as stored: 8-bit files as code/255 (no transfer function applied: the user of the
@@ -153,13 +154,17 @@ struct SceneHdr {
 
 // Lightmap settings ("lightmaps" in the scene's extras), used by World materials.
 struct SceneLightmaps {
-  double luxels_per_unit = 6;
+  // The bake's quality (glue/bake/bake_quality.h, docs/baking.md "Quality"): the preset "quality"
+  // names (the scene's key; absent: draft, what render bakes at load) with the scene's own keys
+  // (luxels_per_unit, supersample, area_samples, spread_samples, bounces, gather_rays, threshold,
+  // and sky.samples) applied; `tiershade bake` recomputes it from its options.
+  BakeQuality quality;
+  std::string quality_preset;  // the scene's "quality" key ("": none)
+  BakeQualityKeys keys;  // the scene's own keys
+  int threads = 0;  // the bake's threads (0: all cores; not a scene key: `tiershade bake --threads`)
   std::string encoding = "rgbe";  // "float" | "412" | "ldr" | "rgbe" (world_lighting LIGHTMAP_ENCODING),
       // or "float32": LIGHTMAP_ENCODING 0 reading the unquantised page (a reference, not a run-time format)
   int page_w = 512, page_h = 256;
-  int bounces = 0;  // diffuse interreflection passes (0: direct light only; glue/bake/bounce.h)
-  int gather_rays = 64;  // per luxel, pass and lightmap
-  int supersample = 2;  // direct light: supersample x supersample samples per luxel (vrad: 4)
   int seed = 0;  // the gather rays' random streams (another seed: independent noise)
   // "image": a baked page read from a file (EXR or Radiance HDR, relative to the scene file) in
   // tiershade's page layout (written by `tiershade bake`), instead of baking the luxels at load.
@@ -190,7 +195,7 @@ struct SceneFog {
 struct SceneSky {
   int image = -1;  // index into images (.hdr/.exr lat-long, the probes' convention); -1: no sky
   float scale = 1.f;  // radiance multiplier
-  int samples = 64;  // bake rays per luxel and lightmap value
+  // (its bake rays per luxel and value, "samples": lightmaps.keys.sky_samples, a quality key)
 };
 
 // The irradiance volume ("volume" in the scene's extras; docs/irradiance_volume.md): baked for

@@ -19,12 +19,13 @@ SceneVolumeSetup scene_volume_setup(const Scene &s, const std::vector<WorldFace>
   u.set.fit = s.volume.fit == "mean" ? AmbientFit::Mean : AmbientFit::Lsq;
   if (s.sky.image >= 0) {  // a ray that leaves the scene sees the sky (glue/bake/sky.h), as the bake's do
     const SceneImage &si = s.images.at(static_cast<size_t>(s.sky.image));
-    const BakeSky sky{si.rgba.data(), si.w, si.h, s.sky.scale, s.sky.samples};
+    // (The sky's bake samples are no input of the volume: its rays each read sky_radiance. The
+    // flat lightmaps they shape are hashed with the volume's inputs.)
+    const BakeSky sky{si.rgba.data(), si.w, si.h, s.sky.scale};
     ContentHash h;
     h.value(si.w);
     h.value(si.h);
     h.value(s.sky.scale);
-    h.value(s.sky.samples);
     h.values(si.rgba);
     u.sky_hash = h.h;
     u.set.sky_radiance = [sky](const glm::dvec3 &d) {
@@ -42,9 +43,10 @@ bool bake_scene_volume(const Scene &s, const SceneSelection &sel, const std::vec
   bool models = false;
   for (const SceneDrawChoice &c : sel.draws) models = models || c.family == "model_lighting";
   if (!models || faces.empty() || !s.ambient.empty() || !s.volume.enabled) return true;  // only what the scene calls for
-  const SceneVolumeSetup u = scene_volume_setup(s, faces);
+  SceneVolumeSetup u = scene_volume_setup(s, faces);
   const std::vector<LuxelGrid> grids = flat_grids_from_page(bake.place, bake.page, page_w);
   const VolumeInputs in = volume_inputs(u.lo, u.hi, u.set, faces, grids, rays.content_hash(), u.sky_hash);
+  u.set.threads = s.lightmaps.threads;  // the same bytes for any count
   if (!s.lightmaps.bake.empty())  // the bake directory's volume, refused when stale (glue/bake/volume_file.h)
     return read_volume_dir(s.lightmaps.bake, in, out, err);
   if (!bake_irradiance_volume(u.lo, u.hi, faces, grids, rays, u.set, out, err)) {

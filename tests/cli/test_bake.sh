@@ -51,7 +51,8 @@ mkdir -p "$TMP/wl"
 ln -s "$HERE/scenes/world_lighting.bin" "$TMP/wl/world_lighting.bin"
 ln -s "$HERE/scenes/textures" "$TMP/wl/textures"
 sed 's/"lightmaps": {/"lightmaps": {"image": "page.exr", /' "$HERE/scenes/world_lighting.gltf" > "$TMP/wl/from_page.gltf"
-in_repo bake scenes/world_lighting.gltf -o "$TMP/wl/page.exr"
+# --quality draft: what render bakes at load (docs/baking.md, "Quality"), so the frames can be equal.
+in_repo bake scenes/world_lighting.gltf --quality draft -o "$TMP/wl/page.exr"
 if [ "$RC" -eq 0 ] && [ -s "$TMP/wl/page.exr" ] && grep -q "512 x 256 lightmap page" "$OUT"; then
   pass "bake world_lighting: a 512 x 256 page"
 else fail "bake world_lighting" "status $RC: $(head -n 2 "$ERR")"; fi
@@ -96,7 +97,7 @@ expect "page of the wrong size" 1 "small\.gltf: extras\.tiershade\.lightmaps\.im
   "$TMP/small.exr" render "$TMP/wl/small.gltf" --size 32x18 --backend cpu -o "$TMP/small"
 
 # --- the bake directory ------------------------------------------------------------------------
-in_repo bake scenes/world_lighting.gltf -o "$TMP/wl/world.bake"
+in_repo bake scenes/world_lighting.gltf --quality draft -o "$TMP/wl/world.bake"
 if [ "$RC" -eq 0 ] && [ -s "$TMP/wl/world.bake/page.exr" ] && grep -q '"format": "tiershade bake"' "$TMP/wl/world.bake/manifest.json" &&
   grep -q '"all": "[0-9a-f]\{16\}"' "$TMP/wl/world.bake/manifest.json" && grep -q '"block_w"' "$TMP/wl/world.bake/manifest.json" &&
   [ ! -e "$TMP/wl/world.bake.partial" ] && grep -q '^baked: 13 faces with a normal map: 4 values' "$OUT" &&
@@ -112,8 +113,9 @@ for b in cpu osmesa; do
   if [ "$RC" -eq 0 ] && cmp -s "$TMP/dir_$b.exr" "$TMP/load_$b.exr"; then pass "render from the bake directory == bake at load ($b)"
   else fail "render from the bake directory ($b)" "status $RC or the frames differ: $(head -n 2 "$ERR")"; fi
 done
-sed 's/"lightmaps": {/"lightmaps": {"bake": "world.bake", "bounces": 2, /' "$HERE/scenes/world_lighting.gltf" > "$TMP/wl/stale.gltf"
-expect "stale bake (settings) refused" 1 "world\.bake/manifest\.json: stale bake: the bake settings \(bounces 0 -> 2\)" \
+# (Another quality is no staleness: the render takes the bake's, tests/cli/test_bake_quality.sh; the seed is.)
+sed 's/"lightmaps": {/"lightmaps": {"bake": "world.bake", "seed": 5, /' "$HERE/scenes/world_lighting.gltf" > "$TMP/wl/stale.gltf"
+expect "stale bake (settings) refused" 1 "world\.bake/manifest\.json: stale bake: the bake settings \(seed 0 -> 5\)" \
   "$TMP/stale.exr" render "$TMP/wl/stale.gltf" --size 32x18 --backend cpu -o "$TMP/stale"
 sed 's/"intensity": 6.0/"intensity": 6.5/; s/"lightmaps": {/"lightmaps": {"bake": "world.bake", /' "$HERE/scenes/world_lighting.gltf" > "$TMP/wl/stale_l.gltf"
 expect "stale bake (a light) refused" 1 "manifest\.json: stale bake: the lights changed" \

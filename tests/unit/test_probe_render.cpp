@@ -38,9 +38,9 @@ bool load_room(Scene *s, std::string *err) {
   if (!load_scene(kRoom, s, err)) return false;
   for (SceneProbe &p : s->probes) p.size = kSize;
   // A coarser, quicker bake (what the cubes show is the page, whatever its density): seconds under ASan.
-  s->lightmaps.luxels_per_unit = 2;
-  s->lightmaps.supersample = 1;
-  s->sky.samples = 4;
+  s->lightmaps.quality.luxels_per_unit = 2;
+  s->lightmaps.quality.supersample = 1;
+  s->lightmaps.quality.sky_samples = 4;
   return true;
 }
 

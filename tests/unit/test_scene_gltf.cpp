@@ -183,7 +183,7 @@ void test_world_lighting() {
   // (extras.tiershade.sky.sun, its spread in radians).
   check(s.materials.size() == 7 && s.primitives.size() == 24 && s.lights.size() == 4 && s.probes.size() == 2,
         "world_lighting: 7 materials, 24 quads, 4 lights, 2 probes");
-  check(s.sky.image >= 0 && s.sky.samples == 16 && s.lights.back().light.type == TS_LIGHT_DIRECTIONAL &&
+  check(s.sky.image >= 0 && s.lightmaps.quality.sky_samples == 16 && s.lights.back().light.type == TS_LIGHT_DIRECTIONAL &&
             std::fabs(s.lights.back().spread - 4 * M_PI / 180) < 1e-12,
         "world_lighting: the sky and its soft sun");
   std::string why;
@@ -218,7 +218,7 @@ void test_world_lighting() {
   check(constant, "world_lighting: constant-valued mask texture");
   check(s.probes[0].image == -1 && s.probes[1].image == -1 && s.probes[1].size == 32,
         "world_lighting: probes from the world");
-  check(near(s.lightmaps.luxels_per_unit, 8) && s.lightmaps.encoding == "rgbe" && s.lightmaps.page_w == 512 &&
+  check(near(s.lightmaps.quality.luxels_per_unit, 8) && s.lightmaps.encoding == "rgbe" && s.lightmaps.page_w == 512 &&
             s.lightmaps.page_h == 256,
         "world_lighting: lightmap settings");
   const SceneCamera &c = s.cameras[s.camera];

@@ -112,8 +112,9 @@ void test_bounces(const Scene &room, const std::string &path) {
   Scene s;
   std::string err;
   check(load_edited(path, lux, lux + " \"bounces\": 3, \"gather_rays\": 9, \"supersample\": 3,", &s, &err) &&
-            s.lightmaps.bounces == 3 && s.lightmaps.gather_rays == 9 && s.lightmaps.supersample == 3 &&
-            room.lightmaps.bounces == 0 && room.lightmaps.gather_rays == 64 && room.lightmaps.supersample == 2,
+            s.lightmaps.quality.bounces == 3 && s.lightmaps.quality.gather_rays == 9 &&
+            s.lightmaps.quality.supersample == 3 && room.lightmaps.quality.bounces == 0 &&
+            room.lightmaps.quality.gather_rays == 64 && room.lightmaps.quality.supersample == 2,
         "bounces: lightmaps.bounces, gather_rays, supersample read (defaults 0, 64, 2)", err);
   for (const char *bad : {" \"bounces\": 101,", " \"gather_rays\": 0,", " \"supersample\": 9,"}) {
     err.clear();
@@ -144,8 +145,8 @@ void test_bounces(const Scene &room, const std::string &path) {
   SceneSelection s0, s2, se;
   PreparedScene p0, p2, pe;
   Scene b2 = room, be = s;
-  b2.lightmaps.bounces = be.lightmaps.bounces = 2;
-  b2.lightmaps.gather_rays = be.lightmaps.gather_rays = 16;
+  b2.lightmaps.quality.bounces = be.lightmaps.quality.bounces = 2;
+  b2.lightmaps.quality.gather_rays = be.lightmaps.quality.gather_rays = 16;
   if (!prepared(room, Tier::SM3, 16, 8, &s0, &p0, &err) || !prepared(b2, Tier::SM3, 16, 8, &s2, &p2, &err) ||
       !prepared(be, Tier::SM3, 16, 8, &se, &pe, &err))
     return check(false, "bounces: prepare", err);
