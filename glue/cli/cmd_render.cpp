@@ -164,12 +164,13 @@ int cmd_render(int argc, char **argv) {
       DumpDraw dd;
       dd.shader = d.variant->shader->name;
       dd.variant = d.variant->name();
-      dd.position = d.position;
-      dd.normal = d.normal;
-      dd.uv = d.uv;
-      dd.tangent = d.tangent;
-      dd.lightmap = d.lightmap;
-      dd.indices = d.indices;
+      // The draw's arrays as bound (a shared mesh's in object space: its u_model is a uniform).
+      dd.position = d.geo->position;
+      dd.normal = d.geo->normal;
+      dd.uv = d.geo->uv;
+      dd.tangent = d.geo->tangent;
+      dd.lightmap = d.geo->lightmap;
+      dd.indices = d.geo->indices;
       for (int t : d.tex) {
         auto &shared = dump_textures[t];
         if (!shared) shared = std::make_shared<const TextureDesc>(ps.textures.at(t));

@@ -83,16 +83,35 @@ const int kVary = 24;  // 6 slots x 4
 const int kPixelSlots = 6;  // ML_PIXEL_SLOTS == WL_PIXEL_SLOTS
 const int kChunk = 64;  // pixels per batched call of scene_shade_cpu (a multiple of 8)
 
+// u_model * vec4(X, 1) (a point) or vec4(X, 0) (a direction) in float, summed left to right as
+// llvmpipe's vertex shader sums a mat4 * vec4 (model_lighting.vs); the constant w's term is
+// folded by the compiler (x * 1 = x; x * 0 and + 0 dropped, no signed zeros kept by GLSL).
+inline void model_point(const float *m, const float *X, float *out) {
+  for (int r = 0; r < 3; ++r) out[r] = m[r] * X[0] + m[4 + r] * X[1] + m[8 + r] * X[2] + m[12 + r];
+}
+inline void model_direction(const float *m, const float *X, float *out) {
+  for (int r = 0; r < 3; ++r) out[r] = m[r] * X[0] + m[4 + r] * X[1] + m[8 + r] * X[2];
+}
+
 // The production vertex shaders' outputs (model_lighting.vs, world_lighting.vs) in float.
 void vertex_stage(const PreparedScene &p, const PreparedDraw &d, std::vector<float> *clip, std::vector<float> *vary) {
-  const size_t n = d.position.size() / 3;
+  const DrawGeometry &g = *d.geo;
+  const size_t n = g.vertices();
   clip->assign(n * 4, 0.f);
   vary->assign(n * kVary, 0.f);
   const float *m = p.view_proj;
   const bool ps20 = !d.world && d.variant->tier == Tier::PS20;
   const int nl = ps20 ? d.variant->value("NUM_LIGHTS") : 0;
   for (size_t i = 0; i < n; ++i) {
-    const float *P = &d.position[i * 3], *N = &d.normal[i * 3], *T = &d.tangent[i * 4], *UV = &d.uv[i * 2];
+    const float *P = &g.position[i * 3], *N = &g.normal[i * 3], *T = &g.tangent[i * 4], *UV = &g.uv[i * 2];
+    float Pw[3], Nw[3], Tw[4];
+    if (d.instanced) {  // object space: the world vectors as u_model makes them
+      model_point(d.model, P, Pw);
+      model_direction(d.model, N, Nw);
+      model_direction(d.model, T, Tw);
+      Tw[3] = T[3];
+      P = Pw, N = Nw, T = Tw;
+    }
     float *c = &(*clip)[i * 4];
     // u_view_proj * vec4(P, 1) in float, summed left to right as llvmpipe's vertex shader
     // does (the visibility must match GL's): not glm's mat4 * vec4, which sums in pairs.
@@ -106,7 +125,7 @@ void vertex_stage(const PreparedScene &p, const PreparedDraw &d, std::vector<flo
       v[slot * 4 + 3] = w;
     };
     if (d.world) {
-      const float *L = &d.lightmap[i * 4];
+      const float *L = &g.lightmap[i * 4];
       put(WL_SLOT_UV, UV[0], UV[1], L[0], L[1]);
       put(WL_SLOT_LM_OFFSET, L[2], L[3], c[3], 0);
       put(WL_SLOT_NORMAL, N[0], N[1], N[2], 0);
@@ -198,11 +217,17 @@ void finish_setup(ScreenTri *s) {
 
 // The clip coordinates alone (what the rasteriser needs), as vertex_stage computes them.
 void scene_clip_stage(const PreparedScene &p, const PreparedDraw &d, std::vector<float> *clip) {
-  const size_t n = d.position.size() / 3;
+  const DrawGeometry &g = *d.geo;
+  const size_t n = g.vertices();
   clip->resize(n * 4);
   const float *m = p.view_proj;
   for (size_t i = 0; i < n; ++i) {
-    const float *P = &d.position[i * 3];
+    const float *P = &g.position[i * 3];
+    float Pw[3];
+    if (d.instanced) {
+      model_point(d.model, P, Pw);
+      P = Pw;
+    }
     float *c = &(*clip)[i * 4];
     for (int r = 0; r < 4; ++r) c[r] = m[r] * P[0] + m[4 + r] * P[1] + m[8 + r] * P[2] + m[12 + r];
   }
@@ -211,10 +236,11 @@ void scene_clip_stage(const PreparedScene &p, const PreparedDraw &d, std::vector
 void scene_tri_setup(const PreparedScene &p, int di, const std::vector<float> &clip, std::vector<ScreenTri> *out) {
   const PreparedDraw &d = p.draws[di];
   const double W = p.w, H = p.h;
-  for (size_t t = 0; t + 2 < d.indices.size(); t += 3) {
+  const std::vector<uint32_t> &indices = d.geo->indices;
+  for (size_t t = 0; t + 2 < indices.size(); t += 3) {
     ClipVert in[3];
     for (int k = 0; k < 3; ++k) {
-      const float *c = &clip[d.indices[t + k] * 4];
+      const float *c = &clip[indices[t + k] * 4];
       for (int j = 0; j < 4; ++j) in[k].c[j] = c[j];
       for (int j = 0; j < 3; ++j) in[k].bary[j] = j == k ? 1.0 : 0.0;
     }
@@ -420,13 +446,28 @@ void scene_rasterize_cpu(const PreparedScene &p, SceneVisibility *vis, int threa
   if (getenv("TS_DRAW_MS")) fprintf(stderr, "C raster setup: %zu triangles\n", total);
 }
 
+namespace {
+
+// The vertex outputs of the draws that own a pixel of vis (the others' stay empty: a hidden or
+// off-screen draw costs neither the vertex stage nor its outputs' memory).
+void visible_vertex_stage(const PreparedScene &p, const SceneVisibility &vis, std::vector<std::vector<float>> *vary) {
+  std::vector<char> seen(p.draws.size(), 0);
+  for (int32_t d : vis.draw)
+    if (d >= 0 && static_cast<size_t>(d) < seen.size()) seen[static_cast<size_t>(d)] = 1;
+  vary->assign(p.draws.size(), {});
+  std::vector<float> clip;
+  for (size_t di = 0; di < p.draws.size(); ++di)
+    if (seen[di]) vertex_stage(p, p.draws[di], &clip, &(*vary)[di]);
+}
+
+}  // namespace
+
 void scene_shade_cpu(const PreparedScene &p, const SceneVisibility &vis, ImageF *out, int threads,
                      const std::function<void(double)> &progress) {
   std::vector<DrawCtx> ctx;
   make_ctx(p, &ctx);
-  std::vector<std::vector<float>> vary(p.draws.size());
-  std::vector<float> clip;
-  for (size_t di = 0; di < p.draws.size(); ++di) vertex_stage(p, p.draws[di], &clip, &vary[di]);
+  std::vector<std::vector<float>> vary;
+  visible_vertex_stage(p, vis, &vary);
   out->w = p.w;
   out->h = p.h;
   if (out->rgba.size() != static_cast<size_t>(p.w) * p.h * 4)  // every pixel is written below
@@ -458,7 +499,7 @@ void scene_shade_cpu(const PreparedScene &p, const SceneVisibility &vis, ImageF 
       const int nused = c.nused;
       std::copy(c.used, c.used + nused, used);
       const float *vd = vary[d].data();
-      const uint32_t *indices = p.draws[d].indices.data();
+      const uint32_t *indices = p.draws[d].geo->indices.data();
       const int32_t *tri = vis.tri.data() + row;
       const float *vb1 = vis.b1.data() + row, *vb2 = vis.b2.data() + row;
       ts_vec4f *pp = pix.data();
@@ -521,9 +562,8 @@ void scene_shade_records(const PreparedScene &p, const std::vector<int> &draw, c
 
 void scene_records_cpu(const PreparedScene &p, const SceneVisibility &vis, std::vector<int> *draw,
                        std::vector<float> *slots, int threads) {
-  std::vector<std::vector<float>> vary(p.draws.size());
-  std::vector<float> clip;
-  for (size_t di = 0; di < p.draws.size(); ++di) vertex_stage(p, p.draws[di], &clip, &vary[di]);
+  std::vector<std::vector<float>> vary;
+  visible_vertex_stage(p, vis, &vary);
   const size_t n = static_cast<size_t>(p.w) * p.h;
   draw->assign(vis.draw.begin(), vis.draw.end());
   slots->assign(n * kVary, 0.f);
@@ -532,7 +572,7 @@ void scene_records_cpu(const PreparedScene &p, const SceneVisibility &vis, std::
       const size_t q = static_cast<size_t>(y) * p.w + x;
       const int d = vis.draw[q];
       if (d < 0) continue;
-      const uint32_t *idx = &p.draws[d].indices[static_cast<size_t>(vis.tri[q]) * 3];
+      const uint32_t *idx = &p.draws[d].geo->indices[static_cast<size_t>(vis.tri[q]) * 3];
       const float b1 = vis.b1[q], b2 = vis.b2[q], b0 = 1.f - b1 - b2;
       const float *vd = vary[d].data();
       const float *v0 = &vd[idx[0] * kVary], *v1 = &vd[idx[1] * kVary], *v2 = &vd[idx[2] * kVary];
