@@ -359,6 +359,8 @@ int cmd_render(int argc, char **argv) {
            median(warm_frame), median(warm_lit), median(warm_post), warm_frames, cfg.w, cfg.h);
   if (!quiet || a.flag("--report-memory")) {
     printf("peak memory: %.1f MiB\n", peak_mib());
+    printf("geometry: %.1f KiB of vertex arrays in %d sets for %d draws (instances of a mesh share one)\n",
+           static_cast<double>(res.geometry_bytes) / 1024.0, res.geometries, res.draws);
   }
   if (cfg.check && res.check_msaa_interior >= 0) {
     printf("check: MSAA interior pixels, GL's resolved frame vs the C twin on GL's G-buffer: %ld of %ld differ (max %d "
