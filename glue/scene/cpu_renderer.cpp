@@ -1,4 +1,5 @@
-// tiershade scene: the C fallback's scene frames (glue/scene/cpu_renderer.h): rasteriser and shading.
+// tiershade scene: the C fallback's scene frames (glue/scene/cpu_renderer.h): vertex stage and shading
+// (the rasteriser: cpu_raster.cpp).
 #include "scene/cpu_renderer.h"
 #include "scene/raster_tri.h"
 
