@@ -233,23 +233,47 @@ static void fold_one(const double I[3], const double L[3], int half_lambert, flo
   }
 }
 
+/* Up to this many lights, each light's luminance is evaluated once into a stack table
+ * (ts_light_incident n times, then n^2 comparisons); more lights re-evaluate them per
+ * comparison as the ranking runs (n^2 evaluations: still no allocation). The same bits
+ * either way: the ranking compares the same doubles. */
+#define TS_FOLD_TABLE 256
+
 int ts_fold_lights(const ts_light *lights, int n, int max_local, const float center[3], int half_lambert,
                    float cube[6][3], int *kept) {
   if (!lights || n <= 0 || !center) return 0;
   if (max_local < 0) max_local = 0;
+  double table[TS_FOLD_TABLE]; /* luminance at center */
+  unsigned char valid[TS_FOLD_TABLE];
+  const int tabled = n <= TS_FOLD_TABLE;
+  for (int i = 0; tabled && i < n; ++i) {
+    double I[3], L[3];
+    table[i] = 0.0;
+    valid[i] = (unsigned char)(validate(&lights[i], NULL, 0) != 0);
+    if (!valid[i]) continue;
+    ts_light_incident(&lights[i], center, I, L);
+    table[i] = luminance(I);
+  }
   int nkept = 0;
   for (int i = 0; i < n; ++i) {
-    if (!validate(&lights[i], NULL, 0)) continue; /* invalid: neither kept nor folded */
+    if (tabled ? !valid[i] : !validate(&lights[i], NULL, 0)) continue; /* invalid: neither kept nor folded */
     double Ii[3], Li[3];
     ts_light_incident(&lights[i], center, Ii, Li);
     double lum_i = luminance(Ii);
     /* rank = number of valid lights ahead of i (brighter, or as bright with a lower index) */
     int rank = 0;
     for (int j = 0; j < n && rank < max_local; ++j) {
-      if (j == i || !validate(&lights[j], NULL, 0)) continue;
-      double Ij[3], Lj[3];
-      ts_light_incident(&lights[j], center, Ij, Lj);
-      double lum_j = luminance(Ij);
+      if (j == i) continue;
+      double lum_j;
+      if (tabled) {
+        if (!valid[j]) continue;
+        lum_j = table[j];
+      } else {
+        if (!validate(&lights[j], NULL, 0)) continue;
+        double Ij[3], Lj[3];
+        ts_light_incident(&lights[j], center, Ij, Lj);
+        lum_j = luminance(Ij);
+      }
       if (lum_j > lum_i || (lum_j == lum_i && j < i)) ++rank;
     }
     if (rank < max_local) {

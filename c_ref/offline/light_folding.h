@@ -66,8 +66,9 @@ double ts_packed_light_attenuation(const float packed[5][4], const double p[3], 
  * folded. Returns the number kept; kept[] (room for max_local entries, may be
  * NULL) receives their indices in ascending (original) order. cube may be NULL
  * to select only (the other lights are then dropped). n <= 0 or
- * lights == NULL returns 0; max_local < 0 counts as 0. O(n^2) time, no
- * allocation. */
+ * lights == NULL returns 0; max_local < 0 counts as 0. No allocation: up to 256
+ * lights, n incident-light evaluations and O(n^2) comparisons; more, O(n^2)
+ * evaluations. */
 int ts_fold_lights(const ts_light *lights, int n, int max_local, const float center[3], int half_lambert,
                    float cube[6][3], int *kept);
 

@@ -63,7 +63,7 @@ Scene room_with_model(const Scene &room, const double at[3]) {
   mm.where = "materials[bench]";
   mm.shader = SceneShader::Model;
   s.materials.push_back(mm);
-  ScenePrimitive m = room.primitives[0];
+  ScenePrimitive m = scene_flattened(room, room.primitives[0]);  // its vertices are edited below
   m.material = static_cast<int>(s.materials.size()) - 1;
   m.instance = -1;
   m.where = "bench model";

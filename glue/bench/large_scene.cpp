@@ -42,6 +42,8 @@ struct Row {
   double prepare_ms = 0, choice_ms = 0;
   double gl_lit = 0, gl_bind = 0;  // medians
   double c_raster = 0, c_shade = 0, c_lit = 0;
+  size_t geometry_bytes = 0;  // the prepared draws' vertex arrays, each shared DrawGeometry once
+  int geometries = 0;
 };
 
 // The per-model light choice of prepare_scene (glue/scene/prepare.cpp model_draw): every model
@@ -74,6 +76,8 @@ bool measure(const Scene &s, int w, int h, int runs, Row *row, std::string *err)
   row->prepare_ms = ms_since(t0);
   row->draws = static_cast<int>(p.draws.size());
   row->lights = static_cast<int>(s.lights.size());
+  row->geometry_bytes = p.geometry_bytes();
+  row->geometries = p.geometries();
   std::vector<double> t;
   for (int i = 0; i < runs; ++i) t.push_back(light_choice_ms(s, p, tier));
   row->choice_ms = median(t);
@@ -177,20 +181,37 @@ bool run(const BenchOptions &opt, std::string *md, std::string *err) {
     << "per model; an engine with moving models runs it per frame). **prepare**: selection and prepare_scene\n"
     << "(lightmap bake, textures, per-draw slots).\n\n"
     << "| models | draws | lights | GL lit ms | GL set-up ms (share) | C raster ms | C shade ms | C lit ms | "
-       "C / GL lit | light choice ms | prepare ms |\n"
+       "C / GL lit | light choice ms (share of GL lit) | prepare ms |\n"
     << "|---|---|---|---|---|---|---|---|---|---|---|\n";
   for (const Row &r : rows)
     o << "| " << r.models << " | " << r.draws << " | " << r.lights << " | " << f1(r.gl_lit) << " | " << f2(r.gl_bind)
       << " (" << f1(100.0 * r.gl_bind / std::max(1e-3, r.gl_lit)) << "%) | " << f1(r.c_raster) << " | "
       << f1(r.c_shade) << " | " << f1(r.c_lit) << " | " << f2(r.c_lit / std::max(1e-3, r.gl_lit)) << " | "
-      << f2(r.choice_ms) << " | " << f1(r.prepare_ms) << " |\n";
-  o << "\nPeak resident memory (VmHWM) of one `tiershade render` process at " << w << "x" << h
-    << " per model count (48 lights):\n\n| models | EGL GLES 3.0 MiB | C fallback MiB |\n|---|---|---|\n";
+      << f2(r.choice_ms) << " (" << f1(100.0 * r.choice_ms / std::max(1e-3, r.gl_lit)) << "%) | " << f1(r.prepare_ms)
+      << " |\n";
+  o << "\nMemory against the draw count (48 lights): the peak resident memory (VmHWM) of one `tiershade render`\n"
+    << "process at " << w << "x" << h << ", and the prepared draws' vertex arrays (PreparedScene::geometry_bytes: each\n"
+    << "DrawGeometry once; the instances of a mesh share one). **per draw**: the growth from the row above over\n"
+    << "the draws added.\n\n"
+    << "| models | draws | geometry KiB (arrays) | EGL GLES 3.0 MiB | per draw KiB | C fallback MiB | per draw KiB |\n"
+    << "|---|---|---|---|---|---|---|\n";
+  double last_gl = 0, last_c = 0;
+  int last_draws = 0;
   for (const Hall &hall : kHalls) {
     double gl = 0, c = 0;
     if (!render_peak_mib(hall.path, "egl", w, h, &gl, err) || !render_peak_mib(hall.path, "cpu", w, h, &c, err))
       return false;
-    o << "| " << hall.models << " | " << f1(gl) << " | " << f1(c) << " |\n";
+    const Row *r = nullptr;  // the hall's row with all its lights
+    for (const Row &x : rows)
+      if (x.models == hall.models) r = &x;
+    const int draws = r ? r->draws : 0;
+    auto per = [&](double now, double before) {
+      return last_draws > 0 && draws > last_draws ? f1((now - before) * 1024.0 / (draws - last_draws)) : std::string("-");
+    };
+    o << "| " << hall.models << " | " << draws << " | " << f1(r ? r->geometry_bytes / 1024.0 : 0) << " ("
+      << (r ? r->geometries : 0) << ") | " << f1(gl) << " | " << per(gl, last_gl) << " | " << f1(c) << " | "
+      << per(c, last_c) << " |\n";
+    last_gl = gl, last_c = c, last_draws = draws;
   }
   *md = o.str();
   return true;

@@ -176,12 +176,13 @@ int cmd_render(int argc, char **argv) {
       DumpDraw dd;
       dd.shader = d.variant->shader->name;
       dd.variant = d.variant->name();
-      dd.position = d.position;
-      dd.normal = d.normal;
-      dd.uv = d.uv;
-      dd.tangent = d.tangent;
-      dd.lightmap = d.lightmap;
-      dd.indices = d.indices;
+      // The draw's arrays as bound (a shared mesh's in object space: its u_model is a uniform).
+      dd.position = d.geo->position;
+      dd.normal = d.geo->normal;
+      dd.uv = d.geo->uv;
+      dd.tangent = d.geo->tangent;
+      dd.lightmap = d.geo->lightmap;
+      dd.indices = d.geo->indices;
       for (int t : d.tex) {
         auto &shared = dump_textures[t];
         if (!shared) shared = std::make_shared<const TextureDesc>(ps.textures.at(t));
@@ -371,6 +372,8 @@ int cmd_render(int argc, char **argv) {
            median(warm_frame), median(warm_lit), median(warm_post), warm_frames, cfg.w, cfg.h);
   if (!quiet || a.flag("--report-memory")) {
     printf("peak memory: %.1f MiB\n", peak_mib());
+    printf("geometry: %.1f KiB of vertex arrays in %d sets for %d draws (instances of a mesh share one)\n",
+           static_cast<double>(res.geometry_bytes) / 1024.0, res.geometries, res.draws);
   }
   if (cfg.check && res.check_msaa_interior >= 0) {
     printf("check: MSAA interior pixels, GL's resolved frame vs the C twin on GL's G-buffer: %ld of %ld differ (max %d "

@@ -30,7 +30,7 @@ Scene room_with_sphere(const Scene &room, const Scene &balls, const double at[3]
       SceneTextureRef();
   m.where = "volume_walk sphere";
   s.materials.push_back(m);
-  ScenePrimitive p = src;
+  ScenePrimitive p = scene_flattened(balls, src);  // its vertices are edited below
   p.material = static_cast<int>(s.materials.size()) - 1;
   p.instance = -1;
   p.where = "volume_walk sphere";

@@ -26,13 +26,16 @@ void bake_lights_of(const Scene &s, WorldBakeInput *in) {
 }
 
 bool build_scene_rays(const Scene &s, const std::vector<int> &face_of_draw, RayScene *rays, std::string *err) {
-  for (size_t i = 0; i < s.primitives.size(); ++i)
-    if (!rays->add_mesh(s.primitives[i].position, s.primitives[i].indices,
-                        i < face_of_draw.size() && face_of_draw[i] >= 0 ? face_of_draw[i] : -2, s.primitives[i].where,
-                        err)) {
+  for (size_t i = 0; i < s.primitives.size(); ++i) {
+    const ScenePrimitive &p = s.primitives[i];
+    // An instance of shared geometry occludes where its node puts it (scene_world_positions).
+    const std::vector<float> world = p.shared ? scene_world_positions(s, p) : std::vector<float>();
+    if (!rays->add_mesh(p.shared ? world : p.position, p.shared ? p.shared->indices : p.indices,
+                        i < face_of_draw.size() && face_of_draw[i] >= 0 ? face_of_draw[i] : -2, p.where, err)) {
       *err = s.path + ": " + *err;
       return false;
     }
+  }
   if (!rays->commit(err)) {
     *err = s.path + ": " + *err;
     return false;

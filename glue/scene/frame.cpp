@@ -416,6 +416,9 @@ bool SceneRenderer::frame(SceneRenderResult *out, std::string *err) {
   }
   res.prepare_ms = m.prepare_ms;
   res.compile_ms = m.compile_ms;
+  res.geometry_bytes = p.geometry_bytes();
+  res.geometries = p.geometries();
+  res.draws = static_cast<int>(p.draws.size());
   const bool cpu = m.cpu;
 
   // ---- lit pass -------------------------------------------------------------------------

@@ -50,6 +50,9 @@ struct SceneRenderResult {
   // Times (ms): preparing draws (bake, textures), compiling the selected variants (GL), the lit
   // pass, post-processing, the whole frame (first frame: compile included).
   double prepare_ms = 0, compile_ms = 0, lit_ms = 0, post_ms = 0, frame_ms = 0;
+  // The draws' vertex arrays (PreparedScene::geometry_bytes, each shared DrawGeometry once).
+  size_t geometry_bytes = 0;
+  int geometries = 0, draws = 0;
   // --check: channels where GL's frame differs from the C twin on GL's G-buffer (-1: not run).
   long check_mismatched = -1, check_pixels = 0;
   uint32_t check_max_ulp = 0;

@@ -3,6 +3,7 @@
 
 #include <chrono>
 #include <cstring>
+#include <map>
 
 #include "shaderlib/assembler.h"
 #include "conform/conform.h"
@@ -73,9 +74,17 @@ bool SceneGl::init(const PreparedScene &p, std::string *err, double *compile_ms,
   g.GenVertexArrays(1, &vao_);
   g.BindVertexArray(vao_);
   for (const TextureDesc &t : p.textures) textures_.push_back(r_.upload_texture(t));
+  // One set of buffers per DrawGeometry: the draws of a shared mesh bind the same ones.
+  std::map<const DrawGeometry *, int> buffer_index;
   for (const PreparedDraw &d : p.draws) {
+    auto it = buffer_index.find(d.geo.get());
+    if (it != buffer_index.end()) {
+      buf_of_draw_.push_back(it->second);
+      continue;
+    }
+    const DrawGeometry &geo = *d.geo;
     Buffers b;
-    const std::vector<float> *arrays[5] = {&d.position, &d.normal, &d.uv, &d.tangent, &d.lightmap};
+    const std::vector<float> *arrays[5] = {&geo.position, &geo.normal, &geo.uv, &geo.tangent, &geo.lightmap};
     g.GenBuffers(5, b.vbo);
     for (int a = 0; a < 5; ++a) {
       g.BindBuffer(GL_ARRAY_BUFFER, b.vbo[a]);
@@ -84,9 +93,11 @@ bool SceneGl::init(const PreparedScene &p, std::string *err, double *compile_ms,
     }
     g.GenBuffers(1, &b.ibo);
     g.BindBuffer(GL_ELEMENT_ARRAY_BUFFER, b.ibo);
-    g.BufferData(GL_ELEMENT_ARRAY_BUFFER, static_cast<GLsizeiptr>(d.indices.size() * sizeof(uint32_t)),
-                 d.indices.data(), GL_STATIC_DRAW);
-    b.count = static_cast<GLsizei>(d.indices.size());
+    g.BufferData(GL_ELEMENT_ARRAY_BUFFER, static_cast<GLsizeiptr>(geo.indices.size() * sizeof(uint32_t)),
+                 geo.indices.data(), GL_STATIC_DRAW);
+    b.count = static_cast<GLsizei>(geo.indices.size());
+    buffer_index[d.geo.get()] = static_cast<int>(buffers_.size());
+    buf_of_draw_.push_back(static_cast<int>(buffers_.size()));
     buffers_.push_back(b);
   }
   // Target: RGBA32F colour and a depth renderbuffer.
@@ -172,7 +183,7 @@ bool SceneGl::bind_draw(size_t i, GLuint program, bool production, std::string *
     const GLint loc = g.GetUniformLocation(program, name);
     if (loc >= 0) g.UniformMatrix4fv(loc, 1, GL_FALSE, m);
   };
-  mat("u_model", p_->model);
+  mat("u_model", d.model);
   mat("u_view_proj", p_->view_proj);
   const GLint eye = g.GetUniformLocation(program, "u_eye_position");
   if (eye >= 0) g.Uniform4f(eye, p_->eye[0], p_->eye[1], p_->eye[2], 1.f);
@@ -194,7 +205,7 @@ bool SceneGl::bind_draw(size_t i, GLuint program, bool production, std::string *
       if (loc >= 0) g.Uniform1i(loc, static_cast<GLint>(t));
     }
   }
-  const Buffers &b = buffers_[i];
+  const Buffers &b = buffers_[static_cast<size_t>(buf_of_draw_[i])];
   for (int a = 0; a < 5; ++a) {
     const GLint loc = g.GetAttribLocation(program, kAttr[a]);
     if (loc < 0) continue;
@@ -250,7 +261,7 @@ bool SceneGl::draw_all(const std::vector<GLuint> &progs, bool production, int gb
     if (progress_) progress_->store(static_cast<int>(i));
     if (before_draw) before_draw(static_cast<int>(i), prog);
     const auto td = Clock::now();
-    g.DrawElements(GL_TRIANGLES, buffers_[i].count, GL_UNSIGNED_INT, nullptr);
+    g.DrawElements(GL_TRIANGLES, buffers_[static_cast<size_t>(buf_of_draw_[i])].count, GL_UNSIGNED_INT, nullptr);
     if (getenv("TS_DRAW_MS")) {
       g.Finish();
       fprintf(stderr, "draw %zu %s: %.1f ms\n", i, p_->draws[i].variant->name().c_str(), ms_since(td));
@@ -275,7 +286,8 @@ void SceneGl::warm(const std::atomic<int> *main_next) {
     if (done[static_cast<size_t>(k)]) continue;
     done[static_cast<size_t>(k)] = true;
     if (!bind_draw(static_cast<size_t>(i), programs_[static_cast<size_t>(k)], true, &err)) break;
-    g.DrawElements(GL_TRIANGLES, buffers_[static_cast<size_t>(i)].count, GL_UNSIGNED_INT, nullptr);
+    g.DrawElements(GL_TRIANGLES, buffers_[static_cast<size_t>(buf_of_draw_[static_cast<size_t>(i)])].count, GL_UNSIGNED_INT,
+                   nullptr);
     g.Finish();
   }
 }

@@ -82,7 +82,8 @@ class SceneGl : NonCopyable {
     GLuint ibo = 0;
     GLsizei count = 0;
   };
-  std::vector<Buffers> buffers_;
+  std::vector<Buffers> buffers_;  // per distinct DrawGeometry
+  std::vector<int> buf_of_draw_;  // per draw: its index in buffers_
   GLuint vao_ = 0, fbo_ = 0, color_ = 0, depth_ = 0;
   int msaa_ = 0, msaa_got_ = 0;
   bool ms_pass_ = false;  // begin_pass binds the multisampled framebuffer

@@ -2,6 +2,8 @@
 // node transforms (GLM, double), and meshes, cameras and lights flattened to world space.
 #include <cstdint>
 #include <cstring>
+#include <map>
+#include <memory>
 
 #include <glm/glm.hpp>
 #include <glm/gtc/constants.hpp>
@@ -186,7 +188,90 @@ struct Walk {
   Scene *s;
   Err &e;
   std::vector<int> seen;  // per node: visited
+  std::vector<int> uses;  // per mesh: the nodes of the scene that instance it
+  std::map<std::pair<int, int>, std::shared_ptr<const SceneGeometry>> shared;  // (mesh, primitive)
 };
+
+// A primitive's accessors as read (doubles), before any transform.
+struct RawPrimitive {
+  std::vector<double> pos, nrm, uv, uv1, tan;
+  std::vector<uint32_t> tri;
+  size_t nv = 0;
+};
+
+// The arrays of `raw` through `world` (double, rounded to float): positions; normals by the
+// inverse transpose, renormalised (flat face normals from the rounded positions when the mesh has
+// none); tangents by the linear part, renormalised, w flipped by a mirror (which also flips the
+// winding); every position into the box bmin..bmax.
+void fill_arrays(const RawPrimitive &raw, const glm::dmat4 &world, SceneGeometry *out, double bmin[3], double bmax[3]) {
+  const glm::dmat3 m3(world);
+  const double det = glm::determinant(m3);
+  const glm::dmat3 it = glm::inverseTranspose(m3);
+  std::vector<uint32_t> tri = raw.tri;
+  if (det < 0)  // a mirroring transform flips the winding: keep the front faces in front
+    for (size_t t = 0; t + 2 < tri.size(); t += 3) std::swap(tri[t + 1], tri[t + 2]);
+  const std::vector<double> &pos = raw.pos, &nrm = raw.nrm, &uv = raw.uv, &uv1 = raw.uv1, &tan = raw.tan;
+  const bool flat = nrm.empty();
+  // Flat normals need one vertex per triangle corner.
+  std::vector<uint32_t> src;
+  if (flat) {
+    src = tri;
+    for (size_t i = 0; i < tri.size(); ++i) tri[i] = static_cast<uint32_t>(i);
+  } else {
+    src.resize(raw.nv);
+    for (size_t i = 0; i < raw.nv; ++i) src[i] = static_cast<uint32_t>(i);
+  }
+  const size_t n = src.size();
+  out->position.resize(n * 3);
+  out->normal.resize(n * 3);
+  out->uv.assign(n * 2, 0.f);
+  if (!tan.empty()) out->tangent.resize(n * 4);
+  if (!uv1.empty()) out->uv1.resize(n * 2);
+  for (size_t i = 0; i < n; ++i) {
+    const size_t v = src[i];
+    glm::dvec3 q = glm::dvec3(world * glm::dvec4(pos[v * 3], pos[v * 3 + 1], pos[v * 3 + 2], 1.0));
+    for (int k = 0; k < 3; ++k) {
+      out->position[i * 3 + k] = static_cast<float>(q[k]);
+      bmin[k] = std::min(bmin[k], q[k]);
+      bmax[k] = std::max(bmax[k], q[k]);
+    }
+    if (!flat) {
+      q = unit_or_zero(it * glm::dvec3(nrm[v * 3], nrm[v * 3 + 1], nrm[v * 3 + 2]));
+      for (int k = 0; k < 3; ++k) out->normal[i * 3 + k] = static_cast<float>(q[k]);
+    }
+    if (!uv.empty())
+      out->uv[i * 2] = static_cast<float>(uv[v * 2]), out->uv[i * 2 + 1] = static_cast<float>(uv[v * 2 + 1]);
+    if (!uv1.empty())
+      out->uv1[i * 2] = static_cast<float>(uv1[v * 2]), out->uv1[i * 2 + 1] = static_cast<float>(uv1[v * 2 + 1]);
+    if (!tan.empty()) {
+      q = unit_or_zero(m3 * glm::dvec3(tan[v * 4], tan[v * 4 + 1], tan[v * 4 + 2]));
+      for (int k = 0; k < 3; ++k) out->tangent[i * 4 + k] = static_cast<float>(q[k]);
+      // The bitangent is w * cross(N, T); under a mirror cross() turns round, so w does too.
+      out->tangent[i * 4 + 3] = static_cast<float>(det < 0 ? -tan[v * 4 + 3] : tan[v * 4 + 3]);
+    }
+  }
+  if (flat)
+    for (size_t t = 0; t + 2 < n; t += 3) {
+      const glm::dvec3 p0 = corner(out->position, t), a = corner(out->position, t + 1) - p0,
+                       b = corner(out->position, t + 2) - p0;
+      const glm::dvec3 c = unit_or_zero(glm::cross(a, b));
+      for (size_t j = t; j < t + 3; ++j)
+        for (int k = 0; k < 3; ++k) out->normal[j * 3 + k] = static_cast<float>(c[k]);
+    }
+  out->indices = std::move(tri);
+}
+
+// A rigid transform (rotation and translation: orthonormal columns within 1e-9, no mirror, the
+// affine bottom row): the shaders' u_model carries it as it is (model_lighting.vs transforms
+// normals and tangents by u_model, which is right for these alone).
+bool rigid(const glm::dmat4 &w) {
+  if (w[0][3] != 0 || w[1][3] != 0 || w[2][3] != 0 || w[3][3] != 1) return false;
+  const glm::dmat3 m3(w);
+  for (int i = 0; i < 3; ++i)
+    for (int j = 0; j < 3; ++j)
+      if (std::fabs(glm::dot(m3[i], m3[j]) - (i == j ? 1.0 : 0.0)) > 1e-9) return false;
+  return glm::determinant(m3) > 0;
+}
 
 bool convert_primitive(Walk &w, int mesh, int pi, const glm::dmat4 &world, int instance, const std::string &node_name,
                        double bmin[3], double bmax[3]) {
@@ -201,20 +286,22 @@ bool convert_primitive(Walk &w, int mesh, int pi, const glm::dmat4 &world, int i
   const int F = TINYGLTF_COMPONENT_TYPE_FLOAT, UB = TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE,
             US = TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT, UI = TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT;
   if (attr("POSITION") < 0) return w.e.fail(place + ".attributes", "no POSITION");
-  std::vector<double> pos, nrm, uv, uv1, tan, idx;
+  RawPrimitive raw;
+  std::vector<double> idx;
   size_t nv = 0, n2 = 0;
-  if (!read_accessor(w.m, attr("POSITION"), place + ".attributes.POSITION", {TINYGLTF_TYPE_VEC3, {F}, false}, &pos, &nv,
-                     w.e))
+  if (!read_accessor(w.m, attr("POSITION"), place + ".attributes.POSITION", {TINYGLTF_TYPE_VEC3, {F}, false}, &raw.pos,
+                     &nv, w.e))
     return false;
   if (nv == 0) return w.e.fail(place + ".attributes.POSITION", "no vertices");
+  raw.nv = nv;
   struct Opt {
     const char *name;
     AccessorUse use;
     std::vector<double> *out;
-  } opts[] = {{"NORMAL", {TINYGLTF_TYPE_VEC3, {F}, false}, &nrm},
-              {"TEXCOORD_0", {TINYGLTF_TYPE_VEC2, {F, UB, US}, true}, &uv},
-              {"TEXCOORD_1", {TINYGLTF_TYPE_VEC2, {F, UB, US}, true}, &uv1},  // lightmap UVs (glue/bake/charts.h)
-              {"TANGENT", {TINYGLTF_TYPE_VEC4, {F}, false}, &tan}};
+  } opts[] = {{"NORMAL", {TINYGLTF_TYPE_VEC3, {F}, false}, &raw.nrm},
+              {"TEXCOORD_0", {TINYGLTF_TYPE_VEC2, {F, UB, US}, true}, &raw.uv},
+              {"TEXCOORD_1", {TINYGLTF_TYPE_VEC2, {F, UB, US}, true}, &raw.uv1},  // lightmap UVs (glue/bake/charts.h)
+              {"TANGENT", {TINYGLTF_TYPE_VEC4, {F}, false}, &raw.tan}};
   for (const Opt &o : opts) {
     if (attr(o.name) < 0) continue;
     const std::string ap = place + ".attributes." + o.name;
@@ -224,7 +311,7 @@ bool convert_primitive(Walk &w, int mesh, int pi, const glm::dmat4 &world, int i
                       "accessor " + std::to_string(attr(o.name)) + " has " + std::to_string(n2) +
                           " elements, POSITION has " + std::to_string(nv));
   }
-  std::vector<uint32_t> tri;
+  std::vector<uint32_t> &tri = raw.tri;
   if (p.indices >= 0) {
     size_t ni = 0;
     if (!read_accessor(w.m, p.indices, place + ".indices", {TINYGLTF_TYPE_SCALAR, {UB, US, UI}, false}, &idx, &ni, w.e))
@@ -248,67 +335,37 @@ bool convert_primitive(Walk &w, int mesh, int pi, const glm::dmat4 &world, int i
   if (material >= static_cast<int>(w.m.materials.size()))
     return w.e.fail(place + ".material", "material " + std::to_string(material) + " does not exist");
 
-  // Linear part, its inverse transpose (for normals) and the handedness.
-  const glm::dmat3 m3(world);
-  const double det = glm::determinant(m3);
+  const double det = glm::determinant(glm::dmat3(world));
   if (!(std::fabs(det) > 1e-18))
     return w.e.fail(place + " (node " + quoted(node_name) + ")", "the node transform is singular");
-  const glm::dmat3 it = glm::inverseTranspose(m3);
-  if (det < 0)  // a mirroring transform flips the winding: keep the front faces in front
-    for (size_t t = 0; t + 2 < tri.size(); t += 3) std::swap(tri[t + 1], tri[t + 2]);
 
   ScenePrimitive out;
   out.material = material;
   out.instance = instance;
   out.where = place + " (node " + quoted(node_name) + ")";
-  const bool flat = nrm.empty();
-  // Flat normals need one vertex per triangle corner.
-  std::vector<uint32_t> src;
-  if (flat) {
-    src = tri;
-    for (size_t i = 0; i < tri.size(); ++i) tri[i] = static_cast<uint32_t>(i);
+  // Shared: a mesh several nodes of the scene instance, drawn with a Model material (the glTF
+  // default material is one) under a rigid transform; world materials stay in world space (the
+  // bake's faces and their lightmap coordinates are per face).
+  const bool model_material =
+      material < 0 || w.s->materials.at(static_cast<size_t>(material)).shader == SceneShader::Model;
+  if (w.uses.at(static_cast<size_t>(mesh)) > 1 && model_material && rigid(world)) {
+    std::shared_ptr<const SceneGeometry> &g = w.shared[{mesh, pi}];
+    double lo[3] = {1e300, 1e300, 1e300}, hi[3] = {-1e300, -1e300, -1e300};
+    if (!g) {
+      auto obj = std::make_shared<SceneGeometry>();
+      fill_arrays(raw, glm::dmat4(1.0), obj.get(), lo, hi);  // object space: the identity is exact
+      g = obj;
+    }
+    out.shared = g;
+    const double *wm = glm::value_ptr(world);
+    for (int i = 0; i < 16; ++i) out.model[i] = static_cast<float>(wm[i]);
+    for (size_t v = 0; v < nv; ++v) {  // the instance's box, as the flattened positions give it
+      const glm::dvec3 q = glm::dvec3(world * glm::dvec4(raw.pos[v * 3], raw.pos[v * 3 + 1], raw.pos[v * 3 + 2], 1.0));
+      for (int k = 0; k < 3; ++k) bmin[k] = std::min(bmin[k], q[k]), bmax[k] = std::max(bmax[k], q[k]);
+    }
   } else {
-    src.resize(nv);
-    for (size_t i = 0; i < nv; ++i) src[i] = static_cast<uint32_t>(i);
+    fill_arrays(raw, world, &out, bmin, bmax);
   }
-  const size_t n = src.size();
-  out.position.resize(n * 3);
-  out.normal.resize(n * 3);
-  out.uv.assign(n * 2, 0.f);
-  if (!tan.empty()) out.tangent.resize(n * 4);
-  if (!uv1.empty()) out.uv1.resize(n * 2);
-  for (size_t i = 0; i < n; ++i) {
-    const size_t v = src[i];
-    glm::dvec3 q = glm::dvec3(world * glm::dvec4(pos[v * 3], pos[v * 3 + 1], pos[v * 3 + 2], 1.0));
-    for (int k = 0; k < 3; ++k) {
-      out.position[i * 3 + k] = static_cast<float>(q[k]);
-      bmin[k] = std::min(bmin[k], q[k]);
-      bmax[k] = std::max(bmax[k], q[k]);
-    }
-    if (!flat) {
-      q = unit_or_zero(it * glm::dvec3(nrm[v * 3], nrm[v * 3 + 1], nrm[v * 3 + 2]));
-      for (int k = 0; k < 3; ++k) out.normal[i * 3 + k] = static_cast<float>(q[k]);
-    }
-    if (!uv.empty())
-      out.uv[i * 2] = static_cast<float>(uv[v * 2]), out.uv[i * 2 + 1] = static_cast<float>(uv[v * 2 + 1]);
-    if (!uv1.empty())
-      out.uv1[i * 2] = static_cast<float>(uv1[v * 2]), out.uv1[i * 2 + 1] = static_cast<float>(uv1[v * 2 + 1]);
-    if (!tan.empty()) {
-      q = unit_or_zero(m3 * glm::dvec3(tan[v * 4], tan[v * 4 + 1], tan[v * 4 + 2]));
-      for (int k = 0; k < 3; ++k) out.tangent[i * 4 + k] = static_cast<float>(q[k]);
-      // The bitangent is w * cross(N, T); under a mirror cross() turns round, so w does too.
-      out.tangent[i * 4 + 3] = static_cast<float>(det < 0 ? -tan[v * 4 + 3] : tan[v * 4 + 3]);
-    }
-  }
-  if (flat)
-    for (size_t t = 0; t + 2 < n; t += 3) {
-      const glm::dvec3 p0 = corner(out.position, t), a = corner(out.position, t + 1) - p0,
-                       b = corner(out.position, t + 2) - p0;
-      const glm::dvec3 c = unit_or_zero(glm::cross(a, b));
-      for (size_t j = t; j < t + 3; ++j)
-        for (int k = 0; k < 3; ++k) out.normal[j * 3 + k] = static_cast<float>(c[k]);
-    }
-  out.indices = std::move(tri);
   w.s->primitives.push_back(std::move(out));
   return true;
 }
@@ -389,10 +446,25 @@ bool walk_node(Walk &w, int ni, const glm::dmat4 &parent, int depth) {
   return true;
 }
 
+// Per mesh, the nodes under the roots that instance it (each node once; the walk reports bad
+// hierarchies).
+void count_uses(Walk &w, const std::vector<int> &roots) {
+  std::vector<int> seen(w.m.nodes.size(), 0), stack(roots);
+  while (!stack.empty()) {
+    const int ni = stack.back();
+    stack.pop_back();
+    if (ni < 0 || static_cast<size_t>(ni) >= w.m.nodes.size() || seen[static_cast<size_t>(ni)]) continue;
+    seen[static_cast<size_t>(ni)] = 1;
+    const tinygltf::Node &n = w.m.nodes[static_cast<size_t>(ni)];
+    if (n.mesh >= 0 && static_cast<size_t>(n.mesh) < w.uses.size()) ++w.uses[static_cast<size_t>(n.mesh)];
+    for (int c : n.children) stack.push_back(c);
+  }
+}
+
 }  // namespace
 
 bool convert_nodes(const Model &m, Scene *s, Err &e) {
-  Walk w{m, s, e, std::vector<int>(m.nodes.size(), 0)};
+  Walk w{m, s, e, std::vector<int>(m.nodes.size(), 0), std::vector<int>(m.meshes.size(), 0), {}};
   std::vector<int> roots;
   if (!m.scenes.empty()) {
     int si = m.defaultScene >= 0 ? m.defaultScene : 0;
@@ -407,6 +479,7 @@ bool convert_nodes(const Model &m, Scene *s, Err &e) {
     for (size_t i = 0; i < m.nodes.size(); ++i)
       if (!child[i]) roots.push_back(static_cast<int>(i));
   }
+  count_uses(w, roots);
   for (int r : roots)
     if (!walk_node(w, r, glm::dmat4(1.0), 0)) return false;
   return true;

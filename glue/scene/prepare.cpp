@@ -20,6 +20,7 @@
 #include "scene/bake_inputs.h"
 #include "scene/probe_render.h"
 #include "scene/scene_probes.h"
+#include "scene/draw_geometry.h"
 #include "scene/scene_volume.h"
 #include "scene/textures.h"
 #include "twins/model_lighting.h"
@@ -146,33 +147,8 @@ int nearest_of(const std::vector<T> &items, const double c[3]) {
   return best;
 }
 
-void primitive_center(const ScenePrimitive &p, double c[3]) {
-  double lo[3] = {1e300, 1e300, 1e300}, hi[3] = {-1e300, -1e300, -1e300};
-  for (size_t i = 0; i + 2 < p.position.size(); i += 3)
-    for (int k = 0; k < 3; ++k) {
-      lo[k] = std::fmin(lo[k], p.position[i + k]);
-      hi[k] = std::fmax(hi[k], p.position[i + k]);
-    }
-  for (int k = 0; k < 3; ++k) c[k] = 0.5 * (lo[k] + hi[k]);
-}
-
-void copy_geometry(const ScenePrimitive &p, PreparedDraw *d) {
-  const size_t n = p.position.size() / 3;
-  d->position = p.position;
-  d->normal = p.normal;
-  d->uv = p.uv;
-  d->uv.resize(n * 2, 0.f);
-  d->normal.resize(n * 3, 0.f);
-  d->tangent = p.tangent;
-  if (d->tangent.size() != n * 4) {
-    d->tangent.assign(n * 4, 0.f);
-    for (size_t i = 0; i < n; ++i) d->tangent[i * 4 + 3] = 1.f;
-  }
-  d->indices = p.indices;
-}
-
 bool model_draw(const Scene &s, const PreparedScene &ps, const SceneDrawChoice &c, Tier tier, SceneProbeSet *probes, Api api,
-                TexturePool *pool, PreparedDraw *d, std::string *err) {
+                TexturePool *pool, DrawGeometryCache *geo, PreparedDraw *d, std::string *err) {
   const ScenePrimitive &p = s.primitives[c.primitive];
   const SceneMaterial &m = s.materials[p.material];
   const Variant &v = *c.variant;
@@ -181,7 +157,7 @@ bool model_draw(const Scene &s, const PreparedScene &ps, const SceneDrawChoice &
   if (inst) {
     for (int k = 0; k < 3; ++k) center[k] = inst->center[k];
   } else {
-    primitive_center(p, center);
+    primitive_center(s, p, center);
   }
   d->shared.assign(ML_SLOTS, v4(0, 0, 0, 0));
   // Ambient cube: the nearest sample of the irradiance volume (Source: the model's leaf).
@@ -292,7 +268,7 @@ bool model_draw(const Scene &s, const PreparedScene &ps, const SceneDrawChoice &
     return env;
   }));
   d->display_encoded = v.value("OUTPUT_MODE") != 0;
-  copy_geometry(p, d);
+  geo->set(p, d);
   return true;
 }
 
@@ -328,14 +304,12 @@ bool prepare_scene(const Scene &s, const SceneSelection &sel, int w, int h, Api 
     const glm::dmat4 vpm = camera_matrix(cam, static_cast<double>(w) / h);
     std::memcpy(vp, glm::value_ptr(vpm), sizeof vp);  // column-major, as GL takes it
   }
-  for (int i = 0; i < 16; ++i) {
-    ps.view_proj[i] = static_cast<float>(vp[i]);
-    ps.model[i] = (i % 5 == 0) ? 1.f : 0.f;
-  }
+  for (int i = 0; i < 16; ++i) ps.view_proj[i] = static_cast<float>(vp[i]);
   for (int k = 0; k < 3; ++k) ps.eye[k] = static_cast<float>(cam.eye[k]);
   const Tier tier = sel.variants.empty() ? Tier::SM3 : sel.variants[0].tier;
   SceneProbeSet probes(s);
   TexturePool pool{&ps.textures, {}};
+  DrawGeometryCache geometry;
 
   // World: faces from the World primitives, baked only if some draw is a world draw.
   WorldBakeInput ws;
@@ -446,7 +420,7 @@ bool prepare_scene(const Scene &s, const SceneSelection &sel, int w, int h, Api 
     d.choice = &c;
     d.variant = c.variant;
     if (c.family == "model_lighting") {
-      if (!model_draw(s, ps, c, tier, &probes, api, &pool, &d, err)) return false;
+      if (!model_draw(s, ps, c, tier, &probes, api, &pool, &geometry, &d, err)) return false;
       ps.draws.push_back(std::move(d));
       continue;
     }
@@ -463,36 +437,37 @@ bool prepare_scene(const Scene &s, const SceneSelection &sel, int w, int h, Api 
     const double rf[3] = {f.reflectivity.x, f.reflectivity.y, f.reflectivity.z};  // the probe cubes draw
     const double em[3] = {f.emission.x, f.emission.y, f.emission.z};  // emitters with them (probe_render.h)
     for (int k = 0; k < 3; ++k) d.reflectivity[k] = static_cast<float>(rf[k]), d.emission[k] = static_cast<float>(em[k]);
-    copy_geometry(p, &d);
+    DrawGeometry g = DrawGeometryCache::copy_of(p);  // world primitives are never shared
     // Per-vertex lightmap coordinates: the face's (a, b) in [0, 1] placed on the page.
     const size_t n = p.position.size() / 3;
-    d.lightmap.resize(n * 4);
+    g.lightmap.resize(n * 4);
     const glm::dvec3 t = d3(f.u), b = d3(f.v);
     for (size_t i = 0; f.chart && i < n; ++i) {  // a chart: TEXCOORD_1 on its block, the bake's tangents
       float lm[2];
       lm_page_chart_uv(&bake.place[fi], ws.page_w, ws.page_h, p.uv1[i * 2], p.uv1[i * 2 + 1], lm);
-      d.lightmap[i * 4 + 0] = lm[0];
-      d.lightmap[i * 4 + 1] = lm[1];
-      d.lightmap[i * 4 + 2] = bake.place[fi].offset[0];
-      d.lightmap[i * 4 + 3] = bake.place[fi].offset[1];
-      for (int k = 0; k < 4; ++k) d.tangent[i * 4 + k] = f.chart->vertex_tangent[i * 4 + k];
+      g.lightmap[i * 4 + 0] = lm[0];
+      g.lightmap[i * 4 + 1] = lm[1];
+      g.lightmap[i * 4 + 2] = bake.place[fi].offset[0];
+      g.lightmap[i * 4 + 3] = bake.place[fi].offset[1];
+      for (int k = 0; k < 4; ++k) g.tangent[i * 4 + k] = f.chart->vertex_tangent[i * 4 + k];
     }
     for (size_t i = 0; !f.chart && i < n; ++i) {
       const glm::dvec3 q = d3f(&p.position[i * 3]);
       const double a = (glm::dot(q, t) - face_frame[fi][0]) / f.su, bb = (glm::dot(q, b) - face_frame[fi][1]) / f.sv;
       float lm[2];
       lm_page_uv(&bake.place[fi], ws.page_w, ws.page_h, a, bb, lm);
-      d.lightmap[i * 4 + 0] = lm[0];
-      d.lightmap[i * 4 + 1] = lm[1];
-      d.lightmap[i * 4 + 2] = bake.place[fi].offset[0];
-      d.lightmap[i * 4 + 3] = bake.place[fi].offset[1];
+      g.lightmap[i * 4 + 0] = lm[0];
+      g.lightmap[i * 4 + 1] = lm[1];
+      g.lightmap[i * 4 + 2] = bake.place[fi].offset[0];
+      g.lightmap[i * 4 + 3] = bake.place[fi].offset[1];
       // The face's tangent frame as the baker used it (the shader's binormal = N x T * w).
-      d.tangent[i * 4 + 0] = static_cast<float>(t.x);
-      d.tangent[i * 4 + 1] = static_cast<float>(t.y);
-      d.tangent[i * 4 + 2] = static_cast<float>(t.z);
-      const glm::dvec3 nn = d3f(&d.normal[i * 3]);
-      d.tangent[i * 4 + 3] = glm::dot(glm::cross(nn, t), b) < 0 ? -1.f : 1.f;
+      g.tangent[i * 4 + 0] = static_cast<float>(t.x);
+      g.tangent[i * 4 + 1] = static_cast<float>(t.y);
+      g.tangent[i * 4 + 2] = static_cast<float>(t.z);
+      const glm::dvec3 nn = d3f(&g.normal[i * 3]);
+      g.tangent[i * 4 + 3] = glm::dot(glm::cross(nn, t), b) < 0 ? -1.f : 1.f;
     }
+    d.geo = std::make_shared<const DrawGeometry>(std::move(g));
     d.shared.assign(WL_SLOTS, v4(0, 0, 0, 0));
     // c12 = tint x lightmap scale: sqrt3 for bumped lightmaps (docs/world_lighting.md), 1 flat.
     const float lm_scale = v.value("BUMPMAP") ? 1.7320508f : 1.f;

@@ -4,6 +4,7 @@
 // world's baked lightmap page and probe cube maps. Only what the selection uses is made:
 // no probe cube map without an ENVMAP draw, no lightmap bake without a world draw.
 #pragma once
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -17,14 +18,30 @@
 #include "bake/bake_dir.h"
 #include "offline/lightmap_page.h"
 
+// A draw's vertex arrays as its vertex shader takes them: a flattened primitive's in world space,
+// or a shared mesh primitive's in object space, made once and shared by every draw of it (the GL
+// renderer uploads one set of buffers per DrawGeometry, the C fallback reads it in place).
+struct DrawGeometry {
+  std::vector<float> position, normal, uv, tangent;  // 3, 3, 2, 4 per vertex (tangent: 0,0,0,1 when absent)
+  std::vector<float> lightmap;  // world: 4 per vertex (lightmap uv, offset to the next lightmap)
+  std::vector<uint32_t> indices;
+  size_t vertices() const { return position.size() / 3; }
+  size_t bytes() const {
+    return (position.size() + normal.size() + uv.size() + tangent.size() + lightmap.size()) * sizeof(float) +
+        indices.size() * sizeof(uint32_t);
+  }
+};
+
 struct PreparedDraw {
   const SceneDrawChoice *choice = nullptr;
   const Variant *variant = nullptr;
   bool world = false;  // world_lighting, else model_lighting
-  std::vector<float> position, normal, uv, tangent;  // 3, 3, 2, 4 per vertex (tangent: 0,0,0,1 when absent)
-  std::vector<float> lightmap;  // world: 4 per vertex (lightmap uv, offset to the next lightmap)
+  std::shared_ptr<const DrawGeometry> geo;  // never null after prepare_scene
+  // u_model (column-major, float): a shared mesh's node matrix, else the identity; instanced:
+  // not the identity (the C vertex stage multiplies by it as model_lighting.vs does).
+  float model[16] = {1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1};
+  bool instanced = false;
   int lightmap_page = 0;  // world: the page its uv is on (the stacked page's rows page x page_h on)
-  std::vector<uint32_t> indices;
   std::vector<ts_vec4f> shared;  // the family's full record with the shared slots set
   std::vector<int> tex;  // indices into PreparedScene::textures, in sampler order:
       // model: u_albedo u_normal_map u_exponent_map u_light_warp u_envmap;
@@ -51,10 +68,13 @@ struct PreparedProbeCube {
 struct PreparedScene {
   int w = 0, h = 0;
   float view_proj[16];  // column-major, float as uploaded
-  float model[16];  // identity: primitives are in world space
   float eye[3];
   std::vector<PreparedDraw> draws;
   std::vector<TextureDesc> textures;  // every texture once, shared by the draws that sample it
+  // The bytes of the draws' vertex arrays, each DrawGeometry once (what instancing keeps
+  // independent of the draw count; tests/unit/test_scene_instancing.cpp).
+  size_t geometry_bytes() const;
+  int geometries() const;  // the distinct DrawGeometry objects
   const TextureDesc &texture(const PreparedDraw &d, int k) const { return textures.at(d.tex.at(k)); }
   float tone_map_scale = 1.f;  // of the shaders' output (integer path); the float path tone-maps later
   // What was made, for the report.

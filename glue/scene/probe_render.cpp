@@ -72,7 +72,6 @@ bool make_probe_view(const Scene &s, const PreparedScene &ps, ProbeView *v, std:
   v->variants.clear();
   p.textures = ps.textures;
   p.tone_map_scale = 1.f;
-  for (int i = 0; i < 16; ++i) p.model[i] = (i % 5 == 0) ? 1.f : 0.f;
   p.sky = ps.sky;
   skybox_set_tone_map_scale(&p.sky, 1.f);
   // The cube's lightmap pages: the page as the bake holds it (float32), emitters' flat blocks their

@@ -34,6 +34,23 @@ struct ScreenTri {
 
 const int kSub = 256;  // llvmpipe rasterises with 8 sub-pixel bits
 
+// u_model * vec4(X, 1) (a point) or vec4(X, 0) (a direction) in float, summed left to right as
+// llvmpipe's vertex shader sums a mat4 * vec4 (model_lighting.vs); the constant w's term is
+// folded by the compiler (x * 1 = x; x * 0 and + 0 dropped, no signed zeros kept by GLSL).
+inline void model_point(const float *m, const float *X, float *out) {
+  for (int r = 0; r < 3; ++r) out[r] = m[r] * X[0] + m[4 + r] * X[1] + m[8 + r] * X[2] + m[12 + r];
+}
+inline void model_direction(const float *m, const float *X, float *out) {
+  for (int r = 0; r < 3; ++r) out[r] = m[r] * X[0] + m[4 + r] * X[1] + m[8 + r] * X[2];
+}
+
+// A new buffer of n copies of v in *out (made aside, then swapped in: the old one is freed).
+template <class T>
+void fresh_buffer(std::vector<T> *out, size_t n, T v) {
+  std::vector<T> b(n, v);
+  out->swap(b);
+}
+
 // The clip coordinates of a draw's vertices (u_view_proj * vec4(P, 1), summed as llvmpipe's
 // vertex shader sums them).
 void scene_clip_stage(const PreparedScene &p, const PreparedDraw &d, std::vector<float> *clip);

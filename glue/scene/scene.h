@@ -3,6 +3,8 @@
 // Everything is in world space after node transforms; the renderer (glue/scene/prepare.cpp, frame.cpp)
 // derives the variants and CPU work from what this structure uses, nothing more.
 #pragma once
+#include <cstdint>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -77,17 +79,33 @@ struct SceneMaterial {
   int probe = -1;  // "probe": explicit probe index, -1 = the nearest
 };
 
-// One glTF primitive in world space (node transform applied), triangles only.
-struct ScenePrimitive {
-  int material = -1;  // index into Scene::materials (glTF default material -> a plain Model material)
-  int instance = -1;  // the node instance it came from (index into Scene::instances)
-  std::vector<float> position;  // 3 per vertex (world)
-  std::vector<float> normal;  // 3 per vertex (world; the mesh's, or flat face normals if absent)
+// A primitive's vertex arrays (triangles only).
+struct SceneGeometry {
+  std::vector<float> position;  // 3 per vertex
+  std::vector<float> normal;  // 3 per vertex (the mesh's, or flat face normals if absent)
   std::vector<float> uv;  // 2 per vertex (TEXCOORD_0; zeros if absent)
-  std::vector<float> tangent;  // 4 per vertex (world xyz, w handedness) or empty if absent
+  std::vector<float> tangent;  // 4 per vertex (xyz, w handedness) or empty if absent
   std::vector<float> uv1;  // 2 per vertex (TEXCOORD_1, the lightmap UVs) or empty if absent
   std::vector<uint32_t> indices;  // 3 per triangle
+  // The bytes of the arrays (the prepared-geometry tests and the memory report).
+  size_t bytes() const {
+    return (position.size() + normal.size() + uv.size() + tangent.size() + uv1.size()) * sizeof(float) +
+        indices.size() * sizeof(uint32_t);
+  }
+};
+
+// One glTF primitive under one node. Most are flattened to world space (node transform applied in
+// double, rounded to float: the arrays of SceneGeometry in world space). A mesh that several nodes
+// instance, with a Model material and a rigid node transform (rotation and translation), is shared
+// instead, as an engine instances a prop: its arrays here are empty, `shared` holds the mesh
+// primitive's object-space arrays once for every node, and `model` is the node's object -> world
+// matrix in float (the shaders' u_model; docs/rendering.md, "Scenes of real size").
+struct ScenePrimitive : SceneGeometry {
+  int material = -1;  // index into Scene::materials (glTF default material -> a plain Model material)
+  int instance = -1;  // the node instance it came from (index into Scene::instances)
   std::string where;  // "meshes[i].primitives[j]" (node name) for messages
+  std::shared_ptr<const SceneGeometry> shared;  // set: an instance of shared object-space geometry
+  float model[16] = {1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1};  // column-major (shared only)
 };
 
 // A node instance: the primitives of one mesh under one node.
@@ -231,3 +249,13 @@ struct Scene {
 // On failure returns false with *err = "<file>: <place>: <reason>" (e.g.
 // "scenes/x.gltf: materials[2].extras.source: unknown key \"$phongexp\""), and *out untouched.
 bool load_scene(const std::string &path, Scene *out, std::string *err);
+
+// The world-space positions of a primitive (3 per vertex): its own arrays, or a shared one's
+// object-space positions through its node's matrix in double, rounded to float (what the loader
+// flattens to; the bake's occluders and the world-space bounds read these).
+std::vector<float> scene_world_positions(const Scene &s, const ScenePrimitive &p);
+// A copy of p flattened to world space (shared: its arrays transformed as the loader flattens,
+// `shared` cleared), for code that edits a primitive's vertices.
+ScenePrimitive scene_flattened(const Scene &s, const ScenePrimitive &p);
+// The geometry bytes a scene holds, every shared array counted once.
+size_t scene_geometry_bytes(const Scene &s);

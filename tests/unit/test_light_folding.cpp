@@ -18,6 +18,7 @@
 #include "twins/model_lighting.h"
 #include "unit_check.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdarg>
 #include <cstdio>
@@ -796,8 +797,59 @@ void check_degenerate() {
 
 }  // namespace
 
+// Both ranking paths of ts_fold_lights (its stack table up to 256 lights, re-evaluation beyond):
+// 200 and 300 scattered point lights (every 7th invalid: negative attenuation), 4 kept; the kept set
+// is the 4 largest incident luminances at the centre ranked here, and the folded cube equals the
+// sum of fold contributions of the others (the first 200 of the 300 give the 200 case's answer).
+void check_many_lights() {
+  for (int n : {200, 300}) {
+    std::vector<ts_light> ls;
+    uint32_t r = 777;
+    auto next = [&r] {
+      r = r * 1664525u + 1013904223u;
+      return static_cast<float>(r >> 8) / 16777216.f;
+    };
+    for (int i = 0; i < n; ++i) {
+      ts_light l = make_light(TS_LIGHT_POINT);
+      for (int c = 0; c < 3; ++c) l.color[c] = 0.5f + 4.f * next();
+      for (int c = 0; c < 3; ++c) l.pos[c] = kCenter[c] + 30.f * (next() - 0.5f);
+      l.atten[2] = i % 7 == 3 ? -1.f : 1.f;  // -1: rejected by ts_light_pack
+      ls.push_back(l);
+    }
+    std::vector<std::pair<double, int>> lum;
+    for (int i = 0; i < n; ++i) {
+      if (i % 7 == 3) continue;
+      double I[3], L[3];
+      ts_light_incident(&ls[i], kCenter, I, L);
+      lum.push_back({-(0.2126 * I[0] + 0.7152 * I[1] + 0.0722 * I[2]), i});
+    }
+    std::sort(lum.begin(), lum.end());
+    std::vector<int> want;
+    for (int k = 0; k < 4; ++k) want.push_back(lum[k].second);
+    std::sort(want.begin(), want.end());
+    float cube[6][3] = {};
+    int kept[4] = {-1, -1, -1, -1};
+    const int nk = ts_fold_lights(ls.data(), n, 4, kCenter, 0, cube, kept);
+    bool ok = nk == 4;
+    for (int k = 0; ok && k < 4; ++k) ok = kept[k] == want[k];
+    // Each folded light alone (max_local 0 over a one-light list) adds what it added here.
+    float sum[6][3] = {};
+    for (size_t k = 4; k < lum.size(); ++k) ts_fold_lights(&ls[lum[k].second], 1, 0, kCenter, 0, sum, nullptr);
+    double worst = 0;
+    for (int f = 0; f < 6; ++f)
+      for (int c = 0; c < 3; ++c) worst = std::fmax(worst, rel_diff(cube[f][c], sum[f][c]));
+    // Tolerance: the two sums add the same float contributions in different orders; float
+    // accumulation of ~250 positive terms differs by at most ~250 ulp (1.5e-5 relative).
+    check(ok && worst < 1e-4,
+          fmt("fold %d lights (%s path): the 4 brightest kept, the rest folded", n, n <= 256 ? "table" : "re-evaluating"),
+          fmt("kept %d: %d %d %d %d, want %d %d %d %d; cube rel diff %.3g", nk, kept[0], kept[1], kept[2], kept[3],
+              want[0], want[1], want[2], want[3], worst));
+  }
+}
+
 int main() {
   ts_math_init();
+  check_many_lights();
   check_pack();
   check_incident();
   check_constants();

@@ -4,8 +4,15 @@
 // lights around each. On every tier each model's draw keeps only lights of its own group (the
 // tier's limit: 2 on ps20, 4 on ps2b/sm3) and folds the other group into its ambient cube; the
 // two draws' kept lights differ. A per-scene choice (one set for every draw) fails this test.
+// And a row of 12 instances of one shared mesh (object-space geometry, a translation each:
+// glue/scene/scene.h) under 24 lights of different strengths scattered along it: every draw keeps
+// exactly the tier's limit of lights with the largest incident luminance at its own instance's
+// centre (ranked here from ts_light_incident, independently of ts_fold_lights' loop), in index
+// order; sharing the geometry does not share the choice.
 // Prints "PASS name" / "FAIL name: detail"; exits 1 if any check failed.
+#include <algorithm>
 #include <cmath>
+#include <memory>
 #include <cstdio>
 #include <string>
 
@@ -122,10 +129,92 @@ void test_tier(const Scene &s, Tier tier) {
   check(k[0] != k[1], "lights per model " + t + ": the two models keep different lights");
 }
 
+// 12 instances of one shared triangle mesh along x (spacing 6), 24 point lights of strengths
+// 1..24 at pseudo-random places along the row.
+Scene shared_row() {
+  Scene s = two_models();
+  s.primitives.clear();
+  s.instances.clear();
+  s.lights.clear();
+  auto geo = std::make_shared<SceneGeometry>();
+  geo->position = {-0.5f, -0.5f, 0.f, 0.5f, -0.5f, 0.f, 0.f, 0.5f, 0.f};
+  geo->normal = {0, 0, 1, 0, 0, 1, 0, 0, 1};
+  geo->uv = {0, 0, 1, 0, 0.5f, 1};
+  geo->indices = {0, 1, 2};
+  for (int i = 0; i < 12; ++i) {
+    SceneInstance in;
+    in.name = "row_" + std::to_string(i);
+    for (int k = 0; k < 16; ++k) in.world[k] = (k % 5 == 0) ? 1 : 0;
+    in.world[12] = -33 + 6 * i;
+    in.center[0] = in.world[12];
+    in.center[1] = in.center[2] = 0;
+    s.instances.push_back(in);
+    ScenePrimitive p;
+    p.material = 0;
+    p.instance = i;
+    p.shared = geo;
+    p.model[12] = static_cast<float>(in.world[12]);
+    p.where = "meshes[0].primitives[0] (node row_" + std::to_string(i) + ")";
+    s.primitives.push_back(p);
+  }
+  uint32_t r = 12345;
+  auto next = [&r] {
+    r = r * 1664525u + 1013904223u;
+    return static_cast<float>(r >> 8) / 16777216.f;
+  };
+  for (int l = 0; l < 24; ++l)
+    add_light(&s, -36 + 72 * next(), -2 + 4 * next(), 1 + 3 * next(), 1.f + l, "lamp_" + std::to_string(l));
+  return s;
+}
+
+void test_shared_row(const Scene &s, Tier tier) {
+  const std::string t = tier_name(tier);
+  SceneSelection sel;
+  PreparedScene p;
+  std::string err;
+  if (!select_scene_variants(s, tier, "", &sel, &err) || !prepare_scene(s, sel, 64, 32, Api::GL33, 1.f, &p, &err))
+    return check(false, "lights per shared instance " + t + ": prepared", err);
+  const size_t limit = static_cast<size_t>(max_local_lights(tier));
+  int right = 0;
+  std::string detail;
+  std::vector<std::vector<float>> all;
+  for (const PreparedDraw &d : p.draws) {
+    const ScenePrimitive &pr = s.primitives[static_cast<size_t>(d.choice->primitive)];
+    const double *c = s.instances.at(static_cast<size_t>(pr.instance)).center;
+    const float cf[3] = {static_cast<float>(c[0]), static_cast<float>(c[1]), static_cast<float>(c[2])};
+    std::vector<std::pair<double, int>> lum;  // (-luminance, index): sorted, the brightest first
+    for (size_t l = 0; l < s.lights.size(); ++l) {
+      double rgb[3], dir[3];
+      ts_light_incident(&s.lights[l].light, cf, rgb, dir);
+      lum.push_back({-(0.2126 * rgb[0] + 0.7152 * rgb[1] + 0.0722 * rgb[2]), static_cast<int>(l)});
+    }
+    std::sort(lum.begin(), lum.end());
+    std::vector<int> want;
+    for (size_t k = 0; k < limit; ++k) want.push_back(lum[k].second);
+    std::sort(want.begin(), want.end());
+    std::vector<float> want_x;
+    for (int l : want) want_x.push_back(s.lights[static_cast<size_t>(l)].light.pos[0]);
+    const std::vector<float> got = kept_x(d);
+    if (got == want_x) ++right;
+    else detail += " draw at x " + std::to_string(c[0]);
+    all.push_back(got);
+  }
+  check(p.draws.size() == 12 && right == 12,
+        "lights per shared instance " + t + ": each of 12 draws keeps the " + std::to_string(limit) +
+            " lights brightest at its centre",
+        std::to_string(right) + " right;" + detail);
+  std::sort(all.begin(), all.end());
+  const size_t distinct = static_cast<size_t>(std::unique(all.begin(), all.end()) - all.begin());
+  check(distinct >= 4, "lights per shared instance " + t + ": the instances keep different lights",
+        std::to_string(distinct) + " distinct sets");
+}
+
 }  // namespace
 
 int main() {
   const Scene s = two_models();
   for (Tier t : {Tier::PS20, Tier::PS2B, Tier::SM3}) test_tier(s, t);
+  const Scene row = shared_row();
+  for (Tier t : {Tier::PS20, Tier::PS2B, Tier::SM3}) test_shared_row(row, t);
   return finish();
 }
