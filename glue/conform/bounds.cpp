@@ -267,21 +267,8 @@ BoundsResult bounds_variant(const ConformRun &run, const ShaderFamily &fam, cons
     res.error = err;
     return res;
   }
-  // the same uniforms and textures as conform_variant
-  const GlFns &g = r.gl();
-  g.UseProgram(prog);
-  const GLint size_loc = g.GetUniformLocation(prog, "ts_record_size");
-  if (size_loc >= 0) g.Uniform2f(size_loc, static_cast<float>(in.w), static_cast<float>(in.h * in.slots));
-  const GLint gh_loc = g.GetUniformLocation(prog, "ts_grid_height");
-  if (gh_loc >= 0) g.Uniform1f(gh_loc, static_cast<float>(in.h));
-  std::vector<std::pair<std::string, GLuint>> texs;
-  texs.push_back({"ts_record", r.upload_texture(in.record_texture())});
-  for (const auto &t : in.textures) texs.push_back({t.sampler, r.upload_texture(t)});
   ImageF img;
-  const bool ok = r.draw(prog, texs, in.w, in.h, &img, &err);
-  for (auto &t : texs) r.delete_texture(t.second);
-  r.delete_program(prog);
-  if (!ok) {
+  if (!draw_conform_grid(r, prog, in, &img, &err)) {
     res.error = err;
     return res;
   }

@@ -53,6 +53,22 @@ GLuint build_conform_program(GlRenderer &r, Api api, const Variant &v, std::stri
   return r.build_program(vs, fs, err);
 }
 
+bool draw_conform_grid(GlRenderer &r, GLuint prog, const FamilyInputs &in, ImageF *img, std::string *err) {
+  const GlFns &g = r.gl();
+  g.UseProgram(prog);
+  const GLint size_loc = g.GetUniformLocation(prog, "ts_record_size");
+  if (size_loc >= 0) g.Uniform2f(size_loc, static_cast<float>(in.w), static_cast<float>(in.h * in.slots));
+  const GLint gh_loc = g.GetUniformLocation(prog, "ts_grid_height");
+  if (gh_loc >= 0) g.Uniform1f(gh_loc, static_cast<float>(in.h));
+  std::vector<std::pair<std::string, GLuint>> texs;
+  texs.push_back({"ts_record", r.upload_texture(in.record_texture())});
+  for (const auto &t : in.textures) texs.push_back({t.sampler, r.upload_texture(t)});
+  const bool ok = r.draw(prog, texs, in.w, in.h, img, err);
+  for (auto &t : texs) r.delete_texture(t.second);
+  r.delete_program(prog);
+  return ok;
+}
+
 static std::string fmt_float(float f) {
   char b[64];
   uint32_t bits;
@@ -111,20 +127,8 @@ ConformResult conform_variant(const ConformRun &run, const ShaderFamily &fam, co
     res.error = err;
     return res;
   }
-  const GlFns &g = r.gl();
-  g.UseProgram(prog);
-  const GLint size_loc = g.GetUniformLocation(prog, "ts_record_size");
-  if (size_loc >= 0) g.Uniform2f(size_loc, static_cast<float>(in.w), static_cast<float>(in.h * in.slots));
-  const GLint gh_loc = g.GetUniformLocation(prog, "ts_grid_height");
-  if (gh_loc >= 0) g.Uniform1f(gh_loc, static_cast<float>(in.h));
-  std::vector<std::pair<std::string, GLuint>> texs;
-  texs.push_back({"ts_record", r.upload_texture(in.record_texture())});
-  for (const auto &t : in.textures) texs.push_back({t.sampler, r.upload_texture(t)});
   ImageF img;
-  const bool ok = r.draw(prog, texs, in.w, in.h, &img, &err);
-  for (auto &t : texs) r.delete_texture(t.second);
-  r.delete_program(prog);
-  if (!ok) {
+  if (!draw_conform_grid(r, prog, in, &img, &err)) {
     res.error = err;
     return res;
   }

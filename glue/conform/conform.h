@@ -46,6 +46,10 @@ GLuint build_production_program(GlRenderer &r, Api api, const Variant &v, std::s
 // Builds the variant's conformance program for the renderer's API (nullptr err on success).
 GLuint build_conform_program(GlRenderer &r, Api api, const Variant &v, std::string *err);
 
+// Draws the grid `in` through the conformance program `prog` (its record texture, textures and
+// uniforms, as every conformance run sets them), reads it back into *img and deletes prog.
+bool draw_conform_grid(GlRenderer &r, GLuint prog, const FamilyInputs &in, ImageF *img, std::string *err);
+
 // Renders `in` through variant `v` and compares every pixel with the C twin.
 ConformResult conform_variant(const ConformRun &run, const ShaderFamily &fam, const Variant &v, const FamilyInputs &in,
                               InputSet set);
