@@ -182,11 +182,13 @@ bool bake_irradiance_volume(const double lo[3], const double hi[3], const std::v
   v.cube.assign(count, {});
   v.valid.assign(count, 0);
   v.back_share.assign(count, 0.f);
+  const std::vector<uint8_t> needed = volume_needed_samples(v, set.regions);
   // One row of samples (fixed j, k) per task: each sample depends on its position alone.
   const int rows = v.n[1] * v.n[2];
   parallel_rows(rows, set.threads, [&](int r) {
     const int j = r % v.n[1], k = r / v.n[1];
     for (int i = 0; i < v.n[0]; ++i) {
+      if (!needed[v.index(i, j, k)]) continue;  // no model can be near it: invalid, no rays
       float c[6][3];
       const double share = volume_sample_cube(v.position(i, j, k), faces, grids, rays, set, c);
       const size_t idx = v.index(i, j, k);
@@ -196,10 +198,44 @@ bool bake_irradiance_volume(const double lo[3], const double hi[3], const std::v
       v.valid[idx] = share <= set.max_back_share;
     }
   });
-  v.rays = static_cast<long>(count * volume_ray_directions().size());
+  for (uint8_t x : needed) v.baked += x;
+  v.rays = static_cast<long>(static_cast<size_t>(v.baked) * volume_ray_directions().size());
   v.bake_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
   *out = std::move(v);
   return true;
+}
+
+// The low sample of the cell a lookup at coordinate x (axis a) reads, and its fraction: x clamped to
+// the sample centres (volume_cube_at and volume_needed_samples share it).
+static int volume_cell_base(const IrradianceVolume &v, int a, double x, double *frac = nullptr) {
+  const double g = std::clamp((x - v.origin[a]) / v.step[a], 0.0, static_cast<double>(v.n[a] - 1));
+  const int base = std::min(std::max(0, v.n[a] - 2), static_cast<int>(std::floor(g)));
+  if (frac) *frac = v.n[a] > 1 ? g - base : 0.0;
+  return base;
+}
+
+std::vector<uint8_t> volume_needed_samples(const IrradianceVolume &grid,
+                                           const std::vector<std::array<double, 6>> &regions) {
+  const size_t count = static_cast<size_t>(grid.n[0]) * grid.n[1] * grid.n[2];
+  std::vector<uint8_t> need(count, regions.empty() ? 1 : 0);
+  for (int a = 0; a < 3; ++a)
+    if (grid.n[a] < 1) return need;
+  for (const std::array<double, 6> &b : regions) {
+    int first[3], last[3];
+    bool empty = false;
+    for (int a = 0; a < 3; ++a) {
+      // A lookup at coordinate x reads the samples base(x) and base(x) + 1 (volume_cube_at's clamp);
+      // base is monotone in x, so the box reads base(lo) .. base(hi) + 1.
+      first[a] = volume_cell_base(grid, a, b[a]);
+      last[a] = std::min(grid.n[a] - 1, volume_cell_base(grid, a, b[3 + a]) + 1);
+      empty = empty || !(b[3 + a] >= b[a]);
+    }
+    if (empty) continue;
+    for (int k = first[2]; k <= last[2]; ++k)
+      for (int j = first[1]; j <= last[1]; ++j)
+        for (int i = first[0]; i <= last[0]; ++i) need[grid.index(i, j, k)] = 1;
+  }
+  return need;
 }
 
 bool volume_cube_at(const IrradianceVolume &v, const double p[3], VolumeLookup lookup, float cube[6][3],
@@ -212,9 +248,7 @@ bool volume_cube_at(const IrradianceVolume &v, const double p[3], VolumeLookup l
   double t[3];
   for (int a = 0; a < 3; ++a) {
     // Grid coordinate of p, clamped to the sample centres; the cell's low corner and the fraction.
-    const double g = std::clamp((p[a] - v.origin[a]) / v.step[a], 0.0, static_cast<double>(v.n[a] - 1));
-    base[a] = std::min(std::max(0, v.n[a] - 2), static_cast<int>(std::floor(g)));
-    t[a] = v.n[a] > 1 ? g - base[a] : 0.0;
+    base[a] = volume_cell_base(v, a, p[a], &t[a]);
   }
   std::vector<VolumeContribution> used;
   double wsum = 0;

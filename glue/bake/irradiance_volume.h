@@ -45,6 +45,11 @@ struct VolumeSettings {
   // models; a denser volume's samples next to or inside models are not darkened by them; measured by
   // `bench --section ambient`, docs/irradiance_volume.md). The accuracy bench's reference keeps true.
   bool models_occlude = false;
+  // Where models can be (the "samples only where models can be"): boxes [lo, hi] that a
+  // model's centre may occupy (a static model's box is its centre point). Empty: anywhere in the
+  // volume's box. Otherwise only the samples a lookup at a point inside a box can read are baked
+  // (volume_needed_samples); the others stay invalid and cost no rays.
+  std::vector<std::array<double, 6>> regions;
 };
 
 // What a volume's samples depend on, in parts (glue/bake/volume_file.h: volume_inputs), so that a
@@ -58,6 +63,7 @@ struct VolumeInputs {
   AmbientFit fit = AmbientFit::Lsq;
   double max_back_share = 0;
   bool models_occlude = false;
+  std::vector<std::array<double, 6>> regions;  // VolumeSettings::regions (part of the bounds)
 };
 
 struct IrradianceVolume {
@@ -69,6 +75,7 @@ struct IrradianceVolume {
   std::vector<float> back_share;
   double bake_ms = 0;
   long rays = 0;
+  long baked = 0;  // samples traced (all of them without VolumeSettings::regions)
   // The content hash of what the samples depend on (glue/bake/volume_file.h: volume_inputs_hash): the
   // bake directory's copy is refused when it differs from the scene's; `inputs`: its parts.
   uint64_t inputs_hash = 0;
@@ -77,6 +84,13 @@ struct IrradianceVolume {
   glm::dvec3 position(int i, int j, int k) const;
   size_t bytes() const;  // the samples' memory (cubes, validity, back-face shares)
 };
+
+// Which samples of a grid (n, origin, step as IrradianceVolume holds them) a lookup at a point of one
+// of `regions` can read (1) and which it cannot (0): along each axis, the samples whose position lies
+// within one step of the box, clamped to the grid, so the 8 samples around any point inside a box
+// (volume_cube_at) are all baked. All 1 without regions. The nearest-valid fallback of a lookup with
+// none of its 8 valid then searches the baked samples only.
+std::vector<uint8_t> volume_needed_samples(const IrradianceVolume &grid, const std::vector<std::array<double, 6>> &regions);
 
 // The 162 ray directions: the vertices of an icosahedron whose faces are split into 4 x 4 triangles,
 // projected to the sphere (10 * 4^2 + 2 = 162, the count of vrad's g_anorms; fact sheet section 3).

@@ -67,6 +67,12 @@ VolumeInputs volume_inputs(const double lo[3], const double hi[3], const VolumeS
     box.value(hi[a]);
     st.value(set.spacing[a]);
   }
+  // Where models can be narrows the box (hashed with it only when named: a volume over the whole
+  // box keeps the hash it had).
+  in.regions = set.regions;
+  if (!set.regions.empty()) box.value(static_cast<uint64_t>(set.regions.size()));
+  for (const std::array<double, 6> &r : set.regions)
+    for (double x : r) box.value(x);
   in.fit = set.fit;
   in.max_back_share = set.max_back_share;
   in.models_occlude = set.models_occlude;
@@ -109,6 +115,12 @@ namespace {
 
 json vec3_json(const double v[3]) { return json::array({v[0], v[1], v[2]}); }
 
+json regions_json(const std::vector<std::array<double, 6>> &regions) {
+  json a = json::array();
+  for (const std::array<double, 6> &r : regions) a.push_back(json::array({vec3_json(&r[0]), vec3_json(&r[3])}));
+  return a;
+}
+
 // The entry's record of the inputs: the parts' hashes and the box's and settings' values.
 json inputs_json(const VolumeInputs &in) {
   return {{"hash",
@@ -119,6 +131,7 @@ json inputs_json(const VolumeInputs &in) {
             {"lightmaps", hash_hex(in.lightmaps)},
             {"sky", hash_hex(in.sky)}}},
           {"bounds", json::array({vec3_json(in.lo), vec3_json(in.hi)})},
+          {"regions", regions_json(in.regions)},
           {"spacing", vec3_json(in.spacing)},
           {"fit", ambient_fit_name(in.fit)},
           {"max_back_share", in.max_back_share},
@@ -140,7 +153,7 @@ std::string inputs_changed(const json &was, const VolumeInputs &now) {
     if (was["hash"].contains(keys[i]) && was["hash"][keys[i]] == n["hash"][keys[i]]) continue;
     std::string what = kPartWords[i], values;
     // The box's and settings' values that differ, by name (the manifest's -> the scene's).
-    const std::vector<const char *> named = i == 0 ? std::vector<const char *>{"bounds"}
+    const std::vector<const char *> named = i == 0 ? std::vector<const char *>{"bounds", "regions"}
         : i == 1 ? std::vector<const char *>{"spacing", "fit", "max_back_share", "models_occlude"}
                  : std::vector<const char *>{};
     for (const char *k : named)
@@ -192,6 +205,7 @@ json volume_manifest_entry(const IrradianceVolume &v, const std::string &bytes) 
           {"inputs", inputs_json(v.inputs)},
           {"samples", {v.n[0], v.n[1], v.n[2]}},
           {"valid", valid},
+          {"baked", v.baked},
           {"origin", {v.origin[0], v.origin[1], v.origin[2]}},
           {"step", {v.step[0], v.step[1], v.step[2]}},
           {"rays", v.rays},
@@ -349,6 +363,10 @@ bool read_volume_dir(const std::string &dir, const VolumeInputs &inputs, Irradia
           }
       }
   if (e.contains("rays") && e["rays"].is_number_integer()) v.rays = e["rays"].get<long>();
+  v.baked = static_cast<long>(v.cube.size());  // an older manifest: every sample
+  if (e.contains("baked") && e["baked"].is_number_integer() && e["baked"].get<long>() >= 0 &&
+      e["baked"].get<long>() <= v.baked)
+    v.baked = e["baked"].get<long>();
   v.inputs = inputs;  // the hash says they are the scene's
   *out = std::move(v);
   return true;

@@ -249,9 +249,13 @@ int cmd_bake(int argc, char **argv) {
   if (!ps.volume.cube.empty()) {
     int valid = 0;
     for (uint8_t x : ps.volume.valid) valid += x;
+    const long all = static_cast<long>(ps.volume.cube.size());
     printf("baked: irradiance volume of %d x %d x %d samples (%d valid), %ld rays, %.1f ms%s\n", ps.volume.n[0],
            ps.volume.n[1], ps.volume.n[2], valid, ps.volume.rays, ps.volume.bake_ms,
            page_only ? " (not written: -o PAGE.exr writes the page alone)" : ", written as volume.bin");
+    if (ps.volume.baked < all)  // only where models can be (nodes' extras.tiershade.reach)
+      printf("baked: volume samples only where models can be: %ld of %ld (%ld rays saved)\n", ps.volume.baked, all,
+             (all - ps.volume.baked) * static_cast<long>(volume_ray_directions().size()));
   }
   printf("direct: %ld shadow rays, %.1f ms\n", sum.direct_rays, sum.direct_ms);
   for (size_t k = 0; k < sum.report.pass_rays.size(); ++k)

@@ -405,6 +405,26 @@ bool convert_camera(Walk &w, int cam, const glm::dmat4 &world, const std::string
   return true;
 }
 
+// A node's extras.tiershade: "reach" [[x,y,z], [x,y,z]], the world-space box its centre can be in
+// (docs/scenes.md). Other keys are refused, naming the place.
+bool read_node_reach(const tinygltf::Node &n, const std::string &nplace, SceneInstance *inst, Err &e) {
+  if (!n.extras.IsObject() || !n.extras.Has("tiershade")) return true;
+  const std::string place = nplace + ".extras.tiershade";
+  const tinygltf::Value &t = n.extras.Get("tiershade");
+  if (!check_keys(t, place, {"reach"}, e)) return false;
+  if (!t.Has("reach")) return true;
+  const tinygltf::Value &b = t.Get("reach");
+  if (!b.IsArray() || b.ArrayLen() != 2) return e.fail(place + ".reach", "expected [[x,y,z], [x,y,z]]");
+  if (!read_vec(b.Get(0), place + ".reach[0]", 3, -1e6, 1e6, inst->reach_lo, e) ||
+      !read_vec(b.Get(1), place + ".reach[1]", 3, -1e6, 1e6, inst->reach_hi, e))
+    return false;
+  for (int k = 0; k < 3; ++k)
+    if (!(inst->reach_hi[k] >= inst->reach_lo[k]))
+      return e.fail(place + ".reach", "the high corner is below the low one on an axis");
+  inst->has_reach = true;
+  return true;
+}
+
 bool walk_node(Walk &w, int ni, const glm::dmat4 &parent, int depth) {
   const std::string place = "nodes[" + std::to_string(ni) + "]";
   if (ni < 0 || static_cast<size_t>(ni) >= w.m.nodes.size()) return w.e.fail(place, "does not exist");
@@ -439,6 +459,7 @@ bool walk_node(Walk &w, int ni, const glm::dmat4 &parent, int depth) {
     for (size_t pi = 0; pi < prims.size(); ++pi)
       if (!convert_primitive(w, n.mesh, static_cast<int>(pi), world, id, nname, bmin, bmax)) return false;
     for (int k = 0; k < 3; ++k) inst.center[k] = prims.empty() ? world[3][k] : 0.5 * (bmin[k] + bmax[k]);
+    if (!read_node_reach(n, nplace, &inst, w.e)) return false;
     w.s->instances.push_back(inst);
   }
   for (int c : n.children)

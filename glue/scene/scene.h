@@ -113,6 +113,10 @@ struct SceneInstance {
   std::string name;  // node name or "nodes[i]"
   double world[16];  // column-major object -> world
   double center[3];  // world-space centre of its bounding box (ambient-cube and probe choice)
+  // Node extras.tiershade.reach [[x,y,z], [x,y,z]]: the world-space box its centre can move in (a
+  // model that moves); the irradiance volume samples only where models can be (docs/scenes.md).
+  bool has_reach = false;
+  double reach_lo[3] = {0, 0, 0}, reach_hi[3] = {0, 0, 0};
 };
 
 struct SceneLight {

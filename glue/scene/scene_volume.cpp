@@ -8,6 +8,26 @@
 #include "bake/sky.h"
 #include "bake/volume_file.h"
 
+std::vector<std::array<double, 6>> scene_model_regions(const Scene &s) {
+  std::vector<std::array<double, 6>> r;
+  bool any_reach = false;
+  std::vector<uint8_t> seen(s.instances.size(), 0);
+  for (const ScenePrimitive &p : s.primitives) {
+    if (p.material < 0 || s.materials.at(static_cast<size_t>(p.material)).shader != SceneShader::Model) continue;
+    if (p.instance < 0 || static_cast<size_t>(p.instance) >= s.instances.size() || seen[static_cast<size_t>(p.instance)])
+      continue;
+    seen[static_cast<size_t>(p.instance)] = 1;
+    const SceneInstance &in = s.instances[static_cast<size_t>(p.instance)];
+    any_reach = any_reach || in.has_reach;
+    if (in.has_reach)
+      r.push_back({in.reach_lo[0], in.reach_lo[1], in.reach_lo[2], in.reach_hi[0], in.reach_hi[1], in.reach_hi[2]});
+    else  // a model that stays where it is: its centre
+      r.push_back({in.center[0], in.center[1], in.center[2], in.center[0], in.center[1], in.center[2]});
+  }
+  if (!any_reach) r.clear();  // no model says where it can go: anywhere in the volume's box
+  return r;
+}
+
 SceneVolumeSetup scene_volume_setup(const Scene &s, const std::vector<WorldFace> &faces) {
   SceneVolumeSetup u;
   world_faces_bounds(faces, u.lo, u.hi);
@@ -16,6 +36,7 @@ SceneVolumeSetup scene_volume_setup(const Scene &s, const std::vector<WorldFace>
     std::memcpy(u.hi, s.volume.hi, sizeof u.hi);
   }
   std::memcpy(u.set.spacing, s.volume.spacing, sizeof u.set.spacing);
+  u.set.regions = scene_model_regions(s);
   u.set.fit = s.volume.fit == "mean" ? AmbientFit::Mean : AmbientFit::Lsq;
   if (s.sky.image >= 0) {  // a ray that leaves the scene sees the sky (glue/bake/sky.h), as the bake's do
     const SceneImage &si = s.images.at(static_cast<size_t>(s.sky.image));

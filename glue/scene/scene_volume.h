@@ -20,6 +20,11 @@ struct SceneVolumeSetup {
 };
 SceneVolumeSetup scene_volume_setup(const Scene &s, const std::vector<WorldFace> &faces);
 
+// Where the scene's models can be (VolumeSettings::regions): when any model node names its reach
+// (extras.tiershade.reach), the union of those boxes and the other models' centres; otherwise empty
+// (anywhere in the volume's box: no model says where it can go).
+std::vector<std::array<double, 6>> scene_model_regions(const Scene &s);
+
 // Bakes the volume (or, when the scene reads a bake directory, extras.tiershade.lightmaps.bake, reads
 // it from there, refused when stale: glue/bake/volume_file.h) when the scene has world faces, model draws, no "ambient" samples and the volume
 // enabled; otherwise leaves *out empty (no samples). Bounds: the scene's "bounds" or the faces' box.

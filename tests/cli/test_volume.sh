@@ -189,4 +189,35 @@ if [ "$RC" -eq 2 ] && grep -q "\-\-lookup 'cubic': expected trilinear, inverse_s
   pass "light --lookup: a bad value is refused"
 else fail "light --lookup bad value" "status $RC: $(head -n 2 "$ERR")"; fi
 
+# Samples only where models can be: one model node names its reach (extras.tiershade.reach); the bake
+# traces only the samples lookups in the reach boxes (and at the other models' centres) can read,
+# says how many and the rays saved, records the boxes in the manifest; a changed reach is a stale
+# volume naming the regions; a reach with its corners swapped is refused naming the node.
+python3 - dir.gltf reach.gltf reach2.gltf reach_bad.gltf "$PWD/reach.bake" << 'EOF'
+import json, sys
+d = json.load(open(sys.argv[1]))
+t = d['extras']['tiershade']['lightmaps']
+t.pop('bake', None)
+m = next(i for i, n in enumerate(d['nodes']) if 'mesh' in n and d['meshes'][n['mesh']].get('name', '').startswith('hall_sphere'))
+for out, box, bake in ((sys.argv[2], [[-1, 0.5, -1], [1, 1.5, 1]], None), (sys.argv[3], [[-2, 0.5, -1], [1, 1.5, 1]], sys.argv[5]),
+                       (sys.argv[4], [[1, 0.5, -1], [-1, 1.5, 1]], None)):
+    d['nodes'][m]['extras'] = {'tiershade': {'reach': box}}
+    if bake: t['bake'] = bake
+    else: t.pop('bake', None)
+    json.dump(d, open(out, 'w'))
+EOF
+run bake reach.gltf -o reach.bake
+if [ "$RC" -eq 0 ] && grep -q "^baked: volume samples only where models can be: [0-9]* of [0-9]* ([0-9]* rays saved)$" "$OUT" &&
+  python3 -c 'import json,sys; v=json.load(open(sys.argv[1]))["volume"]; r=v["inputs"]["regions"]; n=v["samples"]; sys.exit(0 if [[-1,0.5,-1],[1,1.5,1]] in r and v["baked"] < n[0]*n[1]*n[2] else 1)' reach.bake/manifest.json; then
+  pass "a model's reach: the bake traces only the samples models can read, says so, records the boxes ($(grep -o '[0-9]* of [0-9]* ([0-9]* rays saved)' "$OUT"))"
+else fail "bake with a model's reach" "status $RC: $(grep volume "$OUT" | head -n 3) $(head -n 2 "$ERR")"; fi
+run render reach2.gltf --size 32x18 --quiet --backend cpu -o stale_reach
+if [ "$RC" -eq 1 ] && grep -q "stale irradiance volume: the volume's bounds (regions .* -> .*) changed since it was baked" "$ERR" &&
+  [ ! -e stale_reach.exr ]; then pass "a changed reach makes the volume stale, naming the regions"
+else fail "stale volume: the reach" "status $RC: $(head -n 2 "$ERR")"; fi
+run bake reach_bad.gltf -o reach_bad.bake
+if [ "$RC" -ne 0 ] && grep -q "nodes\[[0-9]*\].*\.extras\.tiershade\.reach: the high corner is below the low one on an axis" "$ERR" &&
+  [ ! -e reach_bad.bake ]; then pass "a reach with its corners swapped is refused, naming the node"
+else fail "bad reach" "status $RC: $(head -n 2 "$ERR")"; fi
+
 cli_finish

@@ -325,6 +325,73 @@ int main() {
       for (int f = 0; f < 6; ++f)
         for (int k = 0; k < 3; ++k) osum += off[f][k];
       check(ok3 && osum == 0, "volume.enabled false: no volume", err);
+      // Samples only where models can be (extras.tiershade.reach): the model as a node instance whose
+      // centre may move in a box around `at`; only the samples a lookup inside the box reads are
+      // baked, bit-equal to the full bake's, and every lookup inside the box gives the full bake's cube.
+      {
+        float fc[6][3];
+        const bool okf = model_cube(room, fc);
+        const IrradianceVolume full = last.volume;
+        Scene reach = room;
+        SceneInstance inst;
+        inst.name = "test model";
+        for (int k = 0; k < 16; ++k) inst.world[k] = k % 5 == 0 ? 1 : 0;
+        for (int k = 0; k < 3; ++k) {
+          inst.center[k] = at[k];
+          inst.reach_lo[k] = at[k] - 0.4;
+          inst.reach_hi[k] = at[k] + (k == 0 ? 1.5 : 0.4);
+        }
+        inst.has_reach = true;
+        reach.instances.push_back(inst);
+        reach.primitives.back().instance = static_cast<int>(reach.instances.size()) - 1;
+        float rc[6][3];
+        const bool okr = model_cube(reach, rc);
+        const IrradianceVolume &part = last.volume;
+        long baked = 0, equal = 0, others_zero = 0;
+        if (full.cube.empty()) err = "no full volume";
+        const std::vector<uint8_t> need = volume_needed_samples(full, {{inst.reach_lo[0], inst.reach_lo[1],
+                                                                         inst.reach_lo[2], inst.reach_hi[0],
+                                                                         inst.reach_hi[1], inst.reach_hi[2]}});
+        const bool sizes = okf && okr && !full.cube.empty() && part.cube.size() == full.cube.size();
+        for (size_t i = 0; sizes && i < part.cube.size(); ++i) {
+          baked += need[i];
+          if (need[i])
+            equal += part.valid[i] == full.valid[i] && std::memcmp(&part.cube[i], &full.cube[i], sizeof part.cube[i]) == 0;
+          else
+            others_zero += !part.valid[i];
+        }
+        const long all = static_cast<long>(full.cube.size());
+        // Lookups at 200 points inside the box (and on its corners) against the full volume's.
+        uint64_t rng = 12345;
+        int same = 0, points = 0;
+        for (int t = 0; t < 208; ++t) {
+          double p[3];
+          for (int k = 0; k < 3; ++k) {
+            rng = rng * 6364136223846793005ULL + 1442695040888963407ULL;
+            const double u = t < 8 ? ((t >> k) & 1) : static_cast<double>(rng >> 11) / 9007199254740992.0;
+            p[k] = inst.reach_lo[k] + u * (inst.reach_hi[k] - inst.reach_lo[k]);
+          }
+          for (VolumeLookup lk : {VolumeLookup::Trilinear, VolumeLookup::InverseSquare}) {
+            float a[6][3], b[6][3];
+            const bool fa = volume_cube_at(full, p, lk, a, nullptr), fb = volume_cube_at(part, p, lk, b, nullptr);
+            same += fa == fb && std::memcmp(a, b, sizeof a) == 0;
+            ++points;
+          }
+        }
+        char d[200];
+        snprintf(d, sizeof d, "%ld of %ld samples baked (part.baked %ld), %ld bit-equal, %ld others invalid; %d of %d lookups equal",
+                 baked, all, part.baked, equal, others_zero, same, points);
+        printf("reach: %s\n", d);
+        check(okr && part.cube.size() == full.cube.size() && baked > 0 && baked < all && part.baked == baked &&
+                  equal == baked && others_zero == all - baked && same == points &&
+                  part.rays == baked * static_cast<long>(volume_ray_directions().size()),
+              "a model's reach bakes only the samples its lookups read, equal to the full bake's", d);
+        Scene no_reach = reach;
+        no_reach.instances.back().has_reach = false;
+        float nc[6][3];
+        const bool okn = model_cube(no_reach, nc);
+        check(okn && last.volume.baked == all, "no model names its reach: the whole volume is baked", err);
+      }
       // Lights beyond the tier's limit fold into the volume's cube (docs/light_folding.md): the room's
       // 4 lights fit sm3's 4, so the sm3 shader cube is the volume's at the model's centre (tolerance
       // 1e-5: the centre from float positions differs from `at` by ~1e-7 m, the cube's slope is ~1 per
