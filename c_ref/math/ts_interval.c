@@ -14,10 +14,39 @@
 
 #define TS_IV_SLACK 1e-6 /* ULPs added for the double evaluation (see banner) */
 
+/* ---- the precision whose rules apply (ts_iv_set_mediump) ---- */
+
+/* highp: float32 (23 fraction bits, normals from 2^-126). mediump: the CTS's format for it,
+ * FloatFormat(-13, 13, 9 bits) (VK-GL-CTS glsBuiltinPrecisionTests.cpp; ../shared/docs/anchors.md):
+ * 9 fraction bits, normals from 2^-13, the largest finite value (2 - 2^-9) 2^13; past it a result
+ * admits everything up to Inf. Every result is rounded outward to the format's grid, which holds
+ * float32 and fp16 results alike (an implementation may compute mediump at any higher precision). */
+static int g_mediump = 0;
+static int fmt_bits(void) { return g_mediump ? 9 : 23; }
+static double fmt_min(void) { return g_mediump ? 0x1p-13 : (double)FLT_MIN; }
+static double fmt_max(void) { return g_mediump ? (2.0 - 0x1p-9) * 0x1p13 : (double)FLT_MAX; }
+void ts_iv_set_mediump(int on) { g_mediump = on != 0; }
+int ts_iv_mediump(void) { return g_mediump; }
+
+/* v rounded down to the mediump grid (9 fraction bits), v finite and normal in the format */
+static double grid_dn(double v) {
+  int e;
+  frexp(v, &e); /* |v| = m 2^e, m in [0.5, 1): grid step 2^(e - 1 - bits) */
+  const double q = ldexp(1.0, e - 1 - fmt_bits());
+  return floor(v / q) * q;
+}
+
 /* ---- outward rounding to float32 with the FTZ rule ---- */
 
 /* the largest float32 <= v (v exact); a result in the denormal range may also be flushed to 0 */
 static float dn(double v) {
+  if (g_mediump) {
+    if (v >= 0 && v < fmt_min()) return 0.0f;
+    if (v < 0 && v > -fmt_min()) return (float)-fmt_min();
+    if (v > fmt_max()) return (float)fmt_max(); /* overflow: the largest value, or anything above */
+    if (v < -fmt_max()) return -INFINITY;
+    return (float)grid_dn(v); /* exact in float32 */
+  }
   if (v >= 0 && v < FLT_MIN) return 0.0f;
   if (v < 0 && v > -FLT_MIN) return -FLT_MIN;
   float f = (float)v;
@@ -26,6 +55,7 @@ static float dn(double v) {
 }
 /* the smallest float32 >= v (v exact) */
 static float up(double v) {
+  if (g_mediump) return -dn(-v);
   if (v <= 0 && v > -FLT_MIN) return 0.0f;
   if (v > 0 && v < FLT_MIN) return FLT_MIN;
   float f = (float)v;
@@ -34,10 +64,12 @@ static float up(double v) {
 }
 /* the same for the exact value s + e (|e| at most half a double ULP of s, TwoSum) */
 static float dn2(double s, double e) {
+  if (g_mediump) return dn(e < 0 ? nextafter(s, -INFINITY) : s); /* the grid is far coarser than double */
   if (e < 0 && (double)(float)s == s) return dn(nextafter(s, -INFINITY));
   return dn(s);
 }
 static float up2(double s, double e) {
+  if (g_mediump) return up(e > 0 ? nextafter(s, INFINITY) : s);
   if (e > 0 && (double)(float)s == s) return up(nextafter(s, INFINITY));
   return up(s);
 }
@@ -46,14 +78,14 @@ static double two_sum_err(double a, double b, double s) {
   return (a - (s - bb)) + (b - bb);
 }
 
-/* float32 ULP of an exact value */
+/* ULP of an exact value in the format's precision (float32: 2^(e - 23); mediump: 2^(e - 9)) */
 static double ulpd(double y) {
   y = fabs(y);
   if (isinf(y)) return INFINITY;
-  if (y < FLT_MIN) return 0x1p-149;
+  if (y < fmt_min()) return g_mediump ? ldexp(fmt_min(), -fmt_bits()) : 0x1p-149;
   int e;
   frexp(y, &e); /* y = m 2^e, m in [0.5, 1) */
-  return ldexp(1.0, e - 24);
+  return ldexp(1.0, e - 1 - fmt_bits());
 }
 /* least value admitted, n ULP allowed, for any exact result in [y, next power of two above y]:
  * an exact result just past a power of two has twice the ULP */
@@ -89,6 +121,13 @@ static ts_iv mk(double lo, double hi) {
 ts_iv ts_ivrange(float lo, float hi) {
   if (isnan(lo) || isnan(hi)) return ts_ivany();
   ts_iv r = {lo, hi, 0};
+  /* mediump: a float32 input (a uniform, an attribute, a texel stored to a mediump variable) is
+   * converted to the format: either neighbour on its grid, 0 below its normals, any value from the
+   * largest finite one up past it */
+  if (g_mediump) {
+    r.lo = dn(lo);
+    r.hi = up(hi);
+  }
   /* DAZ: a denormal bound may be read as 0; widen it to the nearest normal outward */
   if (is_denorm(lo)) r.lo = lo < 0 ? -FLT_MIN : 0.0f;
   if (is_denorm(hi)) r.hi = hi > 0 ? FLT_MIN : 0.0f;
@@ -169,7 +208,9 @@ ts_iv ts_muliv(ts_iv a, ts_iv b) {
 /* 2.5 ULP when every |b| is in [2^-126, 2^127] (the CTS's range); otherwise any result */
 ts_iv ts_diviv(ts_iv a, ts_iv b) {
   if (a.nan || b.nan || !(isfinite(a.lo) && isfinite(a.hi))) return ts_ivany();
-  const int pos = b.lo >= 0x1p-126f && b.hi <= 0x1p127f, neg = b.hi <= -0x1p-126f && b.lo >= -0x1p127f;
+  /* |b| in [2^minExp, 2^(maxExp - 1)]: float32 [2^-126, 2^127], mediump [2^-13, 2^12] */
+  const float bmin = (float)fmt_min(), bmax = g_mediump ? 0x1p12f : 0x1p127f;
+  const int pos = b.lo >= bmin && b.hi <= bmax, neg = b.hi <= -bmin && b.lo >= -bmax;
   if (!pos && !neg) return ts_ivany();
   const double q[4] = {(double)a.lo / b.lo, (double)a.lo / b.hi, (double)a.hi / b.lo, (double)a.hi / b.hi};
   double lo = q[0], hi = q[0];
@@ -205,7 +246,8 @@ ts_vec3iv ts_sel3iv(int c, ts_vec3iv a, ts_vec3iv b) {
 /* exp2: (3 + 2|x|) ULP, with the largest |x| of the interval at both ends */
 ts_iv ts_exp2iv(ts_iv x) {
   if (x.nan || !has_num(x)) return ts_ivany();
-  const double n = 3 + 2 * fmax(fabs((double)x.lo), fabs((double)x.hi)) + TS_IV_SLACK;
+  /* highp (3 + 2|x|) ULP, mediump (2 + 2|x|) ULP of its own format (anchors.md's table) */
+  const double n = (g_mediump ? 2 : 3) + 2 * fmax(fabs((double)x.lo), fabs((double)x.hi)) + TS_IV_SLACK;
   ts_iv r = mk(isinf(n) ? 0.0 : allow_lo(exp2(x.lo), n), isinf(n) ? INFINITY : allow_hi(exp2(x.hi), n));
   if (x.hi == -INFINITY) r.hi = 0.0f; /* exp2(-Inf) = 0 */
   if (r.lo < 0) r.lo = 0.0f; /* n ULP below a tiny result (or the Inf case): never below 0 */
@@ -216,17 +258,19 @@ ts_iv ts_exp2iv(ts_iv x) {
 ts_iv ts_log2iv(ts_iv x) {
   if (x.nan || !has_num(x) || x.lo <= 0.0f) return ts_ivany();
   const double yl = log2(x.lo), yh = log2(x.hi);
-  double el = ulpd(yl) * (3 + TS_IV_SLACK), eh = ulpd(yh) * (3 + TS_IV_SLACK);
+  /* highp 3 ULP, absolute 2^-21 in [0.5, 2]; mediump 2 ULP, absolute 2^-7 there */
+  const double nl = (g_mediump ? 2 : 3) + TS_IV_SLACK;
+  double el = ulpd(yl) * nl, eh = ulpd(yh) * nl;
   if (x.lo <= 2.0f && x.hi >= 0.5f) {
-    const double abs_err = 0x1p-21 * (1 + 1e-9);
+    const double abs_err = (g_mediump ? 0x1p-7 : 0x1p-21) * (1 + 1e-9);
     if (el < abs_err) el = abs_err;
     if (eh < abs_err) eh = abs_err;
   }
   /* |log2| is largest at an end, so ulpd at the ends bounds it inside; a power-of-two crossing
    * is covered by allow_lo/hi's rule when the error is relative */
   if (isinf(yl)) return ts_ivpoint(INFINITY); /* log2(Inf) = Inf */
-  const double lo = fmin(yl - el, allow_lo(yl, 3 + TS_IV_SLACK));
-  const double hi = isinf(yh) ? INFINITY : fmax(yh + eh, allow_hi(yh, 3 + TS_IV_SLACK));
+  const double lo = fmin(yl - el, allow_lo(yl, nl));
+  const double hi = isinf(yh) ? INFINITY : fmax(yh + eh, allow_hi(yh, nl));
   return mk(lo, hi);
 }
 
@@ -247,9 +291,9 @@ ts_iv ts_sqrtiv(ts_iv x) {
   if (x.nan || !has_num(x) || x.lo < 0.0f) return ts_ivany();
   if (x.hi == 0.0f) return ts_ivpoint(0.0f);
   ts_iv pos = x;
-  if (pos.lo < FLT_MIN) pos.lo = FLT_MIN;
+  if (pos.lo < (float)fmt_min()) pos.lo = (float)fmt_min(); /* below the format's normals: may be 0 */
   ts_iv r = ts_diviv(ts_ivpoint(1.0f), ts_inversesqrtiv(pos));
-  if (!r.nan && x.lo < FLT_MIN) r.lo = 0.0f;
+  if (!r.nan && x.lo < (float)fmt_min()) r.lo = 0.0f;
   return r;
 }
 

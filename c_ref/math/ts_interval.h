@@ -42,6 +42,14 @@ typedef struct {
 /* comparison outcome of an interval test: surely false, surely true, or either */
 enum { TS_IV_FALSE = 0, TS_IV_TRUE = 1, TS_IV_EITHER = 2 };
 
+/* ---- the precision: highp (the default) or mediump, process-wide: set it before evaluating ----
+ * mediump applies the CTS's mediump rules (FloatFormat(-13, 13, 9 bits): every result and every
+ * input rounded outward to 9 fraction bits, normals from 2^-13, overflow past (2 - 2^-9) 2^13 to
+ * Inf; exp2 (2 + 2|x|) ULP, log2 2 ULP or absolute 2^-7 in [0.5, 2], ULPs of that format). The
+ * intervals then hold fp16 results (llvmpipe's mediump on GLES) and float32 ones (SwiftShader's). */
+void ts_iv_set_mediump(int on);
+int ts_iv_mediump(void);
+
 /* ---- construction and queries ---- */
 ts_iv ts_ivpoint(float x);        /* {x} (a NaN x gives the NaN-only interval) */
 ts_iv ts_ivrange(float lo, float hi);

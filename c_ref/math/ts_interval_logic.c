@@ -66,7 +66,9 @@ static double mag(ts_iv v) {
 ts_iv ts_ivlerp_forms(ts_iv a, ts_iv x, ts_iv y, ts_iv t) {
   if (a.nan || x.nan || y.nan || t.nan || a.lo > a.hi || x.lo > x.hi || y.lo > y.hi || t.lo > t.hi) return ts_ivany();
   const double mt = mag(t);
-  const double e = ldexp(mag(x) * (1.0 + mt) + mag(y) * mt, -21) + 4.0 * FLT_MIN;
+  /* mediump: 4 ULP of its 9-bit format (2^-7) and its smallest normal 2^-13 (ts_iv_set_mediump) */
+  const int md = ts_iv_mediump();
+  const double e = ldexp(mag(x) * (1.0 + mt) + mag(y) * mt, md ? -7 : -21) + 4.0 * (md ? 0x1p-13 : FLT_MIN);
   if (!isfinite(e)) return ts_ivany();
   const double lo = (double)a.lo - e, hi = (double)a.hi + e;
   /* outward to float: the next float at or beyond each end */

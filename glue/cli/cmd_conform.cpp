@@ -16,7 +16,7 @@
 // `tiershade conform --help`.
 const char kHelp[] = R"(usage: tiershade conform [--shader S] [--tier T]... [--variant V] [--backend osmesa|egl|chromium|all]
                          [--api gl33|gles2|gles3|webgl1|webgl2|all] [--size N] [--set random|hard|all] [--seed K] [--json] [--verbose]
-                         [--cases FILE]... [--list-cases] [--bounds]
+                         [--cases FILE]... [--list-cases] [--bounds [--precision highp|mediump]]
 Renders an N x N grid of per-pixel input records through each variant on llvmpipe,
 reads back RGBA32F and compares every pixel with the C reference (0 ULP allowed).
 Hard inputs: the named cases of tests/conform/<shader>.cases (embedded; zero/denormal/huge/NaN
@@ -28,7 +28,10 @@ shader FILE is named after (FILE = .../<shader>.cases; format: docs/conformance.
 (the twin's interval instance, c_ref/math/ts_interval.h; docs/conformance.md "Error bounds") and
 reports per variant the share inside, the worst excess and the median and largest interval width
 of the colour channels in float32 ULP (channels whose interval admits anything are counted as
-unbounded; --verbose names the hard cases that have one). Families without
+unbounded; --verbose names the hard cases that have one). --precision mediump (with --bounds, on
+GLES: --api gles2|gles3) compiles the shaders with mediump floats (llvmpipe computes them in fp16) and
+checks them against the mediump rules instead (the CTS's mediump format, 9 fraction bits, range
+2^14: docs/conformance.md "mediump"); widths stay in float32 ULP. Families without
 an interval instance would be listed as skipped (every family has one).
 --backend chromium runs the grids in headless Chromium (WebGL through ANGLE on SwiftShader, the page
 glue/browser/webgl_conform.html; --api webgl1, webgl2 or all, default all) and checks them against
@@ -164,7 +167,7 @@ static int conform_in_browser(const std::vector<Variant> &variants,
 int cmd_conform(int argc, char **argv) {
   Args a("conform", argc, argv, {"--help", "--json", "--verbose", "--list-cases", "--bounds"},
          {"--shader", "--tier", "--variant", "--backend", "--api", "--size", "--set", "--seed", "--cases",
-          "--known-outside", "--page"});
+          "--known-outside", "--page", "--precision"});
   if (a.help(kHelp)) return 0;
   a.no_positional();
   const int size = a.get_int("--size", 64, 1, 1024);
@@ -256,6 +259,16 @@ int cmd_conform(int argc, char **argv) {
 
   long total = 0, failed = 0;
   const bool bounds = a.flag("--bounds");
+  const std::string precision = a.get("--precision", "highp");
+  if (precision != "highp" && precision != "mediump") a.fail("--precision '" + precision + "': expected highp or mediump");
+  if (precision == "mediump") {
+    if (!bounds) a.fail("--precision mediump is checked against the mediump bounds: it needs --bounds");
+    for (const auto &cfg : configs)
+      if (cfg.api != Api::GLES2 && cfg.api != Api::GLES3)
+        a.fail(std::string("--precision mediump: desktop GL ignores precision qualifiers; use --api gles2 or gles3, not ") +
+               api_name(cfg.api));
+    ts_iv_set_mediump(1);  // the interval instance's mediump rules (c_ref/math/ts_interval.h)
+  }
   std::map<std::string, int> skipped;  // --bounds: variants of families without an interval instance
   bool first_json = true;
   if (json) printf("[\n");
@@ -268,7 +281,7 @@ int cmd_conform(int argc, char **argv) {
       continue;
     }
     GlRenderer r(*ctx);
-    ConformRun run{&r, cfg.backend, cfg.api};
+    ConformRun run{&r, cfg.backend, cfg.api, precision};
     if (a.flag("--verbose") && !json)
       printf("# %s/%s: %s\n", backend_name(cfg.backend), api_name(cfg.api), ctx->renderer().c_str());
     for (const auto &v : sel.variants) {

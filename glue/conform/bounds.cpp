@@ -262,7 +262,7 @@ BoundsResult bounds_variant(const ConformRun &run, const ShaderFamily &fam, cons
   }
   GlRenderer &r = *run.renderer;
   std::string err;
-  const GLuint prog = build_conform_program(r, run.api, v, &err);
+  const GLuint prog = build_conform_program(r, run.api, v, &err, run.float_precision);
   if (!prog) {
     res.error = err;
     return res;

@@ -44,12 +44,13 @@ GLuint build_production_program(GlRenderer &r, Api api, const Variant &v, std::s
   return r.build_program(vs, fs, err);
 }
 
-GLuint build_conform_program(GlRenderer &r, Api api, const Variant &v, std::string *err) {
+GLuint build_conform_program(GlRenderer &r, Api api, const Variant &v, std::string *err,
+                             const std::string &float_precision) {
   const Target t = target_for_api(api);
   Assembled vs, fs;
   const auto defs = variant_defines(v, InputMode::Conform);
-  if (!assemble("conform_fullscreen.vs", t, Stage::Vertex, {}, &vs, err)) return 0;
-  if (!assemble(v.shader->fragment, t, Stage::Fragment, defs, &fs, err)) return 0;
+  if (!assemble("conform_fullscreen.vs", t, Stage::Vertex, {}, &vs, err, float_precision)) return 0;
+  if (!assemble(v.shader->fragment, t, Stage::Fragment, defs, &fs, err, float_precision)) return 0;
   return r.build_program(vs, fs, err);
 }
 

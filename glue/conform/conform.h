@@ -29,6 +29,7 @@ struct ConformRun {
   GlRenderer *renderer = nullptr;
   Backend backend = Backend::OSMesa;
   Api api = Api::GL33;
+  std::string float_precision = "highp";  // "mediump": --bounds against the mediump rules (GLES)
 };
 
 Target target_for_api(Api a);
@@ -44,7 +45,8 @@ bool adapt_textures_for_api(Api api, FamilyInputs *in);
 // Builds the variant's production program (its vertex shader, varyings and uniforms).
 GLuint build_production_program(GlRenderer &r, Api api, const Variant &v, std::string *err);
 // Builds the variant's conformance program for the renderer's API (nullptr err on success).
-GLuint build_conform_program(GlRenderer &r, Api api, const Variant &v, std::string *err);
+GLuint build_conform_program(GlRenderer &r, Api api, const Variant &v, std::string *err,
+                             const std::string &float_precision = "highp");
 
 // Draws the grid `in` through the conformance program `prog` (its record texture, textures and
 // uniforms, as every conformance run sets them), reads it back into *img and deletes prog.

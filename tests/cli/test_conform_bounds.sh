@@ -85,4 +85,46 @@ luminance_compare - 1
 luminance_smooth - 128
 LIST
 
+# mediump (--precision mediump): the shaders compiled with mediump floats, which llvmpipe computes in
+# fp16 on GLES, against the mediump rules (c_ref/math/ts_interval.h: the CTS's 9-bit format): every
+# channel inside, and the random grid's median width between 2^12 ULP (the format applied: highp's is
+# 9 and 17 ULP on these families) and the limit (measured worst median rounded up to a power of two:
+# hdr_tonemap 180224 -> 2^18, skybox 327680 -> 2^19; docs/conformance.md "mediump").
+while read -r fam lo hi; do
+  run conform --shader "$fam" --bounds --precision mediump --size 8 --backend egl --api gles3 --json
+  if cli_crashed || [ "$RC" -ne 0 ]; then
+    fail "mediump_${fam}" "status $RC: $(head -c 400 "$OUT") $(head -n 2 "$ERR")"
+    continue
+  fi
+  verdict=$(python3 - "$OUT" "$lo" "$hi" <<'PY'
+import json, sys
+runs, lo, hi = json.load(open(sys.argv[1])), float(sys.argv[2]), float(sys.argv[3])
+bad = [r for r in runs if not r["passed"] or r["outside"] or r["c_outside"]]
+off = [r for r in runs if r["set"] == "random" and not lo <= r["median_width_ulp"] <= hi]
+if not runs: print("no runs")
+elif bad: print("outside: %s %s (GL %d, C %d channels)" % (bad[0]["variant"], bad[0]["set"], bad[0]["outside"], bad[0]["c_outside"]))
+elif off: print("median width %s ULP not in [%s, %s]: %s" % (off[0]["median_width_ulp"], lo, hi, off[0]["variant"]))
+else: print("ok %d" % len(runs))
+PY
+)
+  case $verdict in
+    ok*) pass "mediump_${fam}_fp16_inside (${verdict#ok } runs)" ;;
+    *) fail "mediump_${fam}_fp16_inside" "$verdict" ;;
+  esac
+done <<'LIST'
+hdr_tonemap 4096 262144
+skybox 4096 524288
+LIST
+run conform --shader hdr_tonemap --precision mediump --backend egl --api gles3 --size 4
+if [ "$RC" -eq 2 ] && grep -q "precision mediump is checked against the mediump bounds: it needs --bounds" "$ERR"; then
+  pass "mediump_needs_bounds"
+else fail "mediump_needs_bounds" "status $RC: $(head -n 2 "$ERR")"; fi
+run conform --shader hdr_tonemap --bounds --precision mediump --backend osmesa --api gl33 --size 4
+if [ "$RC" -eq 2 ] && grep -q "desktop GL ignores precision qualifiers; use --api gles2 or gles3, not gl33" "$ERR"; then
+  pass "mediump_refuses_desktop_gl"
+else fail "mediump_refuses_desktop_gl" "status $RC: $(head -n 2 "$ERR")"; fi
+run conform --shader hdr_tonemap --bounds --precision lowp --size 4
+if [ "$RC" -eq 2 ] && grep -q "\-\-precision 'lowp': expected highp or mediump" "$ERR"; then pass "precision_bad_value"
+else fail "precision_bad_value" "status $RC: $(head -n 2 "$ERR")"; fi
+
 cli_finish

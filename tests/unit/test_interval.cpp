@@ -441,6 +441,73 @@ void check_helpers() {
   check(m.x.lo == 2 && m.y.lo == 0 && m.y.hi == 1 && m.z.lo == 0 && m.z.hi == 0, "max3 and neg3", fmt(m.y));
 }
 
+// mediump (ts_iv_set_mediump): every result a GLES implementation may give at mediump lies inside.
+// Evaluated two ways on random inputs in (-2^14, 2^14) with random exponents: fp16 (_Float16: the
+// inputs converted, + - * / correctly rounded in fp16, exp2 log2 inversesqrt pow in float32 then
+// rounded to fp16, as llvmpipe's f2f16 code runs them) and float32 (SwiftShader computes mediump at
+// fp32). Widths: * / within 2^-5 of the result where it is normal, + within 2^-5 of the larger operand (the two inputs and the
+// result each rounded outward on a grid of 2^-9 relative: at most 16 of its ULPs), so the rules are
+// not "anything" (a divisor past 2^12 gives any result: the CTS range rule). Then highp again.
+void check_mediump(Rng &r) {
+  ts_iv_set_mediump(1);
+  auto rnd = [&]() {
+    const float m = r.uniform(1.f, 2.f) * ((r.next() & 1) ? 1.f : -1.f);
+    return std::ldexp(m, static_cast<int>(r.next() % 26) - 13);  // |x| in [2^-13, 2^13]
+  };
+  auto h = [](float x) { return static_cast<float>(static_cast<_Float16>(x)); };
+  long bad16 = 0, bad32 = 0, wide = 0, n = 0;
+  std::string first16, first32, firstw;
+  struct Op {
+    const char *name;
+    std::function<ts_iv(ts_iv, ts_iv)> iv;
+    std::function<float(float, float)> f;
+    bool native16, unary, positive;
+  } ops[] = {
+      {"add", ts_addiv, [](float a, float b) { return a + b; }, true, false, false},
+      {"mul", ts_muliv, [](float a, float b) { return a * b; }, true, false, false},
+      {"div", ts_diviv, [](float a, float b) { return a / b; }, true, false, false},
+      {"exp2", [](ts_iv a, ts_iv) { return ts_exp2iv(a); }, [](float a, float) { return std::exp2(a); }, false, true, false},
+      {"log2", [](ts_iv a, ts_iv) { return ts_log2iv(a); }, [](float a, float) { return std::log2(a); }, false, true, true},
+      {"inversesqrt", [](ts_iv a, ts_iv) { return ts_inversesqrtiv(a); }, [](float a, float) { return 1.f / std::sqrt(a); },
+       false, true, true},
+      {"pow", ts_powiv, [](float a, float b) { return std::pow(a, b); }, false, false, true},
+  };
+  for (const Op &op : ops)
+    for (int i = 0; i < 20000; ++i) {
+      float a = rnd(), b = rnd();
+      if (op.positive) a = std::fabs(a);
+      if (std::string(op.name) == "exp2") a = std::fmod(a, 13.f);
+      if (std::string(op.name) == "pow") b = std::fmod(b, 4.f);
+      const ts_iv v = op.iv(ts_ivpoint(a), ts_ivpoint(b));
+      const float a16 = h(a), b16 = h(b);
+      // fp16: the native operation (correctly rounded: exact in float32, then rounded) or float32 then rounded
+      const float r16 = h(op.f(a16, b16)), r32 = op.f(a, b);
+      ++n;
+      if (!ts_ivcontains(v, r16) && !(std::isinf(r16) && v.hi >= 65504.f) && !v.nan) {
+        if (!bad16++) first16 = std::string(op.name) + "(" + std::to_string(a) + ", " + std::to_string(b) + ") fp16 " +
+                               std::to_string(r16) + " outside " + fmt(v);
+      }
+      if (!ts_ivcontains(v, r32) && !v.nan) {
+        if (!bad32++) first32 = std::string(op.name) + "(" + std::to_string(a) + ", " + std::to_string(b) + ") f32 " +
+                               std::to_string(r32) + " outside " + fmt(v);
+      }
+      if (op.native16 && !v.nan && std::isfinite(r32) && std::fabs(r32) >= 0x1p-12f && std::fabs(r32) <= 0x1p12f &&
+          (double)v.hi - v.lo > 0x1p-5 * (std::string(op.name) == "add" ? std::fmax(std::fabs(a), std::fabs(b)) : std::fabs(r32))) {
+        if (!wide++) firstw = std::string(op.name) + " " + fmt(v) + " around " + std::to_string(r32);
+      }
+    }
+  check(bad16 == 0, "mediump: fp16 results inside (" + std::to_string(n) + " operations)", first16);
+  check(bad32 == 0, "mediump: float32 results inside (an implementation may compute mediump at highp)", first32);
+  check(wide == 0, "mediump: + * / within 2^-5 relative (both inputs and the result rounded outward to the 9-bit grid)", firstw);
+  const ts_iv big = ts_muliv(ts_ivpoint(300.f), ts_ivpoint(300.f));
+  check(big.hi == INFINITY && big.lo == 16368.f, "mediump: a product past 2^14 admits the format's largest value (2 - 2^-9) 2^13 and Inf", fmt(big));
+  const ts_iv in = ts_ivpoint(1.0001f);
+  check(ts_ivcontains(in, 1.f) && !ts_ivcontains(in, 1.005f), "mediump: an input is rounded to the 9-bit grid", fmt(in));
+  ts_iv_set_mediump(0);
+  const ts_iv back = ts_ivpoint(1.0001f);
+  check(back.lo == 1.0001f && back.hi == 1.0001f && !ts_iv_mediump(), "highp again after mediump", fmt(back));
+}
+
 // the checks above can fail: a value one ULP past an end is outside, and its excess says so
 void check_checker() {
   const ts_iv a = ts_addiv(ts_ivpoint(1.f), ts_ivpoint(0x1p-30f));
@@ -463,6 +530,7 @@ int main() {
   check_texture3d(r);
   check_helpers();
   check_lerp_forms(r);
+  check_mediump(r);
   check_checker();
   return unit_check::finish();
 }
