@@ -43,7 +43,8 @@ int cmd_web(int argc, char **argv) {
   const std::string dir = a.get("-o");
   if (!webgl_scene_write_page(a.get("--bundle"), a.get("--dump"), dir, &page, &err)) {
     fprintf(stderr, "tiershade web: %s\n", err.c_str());
-    return err.find("replaced") != std::string::npos || err.find("not a directory") != std::string::npos ? 1 : 2;
+    // the output refused or not writable (the message starts with DIR): 1; the inputs: 2
+    return err.compare(0, dir.size(), dir) == 0 ? 1 : 2;
   }
   printf("wrote %s/index.html: %dx%d, %zu draws, %zu programs, %zu textures, scene.js %.1f MB\n", dir.c_str(), page.w,
          page.h, page.draws, page.programs, page.textures, page.bytes / 1048576.0);
