@@ -103,7 +103,6 @@ bool webgl_scene_write_page(const std::string &bundle_dir, const std::string &du
     scene["textures"] = json::array();
     scene["draws"] = json::array();
     std::map<std::string, int> program_of, texture_of;
-    bool any_linear_output = false;
     const json &vars = man.at("variants");
     const json &draws = dump.at("draws");
     for (size_t i = 0; i < draws.size(); ++i) {
@@ -135,8 +134,7 @@ bool webgl_scene_write_page(const std::string &bundle_dir, const std::string &du
         // What the draw writes: linear (OUTPUT_MODE 0, or a family without display encoding) or
         // display-encoded (OUTPUT_MODE 1 gamma 2.2, 2 sRGB): the page's display pass encodes the first.
         const json &defs = v->at("defines");
-        const bool linear = !defs.contains("OUTPUT_MODE") || defs.at("OUTPUT_MODE").get<int>() == 0;
-        any_linear_output = any_linear_output || linear;
+        p["linear_output"] = !defs.contains("OUTPUT_MODE") || defs.at("OUTPUT_MODE").get<int>() == 0;
         program_of[key] = static_cast<int>(scene["programs"].size());
         scene["programs"].push_back(p);
       }
@@ -193,7 +191,6 @@ bool webgl_scene_write_page(const std::string &bundle_dir, const std::string &du
       }
       scene["draws"].push_back(jd);
     }
-    scene["display_srgb"] = any_linear_output;
     info->programs = program_of.size();
     info->draws = draws.size();
     info->textures = texture_of.size();

@@ -4,12 +4,14 @@
 // manifest's list index, every dumped uniform set from its float32 bits, samplers on the manifest's
 // units, RGBA32F textures, an RGBA32F colour target with a DEPTH_COMPONENT24 buffer cleared to 1,
 // depth test LESS, no blending, no culling. Then a display pass copies the target to the canvas
-// (clamped; sRGB-encoded when the draws wrote linear values): no HDR post passes, no colour correction.
+// (clamped; sRGB-encoded where the draw wrote linear values, found by a second pass of the same vertex
+// stages writing a flag): no HDR post passes (bloom, tone map, auto exposure), no colour correction.
 // The camera: u_view_proj, u_eye and u_eye_position are recomputed here from TS_SCENE.camera in double
 // as glue/scene/prepare.cpp (camera_matrix) and camera_ortho.cpp compute them with GLM (lookAtRH,
 // perspectiveRH_NO, infinitePerspectiveRH, orthoRH_NO, the same operations in the same order), then
 // rounded to float; an orbit camera turns the dump's eye about a pivot on its view axis.
-// index.html?check: one frame at the dump's camera, then in <pre id="out">:
+// index.html?orbit=YAW,PITCH,SCALE starts from an orbited view. index.html?check: one frame at the
+// dump's camera (or the orbit given), then in <pre id="out">:
 //   I <text>                   the context (version, unmasked renderer)
 //   VP <differ> <compared>     camera uniform elements whose JS value differs from the dump's bits
 //   F <base64>                 the RGBA32F frame, w*h*4 floats, rows bottom first (as frame.f32)
@@ -93,6 +95,10 @@
   // --- the orbit camera: the dump's eye and forward turned about a pivot on the view axis ---
   const cam = S ? S.camera : null;
   const orbit = {yaw: 0, pitch: 0, scale: 1, pivotDist: 1};
+  {  // index.html?orbit=YAW,PITCH,SCALE (radians, radians, distance factor): a view to link to
+    const m = /[?&]orbit=([-0-9.e]+),([-0-9.e]+),([0-9.e]+)/.exec(location.search);
+    if (m) { orbit.yaw = +m[1]; orbit.pitch = Math.max(-1.5, Math.min(1.5, +m[2])); orbit.scale = +m[3] || 1; }
+  }
   function rotate(v, axis, a) {  // Rodrigues, axis unit
     const c = Math.cos(a), s = Math.sin(a), d = dot3(axis, v), x = cross3(axis, v);
     return [v[0] * c + x[0] * s + axis[0] * d * (1 - c), v[1] * c + x[1] * s + axis[1] * d * (1 - c),
@@ -142,7 +148,11 @@
     const linearFloat = !!gl.getExtension('OES_texture_float_linear');
     const programs = S.programs.map(function (p) {
       const prog = link(p.vs, p.fs, p.attributes, p.shader + ' ' + p.variant);
-      return {prog: prog, attributes: p.attributes, samplers: p.samplers, locs: {}};
+      // the same vertex stage with a fragment stage that writes whether the draw's values are
+      // linear: the display pass encodes those pixels only (as glue/scene/frame.cpp does per pixel)
+      const flag = link(p.vs, '#version 300 es\nprecision highp float; uniform float ts_flag; out vec4 ts_o;\n' +
+                        'void main() { ts_o = vec4(ts_flag); }\n', p.attributes, p.shader + ' ' + p.variant + ' (display flag)');
+      return {prog: prog, flag: flag, linear: !!p.linear_output, attributes: p.attributes, samplers: p.samplers};
     });
     // one GL texture per (data, filter, wrap) the draws use
     const texCache = {};
@@ -189,7 +199,7 @@
       const uniforms = d.uniforms.map(function (u) {
         const bits = u32s(u.data);
         return {name: u.name, type: u.type, bits: bits, values: new Float32Array(bits.buffer, bits.byteOffset, bits.length),
-                loc: gl.getUniformLocation(p.prog, u.name)};
+                loc: gl.getUniformLocation(p.prog, u.name), flagLoc: gl.getUniformLocation(p.flag, u.name)};
       });
       // each sampler the manifest lists on its unit, with the dump's texture of that name (the
       // renderer may bind a texture the variant does not sample: not listed, not bound, as bare_gl_render)
@@ -214,11 +224,24 @@
     gl.framebufferTexture2D(gl.FRAMEBUFFER, gl.COLOR_ATTACHMENT0, gl.TEXTURE_2D, color, 0);
     gl.framebufferRenderbuffer(gl.FRAMEBUFFER, gl.DEPTH_ATTACHMENT, gl.RENDERBUFFER, depth);
     if (gl.checkFramebufferStatus(gl.FRAMEBUFFER) !== gl.FRAMEBUFFER_COMPLETE) throw new Error('the RGBA32F target is not complete');
+    // the display flags: RGBA8, with a depth buffer of their own (the same vertex stages: the same coverage)
+    const flagTex = gl.createTexture();
+    gl.bindTexture(gl.TEXTURE_2D, flagTex);
+    gl.texImage2D(gl.TEXTURE_2D, 0, gl.RGBA8, S.width, S.height, 0, gl.RGBA, gl.UNSIGNED_BYTE, null);
+    gl.texParameteri(gl.TEXTURE_2D, gl.TEXTURE_MIN_FILTER, gl.NEAREST);
+    gl.texParameteri(gl.TEXTURE_2D, gl.TEXTURE_MAG_FILTER, gl.NEAREST);
+    const flagDepth = gl.createRenderbuffer();
+    gl.bindRenderbuffer(gl.RENDERBUFFER, flagDepth);
+    gl.renderbufferStorage(gl.RENDERBUFFER, gl.DEPTH_COMPONENT24, S.width, S.height);
+    const flagFb = gl.createFramebuffer();
+    gl.bindFramebuffer(gl.FRAMEBUFFER, flagFb);
+    gl.framebufferTexture2D(gl.FRAMEBUFFER, gl.COLOR_ATTACHMENT0, gl.TEXTURE_2D, flagTex, 0);
+    gl.framebufferRenderbuffer(gl.FRAMEBUFFER, gl.DEPTH_ATTACHMENT, gl.RENDERBUFFER, flagDepth);
     // the display pass: the target to the canvas
     const display = link('#version 300 es\nin vec2 a_corner; void main() { gl_Position = vec4(a_corner, 0.0, 1.0); }\n',
-                         '#version 300 es\nprecision highp float; uniform sampler2D u_frame; uniform bool u_srgb; out vec4 o;\n' +
+                         '#version 300 es\nprecision highp float; uniform sampler2D u_frame, u_flags; out vec4 o;\n' +
                          'void main() { vec3 c = clamp(texelFetch(u_frame, ivec2(gl_FragCoord.xy), 0).rgb, 0.0, 1.0);\n' +
-                         '  if (u_srgb) c = mix(12.92 * c, 1.055 * pow(c, vec3(1.0 / 2.4)) - 0.055, step(0.0031308, c));\n' +
+                         '  if (texelFetch(u_flags, ivec2(gl_FragCoord.xy), 0).r > 0.5) c = mix(12.92 * c, 1.055 * pow(c, vec3(1.0 / 2.4)) - 0.055, step(0.0031308, c));\n' +
                          '  o = vec4(c, 1.0); }\n', ['a_corner'], 'display pass');
     const corner = gl.createVertexArray();
     gl.bindVertexArray(corner);
@@ -244,6 +267,19 @@
       const c = lo.map((l, k) => (l + hi[k]) / 2);
       const along = dot3([c[0] - cam.eye[0], c[1] - cam.eye[1], c[2] - cam.eye[2]], cam.forward);
       orbit.pivotDist = isFinite(along) && along > 1e-3 ? along : 1;
+    }
+    function setUniform(loc, type, v, name) {
+      if (!loc) return;
+      switch (type) {
+        case 'float': gl.uniform1fv(loc, v); break;
+        case 'vec2': gl.uniform2fv(loc, v); break;
+        case 'vec3': gl.uniform3fv(loc, v); break;
+        case 'vec4': gl.uniform4fv(loc, v); break;
+        case 'mat3': gl.uniformMatrix3fv(loc, false, v); break;
+        case 'mat4': gl.uniformMatrix4fv(loc, false, v); break;
+        case 'int': case 'bool': gl.uniform1iv(loc, Int32Array.from(v)); break;
+        default: throw new Error('uniform ' + name + ': type ' + type + ' is not replayed');
+      }
     }
     function frame(first) {
       const now = cameraNow();
@@ -275,17 +311,8 @@
               }
             v = new Float32Array(cameraValue);
           }
-          if (!u.loc) continue;
-          switch (u.type) {
-            case 'float': gl.uniform1fv(u.loc, v); break;
-            case 'vec2': gl.uniform2fv(u.loc, v); break;
-            case 'vec3': gl.uniform3fv(u.loc, v); break;
-            case 'vec4': gl.uniform4fv(u.loc, v); break;
-            case 'mat3': gl.uniformMatrix3fv(u.loc, false, v); break;
-            case 'mat4': gl.uniformMatrix4fv(u.loc, false, v); break;
-            case 'int': case 'bool': gl.uniform1iv(u.loc, Int32Array.from(v)); break;
-            default: throw new Error('uniform ' + u.name + ': type ' + u.type + ' is not replayed');
-          }
+          u.now = v;
+          setUniform(u.loc, u.type, v, u.name);
         }
         for (const t of d.textures) {
           gl.activeTexture(gl.TEXTURE0 + t.unit);
@@ -304,7 +331,19 @@
         gl.readPixels(0, 0, S.width, S.height, gl.RGBA, gl.FLOAT, px);
         out.push('VP ' + vpDiffer + ' ' + vpCompared);
         out.push('F ' + toB64(px));
+        return;  // the check reads the lit target only
       }
+      gl.bindFramebuffer(gl.FRAMEBUFFER, flagFb);
+      gl.clearColor(0, 0, 0, 0);
+      gl.clear(gl.COLOR_BUFFER_BIT | gl.DEPTH_BUFFER_BIT);
+      for (const d of draws) {
+        gl.useProgram(d.p.flag);
+        for (const u of d.uniforms) setUniform(u.flagLoc, u.type, u.now, u.name);
+        gl.uniform1f(gl.getUniformLocation(d.p.flag, 'ts_flag'), d.p.linear ? 1 : 0);
+        gl.bindVertexArray(d.vao);
+        gl.drawElements(gl.TRIANGLES, d.count, gl.UNSIGNED_INT, 0);
+      }
+      gl.bindVertexArray(null);
       gl.bindFramebuffer(gl.FRAMEBUFFER, null);
       gl.viewport(0, 0, S.width, S.height);
       gl.disable(gl.DEPTH_TEST);
@@ -312,7 +351,10 @@
       gl.activeTexture(gl.TEXTURE0);
       gl.bindTexture(gl.TEXTURE_2D, color);
       gl.uniform1i(gl.getUniformLocation(display, 'u_frame'), 0);
-      gl.uniform1i(gl.getUniformLocation(display, 'u_srgb'), S.display_srgb ? 1 : 0);
+      gl.activeTexture(gl.TEXTURE1);
+      gl.bindTexture(gl.TEXTURE_2D, flagTex);
+      gl.activeTexture(gl.TEXTURE0);
+      gl.uniform1i(gl.getUniformLocation(display, 'u_flags'), 1);
       gl.bindVertexArray(corner);
       gl.drawArrays(gl.TRIANGLES, 0, 3);
       gl.bindVertexArray(null);
