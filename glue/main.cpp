@@ -25,7 +25,9 @@ static const char kUsage[] =
     "  render     render a glTF scene with only the variants it needs (GL or the C fallback)\n"
     "  bake       bake a scene's lightmaps into a bake directory (page + manifest) for extras.tiershade.lightmaps.bake\n"
     "  light      what the bake says at a point: the face, the luxel, the irradiance and the four lightmap values\n"
-    "  ambient    fit an ambient cube (six colours) to a lat-long light probe\n";
+    "  ambient    fit an ambient cube (six colours) to a lat-long light probe\n"
+    "  check-bundle  check bundles' manifests against what headless Chromium reports active\n"
+    "  web        the WebGL 2 demo page of a scene, from its bundle and its draw dump\n";
 
 int cmd_ambient(int argc, char **argv);  // glue/cli/cmd_ambient.cpp
 
@@ -45,7 +47,7 @@ int main(int argc, char **argv) {
                      {"demo", cmd_demo},         {"bench", cmd_bench},       {"lut", cmd_lut},
                      {"render", cmd_render},     {"bake", cmd_bake},
                      {"light", cmd_light},
-                     {"ambient", cmd_ambient}};
+                     {"ambient", cmd_ambient},   {"check-bundle", cmd_check_bundle}, {"web", cmd_web}};
   for (const auto &c : table)
     if (cmd == c.name) return c.fn(argc - 2, argv + 2);
   fprintf(stderr, "tiershade: unknown command '%s'\n\n%s", cmd.c_str(), kUsage);

@@ -11,6 +11,7 @@
 #include <chrono>
 #include <cstdlib>
 #include <cstring>
+#include <filesystem>
 #include <fstream>
 #include <sstream>
 #include <thread>
@@ -140,5 +141,72 @@ bool chromium_dump_dom(const std::string &html, const std::string &scratch_dir, 
     return false;
   }
   *dom = read_all(out_path);
+  return true;
+}
+
+namespace {
+
+// The text of <pre id="out"> in Chromium's --dump-dom output, its HTML escapes undone.
+bool page_output(const std::string &dom, std::string *text) {
+  const std::string open = "<pre id=\"out\">";
+  const size_t a = dom.find(open);
+  if (a == std::string::npos) return false;
+  const size_t b = dom.find("</pre>", a);
+  if (b == std::string::npos) return false;
+  const std::string raw = dom.substr(a + open.size(), b - a - open.size());
+  text->clear();
+  for (size_t i = 0; i < raw.size(); ++i) {
+    if (raw[i] != '&') {
+      *text += raw[i];
+      continue;
+    }
+    static const std::pair<const char *, char> kEsc[] = {{"&lt;", '<'}, {"&gt;", '>'}, {"&amp;", '&'}, {"&quot;", '"'},
+                                                         {"&#39;", '\''}, {"&nbsp;", ' '}};
+    bool done = false;
+    for (const auto &e : kEsc) {
+      const size_t n = strlen(e.first);
+      if (raw.compare(i, n, e.first) == 0) {
+        *text += e.second;
+        i += n - 1;
+        done = true;
+        break;
+      }
+    }
+    if (!done) *text += '&';
+  }
+  return true;
+}
+
+}  // namespace
+
+bool chromium_run_page(const std::vector<std::pair<std::string, std::string>> &files, const std::string &html,
+                       int timeout_s, std::string *text, std::string *err) {
+  const char *tmp = getenv("TMPDIR");
+  std::string dir = std::string(tmp && *tmp ? tmp : "/tmp") + "/tiershade_webgl.XXXXXX";
+  if (!mkdtemp(&dir[0])) {
+    *err = dir + ": " + strerror(errno);
+    return false;
+  }
+  struct Cleanup {
+    std::string d;
+    ~Cleanup() {
+      std::error_code ec;
+      std::filesystem::remove_all(d, ec);
+    }
+  } cleanup{dir};
+  for (const auto &f : files) {
+    std::ofstream o(dir + "/" + f.first, std::ios::binary);
+    o << f.second;
+    if (!o.good()) {
+      *err = dir + "/" + f.first + ": cannot write";
+      return false;
+    }
+  }
+  std::string dom;
+  if (!chromium_dump_dom(dir + "/" + html, dir, timeout_s, &dom, err)) return false;
+  if (!page_output(dom, text)) {
+    *err = "the page " + html + " wrote no <pre id=\"out\"> (Chromium's DOM is " + std::to_string(dom.size()) + " bytes)";
+    return false;
+  }
   return true;
 }

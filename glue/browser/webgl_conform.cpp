@@ -23,37 +23,6 @@ const char *kind_name(TexKind k) { return k == TexKind::Cube ? "cube" : k == Tex
 
 std::string floats_b64(const std::vector<float> &v) { return base64_encode(v.data(), v.size() * sizeof(float)); }
 
-// The text of <pre id="out"> in Chromium's --dump-dom output, its HTML escapes undone.
-bool page_output(const std::string &dom, std::string *text) {
-  const std::string open = "<pre id=\"out\">";
-  const size_t a = dom.find(open);
-  if (a == std::string::npos) return false;
-  const size_t b = dom.find("</pre>", a);
-  if (b == std::string::npos) return false;
-  const std::string raw = dom.substr(a + open.size(), b - a - open.size());
-  text->clear();
-  for (size_t i = 0; i < raw.size(); ++i) {
-    if (raw[i] != '&') {
-      *text += raw[i];
-      continue;
-    }
-    static const std::pair<const char *, char> kEsc[] = {{"&lt;", '<'}, {"&gt;", '>'}, {"&amp;", '&'}, {"&quot;", '"'},
-                                                         {"&#39;", '\''}, {"&nbsp;", ' '}};
-    bool done = false;
-    for (const auto &e : kEsc) {
-      const size_t n = strlen(e.first);
-      if (raw.compare(i, n, e.first) == 0) {
-        *text += e.second;
-        i += n - 1;
-        done = true;
-        break;
-      }
-    }
-    if (!done) *text += '&';
-  }
-  return true;
-}
-
 struct PageProgram {
   size_t variant;  // index into the variants given
   const ShaderFamily *fam;
@@ -195,37 +164,11 @@ bool webgl_conform(const std::vector<Variant> &variants, const std::map<std::str
   for (size_t p0 = 0; p0 < programs.size(); p0 += static_cast<size_t>(per_page)) {
     const size_t p1 = std::min(programs.size(), p0 + static_cast<size_t>(per_page));
     const nlohmann::json job = job_json(programs, p0, p1, variants, adapted, sets, opt.webgl, false);
-    // the page, its script and the job in a scratch directory, removed afterwards
-    const char *tmp = getenv("TMPDIR");
-    std::string dir = std::string(tmp && *tmp ? tmp : "/tmp") + "/tiershade_webgl.XXXXXX";
-    if (!mkdtemp(&dir[0])) {
-      *err = dir + ": " + strerror(errno);
-      return false;
-    }
-    struct Cleanup {
-      std::string d;
-      ~Cleanup() {
-        std::error_code ec;
-        std::filesystem::remove_all(d, ec);
-      }
-    } cleanup{dir};
     const std::string job_js = "var TS_JOB = " + job.dump() + ";\n";
-    const std::pair<const char *, const std::string *> files[] = {
-        {"webgl_conform.html", &page_html}, {"webgl_conform.js", &page_js}, {"job.js", &job_js}};
-    for (const auto &f : files) {
-      std::ofstream o(dir + "/" + f.first, std::ios::binary);
-      o << *f.second;
-      if (!o.good()) {
-        *err = dir + "/" + f.first + ": cannot write";
-        return false;
-      }
-    }
-    std::string dom, text;
-    if (!chromium_dump_dom(dir + "/webgl_conform.html", dir, opt.timeout_s, &dom, err)) return false;
-    if (!page_output(dom, &text)) {
-      *err = "the WebGL page wrote no <pre id=\"out\"> (Chromium's DOM is " + std::to_string(dom.size()) + " bytes)";
+    std::string text;
+    if (!chromium_run_page({{"webgl_conform.html", page_html}, {"webgl_conform.js", page_js}, {"job.js", job_js}},
+                           "webgl_conform.html", opt.timeout_s, &text, err))
       return false;
-    }
     // the page's lines: I (context), E (program error), R (a draw's floats), X (page error), DONE
     std::vector<std::vector<ImageF>> images(p1 - p0, std::vector<ImageF>(sets.size()));
     std::vector<std::string> perr(p1 - p0);

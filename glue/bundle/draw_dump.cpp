@@ -209,6 +209,22 @@ bool write_draw_dump(const std::string &dir, const DumpFrame &f, std::string *er
   m["clear_bits"] = float_bits(f.clear, 4);
   m["depth_format"] = f.depth_format;
   m["frame_file"] = "frame.f32";
+  if (f.camera.present) {
+    const DumpCamera &c = f.camera;
+    json jc = {{"projection", c.orthographic ? "orthographic" : "perspective"},
+               {"eye", {c.eye[0], c.eye[1], c.eye[2]}},
+               {"forward", {c.forward[0], c.forward[1], c.forward[2]}},
+               {"up", {c.up[0], c.up[1], c.up[2]}},
+               {"znear", c.znear},
+               {"zfar", c.zfar}};
+    if (c.orthographic) {
+      jc["xmag"] = c.xmag;
+      jc["ymag"] = c.ymag;
+    } else {
+      jc["yfov"] = c.yfov;
+    }
+    m["camera"] = jc;
+  }
   m["draws"] = draws;
   if (!w.write("draws.json", m.dump(1) + "\n", err)) return false;
   return w.commit(err);

@@ -31,8 +31,19 @@ struct DumpDraw {
   std::vector<std::shared_ptr<const TextureDesc>> textures;
 };
 
+// The camera the frame was rendered from, as the scene gives it (docs/bundles.md, "The draw dump"):
+// an engine or the WebGL demo page recomputes u_view_proj, u_eye and u_eye_position from it.
+struct DumpCamera {
+  bool present = false;
+  bool orthographic = false;
+  double eye[3] = {0, 0, 0}, forward[3] = {0, 0, -1}, up[3] = {0, 1, 0};  // world space, unit forward/up
+  double yfov = 0, znear = 0, zfar = 0;  // perspective (radians; zfar 0: infinite)
+  double xmag = 0, ymag = 0;  // orthographic half extents
+};
+
 struct DumpFrame {
   int w = 0, h = 0;
+  DumpCamera camera;
   float clear[4] = {0, 0, 0, 0};
   std::string depth_format = "DEPTH_COMPONENT24";  // or "DEPTH_COMPONENT32F"
   std::vector<DumpDraw> draws;

@@ -53,3 +53,5 @@ int cmd_bake(int argc, char **argv);
 int cmd_light(int argc, char **argv);
 int cmd_fold(int argc, char **argv);
 int cmd_lut(int argc, char **argv);
+int cmd_check_bundle(int argc, char **argv);
+int cmd_web(int argc, char **argv);

@@ -282,6 +282,22 @@ int cmd_render(int argc, char **argv) {
     dump.w = res.w;
     dump.h = res.h;
     dump.depth_format = "DEPTH_COMPONENT24";  // as glue/scene/gl_renderer.cpp allocates it
+    if (scene.camera >= 0 && scene.camera < static_cast<int>(scene.cameras.size())) {
+      const SceneCamera &c = scene.cameras[scene.camera];
+      DumpCamera &dc = dump.camera;
+      dc.present = true;
+      dc.orthographic = c.orthographic;
+      for (int k = 0; k < 3; ++k) {
+        dc.eye[k] = c.eye[k];
+        dc.forward[k] = c.forward[k];
+        dc.up[k] = c.up[k];
+      }
+      dc.yfov = c.yfov;
+      dc.znear = c.znear;
+      dc.zfar = c.zfar;
+      dc.xmag = c.xmag;
+      dc.ymag = c.ymag;
+    }
     if (!dump_err.empty() || !write_draw_dump(a.get("--dump-draws"), dump, &dump_err)) {
       fprintf(stderr, "tiershade render: --dump-draws: %s\n", dump_err.c_str());
       return 1;

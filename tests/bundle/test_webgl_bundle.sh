@@ -7,7 +7,9 @@
 # Checks: essl100 offers every variant but the 9 colour-correction 3D-LUT ones (a named one is
 # refused, status 2); a float-HDR scene is refused for essl100 with a message naming the path,
 # and bundles with --hdr integer; a ps20 manifest lists u_lights at its declared 20 with Mesa's
-# 10 under may_trim, and the extensions the variant uses; the budget fails the ps2b Phong
+# 10 under may_trim, and the extensions the variant uses; Chromium's reflection of it agrees with the
+# manifest, and doctored manifests (Mesa's u_lights[10], a_uv left out, an unused uniform) are
+# caught by check-bundle; the budget fails the ps2b Phong
 # 4-light variants on constant registers unless the known-over list names them, and fails a
 # listed variant that fits. About 30 s (the three budget runs compile ~30 variants).
 # Prints "PASS name" / "FAIL name: detail"; exits 1 if any check failed.
@@ -86,6 +88,41 @@ EOF
   # measure takes u_lights at its declared 20: 6 + 20 + 1 = 27 > WebGL 1's 16 (docs/tiers.md).
   case "$got" in *"dx9 15 webgl 27 units 1"*) pass "ps20 counts: 15 DX9 constants, 27 uniform vectors, 1 unit" ;;
     *) fail "ps20 counts: 15 DX9 constants, 27 uniform vectors, 1 unit" "$got" ;; esac
+fi
+
+# --- the manifest against Chromium's reflection (tiershade check-bundle) -----------------------
+# b20 as written passes; the manifest Mesa's reflection alone gave (u_lights at its 10 elements),
+# one without a_uv, and one declaring a uniform no stage uses each fail, naming the entry.
+if [ -s b20/manifest.json ]; then
+  run check-bundle b20
+  if [ "$RC" -eq 0 ] && grep -q '^ok: every manifest agrees' "$OUT"; then pass "check-bundle: the ps20 bundle agrees with Chromium"
+  else fail "check-bundle: the ps20 bundle agrees with Chromium" "status $RC: $(grep -m 2 -E '^FAIL|^declared' "$OUT" | tr '\n' ' ') $(head -n 1 "$ERR")"; fi
+  doctor() {  # doctor NAME PYTHON: a copy of b20 whose variant v is edited by PYTHON
+    rm -rf "$1" && cp -r b20 "$1" && python3 - "$1/manifest.json" "$2" << 'EOF2'
+import json, sys
+m = json.load(open(sys.argv[1])); v = m["variants"][0]
+exec(sys.argv[2])
+json.dump(m, open(sys.argv[1], "w"), indent=2)
+EOF2
+  }
+  doctor bmesa 'v["uniforms"] = [dict(u, array_size=10) if u["name"] == "u_lights" else u for u in v["uniforms"]]; v["may_trim"]["uniforms"] = []'
+  doctor bnouv 'v["attributes"] = [a for a in v["attributes"] if a["name"] != "a_uv"]'
+  doctor bextra 'v["uniforms"].append({"name": "u_unused", "type": "vec4", "array_size": 0, "stages": ["fragment"]})'
+  run check-bundle bmesa
+  if [ "$RC" -eq 1 ] && grep -q "^FAIL .*active uniform 'u_lights' (vec4, size 20) against the declared vec4\[10\]" "$OUT"; then
+    pass "check-bundle: Mesa's u_lights[10] is caught"
+  else fail "check-bundle: Mesa's u_lights[10] is caught" "status $RC: $(grep -m 2 '^FAIL' "$OUT")"; fi
+  run check-bundle bnouv
+  if [ "$RC" -eq 1 ] && grep -q "^FAIL .*active attribute 'a_uv' (vec2, size 1) is not in the declared interface" "$OUT"; then
+    pass "check-bundle: an active attribute the manifest omits is caught"
+  else fail "check-bundle: an active attribute the manifest omits is caught" "status $RC: $(grep -m 2 '^FAIL' "$OUT")"; fi
+  run check-bundle bextra
+  if [ "$RC" -eq 1 ] && grep -q "^FAIL .*declared uniform 'u_unused' (vec4) is not under may_trim but the browser reports it inactive" "$OUT"; then
+    pass "check-bundle: a declared entry Chromium does not report active is caught"
+  else fail "check-bundle: a declared entry Chromium does not report active is caught" "status $RC: $(grep -m 2 '^FAIL' "$OUT")"; fi
+  run check-bundle nope
+  if [ "$RC" -eq 2 ] && grep -q 'nope/manifest.json: cannot open' "$ERR"; then pass "check-bundle: a missing bundle names its manifest"
+  else fail "check-bundle: a missing bundle names its manifest" "status $RC: $(head -n 1 "$ERR")"; fi
 fi
 
 # --- the budget's constant registers --------------------------------------------------------

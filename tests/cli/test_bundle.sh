@@ -8,7 +8,9 @@
 # line on stderr, status 2 (usage/input) or 1, no stdout and no directory left behind; an
 # explicit bundle holds exactly `tiershade assemble`'s text; a bundle replaces a bundle; and,
 # when `tiershade render` exists, for every scenes/*.gltf x tier x target the bare program
-# replays the --dump-draws capture bit for bit, and a corrupted dump is caught.
+# replays the --dump-draws capture bit for bit, and a corrupted dump is caught; the essl100 and
+# essl300 bundles' programs, linked in headless Chromium, report active only what their manifests
+# declare, and everything the manifests do not list under may_trim (tiershade check-bundle).
 # Prints "PASS name" / "FAIL name: detail"; exits 1 if any check failed.
 set -u
 . "$(dirname "${BASH_SOURCE[0]}")/lib.sh"
@@ -130,6 +132,8 @@ else
         run variants "$scene" --tier $tier --target $target "${hdr[@]}" -o bb
         if crashed "$name bundle"; then continue; fi
         if [ "$RC" -ne 0 ]; then fail "$name bundle" "status $RC: $(head -n 1 "$ERR")"; continue; fi
+        # the browser targets' bundles, for the check against Chromium's reflection below
+        [ "$target" = glsl330 ] || { mkdir -p web && cp -r bb "web/${s}_${tier}_$target"; }
         run render "$scene" --tier $tier --backend egl --api $api "${hdr[@]}" --size 160x90 -o frame --dump-draws dd
         if crashed "$name render"; then continue; fi
         if [ "$RC" -ne 0 ] || [ ! -s dd/draws.json ]; then fail "$name render --dump-draws" "status $RC: $(head -n 1 "$ERR")"; continue; fi
@@ -143,6 +147,15 @@ else
       done
     done
   done
+  # Every program of the WebGL bundles above, on one page in headless Chromium: what
+  # getActiveAttrib/getActiveUniform report lies in the declared interface, and every entry
+  # may_trim does not list is active at its declared size (docs/bundles.md, "Checked in a browser").
+  run check-bundle web/*
+  if crashed "scene bundles in Chromium"; then :
+  elif [ "$RC" -eq 0 ] && grep -q '0 active entries outside it, 0 required entries inactive' "$OUT" &&
+    grep -q '^ok: every manifest agrees' "$OUT"; then
+    pass "scene bundles in Chromium: $(sed -n 's/^\([0-9]* bundles.*\)/\1/p' "$OUT"); $(grep '^Mesa' "$OUT")"
+  else fail "scene bundles in Chromium" "status $RC: $(grep -m 3 -E '^FAIL|^declared' "$OUT" | tr '\n' ' ') $(head -n 1 "$ERR")"; fi
 fi
 
 cli_finish
