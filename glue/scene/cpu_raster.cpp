@@ -207,6 +207,7 @@ void scene_rasterize_cpu(const PreparedScene &p, SceneVisibility *vis, int threa
   const size_t n = static_cast<size_t>(p.w) * p.h;
   vis->w = p.w;
   vis->h = p.h;
+  vis->pixel_planes = true;
   // A buffer of this size is reset by the bands below; a new one is made on two threads (its
   // page faults are most of the cost), next to the vertex stage and triangle setup.
   const bool reuse = vis->draw.size() == n && vis->tri.size() == n && vis->b1.size() == n && vis->b2.size() == n &&

@@ -19,6 +19,10 @@ struct SceneVisibility {
   std::vector<int32_t> draw, tri;  // -1: background
   std::vector<float> b1, b2;  // perspective-correct barycentrics of vertices 1 and 2
   std::vector<float> depth;
+  // true (set by scene_rasterize_cpu): pixel i of the buffer is the pixel (i % w, i / w), so
+  // that a triangle llvmpipe draws unclipped is interpolated with llvmpipe's plane equations
+  // there (glue/scene/lp_interp.h); false (e.g. MSAA's fragment layers): from b1, b2 alone.
+  bool pixel_planes = false;
 };
 
 // Rasterises every draw (threads: 0 = all cores).
