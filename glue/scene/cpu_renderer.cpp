@@ -76,9 +76,9 @@ void make_ctx(const PreparedScene &p, std::vector<DrawCtx> *out) {
 
 const int kVary = 24;  // 6 slots x 4 (a G-buffer record)
 // Per vertex: the 24 slot floats, then llvmpipe's window position (x, y, z, 1/w: lp_window_pos),
-// then the clip mask (lp_clipmask, as a float), 3 floats of padding.
-const int kVStride = 32;
-const int kWin = 24, kClipMask = 28;
+// the clip position, the clip mask (lp_clipmask, as a float), 3 floats of padding.
+const int kVStride = 36;
+const int kWin = 24, kClip = 28, kClipMask = 32;
 const int kPixelSlots = 6;  // ML_PIXEL_SLOTS == WL_PIXEL_SLOTS
 const int kChunk = 64;  // pixels per batched call of scene_shade_cpu (a multiple of 8)
 
@@ -107,6 +107,7 @@ void vertex_stage(const PreparedScene &p, const PreparedDraw &d, std::vector<flo
     for (int r = 0; r < 4; ++r) c[r] = m[r] * P[0] + m[4 + r] * P[1] + m[8 + r] * P[2] + m[12 + r];
     float *v = &(*vary)[i * kVStride];
     lp_window_pos(c, static_cast<float>(p.w), static_cast<float>(p.h), v + kWin);
+    std::memcpy(v + kClip, c, 4 * sizeof(float));
     v[kClipMask] = static_cast<float>(lp_clipmask(c));
     const glm::vec3 B = glm::cross(glm::make_vec3(N), glm::make_vec3(T)) * T[3];  // cross(N, T) * w: the same products
     auto put = [&](int slot, float x, float y, float z, float w) {
@@ -153,43 +154,113 @@ inline F4 load4(const float *p) {
 }
 inline F4 splat4(float s) { return F4{s, s, s, s}; }
 
-// The planes of the last triangle a worker interpolated (llvmpipe's set-up, glue/scene/lp_interp.h).
+// The planes of the last triangle a worker interpolated (llvmpipe's set-up, glue/scene/lp_interp.h):
+// one triangle, or the fan of the polygon draw's clipper made of it, each with its vertices in
+// the 8-bit fixed point of llvmpipe's snapping, to find the one that covers a pixel.
 struct PlaneCache {
   int draw = -1, tri = -1;
-  bool exact = false;  // false: clipped by llvmpipe (or zero area there): barycentrics instead
-  LpPlanes pl;
+  int nsub = 0;  // 0: barycentrics (no pixel positions, or llvmpipe's set-up disagrees)
+  bool clipped = false;
+  LpPlanes pl[kLpMaxPoly - 2];
+  int64_t X[kLpMaxPoly - 2][3], Y[kLpMaxPoly - 2][3];
 };
 
+// lp_setup_tri.c calc_fixed_position: (v - 0.5) * 256 in float, rounded to nearest even.
+int64_t lp_snap(float v) { return static_cast<int64_t>(std::nearbyint((v - 0.5f) * 256.0f)); }
+
+// Whether sub-triangle s of c covers pixel (x, y) (its centre at the fixed-point (256 x, 256 y)),
+// with the C rasteriser's rule (counter-clockwise, top-left; cpu_raster.cpp).
+bool sub_covers(const PlaneCache &c, int s, int x, int y) {
+  int64_t X[3] = {c.X[s][0], c.X[s][1], c.X[s][2]}, Y[3] = {c.Y[s][0], c.Y[s][1], c.Y[s][2]};
+  const int64_t area = (X[1] - X[0]) * (Y[2] - Y[0]) - (Y[1] - Y[0]) * (X[2] - X[0]);
+  if (area == 0) return false;
+  if (area < 0) std::swap(X[1], X[2]), std::swap(Y[1], Y[2]);
+  const int64_t px = static_cast<int64_t>(x) * 256, py = static_cast<int64_t>(y) * 256;
+  for (int k = 0; k < 3; ++k) {
+    const int a = (k + 1) % 3, b = (k + 2) % 3;
+    const int64_t dx = X[b] - X[a], dy = Y[b] - Y[a];
+    const int64_t e = dx * (py - Y[a]) - dy * (px - X[a]);
+    const bool top_left = dy < 0 || (dy == 0 && dx > 0);
+    if (!(e > 0 || (e == 0 && top_left))) return false;
+  }
+  return true;
+}
+
+// llvmpipe's set-up of triangle t of a draw (vertex records at vd): draw's clipper when a vertex
+// is outside the view volume, then per triangle lp_tri_order and lp_tri_planes.
+void setup_planes(const float *vd, const uint32_t *idx, float W, float H, const int *used, int nused,
+                  PlaneCache *pc) {
+  const float *v[3] = {&vd[idx[0] * kVStride], &vd[idx[1] * kVStride], &vd[idx[2] * kVStride]};
+  const int m[3] = {static_cast<int>(v[0][kClipMask]), static_cast<int>(v[1][kClipMask]),
+                    static_cast<int>(v[2][kClipMask])};
+  pc->nsub = 0;
+  pc->clipped = (m[0] | m[1] | m[2]) != 0;
+  auto add = [&](const float *const p[3], const float *const a[3]) {
+    int order[3];
+    if (!lp_tri_order(p[0], p[1], p[2], order)) return;
+    const int s = pc->nsub++;
+    const float *const po[3] = {p[order[0]], p[order[1]], p[order[2]]};
+    const float *const ao[3] = {a[order[0]], a[order[1]], a[order[2]]};
+    lp_tri_planes(po, ao, used, nused, &pc->pl[s]);
+    for (int k = 0; k < 3; ++k) pc->X[s][k] = lp_snap(po[k][0]), pc->Y[s][k] = lp_snap(po[k][1]);
+  };
+  if (!pc->clipped) {
+    const float *const p[3] = {v[0] + kWin, v[1] + kWin, v[2] + kWin};
+    add(p, v);
+    return;
+  }
+  LpVert in[3], poly[kLpMaxPoly];
+  for (int k = 0; k < 3; ++k) {
+    std::memcpy(in[k].clip, v[k] + kClip, sizeof in[k].clip);
+    std::memcpy(in[k].win, v[k] + kWin, sizeof in[k].win);
+    std::memcpy(in[k].attr, v[k], sizeof in[k].attr);
+  }
+  const int n = lp_clip_tri(in, m, W, H, poly);
+  for (int i = 2; i < n; ++i) {  // emit_poly, provoking vertex last: (i - 1, i, 0)
+    const LpVert *t[3] = {&poly[i - 1], &poly[i], &poly[0]};
+    const float *const p[3] = {t[0]->win, t[1]->win, t[2]->win};
+    const float *const a[3] = {t[0]->attr, t[1]->attr, t[2]->attr};
+    add(p, a);
+  }
+}
+
 // The pixel slots used[] of pixels x0 .. x0 + n - 1 of row y (one draw d; tri, b1, b2: the
-// visibility buffer's row) into pp[k * pitch + i]. A triangle llvmpipe draws unclipped gets its
-// plane equations, as llvmpipe computes them; a clipped one is interpolated from the C
+// visibility buffer's row) into pp[k * pitch + i]: with llvmpipe's plane equations of the
+// triangle as llvmpipe sets it up (planes: the buffer's pixels are the frame's), else (or where
+// no triangle of a clipped one's fan covers the pixel in llvmpipe's snapping) from the C
 // rasteriser's barycentrics (v0 b0 + v1 b1 + v2 b2, float, unfused).
 void interp_run(const float *vd, const uint32_t *indices, const int32_t *tri, const float *vb1, const float *vb2,
                 int d, int y, int x0, int n, const int *used, int nused, ts_vec4f *pp, int pitch, bool planes,
-                PlaneCache *pc) {
+                float W, float H, PlaneCache *pc) {
   int i = 0;
   while (i < n) {
     const int t = tri[x0 + i];
     int j = i + 1;
     while (j < n && tri[x0 + j] == t) ++j;
     const uint32_t *idx = &indices[static_cast<size_t>(t) * 3];
-    const float *v[3] = {&vd[idx[0] * kVStride], &vd[idx[1] * kVStride], &vd[idx[2] * kVStride]};
-    if (pc->draw != d || pc->tri != t) {
+    if (planes && (pc->draw != d || pc->tri != t)) {
       pc->draw = d;
       pc->tri = t;
-      int order[3];
-      pc->exact = planes && v[0][kClipMask] == 0.f && v[1][kClipMask] == 0.f && v[2][kClipMask] == 0.f &&
-          lp_tri_order(v[0] + kWin, v[1] + kWin, v[2] + kWin, order);
-      if (pc->exact) {
-        const float *const po[3] = {v[order[0]] + kWin, v[order[1]] + kWin, v[order[2]] + kWin};
-        const float *const vo[3] = {v[order[0]], v[order[1]], v[order[2]]};
-        lp_tri_planes(po, vo, used, nused, &pc->pl);
-      }
+      setup_planes(vd, idx, W, H, used, nused, pc);
     }
-    if (pc->exact) {
-      lp_interp_span(pc->pl, x0 + i, y, j - i, used, nused, pp, pitch, i);
-    } else {
-      for (int q = i; q < j; ++q) {
+    const int nsub = planes ? pc->nsub : 0;
+    for (int q = i; q < j;) {
+      int s = -1;
+      if (nsub == 1 && !pc->clipped) {
+        s = 0;
+      } else {
+        for (int k = 0; k < nsub && s < 0; ++k)
+          if (sub_covers(*pc, k, x0 + q, y)) s = k;
+      }
+      if (s >= 0 && !pc->clipped) {  // the whole run: one triangle
+        lp_interp_span(pc->pl[s], x0 + q, y, j - q, used, nused, pp, pitch, q);
+        q = j;
+        continue;
+      }
+      if (s >= 0) {
+        lp_interp_span(pc->pl[s], x0 + q, y, 1, used, nused, pp, pitch, q);
+      } else {
+        const float *v[3] = {&vd[idx[0] * kVStride], &vd[idx[1] * kVStride], &vd[idx[2] * kVStride]};
         const float b1 = vb1[x0 + q], b2 = vb2[x0 + q], b0 = 1.f - b1 - b2;
         const F4 B0 = splat4(b0), B1 = splat4(b1), B2 = splat4(b2);
         for (int u = 0; u < nused; ++u) {
@@ -198,6 +269,7 @@ void interp_run(const float *vd, const uint32_t *indices, const int32_t *tri, co
           std::memcpy(&pp[static_cast<size_t>(k) * pitch + q], &r, sizeof r);
         }
       }
+      ++q;
     }
     i = j;
   }
@@ -279,6 +351,7 @@ void scene_shade_cpu(const PreparedScene &p, const SceneVisibility &vis, ImageF 
   // Per thread: the run's pixel slots and results (kept across rows).
   std::vector<std::vector<ts_vec4f>> pix_of(static_cast<size_t>(parallel_workers(p.h, threads)));
   std::vector<PlaneCache> cache(pix_of.size());
+  const float W = static_cast<float>(p.w), H = static_cast<float>(p.h);
   std::vector<float> clip;
   for (size_t gi = 0; gi < groups.size(); ++gi) {
     const bool first = gi == 0;
@@ -316,7 +389,7 @@ void scene_shade_cpu(const PreparedScene &p, const SceneVisibility &vis, ImageF 
         ts_vec4f *pp = pix.data();
         for (int c0 = x; c0 < x1; c0 += kChunk) {
           const int n = std::min(kChunk, x1 - c0);
-          interp_run(vd, indices, tri, vb1, vb2, d, y, c0, n, used, nused, pp, kChunk, vis.pixel_planes,
+          interp_run(vd, indices, tri, vb1, vb2, d, y, c0, n, used, nused, pp, kChunk, vis.pixel_planes, W, H,
                      &cache[static_cast<size_t>(t)]);
           shade_run(c, pp, kChunk, n, orow_px + (c0 - x));
         }
@@ -387,7 +460,8 @@ void scene_records_cpu(const PreparedScene &p, const SceneVisibility &vis, std::
       int x1 = x;
       while (x1 < p.w && vis.draw[row + x1] == d) ++x1;
       interp_run(vary[d].data(), p.draws[d].geo->indices.data(), vis.tri.data() + row, vis.b1.data() + row,
-                 vis.b2.data() + row, d, y, x, x1 - x, all, kPixelSlots, pix.data(), p.w, vis.pixel_planes, &cache);
+                 vis.b2.data() + row, d, y, x, x1 - x, all, kPixelSlots, pix.data(), p.w, vis.pixel_planes,
+                 static_cast<float>(p.w), static_cast<float>(p.h), &cache);
       for (int i = 0; i < x1 - x; ++i)
         for (int k = 0; k < kPixelSlots; ++k)
           std::memcpy(&(*slots)[(row + x + i) * kVary + k * 4], &pix[static_cast<size_t>(k) * p.w + i],

@@ -140,3 +140,85 @@ void lp_interp_span(const LpPlanes &pl, int x0, int y, int n, const int *used, i
   else
     span_plain(pl, x0, y, n, used, nused, out, pitch, i0);
 }
+
+namespace {
+
+// draw_pipe_clip.c getclipdist for the 6 view-volume planes: dot4(clip_pos, plane), the planes of
+// draw_context.c draw_init: (-1,0,0,1) (1,0,0,1) (0,-1,0,1) (0,1,0,1) (0,0,1,1) (0,0,-1,1).
+float clip_dist(const float *c, int plane) {
+  static const float P[6][4] = {{-1, 0, 0, 1}, {1, 0, 0, 1}, {0, -1, 0, 1}, {0, 1, 0, 1}, {0, 0, 1, 1}, {0, 0, -1, 1}};
+  const float *p = P[plane];
+  return c[0] * p[0] + c[1] * p[1] + c[2] * p[2] + c[3] * p[3];
+}
+
+// draw_pipe_clip.c interp: dst = out + t (in - out) for the clip position and every perspective
+// attribute (LINTERP, unfused: Mesa is built for baseline x86-64); the window position from the
+// new clip position: oow = 1 / w, x = x * oow * scale + trans (unfused, left to right).
+void clip_interp(LpVert *dst, float t, const LpVert &out, const LpVert &in, float W, float H) {
+  for (int i = 0; i < 4; ++i) dst->clip[i] = out.clip[i] + t * (in.clip[i] - out.clip[i]);
+  const float oow = 1.0f / dst->clip[3];
+  const float scale[3] = {W * 0.5f, H * 0.5f, 0.5f}, trans[3] = {W * 0.5f, H * 0.5f, 0.5f};
+  for (int i = 0; i < 3; ++i) dst->win[i] = dst->clip[i] * oow * scale[i] + trans[i];
+  dst->win[3] = oow;
+  for (int i = 0; i < 24; ++i) dst->attr[i] = out.attr[i] + t * (in.attr[i] - out.attr[i]);
+}
+
+}  // namespace
+
+int lp_clip_tri(const LpVert in[3], const int m[3], float W, float H, LpVert poly[kLpMaxPoly]) {
+  // clip_tri: all three outside one plane: culled.
+  if ((m[0] & m[1] & m[2]) != 0) return 0;
+  int clipmask = m[0] | m[1] | m[2];
+  LpVert tmp[2 * kLpMaxPoly + 2];
+  const LpVert *lists[2][kLpMaxPoly + 1];
+  int cur = 0, n = 3, ntmp = 0;
+  for (int k = 0; k < 3; ++k) lists[0][k] = &in[k];
+  while (clipmask && n >= 3) {
+    const int plane = __builtin_ctz(static_cast<unsigned>(clipmask));  // ffs(clipmask) - 1
+    clipmask &= ~(1 << plane);
+    const LpVert **inl = lists[cur];
+    const LpVert **outl = lists[cur ^ 1];
+    const LpVert *prev = inl[0];
+    float dp_prev = clip_dist(prev->clip, plane);
+    if (!std::isfinite(dp_prev)) return 0;  // discard nan (and inf: util_is_inf_or_nan)
+    inl[n] = inl[0];  // prevent rotation of vertices
+    int outcount = 0;
+    for (int i = 1; i <= n; ++i) {
+      const LpVert *v = inl[i];
+      const float dp = clip_dist(v->clip, plane);
+      if (!std::isfinite(dp)) return 0;
+      bool different;
+      if (dp_prev >= 0.0f) {
+        if (outcount >= kLpMaxPoly) return 0;
+        outl[outcount++] = prev;
+        different = dp < 0.0f;
+      } else {
+        different = !(dp < 0.0f);
+      }
+      if (different) {
+        if (outcount >= kLpMaxPoly || ntmp >= 2 * kLpMaxPoly + 2) return 0;
+        LpVert *nv = &tmp[ntmp++];
+        const float denom = dp - dp_prev;
+        if (dp < 0.0f) {  // going out
+          if (-dp < dp_prev)
+            clip_interp(nv, dp / denom, *v, *prev, W, H);
+          else
+            clip_interp(nv, -dp_prev / denom, *prev, *v, W, H);
+        } else {  // coming back in
+          if (-dp_prev < dp)
+            clip_interp(nv, -dp_prev / denom, *prev, *v, W, H);
+          else
+            clip_interp(nv, dp / denom, *v, *prev, W, H);
+        }
+        outl[outcount++] = nv;
+      }
+      prev = v;
+      dp_prev = dp;
+    }
+    cur ^= 1;
+    n = outcount;
+  }
+  if (n < 3) return 0;
+  for (int k = 0; k < n; ++k) poly[k] = *lists[cur][k];
+  return n;
+}

@@ -43,3 +43,17 @@ void lp_tri_planes(const float *const p[3], const float *const v[3], const int *
 // + interp_attrib_linear): slot used[u] of pixel i into out[used[u] * pitch + i0 + i].
 void lp_interp_span(const LpPlanes &pl, int x0, int y, int n, const int *used, int nused, ts_vec4f *out, int pitch,
                     int i0);
+
+// A vertex as the draw module holds it: clip position, window position (x, y, z, 1/w), the
+// 24 slot floats.
+struct LpVert {
+  float clip[4], win[4], attr[24];
+};
+const int kLpMaxPoly = 9;  // a triangle clipped by 6 planes has at most 9 vertices
+
+// draw_pipe_clip.c do_clip_tri (planes of draw_context.c draw_init, in clip-mask bit order;
+// interp for each new vertex; the guard band off): the clipped polygon of triangle in[0..2]
+// (clip masks m[0..2], their union non-zero) into poly; returns its vertex count (0: culled).
+// emit_poly (provoking vertex last) draws its fan as triangles (poly[i - 1], poly[i], poly[0]),
+// i = 2 .. n - 1.
+int lp_clip_tri(const LpVert in[3], const int m[3], float W, float H, LpVert poly[kLpMaxPoly]);
