@@ -231,7 +231,7 @@ void setup_planes(const float *vd, const uint32_t *idx, float W, float H, const 
 // rasteriser's barycentrics (v0 b0 + v1 b1 + v2 b2, float, unfused).
 void interp_run(const float *vd, const uint32_t *indices, const int32_t *tri, const float *vb1, const float *vb2,
                 int d, int y, int x0, int n, const int *used, int nused, ts_vec4f *pp, int pitch, bool planes,
-                float W, float H, PlaneCache *pc) {
+                float W, float H, int one_w, PlaneCache *pc) {
   int i = 0;
   while (i < n) {
     const int t = tri[x0 + i];
@@ -273,6 +273,10 @@ void interp_run(const float *vd, const uint32_t *indices, const int32_t *tri, co
     }
     i = j;
   }
+  // The model family's position slot is vec4(v_position, 1.0) (model_lighting.fs): its w is the
+  // constant, not an interpolated 1.
+  if (one_w >= 0)
+    for (int q = 0; q < n; ++q) pp[static_cast<size_t>(one_w) * pitch + q].w = 1.f;
 }
 
 // Shades n pixels of one draw with the batched twin: pixel slot k of pixel i at
@@ -390,7 +394,7 @@ void scene_shade_cpu(const PreparedScene &p, const SceneVisibility &vis, ImageF 
         for (int c0 = x; c0 < x1; c0 += kChunk) {
           const int n = std::min(kChunk, x1 - c0);
           interp_run(vd, indices, tri, vb1, vb2, d, y, c0, n, used, nused, pp, kChunk, vis.pixel_planes, W, H,
-                     &cache[static_cast<size_t>(t)]);
+                     c.world ? -1 : ML_SLOT_POSITION, &cache[static_cast<size_t>(t)]);
           shade_run(c, pp, kChunk, n, orow_px + (c0 - x));
         }
         x = x1;
@@ -461,7 +465,7 @@ void scene_records_cpu(const PreparedScene &p, const SceneVisibility &vis, std::
       while (x1 < p.w && vis.draw[row + x1] == d) ++x1;
       interp_run(vary[d].data(), p.draws[d].geo->indices.data(), vis.tri.data() + row, vis.b1.data() + row,
                  vis.b2.data() + row, d, y, x, x1 - x, all, kPixelSlots, pix.data(), p.w, vis.pixel_planes,
-                 static_cast<float>(p.w), static_cast<float>(p.h), &cache);
+                 static_cast<float>(p.w), static_cast<float>(p.h), p.draws[d].world ? -1 : ML_SLOT_POSITION, &cache);
       for (int i = 0; i < x1 - x; ++i)
         for (int k = 0; k < kPixelSlots; ++k)
           std::memcpy(&(*slots)[(row + x + i) * kVary + k * 4], &pix[static_cast<size_t>(k) * p.w + i],

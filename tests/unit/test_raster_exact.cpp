@@ -3,6 +3,7 @@
 // shader receives) of a scene drawn by GL and by the C rasteriser, compared bit for bit on the
 // pixels both give to the same draw.
 #include <cstdio>
+#include <cstdlib>
 #include <cstring>
 #include <memory>
 #include <string>
@@ -61,6 +62,9 @@ bool compare_scene(const char *name, int w, int h, GlContext &ctx, bool planes, 
       if (std::memcmp(&a, &b, 4) != 0) {
         ++c->float_diff;
         same = false;
+        if (getenv("TS_RX_DEBUG") && planes)
+          fprintf(stderr, "%s px %zu draw %d inst %d slot %d comp %d gl %.9g c %.9g\n", name, i, gd[i],
+                  (int)p.draws[gd[i]].instanced, k / 4, k % 4, a, b);
       }
     }
     c->exact += same;
