@@ -154,74 +154,23 @@ inline F4 load4(const float *p) {
 }
 inline F4 splat4(float s) { return F4{s, s, s, s}; }
 
-// The planes of the last triangle a worker interpolated (llvmpipe's set-up, glue/scene/lp_interp.h):
-// one triangle, or the fan of the polygon draw's clipper made of it, each with its vertices in
-// the 8-bit fixed point of llvmpipe's snapping, to find the one that covers a pixel.
+// The set-up of the last triangle a worker interpolated (llvmpipe's, glue/scene/lp_interp.h).
 struct PlaneCache {
   int draw = -1, tri = -1;
-  int nsub = 0;  // 0: barycentrics (no pixel positions, or llvmpipe's set-up disagrees)
-  bool clipped = false;
-  LpPlanes pl[kLpMaxPoly - 2];
-  int64_t X[kLpMaxPoly - 2][3], Y[kLpMaxPoly - 2][3];
+  LpTriSet set;
 };
 
-// lp_setup_tri.c calc_fixed_position: (v - 0.5) * 256 in float, rounded to nearest even.
-int64_t lp_snap(float v) { return static_cast<int64_t>(std::nearbyint((v - 0.5f) * 256.0f)); }
-
-// Whether sub-triangle s of c covers pixel (x, y) (its centre at the fixed-point (256 x, 256 y)),
-// with the C rasteriser's rule (counter-clockwise, top-left; cpu_raster.cpp).
-bool sub_covers(const PlaneCache &c, int s, int x, int y) {
-  int64_t X[3] = {c.X[s][0], c.X[s][1], c.X[s][2]}, Y[3] = {c.Y[s][0], c.Y[s][1], c.Y[s][2]};
-  const int64_t area = (X[1] - X[0]) * (Y[2] - Y[0]) - (Y[1] - Y[0]) * (X[2] - X[0]);
-  if (area == 0) return false;
-  if (area < 0) std::swap(X[1], X[2]), std::swap(Y[1], Y[2]);
-  const int64_t px = static_cast<int64_t>(x) * 256, py = static_cast<int64_t>(y) * 256;
-  for (int k = 0; k < 3; ++k) {
-    const int a = (k + 1) % 3, b = (k + 2) % 3;
-    const int64_t dx = X[b] - X[a], dy = Y[b] - Y[a];
-    const int64_t e = dx * (py - Y[a]) - dy * (px - X[a]);
-    const bool top_left = dy < 0 || (dy == 0 && dx > 0);
-    if (!(e > 0 || (e == 0 && top_left))) return false;
-  }
-  return true;
-}
-
-// llvmpipe's set-up of triangle t of a draw (vertex records at vd): draw's clipper when a vertex
-// is outside the view volume, then per triangle lp_tri_order and lp_tri_planes.
-void setup_planes(const float *vd, const uint32_t *idx, float W, float H, const int *used, int nused,
-                  PlaneCache *pc) {
-  const float *v[3] = {&vd[idx[0] * kVStride], &vd[idx[1] * kVStride], &vd[idx[2] * kVStride]};
-  const int m[3] = {static_cast<int>(v[0][kClipMask]), static_cast<int>(v[1][kClipMask]),
-                    static_cast<int>(v[2][kClipMask])};
-  pc->nsub = 0;
-  pc->clipped = (m[0] | m[1] | m[2]) != 0;
-  auto add = [&](const float *const p[3], const float *const a[3]) {
-    int order[3];
-    if (!lp_tri_order(p[0], p[1], p[2], order)) return;
-    const int s = pc->nsub++;
-    const float *const po[3] = {p[order[0]], p[order[1]], p[order[2]]};
-    const float *const ao[3] = {a[order[0]], a[order[1]], a[order[2]]};
-    lp_tri_planes(po, ao, used, nused, &pc->pl[s]);
-    for (int k = 0; k < 3; ++k) pc->X[s][k] = lp_snap(po[k][0]), pc->Y[s][k] = lp_snap(po[k][1]);
-  };
-  if (!pc->clipped) {
-    const float *const p[3] = {v[0] + kWin, v[1] + kWin, v[2] + kWin};
-    add(p, v);
-    return;
-  }
-  LpVert in[3], poly[kLpMaxPoly];
+// llvmpipe's set-up of the triangle of vertex records v[0..2] (layout above).
+void setup_planes(const float *const v[3], float W, float H, const int *used, int nused, LpTriSet *out) {
+  LpVert in[3];
+  int m[3];
   for (int k = 0; k < 3; ++k) {
     std::memcpy(in[k].clip, v[k] + kClip, sizeof in[k].clip);
     std::memcpy(in[k].win, v[k] + kWin, sizeof in[k].win);
     std::memcpy(in[k].attr, v[k], sizeof in[k].attr);
+    m[k] = static_cast<int>(v[k][kClipMask]);
   }
-  const int n = lp_clip_tri(in, m, W, H, poly);
-  for (int i = 2; i < n; ++i) {  // emit_poly, provoking vertex last: (i - 1, i, 0)
-    const LpVert *t[3] = {&poly[i - 1], &poly[i], &poly[0]};
-    const float *const p[3] = {t[0]->win, t[1]->win, t[2]->win};
-    const float *const a[3] = {t[0]->attr, t[1]->attr, t[2]->attr};
-    add(p, a);
-  }
+  lp_setup_tri(in, m, W, H, used, nused, out);
 }
 
 // The pixel slots used[] of pixels x0 .. x0 + n - 1 of row y (one draw d; tri, b1, b2: the
@@ -238,29 +187,24 @@ void interp_run(const float *vd, const uint32_t *indices, const int32_t *tri, co
     int j = i + 1;
     while (j < n && tri[x0 + j] == t) ++j;
     const uint32_t *idx = &indices[static_cast<size_t>(t) * 3];
+    const float *v[3] = {&vd[idx[0] * kVStride], &vd[idx[1] * kVStride], &vd[idx[2] * kVStride]};
     if (planes && (pc->draw != d || pc->tri != t)) {
       pc->draw = d;
       pc->tri = t;
-      setup_planes(vd, idx, W, H, used, nused, pc);
+      setup_planes(v, W, H, used, nused, &pc->set);
     }
-    const int nsub = planes ? pc->nsub : 0;
+    const LpTriSet &ts = pc->set;
+    const int nsub = planes ? ts.n : 0;
     for (int q = i; q < j;) {
-      int s = -1;
-      if (nsub == 1 && !pc->clipped) {
-        s = 0;
-      } else {
-        for (int k = 0; k < nsub && s < 0; ++k)
-          if (sub_covers(*pc, k, x0 + q, y)) s = k;
-      }
-      if (s >= 0 && !pc->clipped) {  // the whole run: one triangle
-        lp_interp_span(pc->pl[s], x0 + q, y, j - q, used, nused, pp, pitch, q);
+      const int s = nsub == 1 && !ts.clipped ? 0 : nsub > 0 ? lp_covering(ts, x0 + q, y) : -1;
+      if (s >= 0 && !ts.clipped) {  // the whole run: one triangle
+        lp_interp_span(ts.pl[s], x0 + q, y, j - q, used, nused, pp, pitch, q);
         q = j;
         continue;
       }
       if (s >= 0) {
-        lp_interp_span(pc->pl[s], x0 + q, y, 1, used, nused, pp, pitch, q);
+        lp_interp_span(ts.pl[s], x0 + q, y, 1, used, nused, pp, pitch, q);
       } else {
-        const float *v[3] = {&vd[idx[0] * kVStride], &vd[idx[1] * kVStride], &vd[idx[2] * kVStride]};
         const float b1 = vb1[x0 + q], b2 = vb2[x0 + q], b0 = 1.f - b1 - b2;
         const F4 B0 = splat4(b0), B1 = splat4(b1), B2 = splat4(b2);
         for (int u = 0; u < nused; ++u) {

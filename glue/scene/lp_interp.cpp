@@ -6,6 +6,7 @@
 
 #include <cmath>
 #include <cstring>
+#include <utility>
 
 namespace {
 
@@ -221,4 +222,52 @@ int lp_clip_tri(const LpVert in[3], const int m[3], float W, float H, LpVert pol
   if (n < 3) return 0;
   for (int k = 0; k < n; ++k) poly[k] = *lists[cur][k];
   return n;
+}
+
+namespace {
+
+// lp_setup_tri.c calc_fixed_position: (v - 0.5) * 256 in float, rounded to nearest even.
+int64_t lp_snap(float v) { return static_cast<int64_t>(std::nearbyint((v - 0.5f) * 256.0f)); }
+
+}  // namespace
+
+void lp_setup_tri(const LpVert in[3], const int m[3], float W, float H, const int *used, int nused, LpTriSet *out) {
+  out->n = 0;
+  out->clipped = (m[0] | m[1] | m[2]) != 0;
+  auto add = [&](const LpVert *t0, const LpVert *t1, const LpVert *t2) {
+    const LpVert *t[3] = {t0, t1, t2};
+    int order[3];
+    if (!lp_tri_order(t0->win, t1->win, t2->win, order)) return;
+    const int s = out->n++;
+    const float *const po[3] = {t[order[0]]->win, t[order[1]]->win, t[order[2]]->win};
+    const float *const ao[3] = {t[order[0]]->attr, t[order[1]]->attr, t[order[2]]->attr};
+    lp_tri_planes(po, ao, used, nused, &out->pl[s]);
+    for (int k = 0; k < 3; ++k) out->X[s][k] = lp_snap(po[k][0]), out->Y[s][k] = lp_snap(po[k][1]);
+  };
+  if (!out->clipped) {
+    add(&in[0], &in[1], &in[2]);
+    return;
+  }
+  LpVert poly[kLpMaxPoly];
+  const int n = lp_clip_tri(in, m, W, H, poly);
+  for (int i = 2; i < n; ++i) add(&poly[i - 1], &poly[i], &poly[0]);  // emit_poly, provoking vertex last
+}
+
+int lp_covering(const LpTriSet &c, int x, int y) {
+  for (int s = 0; s < c.n; ++s) {
+    int64_t X[3] = {c.X[s][0], c.X[s][1], c.X[s][2]}, Y[3] = {c.Y[s][0], c.Y[s][1], c.Y[s][2]};
+    const int64_t area = (X[1] - X[0]) * (Y[2] - Y[0]) - (Y[1] - Y[0]) * (X[2] - X[0]);
+    if (area == 0) continue;
+    if (area < 0) std::swap(X[1], X[2]), std::swap(Y[1], Y[2]);
+    const int64_t px = static_cast<int64_t>(x) * 256, py = static_cast<int64_t>(y) * 256;
+    bool in = true;
+    for (int k = 0; k < 3 && in; ++k) {
+      const int a = (k + 1) % 3, b = (k + 2) % 3;
+      const int64_t dx = X[b] - X[a], dy = Y[b] - Y[a];
+      const int64_t e = dx * (py - Y[a]) - dy * (px - X[a]);
+      in = e > 0 || (e == 0 && (dy < 0 || (dy == 0 && dx > 0)));
+    }
+    if (in) return s;
+  }
+  return -1;
 }

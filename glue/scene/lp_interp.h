@@ -57,3 +57,20 @@ const int kLpMaxPoly = 9;  // a triangle clipped by 6 planes has at most 9 verti
 // emit_poly (provoking vertex last) draws its fan as triangles (poly[i - 1], poly[i], poly[0]),
 // i = 2 .. n - 1.
 int lp_clip_tri(const LpVert in[3], const int m[3], float W, float H, LpVert poly[kLpMaxPoly]);
+
+// A triangle as llvmpipe rasterises it: itself, or the fan of its clipped polygon; per triangle
+// the planes and the vertices in llvmpipe's 8-bit fixed point (to find the one covering a pixel).
+struct LpTriSet {
+  int n = 0;
+  bool clipped = false;
+  LpPlanes pl[kLpMaxPoly - 2];
+  int64_t X[kLpMaxPoly - 2][3], Y[kLpMaxPoly - 2][3];
+};
+
+// The whole set-up of one triangle (vertex masks m from lp_clipmask): lp_clip_tri when a mask is
+// set, then lp_tri_order and lp_tri_planes for each triangle drawn (zero areas dropped).
+void lp_setup_tri(const LpVert in[3], const int m[3], float W, float H, const int *used, int nused, LpTriSet *out);
+
+// The triangle of s that covers pixel (x, y) (its centre), with the coverage rule of the C
+// rasteriser (glue/scene/cpu_raster.cpp: counter-clockwise, top-left), or -1.
+int lp_covering(const LpTriSet &s, int x, int y);
