@@ -18,7 +18,7 @@ struct SceneVisibility {
   int w = 0, h = 0;
   std::vector<int32_t> draw, tri;  // -1: background
   std::vector<float> b1, b2;  // perspective-correct barycentrics of vertices 1 and 2
-  std::vector<float> depth;
+  std::vector<float> depth;  // llvmpipe's 24-bit depth values, as floats (lp_depth24_span)
   // true (set by scene_rasterize_cpu): pixel i of the buffer is the pixel (i % w, i / w), so
   // that a triangle llvmpipe draws unclipped is interpolated with llvmpipe's plane equations
   // there (glue/scene/lp_interp.h); false (e.g. MSAA's fragment layers): from b1, b2 alone.

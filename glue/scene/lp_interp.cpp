@@ -4,6 +4,7 @@
 
 #include <immintrin.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstring>
 #include <utility>
@@ -82,6 +83,9 @@ void lp_tri_planes(const float *const p[3], const float *const v[3], const int *
   out->w0 = c0[3];
   out->wdx = cx[3];
   out->wdy = cy[3];
+  out->z0 = c0[2];
+  out->zdx = cx[2];
+  out->zdy = cy[2];
   // apply_perspective_corr: every vertex's attribute times its own 1/w (pos[3]) before calc_coef4.
   const LpF4 o0 = sp4(p[0][3]), o1 = sp4(p[1][3]), o2 = sp4(p[2][3]);
   for (int u = 0; u < nused; ++u) {
@@ -114,7 +118,24 @@ void span_fused(const LpPlanes &pl, int x0, int y, int n, const int *used, int n
     }
   }
 }
+void depth_fused(const LpPlanes &pl, int x0, int y, int n, float *out) {
+  const float yf = static_cast<float>(y);
+  for (int i = 0; i < n; ++i) {
+    float z = std::fma(pl.zdy, yf, std::fma(pl.zdx, static_cast<float>(x0 + i), pl.z0));
+    z = std::min(std::max(z, 0.0f), 1.0f);
+    out[i] = std::nearbyint(z * 16777215.0f);
+  }
+}
 #pragma GCC pop_options
+
+void depth_plain(const LpPlanes &pl, int x0, int y, int n, float *out) {
+  const float yf = static_cast<float>(y);
+  for (int i = 0; i < n; ++i) {
+    float z = pl.zdy * yf + (pl.zdx * static_cast<float>(x0 + i) + pl.z0);
+    z = std::min(std::max(z, 0.0f), 1.0f);
+    out[i] = std::nearbyint(z * 16777215.0f);
+  }
+}
 
 void span_plain(const LpPlanes &pl, int x0, int y, int n, const int *used, int nused, ts_vec4f *out, int pitch,
                 int i0) {
@@ -133,6 +154,13 @@ void span_plain(const LpPlanes &pl, int x0, int y, int n, const int *used, int n
 }
 
 }  // namespace
+
+void lp_depth24_span(const LpPlanes &pl, int x0, int y, int n, float *out) {
+  if (ts_math_fused())
+    depth_fused(pl, x0, y, n, out);
+  else
+    depth_plain(pl, x0, y, n, out);
+}
 
 void lp_interp_span(const LpPlanes &pl, int x0, int y, int n, const int *used, int nused, ts_vec4f *out, int pitch,
                     int i0) {

@@ -27,6 +27,7 @@ int lp_clipmask(const float c[4]);
 // The per-triangle plane coefficients of up to 6 vec4 slots plus the position's 1/w.
 struct LpPlanes {
   float w0, wdx, wdy;  // 1/w = w0 + wdx x + wdy y
+  float z0, zdx, zdy;  // window z (no polygon offset)
   LpF4 a0[6], dx[6], dy[6];
 };
 
@@ -38,6 +39,13 @@ bool lp_tri_order(const float *p0, const float *p1, const float *p2, int order[3
 // set-up's order: window positions p[k] (x, y, z, 1/w), slot vec4s at v[k] + 4 slot, for the
 // slots listed in used.
 void lp_tri_planes(const float *const p[3], const float *const v[3], const int *used, int nused, LpPlanes *out);
+
+// llvmpipe's depth values of pixels x0 .. x0 + n - 1 of row y against a 24-bit depth buffer:
+// z = fmuladd(zdy, y, fmuladd(zdx, x, z0)) (lp_bld_interp.c, the position's z), clamped to
+// [0, 1] and converted as lp_bld_conv.c lp_build_clamped_float_to_unsigned_norm does for 24 bits
+// (mantissa + 1): iround(z * 16777215) (nearest even); the values as floats (exact below 2^24).
+void lp_depth24_span(const LpPlanes &pl, int x0, int y, int n, float *out);
+const float kLpDepth24Clear = 16777215.f;  // a depth buffer cleared to 1
 
 // The fragment side for n pixels of row y from column x0 (lp_bld_interp.c attribs_update_simple
 // + interp_attrib_linear): slot used[u] of pixel i into out[used[u] * pitch + i0 + i].
