@@ -180,7 +180,7 @@ void setup_planes(const float *const v[3], float W, float H, const int *used, in
 // rasteriser's barycentrics (v0 b0 + v1 b1 + v2 b2, float, unfused).
 void interp_run(const float *vd, const uint32_t *indices, const int32_t *tri, const float *vb1, const float *vb2,
                 int d, int y, int x0, int n, const int *used, int nused, ts_vec4f *pp, int pitch, bool planes,
-                float W, float H, int one_w, PlaneCache *pc) {
+                float W, float H, int one_w, const int32_t *at, PlaneCache *pc) {
   int i = 0;
   while (i < n) {
     const int t = tri[x0 + i];
@@ -196,14 +196,17 @@ void interp_run(const float *vd, const uint32_t *indices, const int32_t *tri, co
     const LpTriSet &ts = pc->set;
     const int nsub = planes ? ts.n : 0;
     for (int q = i; q < j;) {
-      const int s = nsub == 1 && !ts.clipped ? 0 : nsub > 0 ? lp_covering(ts, x0 + q, y) : -1;
-      if (s >= 0 && !ts.clipped) {  // the whole run: one triangle
+      // The pixel the record is interpolated at: its own, or at[] (MSAA's layers).
+      const int w = static_cast<int>(W);
+      const int px = at ? at[x0 + q] % w : x0 + q, py = at ? at[x0 + q] / w : y;
+      const int s = nsub == 1 && !ts.clipped ? 0 : nsub > 0 ? lp_covering(ts, px, py) : -1;
+      if (s >= 0 && !ts.clipped && !at) {  // the whole run: one triangle
         lp_interp_span(ts.pl[s], x0 + q, y, j - q, used, nused, pp, pitch, q);
         q = j;
         continue;
       }
       if (s >= 0) {
-        lp_interp_span(ts.pl[s], x0 + q, y, 1, used, nused, pp, pitch, q);
+        lp_interp_span(ts.pl[s], px, py, 1, used, nused, pp, pitch, q);
       } else {
         const float b1 = vb1[x0 + q], b2 = vb2[x0 + q], b0 = 1.f - b1 - b2;
         const F4 B0 = splat4(b0), B1 = splat4(b1), B2 = splat4(b2);
@@ -334,11 +337,12 @@ void scene_shade_cpu(const PreparedScene &p, const SceneVisibility &vis, ImageF 
         const uint32_t *indices = p.draws[d].geo->indices.data();
         const int32_t *tri = vis.tri.data() + row;
         const float *vb1 = vis.b1.data() + row, *vb2 = vis.b2.data() + row;
+        const int32_t *at = vis.at.empty() ? nullptr : vis.at.data() + row;
         ts_vec4f *pp = pix.data();
         for (int c0 = x; c0 < x1; c0 += kChunk) {
           const int n = std::min(kChunk, x1 - c0);
           interp_run(vd, indices, tri, vb1, vb2, d, y, c0, n, used, nused, pp, kChunk, vis.pixel_planes, W, H,
-                     c.world ? -1 : ML_SLOT_POSITION, &cache[static_cast<size_t>(t)]);
+                     c.world ? -1 : ML_SLOT_POSITION, at, &cache[static_cast<size_t>(t)]);
           shade_run(c, pp, kChunk, n, orow_px + (c0 - x));
         }
         x = x1;
@@ -409,7 +413,8 @@ void scene_records_cpu(const PreparedScene &p, const SceneVisibility &vis, std::
       while (x1 < p.w && vis.draw[row + x1] == d) ++x1;
       interp_run(vary[d].data(), p.draws[d].geo->indices.data(), vis.tri.data() + row, vis.b1.data() + row,
                  vis.b2.data() + row, d, y, x, x1 - x, all, kPixelSlots, pix.data(), p.w, vis.pixel_planes,
-                 static_cast<float>(p.w), static_cast<float>(p.h), p.draws[d].world ? -1 : ML_SLOT_POSITION, &cache);
+                 static_cast<float>(p.w), static_cast<float>(p.h), p.draws[d].world ? -1 : ML_SLOT_POSITION,
+                 vis.at.empty() ? nullptr : vis.at.data() + row, &cache);
       for (int i = 0; i < x1 - x; ++i)
         for (int k = 0; k < kPixelSlots; ++k)
           std::memcpy(&(*slots)[(row + x + i) * kVary + k * 4], &pix[static_cast<size_t>(k) * p.w + i],

@@ -23,6 +23,9 @@ struct SceneVisibility {
   // that a triangle llvmpipe draws unclipped is interpolated with llvmpipe's plane equations
   // there (glue/scene/lp_interp.h); false (e.g. MSAA's fragment layers): from b1, b2 alone.
   bool pixel_planes = false;
+  // With pixel_planes, when not empty (MSAA's fragment layers, glue/scene/msaa.cpp): the frame
+  // pixel (y * w + x) whose centre record i is interpolated at, instead of pixel i.
+  std::vector<int32_t> at;
 };
 
 // Rasterises every draw (threads: 0 = all cores).
