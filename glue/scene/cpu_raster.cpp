@@ -90,6 +90,7 @@ void scene_tri_setup(const PreparedScene &p, int di, const std::vector<float> &c
       ScreenTri s;
       s.draw = di;
       s.tri = static_cast<int>(t / 3);
+      s.sub = f - 2;
       bool ok = true;
       for (int k = 0; k < 3; ++k) {
         if (!(v[k]->win[3] > 0.f) || !std::isfinite(v[k]->win[0]) || !std::isfinite(v[k]->win[1])) ok = false;
@@ -151,6 +152,7 @@ inline void shade_pixel(const ScreenTri &s, SceneVisibility *vis, size_t i, floa
   vis->depth[i] = zq;
   vis->draw[i] = s.draw;
   vis->tri[i] = s.tri;
+  vis->sub[i] = static_cast<uint8_t>(s.sub);
   vis->b1[i] = static_cast<float>(B1);
   vis->b2[i] = static_cast<float>(B2);
 }
@@ -233,7 +235,7 @@ void scene_rasterize_cpu(const PreparedScene &p, SceneVisibility *vis, int threa
   // A buffer of this size is reset by the bands below; a new one is made on two threads (its
   // page faults are most of the cost), next to the vertex stage and triangle setup.
   const bool reuse = vis->draw.size() == n && vis->tri.size() == n && vis->b1.size() == n && vis->b2.size() == n &&
-      vis->depth.size() == n;
+      vis->depth.size() == n && vis->sub.size() == n;
   std::thread maker;
   if (!reuse) {
     maker = std::thread([vis, n] {
@@ -242,6 +244,7 @@ void scene_rasterize_cpu(const PreparedScene &p, SceneVisibility *vis, int threa
       fresh_buffer(&vis->b1, n, 0.f);
     });
     fresh_buffer(&vis->b2, n, 0.f);
+    fresh_buffer<uint8_t>(&vis->sub, n, 0);
     fresh_buffer(&vis->depth, n, kLpDepth24Clear);
   }
   // The draws' triangles are set up and rasterised in batches of about kBatch triangles, in draw

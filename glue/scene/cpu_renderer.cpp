@@ -178,14 +178,15 @@ void setup_planes(const float *const v[3], float W, float H, const int *used, in
 // triangle as llvmpipe sets it up (planes: the buffer's pixels are the frame's), else (or where
 // no triangle of a clipped one's fan covers the pixel in llvmpipe's snapping) from the C
 // rasteriser's barycentrics (v0 b0 + v1 b1 + v2 b2, float, unfused).
-void interp_run(const float *vd, const uint32_t *indices, const int32_t *tri, const float *vb1, const float *vb2,
-                int d, int y, int x0, int n, const int *used, int nused, ts_vec4f *pp, int pitch, bool planes,
-                float W, float H, int one_w, const int32_t *at, PlaneCache *pc) {
+void interp_run(const float *vd, const uint32_t *indices, const int32_t *tri, const uint8_t *sub, const float *vb1,
+                const float *vb2, int d, int y, int x0, int n, const int *used, int nused, ts_vec4f *pp, int pitch,
+                bool planes, float W, float H, int one_w, const int32_t *at, PlaneCache *pc) {
   int i = 0;
   while (i < n) {
     const int t = tri[x0 + i];
+    const int sb = sub ? sub[x0 + i] : 0;
     int j = i + 1;
-    while (j < n && tri[x0 + j] == t) ++j;
+    while (j < n && tri[x0 + j] == t && (!sub || sub[x0 + j] == sb)) ++j;
     const uint32_t *idx = &indices[static_cast<size_t>(t) * 3];
     const float *v[3] = {&vd[idx[0] * kVStride], &vd[idx[1] * kVStride], &vd[idx[2] * kVStride]};
     if (planes && (pc->draw != d || pc->tri != t)) {
@@ -195,28 +196,30 @@ void interp_run(const float *vd, const uint32_t *indices, const int32_t *tri, co
     }
     const LpTriSet &ts = pc->set;
     const int nsub = planes ? ts.n : 0;
-    for (int q = i; q < j;) {
+    // One triangle for the run (unclipped, or the rasteriser's sub-triangle) at the run's own
+    // pixels: a span.
+    if (nsub > 0 && !at && (!ts.clipped || sub) && sb < nsub && ts.valid[sb]) {
+      lp_interp_span(ts.pl[sb], x0 + i, y, j - i, used, nused, pp, pitch, i);
+      i = j;
+      continue;
+    }
+    for (int q = i; q < j; ++q) {
       // The pixel the record is interpolated at: its own, or at[] (MSAA's layers).
       const int w = static_cast<int>(W);
       const int px = at ? at[x0 + q] % w : x0 + q, py = at ? at[x0 + q] / w : y;
-      const int s = nsub == 1 && !ts.clipped ? 0 : nsub > 0 ? lp_covering(ts, px, py) : -1;
-      if (s >= 0 && !ts.clipped && !at) {  // the whole run: one triangle
-        lp_interp_span(ts.pl[s], x0 + q, y, j - q, used, nused, pp, pitch, q);
-        q = j;
-        continue;
-      }
+      int s = -1;
+      if (nsub > 0) s = sub ? (sb < nsub && ts.valid[sb] ? sb : -1) : lp_covering(ts, px, py);
       if (s >= 0) {
         lp_interp_span(ts.pl[s], px, py, 1, used, nused, pp, pitch, q);
-      } else {
-        const float b1 = vb1[x0 + q], b2 = vb2[x0 + q], b0 = 1.f - b1 - b2;
-        const F4 B0 = splat4(b0), B1 = splat4(b1), B2 = splat4(b2);
-        for (int u = 0; u < nused; ++u) {
-          const int k = used[u];
-          const F4 r = load4(v[0] + k * 4) * B0 + load4(v[1] + k * 4) * B1 + load4(v[2] + k * 4) * B2;
-          std::memcpy(&pp[static_cast<size_t>(k) * pitch + q], &r, sizeof r);
-        }
+        continue;
       }
-      ++q;
+      const float b1 = vb1[x0 + q], b2 = vb2[x0 + q], b0 = 1.f - b1 - b2;
+      const F4 B0 = splat4(b0), B1 = splat4(b1), B2 = splat4(b2);
+      for (int u = 0; u < nused; ++u) {
+        const int k = used[u];
+        const F4 r = load4(v[0] + k * 4) * B0 + load4(v[1] + k * 4) * B1 + load4(v[2] + k * 4) * B2;
+        std::memcpy(&pp[static_cast<size_t>(k) * pitch + q], &r, sizeof r);
+      }
     }
     i = j;
   }
@@ -338,10 +341,11 @@ void scene_shade_cpu(const PreparedScene &p, const SceneVisibility &vis, ImageF 
         const int32_t *tri = vis.tri.data() + row;
         const float *vb1 = vis.b1.data() + row, *vb2 = vis.b2.data() + row;
         const int32_t *at = vis.at.empty() ? nullptr : vis.at.data() + row;
+        const uint8_t *sub = vis.sub.size() == vis.tri.size() ? vis.sub.data() + row : nullptr;
         ts_vec4f *pp = pix.data();
         for (int c0 = x; c0 < x1; c0 += kChunk) {
           const int n = std::min(kChunk, x1 - c0);
-          interp_run(vd, indices, tri, vb1, vb2, d, y, c0, n, used, nused, pp, kChunk, vis.pixel_planes, W, H,
+          interp_run(vd, indices, tri, sub, vb1, vb2, d, y, c0, n, used, nused, pp, kChunk, vis.pixel_planes, W, H,
                      c.world ? -1 : ML_SLOT_POSITION, at, &cache[static_cast<size_t>(t)]);
           shade_run(c, pp, kChunk, n, orow_px + (c0 - x));
         }
@@ -411,7 +415,8 @@ void scene_records_cpu(const PreparedScene &p, const SceneVisibility &vis, std::
       }
       int x1 = x;
       while (x1 < p.w && vis.draw[row + x1] == d) ++x1;
-      interp_run(vary[d].data(), p.draws[d].geo->indices.data(), vis.tri.data() + row, vis.b1.data() + row,
+      interp_run(vary[d].data(), p.draws[d].geo->indices.data(), vis.tri.data() + row,
+                 vis.sub.size() == vis.tri.size() ? vis.sub.data() + row : nullptr, vis.b1.data() + row,
                  vis.b2.data() + row, d, y, x, x1 - x, all, kPixelSlots, pix.data(), p.w, vis.pixel_planes,
                  static_cast<float>(p.w), static_cast<float>(p.h), p.draws[d].world ? -1 : ML_SLOT_POSITION,
                  vis.at.empty() ? nullptr : vis.at.data() + row, &cache);

@@ -265,8 +265,9 @@ void lp_setup_tri(const LpVert in[3], const int m[3], float W, float H, const in
   auto add = [&](const LpVert *t0, const LpVert *t1, const LpVert *t2) {
     const LpVert *t[3] = {t0, t1, t2};
     int order[3];
-    if (!lp_tri_order(t0->win, t1->win, t2->win, order)) return;
     const int s = out->n++;
+    out->valid[s] = lp_tri_order(t0->win, t1->win, t2->win, order);
+    if (!out->valid[s]) return;
     const float *const po[3] = {t[order[0]]->win, t[order[1]]->win, t[order[2]]->win};
     const float *const ao[3] = {t[order[0]]->attr, t[order[1]]->attr, t[order[2]]->attr};
     lp_tri_planes(po, ao, used, nused, &out->pl[s]);
@@ -283,6 +284,7 @@ void lp_setup_tri(const LpVert in[3], const int m[3], float W, float H, const in
 
 int lp_covering(const LpTriSet &c, int x, int y) {
   for (int s = 0; s < c.n; ++s) {
+    if (!c.valid[s]) continue;
     int64_t X[3] = {c.X[s][0], c.X[s][1], c.X[s][2]}, Y[3] = {c.Y[s][0], c.Y[s][1], c.Y[s][2]};
     const int64_t area = (X[1] - X[0]) * (Y[2] - Y[0]) - (Y[1] - Y[0]) * (X[2] - X[0]);
     if (area == 0) continue;

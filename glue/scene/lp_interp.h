@@ -69,8 +69,9 @@ int lp_clip_tri(const LpVert in[3], const int m[3], float W, float H, LpVert pol
 // A triangle as llvmpipe rasterises it: itself, or the fan of its clipped polygon; per triangle
 // the planes and the vertices in llvmpipe's 8-bit fixed point (to find the one covering a pixel).
 struct LpTriSet {
-  int n = 0;
+  int n = 0;  // triangles drawn: the fan's i - 2 for (poly[i - 1], poly[i], poly[0]); 1 unclipped
   bool clipped = false;
+  bool valid[kLpMaxPoly - 2];  // false: zero area in llvmpipe's fixed point (not drawn)
   LpPlanes pl[kLpMaxPoly - 2];
   int64_t X[kLpMaxPoly - 2][3], Y[kLpMaxPoly - 2][3];
 };

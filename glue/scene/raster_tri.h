@@ -11,6 +11,7 @@
 
 struct ScreenTri {
   int draw, tri;
+  int sub;  // which of the triangles llvmpipe draws for tri (LpTriSet's index; 0 unclipped)
   int64_t X[3], Y[3];  // 8-bit sub-pixel fixed point
   double z[3], invw[3];
   double bary[3][3];  // each screen vertex as barycentrics of the original triangle
