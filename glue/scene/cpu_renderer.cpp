@@ -154,10 +154,18 @@ inline F4 load4(const float *p) {
 }
 inline F4 splat4(float s) { return F4{s, s, s, s}; }
 
-// The set-up of the last triangle a worker interpolated (llvmpipe's, glue/scene/lp_interp.h).
+// A worker's set-ups of the triangles it interpolated last (llvmpipe's, glue/scene/lp_interp.h),
+// direct-mapped by triangle: the rows of a small triangle meet it again and again.
 struct PlaneCache {
-  int draw = -1, tri = -1;
-  LpTriSet set;
+  struct Entry {
+    int draw = -1, tri = -1;
+    LpTriSet set;
+  };
+  static const unsigned kEntries = 64;
+  std::vector<Entry> e = std::vector<Entry>(kEntries);
+  Entry &at(int draw, int tri) {
+    return e[(static_cast<unsigned>(tri) * 2654435761u + static_cast<unsigned>(draw)) % kEntries];
+  }
 };
 
 // llvmpipe's set-up of the triangle of vertex records v[0..2] (layout above).
@@ -189,12 +197,13 @@ void interp_run(const float *vd, const uint32_t *indices, const int32_t *tri, co
     while (j < n && tri[x0 + j] == t && (!sub || sub[x0 + j] == sb)) ++j;
     const uint32_t *idx = &indices[static_cast<size_t>(t) * 3];
     const float *v[3] = {&vd[idx[0] * kVStride], &vd[idx[1] * kVStride], &vd[idx[2] * kVStride]};
-    if (planes && (pc->draw != d || pc->tri != t)) {
-      pc->draw = d;
-      pc->tri = t;
-      setup_planes(v, W, H, used, nused, &pc->set);
+    PlaneCache::Entry &ce = pc->at(d, t);
+    if (planes && (ce.draw != d || ce.tri != t)) {
+      ce.draw = d;
+      ce.tri = t;
+      setup_planes(v, W, H, used, nused, &ce.set);
     }
-    const LpTriSet &ts = pc->set;
+    const LpTriSet &ts = ce.set;
     const int nsub = planes ? ts.n : 0;
     // One triangle for the run (unclipped, or the rasteriser's sub-triangle) at the run's own
     // pixels: a span.
@@ -402,8 +411,9 @@ void scene_records_cpu(const PreparedScene &p, const SceneVisibility &vis, std::
   draw->assign(vis.draw.begin(), vis.draw.end());
   slots->assign(n * kVary, 0.f);
   const int all[kPixelSlots] = {0, 1, 2, 3, 4, 5};
-  parallel_rows(p.h, threads, [&](int y) {
-    PlaneCache cache;
+  std::vector<PlaneCache> caches(static_cast<size_t>(parallel_workers(p.h, threads)));
+  parallel_rows_by_worker(p.h, threads, [&](int t, int y) {
+    PlaneCache &cache = caches[static_cast<size_t>(t)];
     std::vector<ts_vec4f> pix(static_cast<size_t>(kPixelSlots) * p.w);
     const size_t row = static_cast<size_t>(y) * p.w;
     int x = 0;
