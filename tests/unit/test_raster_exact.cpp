@@ -6,9 +6,7 @@
 // production fragment shader receives) of the shipped scenes drawn by GL and by the C
 // rasteriser, on the pixels both give to the same draw. Both must differ in 0 bits.
 #include <cstdio>
-#include <cstdlib>
 #include <cstring>
-#include <algorithm>
 #include <random>
 #include <memory>
 #include <string>
@@ -17,7 +15,6 @@
 #include "gl/float_target.h"
 #include "scene/lp_interp.h"
 #include "scene/cpu_renderer.h"
-#include "scene/frame.h"
 #include "scene/gl_renderer.h"
 #include "scene/prepare.h"
 #include "scene/scene.h"
@@ -72,9 +69,6 @@ bool compare_scene(const char *name, int w, int h, GlContext &ctx, Count c[2], s
         if (std::memcmp(&gs[i * 24 + k], &cs[i * 24 + k], 4) != 0) {
           ++c[planes].float_diff;
           same = false;
-          if (getenv("TS_RX_DEBUG") && planes)
-            fprintf(stderr, "%s px %zu (%zu,%zu) draw %d slot %d comp %d gl %.9g c %.9g\n", name, i, i % w, i / w, gd[i],
-                    k / 4, k % 4, gs[i * 24 + k], cs[i * 24 + k]);
         }
       }
       c[planes].exact += same;
@@ -197,66 +191,31 @@ void test_triangles() {
         "raster exact triangles: llvmpipe's coverage and varyings, bit for bit", first);
 }
 
-// Whole frames: `render` on GL against the C fallback alone (its own rasteriser), lit pass
-// bit for bit and the final frame's codes.
-void test_frames(const std::vector<std::string> &names, int w, int h) {
-  for (const std::string &name : names)
-    for (Api api : {Api::GL33, Api::GLES3}) {
-      Scene s;
-      std::string err;
-      SceneSelection sel;
-      SceneRenderConfig gl, cpu;
-      gl.w = cpu.w = w;
-      gl.h = cpu.h = h;
-      gl.backend = Backend::EGL;
-      gl.api = api;
-      cpu.backend = Backend::CPU;
-      SceneRenderResult a, b;
-      if (!load_scene(name, &s, &err) || !select_scene_variants(s, Tier::SM3, "", &sel, &err) ||
-          !render_scene(s, sel, gl, &a, &err) || !render_scene(s, sel, cpu, &b, &err)) {
-        check(false, "raster exact frame: " + name, err);
-        continue;
-      }
-      const size_t n = static_cast<size_t>(w) * h;
-      long lit_same = 0, code_same = 0, maxd = 0;
-      for (size_t i = 0; i < n; ++i) {
-        lit_same += std::memcmp(&a.lit.rgba[i * 4], &b.lit.rgba[i * 4], 4 * sizeof(float)) == 0;
-        bool same = true;
-        for (int c = 0; c < 4; ++c) {
-          const long d = std::labs(static_cast<long>(a.display[i * 4 + c]) - static_cast<long>(b.display[i * 4 + c]));
-          maxd = std::max(maxd, d);
-          same = same && d == 0;
-        }
-        code_same += same;
-      }
-      printf("INFO frame %s, %s vs the C fallback: lit pass %ld of %zu pixels bit-identical, final frame %ld "
-             "identical (max %ld codes)\n",
-             name.c_str(), api_name(api), lit_same, n, code_same, maxd);
-    }
-}
-
 void test_scenes() {
   std::unique_ptr<GlContext> ctx = open_context(Backend::EGL, Api::GL33, "raster exact: EGL GL 3.3 context");
   if (!ctx) return;
   for (const char *name : {"scenes/model_lighting.gltf", "scenes/world_lighting.gltf", "scenes/hdr_atrium.gltf",
                            "scenes/sphere_grid.gltf", "scenes/phong_sphere.gltf", "scenes/probe_chart.gltf",
                            "scenes/lightmap_charts.gltf", "scenes/hdr_daylight.gltf", "scenes/large_hall_40.gltf"}) {
-    Count c[2];
-    std::string err;
-    const int sw = getenv("TS_RX_W") ? atoi(getenv("TS_RX_W")) : 96, sh = sw * 9 / 16;
-    if (!compare_scene(name, sw, sh, *ctx, c, &err)) {
-      check(false, std::string("raster exact: ") + name, err);
-      continue;
+    for (int sw : {96, 160}) {
+      const int sh = sw * 9 / 16;
+      Count c[2];
+      std::string err;
+      if (!compare_scene(name, sw, sh, *ctx, c, &err)) {
+        check(false, std::string("raster exact: ") + name, err);
+        continue;
+      }
+      for (int planes = 0; planes < 2; ++planes)
+        printf("INFO %s %dx%d, %s: coverage differs on %ld pixels; %ld of %ld shared pixels with bit-identical records, "
+               "%ld of %ld floats differ\n",
+               name, sw, sh, planes ? "llvmpipe's set-up" : "barycentrics", c[planes].cover_diff, c[planes].exact, c[planes].both,
+               c[planes].float_diff, c[planes].floats);
+      check(c[1].both > 0 && c[1].cover_diff == 0 && c[1].float_diff == 0,
+            std::string("raster exact: ") + name + " " + std::to_string(sw) + "x" + std::to_string(sh) +
+                ": the C rasteriser's records are GL's, bit for bit",
+            std::to_string(c[1].cover_diff) + " pixels of another draw, " + std::to_string(c[1].float_diff) +
+                " floats differ");
     }
-    for (int planes = 0; planes < 2; ++planes)
-      printf("INFO %s, %s: coverage differs on %ld pixels; %ld of %ld shared pixels with bit-identical records, "
-             "%ld of %ld floats differ\n",
-             name, planes ? "llvmpipe's set-up" : "barycentrics", c[planes].cover_diff, c[planes].exact, c[planes].both,
-             c[planes].float_diff, c[planes].floats);
-    check(c[1].both > 0 && c[1].cover_diff == 0 && c[1].float_diff == 0,
-          std::string("raster exact: ") + name + ": the C rasteriser's records are GL's, bit for bit",
-          std::to_string(c[1].cover_diff) + " pixels of another draw, " + std::to_string(c[1].float_diff) +
-              " floats differ");
   }
 }
 
@@ -266,13 +225,5 @@ int main() {
   ts_math_init();
   test_triangles();
   test_scenes();
-  if (getenv("TS_RX_FRAMES")) {
-    std::vector<std::string> names;
-    for (const char *n : {"model_lighting", "world_lighting", "hdr_atrium", "sphere_grid", "phong_sphere", "probe_chart",
-                          "lightmap_charts", "lightmap_charts_pages", "hdr_daylight", "hdr_dark_room", "large_hall_40",
-                          "large_hall_160", "large_hall"})
-      names.push_back(std::string("scenes/") + n + ".gltf");
-    test_frames(names, 160, 90);
-  }
   return unit_check::finish();
 }
