@@ -4,11 +4,13 @@
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <cstring>
 #include <thread>
 
 #include "base/parallel_rows.h"
 #include "scene/cpu_renderer.h"
 #include "scene/raster_tri.h"
+#include "scene/lp_interp.h"
 
 namespace {
 
@@ -61,49 +63,54 @@ void scene_clip_stage(const PreparedScene &p, const PreparedDraw &d, std::vector
 }
 
 void scene_tri_setup(const PreparedScene &p, int di, const std::vector<float> &clip, std::vector<ScreenTri> *out) {
-  const PreparedDraw &d = p.draws[di];
-  const double W = p.w, H = p.h;
-  const std::vector<uint32_t> &indices = d.geo->indices;
+  const float W = static_cast<float>(p.w), H = static_cast<float>(p.h);
+  const std::vector<uint32_t> &indices = p.draws[di].geo->indices;
   for (size_t t = 0; t + 2 < indices.size(); t += 3) {
-    ClipVert in[3];
+    // The triangles llvmpipe draws for this one (glue/scene/lp_interp.h): the draw module's
+    // window positions, its clipper against all six planes (no guard band), the fan in its
+    // order; the barycentrics of the original vertices ride along as attributes 0..2.
+    LpVert in[3], poly[kLpMaxPoly];
+    int m[3];
     for (int k = 0; k < 3; ++k) {
-      const float *c = &clip[indices[t + k] * 4];
-      for (int j = 0; j < 4; ++j) in[k].c[j] = c[j];
-      for (int j = 0; j < 3; ++j) in[k].bary[j] = j == k ? 1.0 : 0.0;
+      std::memcpy(in[k].clip, &clip[indices[t + k] * 4], sizeof in[k].clip);
+      lp_window_pos(in[k].clip, W, H, in[k].win);
+      for (int j = 0; j < 3; ++j) in[k].attr[j] = j == k ? 1.f : 0.f;
+      m[k] = lp_clipmask(in[k].clip);
     }
-    // Clip against the near plane z >= -w (and w > 0).
-    ClipVert poly[4];
-    int np = 0;
-    for (int k = 0; k < 3; ++k) {
-      const ClipVert &a = in[k], &b = in[(k + 1) % 3];
-      const double da = a.c[2] + a.c[3], db = b.c[2] + b.c[3];
-      if (da >= 0) poly[np++] = a;
-      if ((da >= 0) != (db >= 0)) {
-        const double s = da / (da - db);
-        ClipVert m;
-        for (int j = 0; j < 4; ++j) m.c[j] = a.c[j] + (b.c[j] - a.c[j]) * s;
-        for (int j = 0; j < 3; ++j) m.bary[j] = a.bary[j] + (b.bary[j] - a.bary[j]) * s;
-        if (np < 4) poly[np++] = m;
-      }
+    int np = 3;
+    const LpVert *fan[kLpMaxPoly] = {&in[0], &in[1], &in[2]};
+    if (m[0] | m[1] | m[2]) {
+      np = lp_clip_tri(in, m, W, H, poly);
+      for (int k = 0; k < np; ++k) fan[k] = &poly[k];
     }
-    for (int f = 1; f + 1 < np; ++f) {
-      const ClipVert *v[3] = {&poly[0], &poly[f], &poly[f + 1]};
+    for (int f = 2; f < np; ++f) {
+      // emit_poly (provoking vertex last): (f - 1, f, 0); an unclipped triangle as it is.
+      const LpVert *v[3] = {fan[f - 1], fan[f], fan[0]};
+      if (np == 3 && !(m[0] | m[1] | m[2])) v[0] = fan[0], v[1] = fan[1], v[2] = fan[2];
       ScreenTri s;
       s.draw = di;
       s.tri = static_cast<int>(t / 3);
+      s.sub = f - 2;
       bool ok = true;
       for (int k = 0; k < 3; ++k) {
-        const double w = v[k]->c[3];
-        if (!(w > 1e-12)) ok = false;
-        const double sx = (v[k]->c[0] / w * 0.5 + 0.5) * W, sy = (v[k]->c[1] / w * 0.5 + 0.5) * H;
-        if (!(std::fabs(sx) < 1e9 && std::fabs(sy) < 1e9)) ok = false;
-        s.X[k] = static_cast<int64_t>(std::llround(sx * kSub));
-        s.Y[k] = static_cast<int64_t>(std::llround(sy * kSub));
-        s.z[k] = v[k]->c[2] / w * 0.5 + 0.5;
-        s.invw[k] = 1.0 / w;
-        for (int j = 0; j < 3; ++j) s.bary[k][j] = v[k]->bary[j];
+        if (!(v[k]->win[3] > 0.f) || !std::isfinite(v[k]->win[0]) || !std::isfinite(v[k]->win[1])) ok = false;
+        // lp_setup_tri.c calc_fixed_position: (x - 0.5) * 256 rounded to nearest even, whose
+        // pixel centres are the multiples of 256: here + 128, the centres at 256 x + 128.
+        s.X[k] = static_cast<int64_t>(std::nearbyint((v[k]->win[0] - 0.5f) * 256.0f)) + kSub / 2;
+        s.Y[k] = static_cast<int64_t>(std::nearbyint((v[k]->win[1] - 0.5f) * 256.0f)) + kSub / 2;
+        s.z[k] = v[k]->win[2];
+        s.invw[k] = v[k]->win[3];
+        for (int j = 0; j < 3; ++j) s.bary[k][j] = v[k]->attr[j];
       }
       if (!ok) continue;
+      int order[3];
+      if (!lp_tri_order(v[0]->win, v[1]->win, v[2]->win, order)) continue;  // zero area for llvmpipe
+      {
+        LpPlanes zp;
+        const float *const po[3] = {v[order[0]]->win, v[order[1]]->win, v[order[2]]->win};
+        lp_tri_planes(po, po, nullptr, 0, &zp);
+        s.z0 = zp.z0, s.zdx = zp.zdx, s.zdy = zp.zdy;
+      }
       s.area = static_cast<__int128>(s.X[1] - s.X[0]) * (s.Y[2] - s.Y[0]) -
           static_cast<__int128>(s.Y[1] - s.Y[0]) * (s.X[2] - s.X[0]);
       if (s.area == 0) continue;
@@ -134,18 +141,28 @@ namespace {
 int64_t floor_div(int64_t a, int64_t b) { return a >= 0 ? a / b : -((-a + b - 1) / b); }
 int64_t ceil_div(int64_t a, int64_t b) { return -floor_div(-a, b); }
 
-// The visible pixel (y, x) of s with edge values e (double): depth test LESS, then the
-// perspective-correct barycentrics. The operations and their order are the reference's.
-inline void shade_pixel(const ScreenTri &s, SceneVisibility *vis, size_t i, double l0, double l1, double l2) {
-  const double z = l0 * s.z[0] + l1 * s.z[1] + l2 * s.z[2];
-  if (!(z < vis->depth[i]) || z < 0.0) return;
+// The visible pixel i of s with edge values l (double, normalised) and llvmpipe's depth value
+// zq: depth test LESS against the 24-bit values, then the perspective-correct barycentrics (the
+// C rasteriser's own, for what is not interpolated with llvmpipe's planes).
+inline void shade_pixel(const ScreenTri &s, SceneVisibility *vis, size_t i, float zq, double l0, double l1,
+                        double l2) {
+  if (!(zq < vis->depth[i])) return;
   double B1, B2;
   scene_tri_bary(s, l0, l1, l2, &B1, &B2);
-  vis->depth[i] = static_cast<float>(z);
+  vis->depth[i] = zq;
   vis->draw[i] = s.draw;
   vis->tri[i] = s.tri;
+  vis->sub[i] = static_cast<uint8_t>(s.sub);
   vis->b1[i] = static_cast<float>(B1);
   vis->b2[i] = static_cast<float>(B2);
+}
+
+// llvmpipe's depth values of pixels x0 .. x0 + n - 1 of row y of s (in chunks of kZChunk).
+const int kZChunk = 64;
+inline void depth_chunk(const ScreenTri &s, int x0, int y, int n, float *out) {
+  LpPlanes zp;
+  zp.z0 = s.z0, zp.zdx = s.zdx, zp.zdy = s.zdy;
+  lp_depth24_span(zp, x0, y, n, out);
 }
 
 // Rows ya..yb of a triangle with 64-bit edge values: per row, the covered span from the
@@ -171,8 +188,11 @@ void raster_small(const ScreenTri &s, SceneVisibility *vis, int ya, int yb) {
     if (lo > hi) continue;
     int64_t e0 = C[0] + A[0] * lo, e1 = C[1] + A[1] * lo, e2 = C[2] + A[2] * lo;
     const size_t row = static_cast<size_t>(y) * w;
+    float zq[kZChunk];
     for (int64_t x = lo; x <= hi; ++x) {
-      shade_pixel(s, vis, row + static_cast<size_t>(x), static_cast<double>(e0) * s.inv_area,
+      const int64_t zi = (x - lo) % kZChunk;
+      if (zi == 0) depth_chunk(s, static_cast<int>(x), y, static_cast<int>(std::min<int64_t>(kZChunk, hi - x + 1)), zq);
+      shade_pixel(s, vis, row + static_cast<size_t>(x), zq[zi], static_cast<double>(e0) * s.inv_area,
                   static_cast<double>(e1) * s.inv_area, static_cast<double>(e2) * s.inv_area);
       e0 += A[0];
       e1 += A[1];
@@ -196,7 +216,11 @@ void raster_wide(const ScreenTri &s, SceneVisibility *vis, int ya, int yb) {
         in = e >= s.bias[k];
         l[k] = static_cast<double>(e) * s.inv_area;
       }
-      if (in) shade_pixel(s, vis, static_cast<size_t>(y) * vis->w + x, l[0], l[1], l[2]);
+      if (in) {
+        float zq;
+        depth_chunk(s, x, y, 1, &zq);
+        shade_pixel(s, vis, static_cast<size_t>(y) * vis->w + x, zq, l[0], l[1], l[2]);
+      }
     }
   }
 }
@@ -207,10 +231,11 @@ void scene_rasterize_cpu(const PreparedScene &p, SceneVisibility *vis, int threa
   const size_t n = static_cast<size_t>(p.w) * p.h;
   vis->w = p.w;
   vis->h = p.h;
+  vis->pixel_planes = true;
   // A buffer of this size is reset by the bands below; a new one is made on two threads (its
   // page faults are most of the cost), next to the vertex stage and triangle setup.
   const bool reuse = vis->draw.size() == n && vis->tri.size() == n && vis->b1.size() == n && vis->b2.size() == n &&
-      vis->depth.size() == n;
+      vis->depth.size() == n && vis->sub.size() == n;
   std::thread maker;
   if (!reuse) {
     maker = std::thread([vis, n] {
@@ -219,7 +244,8 @@ void scene_rasterize_cpu(const PreparedScene &p, SceneVisibility *vis, int threa
       fresh_buffer(&vis->b1, n, 0.f);
     });
     fresh_buffer(&vis->b2, n, 0.f);
-    fresh_buffer(&vis->depth, n, 1.f);
+    fresh_buffer<uint8_t>(&vis->sub, n, 0);
+    fresh_buffer(&vis->depth, n, kLpDepth24Clear);
   }
   // The draws' triangles are set up and rasterised in batches of about kBatch triangles, in draw
   // order (a band takes its triangles in that order, batch after batch, so that equal depths keep
@@ -228,8 +254,13 @@ void scene_rasterize_cpu(const PreparedScene &p, SceneVisibility *vis, int threa
   const size_t kBatch = 16384;
   const int kBand = 8;
   const int bands = (p.h + kBand - 1) / kBand;
-  std::vector<ScreenTri> tris;
-  std::vector<float> clip;
+  // The set-up triangles and clip coordinates of a batch, kept by the calling thread across
+  // frames (at most a batch of triangles): made again each frame, their pages were a tenth of
+  // the C fallback's frame time on a small frame.
+  static thread_local std::vector<ScreenTri> kept_tris;
+  static thread_local std::vector<float> kept_clip;
+  std::vector<ScreenTri> &tris = kept_tris;  // a local reference: the workers below see this thread's
+  std::vector<float> &clip = kept_clip;
   std::vector<std::vector<int>> band_tris(static_cast<size_t>(bands));
   size_t total = 0;
   bool first = true;
@@ -257,7 +288,7 @@ void scene_rasterize_cpu(const PreparedScene &p, SceneVisibility *vis, int threa
         std::fill(vis->tri.begin() + i0, vis->tri.begin() + i1, -1);
         std::fill(vis->b1.begin() + i0, vis->b1.begin() + i1, 0.f);
         std::fill(vis->b2.begin() + i0, vis->b2.begin() + i1, 0.f);
-        std::fill(vis->depth.begin() + i0, vis->depth.begin() + i1, 1.f);
+        std::fill(vis->depth.begin() + i0, vis->depth.begin() + i1, kLpDepth24Clear);
       }
       for (int ti : band_tris[static_cast<size_t>(band)]) {
         const ScreenTri &s = tris[static_cast<size_t>(ti)];

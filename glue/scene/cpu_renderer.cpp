@@ -2,6 +2,7 @@
 // (the rasteriser: cpu_raster.cpp).
 #include "scene/cpu_renderer.h"
 #include "scene/raster_tri.h"
+#include "scene/lp_interp.h"
 
 #include <algorithm>
 #include <atomic>
@@ -73,7 +74,11 @@ void make_ctx(const PreparedScene &p, std::vector<DrawCtx> *out) {
 
 // ---- vertex stage ----------------------------------------------------------------------
 
-const int kVary = 24;  // 6 slots x 4
+const int kVary = 24;  // 6 slots x 4 (a G-buffer record)
+// Per vertex: the 24 slot floats, then llvmpipe's window position (x, y, z, 1/w: lp_window_pos),
+// the clip position, the clip mask (lp_clipmask, as a float), 3 floats of padding.
+const int kVStride = 36;
+const int kWin = 24, kClip = 28, kClipMask = 32;
 const int kPixelSlots = 6;  // ML_PIXEL_SLOTS == WL_PIXEL_SLOTS
 const int kChunk = 64;  // pixels per batched call of scene_shade_cpu (a multiple of 8)
 
@@ -82,7 +87,7 @@ void vertex_stage(const PreparedScene &p, const PreparedDraw &d, std::vector<flo
   const DrawGeometry &g = *d.geo;
   const size_t n = g.vertices();
   clip->assign(n * 4, 0.f);
-  vary->assign(n * kVary, 0.f);
+  vary->assign(n * kVStride, 0.f);
   const float *m = p.view_proj;
   const bool ps20 = !d.world && d.variant->tier == Tier::PS20;
   const int nl = ps20 ? d.variant->value("NUM_LIGHTS") : 0;
@@ -100,7 +105,10 @@ void vertex_stage(const PreparedScene &p, const PreparedDraw &d, std::vector<flo
     // u_view_proj * vec4(P, 1) in float, summed left to right as llvmpipe's vertex shader
     // does (the visibility must match GL's): not glm's mat4 * vec4, which sums in pairs.
     for (int r = 0; r < 4; ++r) c[r] = m[r] * P[0] + m[4 + r] * P[1] + m[8 + r] * P[2] + m[12 + r];
-    float *v = &(*vary)[i * kVary];
+    float *v = &(*vary)[i * kVStride];
+    lp_window_pos(c, static_cast<float>(p.w), static_cast<float>(p.h), v + kWin);
+    std::memcpy(v + kClip, c, 4 * sizeof(float));
+    v[kClipMask] = static_cast<float>(lp_clipmask(c));
     const glm::vec3 B = glm::cross(glm::make_vec3(N), glm::make_vec3(T)) * T[3];  // cross(N, T) * w: the same products
     auto put = [&](int slot, float x, float y, float z, float w) {
       v[slot * 4 + 0] = x;
@@ -145,6 +153,90 @@ inline F4 load4(const float *p) {
   return v;
 }
 inline F4 splat4(float s) { return F4{s, s, s, s}; }
+
+// A worker's set-ups of the triangles it interpolated last (llvmpipe's, glue/scene/lp_interp.h),
+// direct-mapped by triangle: the rows of a small triangle meet it again and again.
+struct PlaneCache {
+  struct Entry {
+    int draw = -1, tri = -1;
+    LpTriSet set;
+  };
+  static const unsigned kEntries = 64;
+  std::vector<Entry> e = std::vector<Entry>(kEntries);
+  Entry &at(int draw, int tri) {
+    return e[(static_cast<unsigned>(tri) * 2654435761u + static_cast<unsigned>(draw)) % kEntries];
+  }
+};
+
+// llvmpipe's set-up of the triangle of vertex records v[0..2] (layout above).
+void setup_planes(const float *const v[3], float W, float H, const int *used, int nused, LpTriSet *out) {
+  LpVert in[3];
+  int m[3];
+  for (int k = 0; k < 3; ++k) {
+    std::memcpy(in[k].clip, v[k] + kClip, sizeof in[k].clip);
+    std::memcpy(in[k].win, v[k] + kWin, sizeof in[k].win);
+    std::memcpy(in[k].attr, v[k], sizeof in[k].attr);
+    m[k] = static_cast<int>(v[k][kClipMask]);
+  }
+  lp_setup_tri(in, m, W, H, used, nused, out);
+}
+
+// The pixel slots used[] of pixels x0 .. x0 + n - 1 of row y (one draw d; tri, b1, b2: the
+// visibility buffer's row) into pp[k * pitch + i]: with llvmpipe's plane equations of the
+// triangle as llvmpipe sets it up (planes: the buffer's pixels are the frame's), else (or where
+// no triangle of a clipped one's fan covers the pixel in llvmpipe's snapping) from the C
+// rasteriser's barycentrics (v0 b0 + v1 b1 + v2 b2, float, unfused).
+void interp_run(const float *vd, const uint32_t *indices, const int32_t *tri, const uint8_t *sub, const float *vb1,
+                const float *vb2, int d, int y, int x0, int n, const int *used, int nused, ts_vec4f *pp, int pitch,
+                bool planes, float W, float H, int one_w, const int32_t *at, PlaneCache *pc) {
+  int i = 0;
+  while (i < n) {
+    const int t = tri[x0 + i];
+    const int sb = sub ? sub[x0 + i] : 0;
+    int j = i + 1;
+    while (j < n && tri[x0 + j] == t && (!sub || sub[x0 + j] == sb)) ++j;
+    const uint32_t *idx = &indices[static_cast<size_t>(t) * 3];
+    const float *v[3] = {&vd[idx[0] * kVStride], &vd[idx[1] * kVStride], &vd[idx[2] * kVStride]};
+    PlaneCache::Entry &ce = pc->at(d, t);
+    if (planes && (ce.draw != d || ce.tri != t)) {
+      ce.draw = d;
+      ce.tri = t;
+      setup_planes(v, W, H, used, nused, &ce.set);
+    }
+    const LpTriSet &ts = ce.set;
+    const int nsub = planes ? ts.n : 0;
+    // One triangle for the run (unclipped, or the rasteriser's sub-triangle) at the run's own
+    // pixels: a span.
+    if (nsub > 0 && !at && (!ts.clipped || sub) && sb < nsub && ts.valid[sb]) {
+      lp_interp_span(ts.pl[sb], x0 + i, y, j - i, used, nused, pp, pitch, i);
+      i = j;
+      continue;
+    }
+    for (int q = i; q < j; ++q) {
+      // The pixel the record is interpolated at: its own, or at[] (MSAA's layers).
+      const int w = static_cast<int>(W);
+      const int px = at ? at[x0 + q] % w : x0 + q, py = at ? at[x0 + q] / w : y;
+      int s = -1;
+      if (nsub > 0) s = sub ? (sb < nsub && ts.valid[sb] ? sb : -1) : lp_covering(ts, px, py);
+      if (s >= 0) {
+        lp_interp_span(ts.pl[s], px, py, 1, used, nused, pp, pitch, q);
+        continue;
+      }
+      const float b1 = vb1[x0 + q], b2 = vb2[x0 + q], b0 = 1.f - b1 - b2;
+      const F4 B0 = splat4(b0), B1 = splat4(b1), B2 = splat4(b2);
+      for (int u = 0; u < nused; ++u) {
+        const int k = used[u];
+        const F4 r = load4(v[0] + k * 4) * B0 + load4(v[1] + k * 4) * B1 + load4(v[2] + k * 4) * B2;
+        std::memcpy(&pp[static_cast<size_t>(k) * pitch + q], &r, sizeof r);
+      }
+    }
+    i = j;
+  }
+  // The model family's position slot is vec4(v_position, 1.0) (model_lighting.fs): its w is the
+  // constant, not an interpolated 1.
+  if (one_w >= 0)
+    for (int q = 0; q < n; ++q) pp[static_cast<size_t>(one_w) * pitch + q].w = 1.f;
+}
 
 // Shades n pixels of one draw with the batched twin: pixel slot k of pixel i at
 // pix[k * pitch + i], the shared slots from the draw's record.
@@ -207,7 +299,7 @@ void scene_shade_cpu(const PreparedScene &p, const SceneVisibility &vis, ImageF 
   size_t bytes = 0;
   for (size_t di = 0; di < p.draws.size(); ++di) {
     if (!seen[di]) continue;
-    const size_t b = p.draws[di].geo->vertices() * kVary * sizeof(float);
+    const size_t b = p.draws[di].geo->vertices() * kVStride * sizeof(float);
     if (!groups.back().empty() && bytes + b > kVaryBudget) groups.emplace_back(), bytes = 0;
     groups.back().push_back(di);
     bytes += b;
@@ -221,6 +313,8 @@ void scene_shade_cpu(const PreparedScene &p, const SceneVisibility &vis, ImageF 
   std::atomic<int> rows{0};
   // Per thread: the run's pixel slots and results (kept across rows).
   std::vector<std::vector<ts_vec4f>> pix_of(static_cast<size_t>(parallel_workers(p.h, threads)));
+  std::vector<PlaneCache> cache(pix_of.size());
+  const float W = static_cast<float>(p.w), H = static_cast<float>(p.h);
   std::vector<float> clip;
   for (size_t gi = 0; gi < groups.size(); ++gi) {
     const bool first = gi == 0;
@@ -255,22 +349,13 @@ void scene_shade_cpu(const PreparedScene &p, const SceneVisibility &vis, ImageF 
         const uint32_t *indices = p.draws[d].geo->indices.data();
         const int32_t *tri = vis.tri.data() + row;
         const float *vb1 = vis.b1.data() + row, *vb2 = vis.b2.data() + row;
+        const int32_t *at = vis.at.empty() ? nullptr : vis.at.data() + row;
+        const uint8_t *sub = vis.sub.size() == vis.tri.size() ? vis.sub.data() + row : nullptr;
         ts_vec4f *pp = pix.data();
         for (int c0 = x; c0 < x1; c0 += kChunk) {
           const int n = std::min(kChunk, x1 - c0);
-          for (int i = 0; i < n; ++i) {
-            const int q = c0 + i;
-            const uint32_t *idx = &indices[static_cast<size_t>(tri[q]) * 3];
-            const float b1 = vb1[q], b2 = vb2[q], b0 = 1.f - b1 - b2;
-            const float *v0 = &vd[idx[0] * kVary], *v1 = &vd[idx[1] * kVary], *v2 = &vd[idx[2] * kVary];
-            // v0 b0 + v1 b1 + v2 b2 per component, four components per operation (float, unfused).
-            const F4 B0 = splat4(b0), B1 = splat4(b1), B2 = splat4(b2);
-            for (int u = 0; u < nused; ++u) {
-              const int k = used[u];
-              const F4 v = load4(v0 + k * 4) * B0 + load4(v1 + k * 4) * B1 + load4(v2 + k * 4) * B2;
-              std::memcpy(&pp[static_cast<size_t>(k) * kChunk + i], &v, sizeof v);
-            }
-          }
+          interp_run(vd, indices, tri, sub, vb1, vb2, d, y, c0, n, used, nused, pp, kChunk, vis.pixel_planes, W, H,
+                     c.world ? -1 : ML_SLOT_POSITION, at, &cache[static_cast<size_t>(t)]);
           shade_run(c, pp, kChunk, n, orow_px + (c0 - x));
         }
         x = x1;
@@ -325,20 +410,31 @@ void scene_records_cpu(const PreparedScene &p, const SceneVisibility &vis, std::
   const size_t n = static_cast<size_t>(p.w) * p.h;
   draw->assign(vis.draw.begin(), vis.draw.end());
   slots->assign(n * kVary, 0.f);
-  parallel_rows(p.h, threads, [&](int y) {
-    for (int x = 0; x < p.w; ++x) {
-      const size_t q = static_cast<size_t>(y) * p.w + x;
-      const int d = vis.draw[q];
-      if (d < 0) continue;
-      const uint32_t *idx = &p.draws[d].geo->indices[static_cast<size_t>(vis.tri[q]) * 3];
-      const float b1 = vis.b1[q], b2 = vis.b2[q], b0 = 1.f - b1 - b2;
-      const float *vd = vary[d].data();
-      const float *v0 = &vd[idx[0] * kVary], *v1 = &vd[idx[1] * kVary], *v2 = &vd[idx[2] * kVary];
-      const F4 B0 = splat4(b0), B1 = splat4(b1), B2 = splat4(b2);
-      for (int k = 0; k < kPixelSlots; ++k) {
-        const F4 v = load4(v0 + k * 4) * B0 + load4(v1 + k * 4) * B1 + load4(v2 + k * 4) * B2;
-        std::memcpy(&(*slots)[q * kVary + k * 4], &v, sizeof v);
+  const int all[kPixelSlots] = {0, 1, 2, 3, 4, 5};
+  std::vector<PlaneCache> caches(static_cast<size_t>(parallel_workers(p.h, threads)));
+  parallel_rows_by_worker(p.h, threads, [&](int t, int y) {
+    PlaneCache &cache = caches[static_cast<size_t>(t)];
+    std::vector<ts_vec4f> pix(static_cast<size_t>(kPixelSlots) * p.w);
+    const size_t row = static_cast<size_t>(y) * p.w;
+    int x = 0;
+    while (x < p.w) {
+      const int d = vis.draw[row + x];
+      if (d < 0) {
+        ++x;
+        continue;
       }
+      int x1 = x;
+      while (x1 < p.w && vis.draw[row + x1] == d) ++x1;
+      interp_run(vary[d].data(), p.draws[d].geo->indices.data(), vis.tri.data() + row,
+                 vis.sub.size() == vis.tri.size() ? vis.sub.data() + row : nullptr, vis.b1.data() + row,
+                 vis.b2.data() + row, d, y, x, x1 - x, all, kPixelSlots, pix.data(), p.w, vis.pixel_planes,
+                 static_cast<float>(p.w), static_cast<float>(p.h), p.draws[d].world ? -1 : ML_SLOT_POSITION,
+                 vis.at.empty() ? nullptr : vis.at.data() + row, &cache);
+      for (int i = 0; i < x1 - x; ++i)
+        for (int k = 0; k < kPixelSlots; ++k)
+          std::memcpy(&(*slots)[(row + x + i) * kVary + k * 4], &pix[static_cast<size_t>(k) * p.w + i],
+                      sizeof(ts_vec4f));
+      x = x1;
     }
   });
 }

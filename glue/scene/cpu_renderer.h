@@ -17,8 +17,18 @@
 struct SceneVisibility {
   int w = 0, h = 0;
   std::vector<int32_t> draw, tri;  // -1: background
+  // Which of the triangles llvmpipe draws for tri covers the pixel (LpTriSet's index,
+  // glue/scene/lp_interp.h); empty: found by lp_covering.
+  std::vector<uint8_t> sub;
   std::vector<float> b1, b2;  // perspective-correct barycentrics of vertices 1 and 2
-  std::vector<float> depth;
+  std::vector<float> depth;  // llvmpipe's 24-bit depth values, as floats (lp_depth24_span)
+  // true (set by scene_rasterize_cpu): pixel i of the buffer is the pixel (i % w, i / w), so
+  // that a triangle llvmpipe draws unclipped is interpolated with llvmpipe's plane equations
+  // there (glue/scene/lp_interp.h); false (e.g. MSAA's fragment layers): from b1, b2 alone.
+  bool pixel_planes = false;
+  // With pixel_planes, when not empty (MSAA's fragment layers, glue/scene/msaa.cpp): the frame
+  // pixel (y * w + x) whose centre record i is interpolated at, instead of pixel i.
+  std::vector<int32_t> at;
 };
 
 // Rasterises every draw (threads: 0 = all cores).

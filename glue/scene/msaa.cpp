@@ -236,6 +236,9 @@ void scene_render_msaa_cpu(const PreparedScene &p, int S, MsaaFrameC *out, int t
     L.tri.assign(n, -1);
     L.b1.assign(n, 0.f);
     L.b2.assign(n, 0.f);
+    L.at.assign(n, 0);
+    L.sub.assign(n, 0);
+    L.pixel_planes = true;  // each record at its own pixel's centre (L.at), as the one-sample frame
     parallel_rows(h, threads, [&](int y) {
       for (int x = 0; x < w; ++x) {
         const size_t i = static_cast<size_t>(y) * w + x;
@@ -255,6 +258,8 @@ void scene_render_msaa_cpu(const PreparedScene &p, int S, MsaaFrameC *out, int t
           L.tri[at] = s.tri;
           L.b1[at] = static_cast<float>(b1);
           L.b2[at] = static_cast<float>(b2);
+          L.at[at] = static_cast<int32_t>(i);
+          L.sub[at] = static_cast<uint8_t>(s.sub);
         }
       }
     });

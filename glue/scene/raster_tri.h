@@ -1,6 +1,7 @@
 // tiershade scene: the C fallback's triangle set-up, shared by its one-sample rasteriser
 // (glue/scene/cpu_renderer.cpp) and its multisample one (glue/scene/msaa.cpp): clip-space
-// vertices, near-plane clipping, 8-bit sub-pixel fixed point (llvmpipe's FIXED_ORDER 8), the
+// vertices, the triangles llvmpipe draws for each (its window positions and clipper against the
+// six planes, glue/scene/lp_interp.h), its 8-bit sub-pixel snapping (FIXED_ORDER 8), the
 // top-left rule and the perspective-correct barycentrics at a point given by its edge values.
 #pragma once
 #include <cstdint>
@@ -8,13 +9,9 @@
 
 #include "scene/prepare.h"
 
-struct ClipVert {
-  double c[4];
-  double bary[3];
-};
-
 struct ScreenTri {
   int draw, tri;
+  int sub;  // which of the triangles llvmpipe draws for tri (LpTriSet's index; 0 unclipped)
   int64_t X[3], Y[3];  // 8-bit sub-pixel fixed point
   double z[3], invw[3];
   double bary[3][3];  // each screen vertex as barycentrics of the original triangle
@@ -26,6 +23,9 @@ struct ScreenTri {
   // each screen vertex is one original vertex (bary rows are unit vectors; ui[j]: the screen
   // vertex that is original vertex j).
   double inv_area;
+  // llvmpipe's plane of the window z (lp_tri_planes with the set-up's vertex order), for its
+  // 24-bit depth values (lp_depth24_span).
+  float z0, zdx, zdy;
   int64_t dx[3], dy[3];
   int bias[3];
   bool small, unit;
@@ -54,7 +54,8 @@ void fresh_buffer(std::vector<T> *out, size_t n, T v) {
 // The clip coordinates of a draw's vertices (u_view_proj * vec4(P, 1), summed as llvmpipe's
 // vertex shader sums them).
 void scene_clip_stage(const PreparedScene &p, const PreparedDraw &d, std::vector<float> *clip);
-// The screen triangles of draw di (clipped, snapped, counter-clockwise, bounding box in pixels).
+// The screen triangles of draw di (clipped and snapped as llvmpipe does, counter-clockwise,
+// bounding box in pixels).
 void scene_tri_setup(const PreparedScene &p, int di, const std::vector<float> &clip, std::vector<ScreenTri> *out);
 
 // Edge k's value at the sub-pixel point (px, py) (exact: 128-bit products).
