@@ -154,14 +154,9 @@ void main() {
         // with constant-index expressions only (appendix A), and a loop index is one.
         l = ts_light_unpack(u_light_pack[4 * i + 0], u_light_pack[4 * i + 1], u_light_pack[4 * i + 2],
                             u_light_pack[4 * i + 3]);
-#elif defined(TS_CONFORM)
-        // The conformance record holds the light unpacked, 5 slots (model_lighting_slots.glsl).
-        l.color = ts_fetch(ML_SLOT_LIGHT0 + 5 * i + 0);
-        l.dir   = ts_fetch(ML_SLOT_LIGHT0 + 5 * i + 1);
-        l.pos   = ts_fetch(ML_SLOT_LIGHT0 + 5 * i + 2);
-        l.spot  = ts_fetch(ML_SLOT_LIGHT0 + 5 * i + 3);
-        l.atten = ts_fetch(ML_SLOT_LIGHT0 + 5 * i + 4);
 #else
+        // sm3, and every tier's conformance record (5 slots per light, unpacked: TS_CONFORM reads
+        // the slot and drops the production expression, so ps20/ps2b need no u_lights here).
         l.color = TS_UNIFORM_INPUT(ML_SLOT_LIGHT0 + 5 * i + 0, u_lights[5 * i + 0]);
         l.dir   = TS_UNIFORM_INPUT(ML_SLOT_LIGHT0 + 5 * i + 1, u_lights[5 * i + 1]);
         l.pos   = TS_UNIFORM_INPUT(ML_SLOT_LIGHT0 + 5 * i + 2, u_lights[5 * i + 2]);
