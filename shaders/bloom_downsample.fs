@@ -37,8 +37,11 @@ void main() {
     vec4 shape = TS_UNIFORM_INPUT(BD_SLOT_SHAPE, u_shape);
     vec2 c = pos * 4.0;
     vec3 sum = bd_tap(c - 1.0, size, shape);
-    sum += bd_tap(vec2(c.x + 1.0, c.y - 1.0), size, shape);
-    sum += bd_tap(vec2(c.x - 1.0, c.y + 1.0), size, shape);
+    // One vector add per tap, not two scalar ones and a construct: the same values (c - 1 and
+    // c + -1 are one IEEE operation), 4 ps_2_0 slots less, which pay for the pow guards of
+    // ts_bloom_shape (issue 14; 64 + 32 slots on ps20).
+    sum += bd_tap(c + vec2(1.0, -1.0), size, shape);
+    sum += bd_tap(c + vec2(-1.0, 1.0), size, shape);
     sum += bd_tap(c + 1.0, size, shape);
     TS_FRAG_COLOR = vec4(ts_output_linear(sum * 0.25), 1.0);
 }

@@ -35,7 +35,8 @@ vec3 ts_srgb_decode3(vec3 c) {
 
 // Fact sheet section 8 (Generate8BitBloomTexture): a tap shaped as p^exp * dot(p, tint).
 vec3 ts_bloom_shape(vec3 p, vec4 shape) {
-    return pow(p, vec3(shape.w)) * dot(p, shape.rgb);
+    // Base >= TS_POW_TINY (common_math.glsl): a black tap is tiny^exp * 0 = 0, not pow(0, exp) * 0.
+    return pow(max(p, TS_POW_TINY), vec3(shape.w)) * dot(p, shape.rgb);
 }
 
 // The texel of `s` under the fragment at `frag` (gl_FragCoord.xy) of a pass whose

@@ -33,7 +33,8 @@ vec2 ts_lightmap_uv(vec2 uv, vec2 offset, float k) {
 }
 
 vec3 ts_lightmap_ldr_to_linear(vec3 t) {
-    return pow(t * TS_LIGHTMAP_OVERBRIGHT, vec3(TS_LIGHTMAP_LDR_GAMMA));
+    // Base >= TS_POW_TINY (common_math.glsl): a black texel decodes to 2^-132 (0 after FTZ), not pow(0, 2.2).
+    return pow(max(t * TS_LIGHTMAP_OVERBRIGHT, TS_POW_TINY), vec3(TS_LIGHTMAP_LDR_GAMMA));
 }
 
 // ps20's LDR decode: (2 t)^2 for (2 t)^2.2, the approximation Source uses on the X360 for

@@ -26,6 +26,30 @@ struct TsLight {
     vec4 atten;
 };
 
+// The packed light of ps20 and ps2b fragment programs (u_light_pack, issue 14): the 17 values a
+// light's shading reads in 4 vec4 instead of 5, so that 4 ps2b lights fit ps_2_b's 32 constant
+// registers beside the Phong block and 2 ps20 lights WebGL 1's 16 fragment uniform vectors
+// (docs/tiers.md; fact sheet section 4: Source, too, packs light data into .w components):
+//   p0 = (color.rgb, atten.x)   p1 = (dir.xyz, flags)   p2 = (pos.xyz, atten.y)
+//   p3 = (spot.x, atten.z, spot.z, spot.w)
+// flags = (directional ? 1 : -1) * (spot ? 2 : 1), directional = color.w > 0.5 and spot =
+// dir.w > 0.5 of the unpacked light (the host packer: ml_pack_lights,
+// glue/families/model_lighting.cpp). Unpacked, color.w = flags (> 0.5 exactly when directional)
+// and dir.w = |flags| - 1 (1 for a spot, else 0), and every other field the shading reads has the
+// bits it had unpacked (moves only; pos.w, spot.y and atten.w are read by nothing), so each test
+// and value is the unpacked one and the C twin, which reads the unpacked record, stays bit-exact.
+// No constant lanes, so the moves fold away (the ps_2_0 slot count stays). The host keeps NaN out
+// of uniforms (docs/conformance.md).
+TsLight ts_light_unpack(vec4 p0, vec4 p1, vec4 p2, vec4 p3) {
+    TsLight l;
+    l.color = vec4(p0.rgb, p1.w);
+    l.dir = vec4(p1.xyz, abs(p1.w) - 1.0);
+    l.pos = p2;
+    l.spot = p3;
+    l.atten = vec4(p0.w, p2.w, p3.y, p3.y);
+    return l;
+}
+
 // Returns the light's attenuation (distance x spot cone) at P and its unit
 // direction L (0 when the light sits exactly on P, so N.L = 0 there).
 float ts_light_attenuation(TsLight l, vec3 P, out vec3 L) {

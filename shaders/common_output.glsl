@@ -21,11 +21,15 @@ vec3 ts_output_linear(vec3 c) {
 }
 
 vec3 ts_output_gamma22(vec3 c) {
-    return saturate(pow(saturate(c), vec3(1.0 / 2.2)));
+    // pow's base >= TS_POW_TINY: black gives 2^(-60/2.2) = 6.2e-9, not the undefined pow(0, y)
+    // (common_math.glsl; an RGBA8 or fp16 target stores 0 for both).
+    return saturate(pow(max(saturate(c), TS_POW_TINY), vec3(1.0 / 2.2)));
 }
 
 float ts_srgb_encode(float x) {
-    return x <= 0.0031308 ? 12.92 * x : 1.055 * pow(x, 1.0 / 2.4) - 0.055;
+    // The max() changes no selected value (the pow side is taken above 0.0031308); it keeps the
+    // pow defined where the error bounds take both sides of the comparison.
+    return x <= 0.0031308 ? 12.92 * x : 1.055 * pow(max(x, TS_POW_TINY), 1.0 / 2.4) - 0.055;
 }
 
 vec3 ts_output_srgb(vec3 c) {

@@ -32,7 +32,8 @@ void main() {
     // max(): a negative tone-map scale gives sqrt(0), not sqrt(-x) = NaN, whose min() with 1 is 1 on
     // llvmpipe and NaN where min returns its first operand (issue 14).
     bloom = min(bloom * sqrt(max(params.x, 0.0)), 1.0);
-    vec3 c = fb * params.x + (params.y * pow(ts_luminance(bloom), params.z)) * bloom;
+    // pow's base >= TS_POW_TINY (common_math.glsl): no bloom gives amount * tiny^exp * 0 = 0.
+    vec3 c = fb * params.x + (params.y * pow(max(ts_luminance(bloom), TS_POW_TINY), params.z)) * bloom;
 #if OUTPUT_MODE == TS_OUTPUT_GAMMA22
     c = ts_output_gamma22(c);
 #elif OUTPUT_MODE == TS_OUTPUT_SRGB

@@ -31,7 +31,25 @@
 #endif
 
 uniform vec4 u_ambient_cube[6];  // +X -X +Y -Y +Z -Z
+#if defined(TS_TIER_PS20) || defined(TS_TIER_PS2B)
+// ps20 and ps2b: the lights packed in 4 vec4 each (ts_light_unpack, common_lights.glsl), as many
+// as the tier has (ps20 2, ps2b 4): 6 + 8 + 2 = 16 ps20 fragment uniform vectors (WebGL 1's
+// minimum), 6 + 16 + 1 + 8 Phong = 31 ps2b constant registers (ps_2_b: 32; docs/tiers.md).
+#ifdef TS_TIER_PS20
+#define ML_PACK_LIGHTS 2
+#else
+#define ML_PACK_LIGHTS 4
+#endif
+uniform vec4 u_light_pack[4 * ML_PACK_LIGHTS];
+#if defined(TS_CONFORM)
+#define ML_LIGHT_PACKED 0
+#else
+#define ML_LIGHT_PACKED 1
+#endif
+#else
 uniform vec4 u_lights[5 * ML_MAX_LIGHTS];
+#define ML_LIGHT_PACKED 0
+#endif
 uniform vec4 u_params;           // x: tone-map scale, y: light count (sm3)
 uniform vec4 u_albedo_color;
 uniform sampler2D u_albedo;      // rgb albedo, a: spec mask / envmap mask / self-illum mask (Phong)
@@ -131,11 +149,20 @@ void main() {
         if (i >= light_count) break;
 #endif
         TsLight l;
+#if ML_LIGHT_PACKED
+        // Indexed in the loop, not in a function: ESSL 1.00 fragment shaders index uniform arrays
+        // with constant-index expressions only (appendix A), and a loop index is one.
+        l = ts_light_unpack(u_light_pack[4 * i + 0], u_light_pack[4 * i + 1], u_light_pack[4 * i + 2],
+                            u_light_pack[4 * i + 3]);
+#else
+        // sm3, and every tier's conformance record (5 slots per light, unpacked: TS_CONFORM reads
+        // the slot and drops the production expression, so ps20/ps2b need no u_lights here).
         l.color = TS_UNIFORM_INPUT(ML_SLOT_LIGHT0 + 5 * i + 0, u_lights[5 * i + 0]);
         l.dir   = TS_UNIFORM_INPUT(ML_SLOT_LIGHT0 + 5 * i + 1, u_lights[5 * i + 1]);
         l.pos   = TS_UNIFORM_INPUT(ML_SLOT_LIGHT0 + 5 * i + 2, u_lights[5 * i + 2]);
         l.spot  = TS_UNIFORM_INPUT(ML_SLOT_LIGHT0 + 5 * i + 3, u_lights[5 * i + 3]);
         l.atten = TS_UNIFORM_INPUT(ML_SLOT_LIGHT0 + 5 * i + 4, u_lights[5 * i + 4]);
+#endif
 #ifdef TS_TIER_PS20
         // ps_2_0 budget: distance and cone attenuation come from the vertex shader.
         vec3 L = ts_light_direction(l, P);
@@ -147,7 +174,8 @@ void main() {
         float NdotL = dot(N, L);
         diffuse += ml_light_diffuse(l, att, NdotL);
 #if PHONG
-        float RdotL = saturate(dot(R, L));
+        // Base kept >= TS_POW_TINY (common_math.glsl): pow(0, k) is undefined in GLSL ES (issue 14).
+        float RdotL = max(saturate(dot(R, L)), TS_POW_TINY);
         vec3 lit = l.color.rgb * (saturate(NdotL) * att);
         spec += lit * pow(RdotL, k);
 #if RIM_LIGHT

@@ -17,5 +17,6 @@ static inline V3 FN(srgb_decode3)(V3 c) {
 
 static inline V3 FN(bloom_shape)(V3 p, V4 shape) {
   const TS_REAL d = M(dot3)(p, M(v3)(shape.x, shape.y, shape.z));
-  return M(scale3)(M(v3)(M(pow)(p.x, shape.w), M(pow)(p.y, shape.w), M(pow)(p.z, shape.w)), d);
+  const TS_REAL m = K(TS_POW_TINY_C); /* base >= 2^-60 (shaders/common_math.glsl) */
+  return M(scale3)(M(v3)(M(pow)(M(max)(p.x, m), shape.w), M(pow)(M(max)(p.y, m), shape.w), M(pow)(M(max)(p.z, m), shape.w)), d);
 }

@@ -7,7 +7,8 @@ static V2 FN(lightmap_uv)(V2 uv, V2 offset, TS_REAL k) { return M(v2)(ADD(uv.x, 
 /* (2 t)^2.2: gamma 2.2 after undoing the overbright-2 pre-division. */
 static V3 FN(lightmap_ldr_to_linear)(V3 t) {
   V3 s = M(scale3)(t, K(2.0));
-  return M(v3)(M(pow)(s.x, K(2.2)), M(pow)(s.y, K(2.2)), M(pow)(s.z, K(2.2)));
+  const TS_REAL m = K(TS_POW_TINY_C); /* base >= 2^-60 (shaders/common_math.glsl) */
+  return M(v3)(M(pow)(M(max)(s.x, m), K(2.2)), M(pow)(M(max)(s.y, m), K(2.2)), M(pow)(M(max)(s.z, m), K(2.2)));
 }
 
 /* ps20: (2 t)^2 (Source's X360 approximation of the overbright-2 gamma decode). */

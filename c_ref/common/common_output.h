@@ -8,11 +8,12 @@ static inline V3 FN(output_linear)(V3 c) {
 static inline V3 FN(output_gamma22)(V3 c) {
   const TS_REAL e = DIV(K(1.0), K(2.2));
   V3 s = M(saturate3)(c);
-  return M(saturate3)(M(v3)(M(pow)(s.x, e), M(pow)(s.y, e), M(pow)(s.z, e)));
+  const TS_REAL t = K(TS_POW_TINY_C);
+  return M(saturate3)(M(v3)(M(pow)(M(max)(s.x, t), e), M(pow)(M(max)(s.y, t), e), M(pow)(M(max)(s.z, t), e)));
 }
 
 static inline TS_REAL FN(srgb_encode)(TS_REAL x) {
-  return SEL(LE(x, K(0.0031308)), MUL(K(12.92), x), SUB(MUL(K(1.055), M(pow)(x, DIV(K(1.0), K(2.4)))), K(0.055)));
+  return SEL(LE(x, K(0.0031308)), MUL(K(12.92), x), SUB(MUL(K(1.055), M(pow)(M(max)(x, K(TS_POW_TINY_C)), DIV(K(1.0), K(2.4)))), K(0.055)));
 }
 
 static inline V3 FN(output_srgb)(V3 c) {

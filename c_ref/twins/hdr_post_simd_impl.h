@@ -13,7 +13,8 @@ TSV_INL V3v VFN(bd_tap)(const bd_variant *v, const ts_tex2d *src, VF tx, VF ty, 
   V3v p = VFN(hp_fetch)(src, tx * size.z, ty * size.w);
   if (v->shape) { /* common_hdr.h bloom_shape */
     const VF d = VFN(dot3)(p, VFN(xyz)(shape));
-    p = VFN(scale3)(VFN(v3)(VFN(pow)(p.x, shape.w), VFN(pow)(p.y, shape.w), VFN(pow)(p.z, shape.w)), d);
+    const VF m = VFN(splat)(TS_POW_TINY_F); /* base >= 2^-60 (shaders/common_math.glsl) */
+    p = VFN(scale3)(VFN(v3)(VFN(pow)(VFN(max)(p.x, m), shape.w), VFN(pow)(VFN(max)(p.y, m), shape.w), VFN(pow)(VFN(max)(p.z, m), shape.w)), d);
   }
   return p;
 }
@@ -64,7 +65,7 @@ static V4v VFN(ht_block)(const ht_variant *v, const ht_batch_input *in, const ts
   const VF one = VFN(splat)(1.0f);
   bloom = VFN(v3)(VFN(min)(bloom.x, one), VFN(min)(bloom.y, one), VFN(min)(bloom.z, one));
   const VF lum = VFN(dot3)(bloom, VFN(v3)(VFN(splat)(0.2125f), VFN(splat)(0.7154f), VFN(splat)(0.0721f)));
-  const VF k = params.y * VFN(pow)(lum, params.z);
+  const VF k = params.y * VFN(pow)(VFN(max)(lum, VFN(splat)(TS_POW_TINY_F)), params.z);
   const V3v c = VFN(add3)(VFN(scale3)(fb, params.x), VFN(scale3)(bloom, k));
   return VFN(rgba)(VFN(output)(c, v->output_mode), one);
 }

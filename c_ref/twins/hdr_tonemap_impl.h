@@ -14,7 +14,7 @@ V4 FN(hdr_tonemap)(const ht_variant *v, const ts_vec4f rec[HT_SLOTS], const ts_t
   V4 s = M(texture2D)(bloom_tex, M(v2)(MUL(pos.x, size.z), MUL(pos.y, size.w)));
   V3 bloom = M(scale3)(M(v3)(s.x, s.y, s.z), M(sqrt)(M(max)(params.x, K(0.0))));
   bloom = M(v3)(M(min)(bloom.x, K(1.0)), M(min)(bloom.y, K(1.0)), M(min)(bloom.z, K(1.0)));
-  TS_REAL k = MUL(params.y, M(pow)(FN(luminance)(bloom), params.z));
+  TS_REAL k = MUL(params.y, M(pow)(M(max)(FN(luminance)(bloom), K(TS_POW_TINY_C)), params.z));
   V3 c = M(add3)(M(scale3)(fb, params.x), M(scale3)(bloom, k));
   if (v->output_mode == 1)
     c = FN(output_gamma22)(c);

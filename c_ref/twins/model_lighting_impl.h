@@ -68,7 +68,7 @@ V4 FN(model_lighting)(const ml_variant *v, const ts_vec4f rec[ML_SLOTS], const m
       diffuse = M(add3)(diffuse, M(scale3)(FN(xyz4)(l[0]), MUL(att, term)));
     }
     if (v->phong) {
-      TS_REAL RdotL = M(saturate)(M(dot3)(R, L));
+      TS_REAL RdotL = M(max)(M(saturate)(M(dot3)(R, L)), K(TS_POW_TINY_C));
       V3 lit = M(scale3)(FN(xyz4)(l[0]), MUL(M(saturate)(NdotL), att));
       spec = M(add3)(spec, M(scale3)(lit, M(pow)(RdotL, k)));
       if (v->rim_light) rim = M(add3)(rim, M(scale3)(lit, M(pow)(RdotL, rim_params.x)));

@@ -122,7 +122,7 @@ static V4v VFN(ml_block)(const ml_variant *v, const ml_batch_input *in, const ml
     }
     diffuse = VFN(sel3)(active, d2, diffuse);
     if (v->phong) {
-      const VF RdotL = VFN(saturate)(VFN(dot3)(R, L));
+      const VF RdotL = VFN(max)(VFN(saturate)(VFN(dot3)(R, L)), VFN(splat)(TS_POW_TINY_F));
       const V3v lit = VFN(scale3)(VFN(xyz)(l[0]), VFN(saturate)(NdotL) * att);
       spec = VFN(sel3)(active, VFN(add3)(spec, VFN(scale3)(lit, VFN(pow)(RdotL, k))), spec);
       if (v->rim_light) rim = VFN(sel3)(active, VFN(add3)(rim, VFN(scale3)(lit, VFN(pow)(RdotL, rim_params.x))), rim);

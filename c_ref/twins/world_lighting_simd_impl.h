@@ -20,8 +20,8 @@ static V3v VFN(wl_lightmap)(const wl_variant *v, const ts_tex2d *lm, VF u, VF w,
   if (v->encoding == WL_LM_412) return VFN(scale3)(rgb, VFN(splat)(16.0f));
   if (v->encoding == WL_LM_LDR) {
     const V3v s = VFN(scale3)(rgb, VFN(splat)(2.0f));
-    const VF g = VFN(splat)(2.2f);
-    return VFN(v3)(VFN(pow)(s.x, g), VFN(pow)(s.y, g), VFN(pow)(s.z, g));
+    const VF g = VFN(splat)(2.2f), m = VFN(splat)(TS_POW_TINY_F);
+    return VFN(v3)(VFN(pow)(VFN(max)(s.x, m), g), VFN(pow)(VFN(max)(s.y, m), g), VFN(pow)(VFN(max)(s.z, m), g));
   }
   if (v->encoding == WL_LM_RGBE) return VFN(scale3)(rgb, VFN(exp2)(t.w * 255.0f - 128.0f));
   return rgb;

@@ -165,9 +165,10 @@ bool run(const BenchOptions &, std::string *markdown, std::string *err) {
        "bounds wide:\n"
        "- the CTS lookup precision (7 sub-texel weight bits) on every LINEAR lookup: 10^5-10^6 ULP on the "
        "random textures; variants without one are 17-120 ULP wide;\n"
-       "- `pow` on a base that may be 0 (Phong and rim `pow(saturate(R.L), k)`, gamma 2.2 output on black, "
-       "LDR lightmap decode of 0, bloom shaping): no bound at all. A `pow(max(x, tiny), k)` form would "
-       "bound them;\n"
+       "- `pow` on a base that may be 0 is bounded since the shaders take the stable form "
+       "`pow(max(x, 2^-60), k)` (Phong and rim, gamma 2.2 and sRGB output, LDR lightmap decode, bloom "
+       "shaping; issue 14, docs/conformance.md \"After the pow guards\"): what stays unbounded is NaN "
+       "input, inversesqrt of a length that may be 0 and lookups past 2^20;\n"
        "- RGBE lightmaps decoded after filtering (`exp2(255 a - 128)` of a filtered alpha): world_lighting's "
        "widest variants.\n";
   *markdown = o.str();

@@ -30,6 +30,9 @@ bool budget_count_fragment(const std::string &glsl330_source, BudgetCounts *out,
   ProgramInterface iface;
   if (!reflect_fragment_unrolled(glsl330_source, &iface, &e)) return false;
   r.constants = fragment_constant_registers(iface);
+  ProgramInterface declared;
+  if (!reflect_stage(glsl330_source, false, &declared, &e)) return false;
+  r.uniform_vectors = fragment_uniform_vectors(declared);
   *out = r;
   return true;
 }

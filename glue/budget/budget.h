@@ -39,6 +39,10 @@ struct BudgetCounts {
   // constant index + 1; the declared size where an index stays dynamic, as in sm3's light loop).
   // ps_2_0 and ps_2_b have 32, ps_3_0 224 (docs/budget_model.md, "Constant registers").
   int constants = 0;
+  // WebGL 1's measure of the same (issue 14): fragment uniform vectors of the uniforms the stage
+  // declares and statically uses, arrays at their DECLARED size (interface.h,
+  // fragment_uniform_vectors); an ES 2.0 implementation must accept 16 (docs/tiers.md).
+  int uniform_vectors = 0;
   std::map<std::string, int> by_op;  // slots per op name (non-zero entries only;
       // their sum equals total()), for --verbose
 };

@@ -20,20 +20,21 @@
 #include "cli/select_args.h"
 
 struct TierLimits {
-  int alu, tex, total, constants;
+  int alu, tex, total, constants, vectors;
 };  // -1: no limit
 // Float constant registers: ps_2_0 and ps_2_b 32, ps_3_0 224 (DirectX 9 pixel shader
-// registers; docs/budget_model.md, "Constant registers").
+// registers; docs/budget_model.md, "Constant registers"). Fragment uniform vectors: ps20, the
+// WebGL 1 tier, within the 16 every ES 2.0 implementation has (docs/tiers.md, issue 14).
 static TierLimits limits_for(Tier t) {
   switch (t) {
     case Tier::PS20:
-      return {64, 32, 96, 32};
+      return {64, 32, 96, 32, 16};
     case Tier::PS2B:
-      return {-1, -1, 512, 32};
+      return {-1, -1, 512, 32, -1};
     case Tier::SM3:
-      return {-1, -1, -1, 224};
+      return {-1, -1, -1, 224, -1};
   }
-  return {-1, -1, -1, -1};
+  return {-1, -1, -1, -1, -1};
 }
 static std::string lim(int v) { return v < 0 ? "null" : std::to_string(v); }
 static nlohmann::ordered_json lim_json(int v) {
@@ -58,7 +59,8 @@ int cmd_budget(int argc, char **argv) {
         "ps20 <= 64 arithmetic and <= 32 texture slots, ps2b <= 512 slots. Exit status 1 when\n"
         "a variant is over budget or fails to compile. Constant registers (the vec4 uniform slots\n"
         "the fragment stage uses, arrays at their used size) are checked too: ps20 and ps2b <= 32,\n"
-        "sm3 <= 224 (DX9's ps_2_0, ps_2_b and ps_3_0).\n"
+        "sm3 <= 224 (DX9's ps_2_0, ps_2_b and ps_3_0). So are WebGL 1's fragment uniform vectors\n"
+        "(vec: the uniforms the stage declares, arrays at their declared size): ps20 <= 16.\n"
         "--known-over FILE: lines 'SHADER VARIANT' known to exceed the constant registers alone;\n"
         "such a variant is reported ok (known over) while it does, and fails once it fits.\n"
         "--nir also links each production program on OSMesa GL 3.3 with ST_DEBUG=nir, counts\n"
@@ -118,7 +120,8 @@ int cmd_budget(int argc, char **argv) {
     const bool slots_fit =
         ok && (L.alu < 0 || c.alu <= L.alu) && (L.tex < 0 || c.tex <= L.tex) && (L.total < 0 || c.total() <= L.total);
     const bool constants_fit = L.constants < 0 || c.constants <= L.constants;
-    bool fits = slots_fit && constants_fit;
+    const bool vectors_fit = L.vectors < 0 || c.uniform_vectors <= L.vectors;
+    bool fits = slots_fit && constants_fit && vectors_fit;
     auto known = known_over.find(v.shader->name + " " + v.name());
     std::string known_note;
     if (known != known_over.end()) {
@@ -126,7 +129,7 @@ int cmd_budget(int argc, char **argv) {
         ok = false;
         err = "listed as over its constant registers (" + known->second + ") but fits: delete the line";
         fits = false;
-      } else if (slots_fit) {
+      } else if (slots_fit && vectors_fit) {
         known_note = "  (known over: constants " + std::to_string(c.constants) + " > " + lim(L.constants) + ", " +
             known->second + ")";
         fits = true;
@@ -169,6 +172,8 @@ int cmd_budget(int argc, char **argv) {
       o["limit_total"] = lim_json(L.total);
       o["constants"] = c.constants;
       o["limit_constants"] = lim_json(L.constants);
+      o["uniform_vectors"] = c.uniform_vectors;
+      o["limit_uniform_vectors"] = lim_json(L.vectors);
       o["fits"] = fits;
       if (!known_note.empty()) o["known_over"] = true;
       if (nir) {
@@ -194,12 +199,13 @@ int cmd_budget(int argc, char **argv) {
           snprintf(b, sizeof b, " ratio    -");
         extra += b;
       }
-      printf("%s %-15s %-60s alu %3d tex %2d total %3d const %3d  (limits alu %s tex %s total %s const %s)%s\n",
+      printf("%s %-15s %-60s alu %3d tex %2d total %3d const %3d vec %3d  (limits alu %s tex %s total %s const %s vec %s)%s\n",
              !fits        ? "OVER"
                  : nir_ok ? "ok  "
                           : "FAIL",
-             v.shader->name.c_str(), v.name().c_str(), c.alu, c.tex, c.total(), c.constants, lim(L.alu).c_str(),
-             lim(L.tex).c_str(), lim(L.total).c_str(), lim(L.constants).c_str(), (extra + known_note).c_str());
+             v.shader->name.c_str(), v.name().c_str(), c.alu, c.tex, c.total(), c.constants, c.uniform_vectors,
+             lim(L.alu).c_str(), lim(L.tex).c_str(), lim(L.total).c_str(), lim(L.constants).c_str(),
+             lim(L.vectors).c_str(), (extra + known_note).c_str());
       if (!ok) printf("  error: %s\n", err.c_str());
       if (!nir_ok) printf("  nir: %s\n", nir_err.c_str());
       if (a.flag("--verbose")) {

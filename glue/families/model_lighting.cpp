@@ -149,6 +149,35 @@ MlTextureViews::MlTextureViews(const FamilyInputs &in) {
   tex = {&t2[ML_TEX_ALBEDO], &t2[ML_TEX_NORMAL], &t2[ML_TEX_EXPONENT], &t2[ML_TEX_WARP], &cube};
 }
 
+void ml_pack_lights(const ts_vec4f *lights, int n, ts_vec4f *out) {
+  for (int i = 0; i < n; ++i) {
+    const ts_vec4f *l = lights + 5 * i;  // color, dir, pos, spot, atten
+    // The flags as the shader tests them (> 0.5): (directional ? 1 : -1) * (spot ? 2 : 1).
+    const float flags = (l[0].w > 0.5f ? 1.f : -1.f) * (l[1].w > 0.5f ? 2.f : 1.f);
+    out[4 * i + 0] = ts_v4f(l[0].x, l[0].y, l[0].z, l[4].x);
+    out[4 * i + 1] = ts_v4f(l[1].x, l[1].y, l[1].z, flags);
+    out[4 * i + 2] = ts_v4f(l[2].x, l[2].y, l[2].z, l[4].y);
+    out[4 * i + 3] = ts_v4f(l[3].x, l[4].z, l[3].z, l[3].w);
+  }
+}
+
+namespace {
+
+// The production uniforms of the slot table, and, where the fragment program packs its lights
+// (ps20, ps2b: u_light_pack), the record's lights packed for it (ml_pack_lights).
+void ml_bind_uniforms(const GlFns &gl, GLuint program, const std::vector<ts_vec4f> &shared) {
+  bind_layout_uniforms<kLayout>(gl, program, shared);
+  const GLint loc = gl.GetUniformLocation(program, "u_light_pack");
+  if (loc < 0) return;
+  (void)shared.at(ML_SLOT_LIGHT0 + 5 * ML_MAX_LIGHTS - 1);  // std::out_of_range for a short record
+  ts_vec4f pack[4 * ML_MAX_LIGHTS];
+  ml_pack_lights(&shared[ML_SLOT_LIGHT0], ML_MAX_LIGHTS, pack);
+  // As bind_slot_uniforms: elements past the program's array (ps20 declares 2 lights) are ignored.
+  gl.Uniform4fv(loc, 4 * ML_MAX_LIGHTS, &pack[0].x);
+}
+
+}  // namespace
+
 ml_variant ml_variant_of(const Variant &v) {
   ml_variant m = {};
   m.tier = tier_id(v.tier);
@@ -164,8 +193,11 @@ ml_variant ml_variant_of(const Variant &v) {
   return m;
 }
 
-const ShaderFamily kModelLightingFamily =
-    family_of<kLayout>(record_inputs<kLayout, random_pixel, random_textures>,
-                       eval_twin<kLayout, cached_ml, cached_views, model_lighting_f>,
-                       eval_twin<kLayout, cached_ml, cached_views, model_lighting_d>, eval_row_f);
+const ShaderFamily kModelLightingFamily = [] {
+  ShaderFamily f = family_of<kLayout>(record_inputs<kLayout, random_pixel, random_textures>,
+                                      eval_twin<kLayout, cached_ml, cached_views, model_lighting_f>,
+                                      eval_twin<kLayout, cached_ml, cached_views, model_lighting_d>, eval_row_f);
+  f.bind_uniforms = ml_bind_uniforms;
+  return f;
+}();
 const FamilyRegistrar kRegister(&kModelLightingFamily);

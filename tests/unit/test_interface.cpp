@@ -200,10 +200,15 @@ void test_webgl() {
               has_ext(e300, "EXT_color_buffer_float"),
           std::string("WebGL 2 extensions of ps20 model_lighting ") + (textured ? "with" : "without") + " an albedo texture",
           err + ext_names(e300));
-    // The declared interface holds the whole light array the source declares (5 x 4 vec4s).
+    // The declared interface holds the whole light array the source declares (5 x 4 vec4s), which
+    // only ps20's vertex stage reads (per-vertex attenuation); its fragment stage reads the packed
+    // u_light_pack[4 x 2] (common_lights.glsl ts_light_unpack), so that it fits WebGL 1's 16.
     const InterfaceVar *lights = ok ? find(iface.uniforms, "u_lights") : nullptr;
-    check(lights && lights->array_size == 20 && lights->vertex && lights->fragment,
-          "model_lighting declares u_lights[20], used by both stages", names(iface.uniforms));
+    check(lights && lights->array_size == 20 && lights->vertex && !lights->fragment,
+          "model_lighting ps20 declares u_lights[20], used by the vertex stage only", names(iface.uniforms));
+    const InterfaceVar *pack = ok ? find(iface.uniforms, "u_light_pack") : nullptr;
+    check(pack && pack->array_size == 8 && !pack->vertex && pack->fragment,
+          "model_lighting ps20 declares u_light_pack[8], used by the fragment stage only", names(iface.uniforms));
   }
 }
 
