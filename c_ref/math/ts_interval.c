@@ -237,9 +237,6 @@ int ts_ltiv(ts_iv a, ts_iv b) {
 int ts_geiv(ts_iv a, ts_iv b) { return ts_leiv(b, a); }
 int ts_gtiv(ts_iv a, ts_iv b) { return ts_ltiv(b, a); }
 ts_iv ts_seliv(int c, ts_iv a, ts_iv b) { return c == TS_IV_TRUE ? a : c == TS_IV_FALSE ? b : ts_ivjoin(a, b); }
-ts_vec3iv ts_sel3iv(int c, ts_vec3iv a, ts_vec3iv b) {
-  return ts_v3iv(ts_seliv(c, a.x, b.x), ts_seliv(c, a.y, b.y), ts_seliv(c, a.z, b.z));
-}
 
 /* ---- builtins ---- */
 
@@ -274,9 +271,6 @@ ts_iv ts_log2iv(ts_iv x) {
   return mk(lo, hi);
 }
 
-/* pow(x, y) = exp2(y * log2(x)) (ESSL 3.00 8.2: derived precision; undefined for x < 0 and for
- * x = 0 with y <= 0, and log2(0) is undefined, so any x interval reaching 0 gives any result) */
-ts_iv ts_powiv(ts_iv x, ts_iv y) { return ts_exp2iv(ts_muliv(y, ts_log2iv(x))); }
 
 /* inversesqrt: 2 ULP; x <= 0 undefined */
 ts_iv ts_inversesqrtiv(ts_iv x) {
@@ -308,32 +302,7 @@ ts_iv ts_maxiv(ts_iv a, ts_iv b) {
   ts_iv r = {fmaxf(a.lo, b.lo), fmaxf(a.hi, b.hi), 0};
   return r;
 }
-/* clamp(x, lo, hi) = min(max(x, lo), hi) (ESSL 3.00 8.3) */
-ts_iv ts_clampiv(ts_iv x, ts_iv lo, ts_iv hi) { return ts_miniv(ts_maxiv(x, lo), hi); }
-ts_iv ts_saturateiv(ts_iv x) { return ts_clampiv(x, ts_ivpoint(0.0f), ts_ivpoint(1.0f)); }
-/* step(edge, x) = x < edge ? 0 : 1; straddling: both */
-ts_iv ts_stepiv(ts_iv edge, ts_iv x) { return ts_seliv(ts_ltiv(x, edge), ts_ivpoint(0.0f), ts_ivpoint(1.0f)); }
-ts_iv ts_absiv(ts_iv x) {
-  if (!has_num(x)) return x;
-  if (x.lo >= 0) return x;
-  if (x.hi <= 0) return ts_negiv(x);
-  ts_iv r = {0.0f, fmaxf(-x.lo, x.hi), x.nan};
-  return r;
-}
 
-/* ---- vectors ---- */
-ts_vec2iv ts_v2iv(ts_iv x, ts_iv y) {
-  ts_vec2iv v = {x, y};
-  return v;
-}
-ts_vec3iv ts_v3iv(ts_iv x, ts_iv y, ts_iv z) {
-  ts_vec3iv v = {x, y, z};
-  return v;
-}
-ts_vec4iv ts_v4iv(ts_iv x, ts_iv y, ts_iv z, ts_iv w) {
-  ts_vec4iv v = {x, y, z, w};
-  return v;
-}
 
 /* dot in any order, each product and sum correctly rounded or fused: the exact sum of the exact
  * products' ranges, widened by 5 ULP of 2 M (M = sum of the largest |product|s): 3 products and 2
@@ -352,13 +321,6 @@ ts_iv ts_dot3iv(ts_vec3iv a, ts_vec3iv b) {
   const double w = (5 + TS_IV_SLACK) * ulpd(2 * m);
   return mk(lo - w, hi + w);
 }
-ts_vec3iv ts_add3iv(ts_vec3iv a, ts_vec3iv b) { return ts_v3iv(ts_addiv(a.x, b.x), ts_addiv(a.y, b.y), ts_addiv(a.z, b.z)); }
-ts_vec3iv ts_sub3iv(ts_vec3iv a, ts_vec3iv b) { return ts_v3iv(ts_subiv(a.x, b.x), ts_subiv(a.y, b.y), ts_subiv(a.z, b.z)); }
-ts_vec3iv ts_mul3iv(ts_vec3iv a, ts_vec3iv b) { return ts_v3iv(ts_muliv(a.x, b.x), ts_muliv(a.y, b.y), ts_muliv(a.z, b.z)); }
-ts_vec3iv ts_scale3iv(ts_vec3iv v, ts_iv s) { return ts_v3iv(ts_muliv(v.x, s), ts_muliv(v.y, s), ts_muliv(v.z, s)); }
-ts_vec3iv ts_saturate3iv(ts_vec3iv v) { return ts_v3iv(ts_saturateiv(v.x), ts_saturateiv(v.y), ts_saturateiv(v.z)); }
-/* normalize(v) = v * inversesqrt(dot(v, v)) (ESSL 3.00 8.4, derived) */
-ts_vec3iv ts_normalize3iv(ts_vec3iv v) { return ts_scale3iv(v, ts_inversesqrtiv(ts_dot3iv(v, v))); }
 
 /* ---- texture lookups (see ts_interval.h) ----
  * The precision the CTS allows a 2D lookup (dEQP tcuTexLookupVerifier, LookupPrecision, with the
