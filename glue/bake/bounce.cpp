@@ -6,6 +6,7 @@
 #include <cmath>
 #include <cstdint>
 
+#include "bake/area_lights.h"
 #include "bake/glm_ts.h"
 #include "bake/ray_scene.h"
 #include "bake/world_faces.h"
@@ -76,8 +77,8 @@ bool bounce_light(const std::vector<WorldFace> &faces, const std::vector<std::ar
       for (int i = 0; i < g.w; ++i) {
         const glm::dvec3 e = to_glm(g.at(i, j, 0));
         total += e.x + e.y + e.z;
-        // A TEXCOORD_1 chart is no area light (glue/bake/area_lights.h): the bounces send its emission.
-        const glm::dvec3 le = set.emission_sampled && !faces[f].chart ? glm::dvec3(0.0) : to_glm(faces[f].emission);
+        // Emission the area lights sampled (glue/bake/area_lights.h) is not sent again.
+        const glm::dvec3 le = set.emission_sampled ? glm::dvec3(0.0) : to_glm(faces[f].emission);
         send[f][static_cast<size_t>(j) * g.w + i] = to_ts(le + to_glm(faces[f].reflectivity) * e);
       }
   }
@@ -94,7 +95,15 @@ bool bounce_light(const std::vector<WorldFace> &faces, const std::vector<std::ar
     const long rays_before = report->rays;
     long luxels_done = 0;
     // Nothing sent (no light, or reflectivity 0 everywhere): no rays to trace.
+    // The emissive models' emission, not sampled as area lights: the first pass's rays take it.
+    const std::vector<ModelEmitter> *models =
+        pass == 1 && !set.emission_sampled && set.model_emitters && !set.model_emitters->empty() ? set.model_emitters
+                                                                                                  : nullptr;
     bool sends = false;
+    for (size_t k = 0; models && k < models->size(); ++k) {
+      const ts_vec3d &le = (*models)[k].emission;
+      sends = sends || le.x > 0 || le.y > 0 || le.z > 0;
+    }
     for (const std::vector<ts_vec3d> &v : send)
       for (const ts_vec3d &e : v) sends = sends || e.x > 0 || e.y > 0 || e.z > 0;
     if (!sends) break;
@@ -136,6 +145,13 @@ bool bounce_light(const std::vector<WorldFace> &faces, const std::vector<std::ar
               if (!(glm::dot(d, n) > 0)) continue;  // behind the face: it feeds none of the values
               ++traced;
               const RayScene::Hit h = rays.intersect(p, d, 0.0, INFINITY);
+              if (models && h.triangle >= 0 && h.id <= model_emitter_id(0) &&
+                  model_emitter_of_id(h.id) < static_cast<int>(models->size())) {
+                glm::dvec3 le;  // an emissive model's front
+                if (model_emitter_seen((*models)[static_cast<size_t>(model_emitter_of_id(h.id))], h.triangle, d, &le))
+                  sum[k] += le;
+                continue;
+              }
               if (h.id < 0 || h.id >= static_cast<int>(faces.size())) continue;  // other geometry, or nothing
               const WorldFace &hf = faces[static_cast<size_t>(h.id)];
               double ha, hb;

@@ -16,6 +16,7 @@
 
 class RayScene;
 struct WorldFace;
+struct ModelEmitter;
 
 // One face's luxel grid: w x h luxels (grid points, a = i / (w - 1), b = j / (h - 1)), 4 values
 // each (flat, b0, b1, b2) as rgb.
@@ -35,6 +36,9 @@ struct BounceSettings {
   // The faces' emission already reached the luxels as area lights (glue/bake/area_lights.h): the
   // first pass sends only the light the faces reflect (set by bake_world; docs/baking.md).
   bool emission_sampled = false;
+  // The emissive model primitives (glue/bake/area_lights.h; null: none): when their emission was not
+  // sampled, the first pass's gather rays that reach one's front take its emission (set by bake_world).
+  const std::vector<ModelEmitter> *model_emitters = nullptr;
 };
 
 struct BounceReport {

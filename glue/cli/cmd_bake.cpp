@@ -89,13 +89,13 @@ std::vector<std::string> bake_report(const BakeSummary &s) {
     snprintf(b, sizeof b, "sky: %ld rays through the openings (%.0f ms)", s.sky_pass.rays, s.sky_pass.ms);
     r.push_back(b);
   }
-  if (s.emitters == 0)
-    r.push_back("no emissive face: no area-light rays");
+  if (s.emitters == 0 && s.model_emitters == 0)
+    r.push_back("no emissive face or model: no area-light rays");
   else if (s.area_samples == 0)
-    r.push_back("emissive faces reach the luxels through the bounces alone (area lights off)");
+    r.push_back("emissive faces and models reach the luxels through the bounces alone (area lights off)");
   else if (s.resumed_after < 0) {
-    snprintf(b, sizeof b, "%d emissive faces as area lights: %ld shadow rays (%.0f ms)", s.emitters,
-             s.area_pass.rays, s.area_pass.ms);
+    snprintf(b, sizeof b, "%d emissive faces and %d emissive models as area lights: %ld shadow rays (%.0f ms)",
+             s.emitters, s.model_emitters, s.area_pass.rays, s.area_pass.ms);
     r.push_back(b);
   }
   if (black)

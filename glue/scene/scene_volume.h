@@ -25,7 +25,7 @@ SceneVolumeSetup scene_volume_setup(const Scene &s, const std::vector<WorldFace>
 // enabled; otherwise leaves *out empty (no samples). Bounds: the scene's "bounds" or the faces' box.
 bool bake_scene_volume(const Scene &s, const SceneSelection &sel, const std::vector<WorldFace> &faces,
                        const WorldBake &bake, int page_w, const RayScene &rays, IrradianceVolume *out,
-                       std::string *err);
+                       std::string *err, const std::vector<ModelEmitter> *model_emitters = nullptr);
 
 // The cube at a model's centre with the scene's lookup (trilinear or inverse-square).
 void scene_volume_cube(const Scene &s, const IrradianceVolume &v, const double center[3], float cube[6][3]);
