@@ -220,7 +220,7 @@ void mesh_light(const MeshLight &L, const glm::dvec3 &p, const glm::dvec3 ax[4],
     const glm::dvec3 w = spherical_tri_dir(pc.st, std::clamp((x - lo) / pc.st.area, 0.0, 1.0), r2);
     if (!(glm::dot(w, n) > 0)) continue;  // behind the face: it feeds none of the values
     const double dn = glm::dot(w, pc.tn), len = dn < 0 ? glm::dot(pc.a, pc.tn) / dn : 0;
-    if (!(len > 0)) continue;  // (grazing: the direction misses the plane in floating point)
+    if (!(len > 0 && std::isfinite(len))) continue;  // (grazing: the direction misses the plane in floating point)
     ++*traced;
     ++sent;
     // Stopped 1e-4 short of the emitter, which would block its own light.

@@ -43,7 +43,8 @@ struct BounceSettings {
 
 struct BounceReport {
   int passes = 0;  // bounces computed
-  long rays = 0;
+  long rays = 0;  // gather rays traced
+  long cached = 0;  // gather rays whose hits a later pass read back (traced once, in the first pass)
   std::vector<double> added;  // per pass: the largest flat value it added
   std::vector<long> pass_rays;  // per pass: its gather rays
   std::vector<double> pass_ms;  // per pass: its time (from the run that computed it)

@@ -22,6 +22,14 @@ struct RayScene::Impl {
 };
 
 namespace {
+// Embree takes rays and vertices whose coordinates lie within +-1.844e18 (its FLT_LARGE): beyond
+// that (or NaN) a query is refused here (nothing hit, nothing in the way) rather than given to it.
+const double kRayLimit = 1e18;
+bool ray_in_range(const glm::dvec3 &o, const glm::dvec3 &d) {
+  for (int k = 0; k < 3; ++k)
+    if (!(std::fabs(o[k]) <= kRayLimit && std::fabs(d[k]) <= kRayLimit)) return false;
+  return true;
+}
 void on_error(void *user, RTCError code, const char *str) {
   *static_cast<std::string *>(user) =
       "Embree error " + std::to_string(static_cast<int>(code)) + ": " + (str ? str : "(no message)");
@@ -62,8 +70,8 @@ bool RayScene::add_mesh(const std::vector<float> &position, const std::vector<ui
       return false;
     }
   for (float p : position)
-    if (!std::isfinite(p)) {
-      *err = what + ": a vertex position is not finite";
+    if (!std::isfinite(p) || std::fabs(p) > kRayLimit) {
+      *err = what + ": a vertex position is not finite or beyond 1e18 (the ray tracer's range)";
       return false;
     }
   ContentHash ch{hash_};
@@ -140,7 +148,7 @@ void RayScene::set_timing(bool on) {
 double RayScene::timed_ms() { return static_cast<double>(g_timed_ns.load()) / 1e6; }
 
 bool RayScene::occluded(const glm::dvec3 &origin, const glm::dvec3 &dir, double tnear, double tfar) const {
-  if (!impl_->committed) return false;
+  if (!impl_->committed || !ray_in_range(origin, dir)) return false;
   RTCRay r;
   set_ray(&r, origin, dir, tnear, tfar);
   RTCIntersectContext ctx;
@@ -154,7 +162,7 @@ bool RayScene::occluded(const glm::dvec3 &origin, const glm::dvec3 &dir, double 
 
 RayScene::Hit RayScene::intersect(const glm::dvec3 &origin, const glm::dvec3 &dir, double tnear, double tfar) const {
   Hit h;
-  if (!impl_->committed) return h;
+  if (!impl_->committed || !ray_in_range(origin, dir)) return h;
   RTCRayHit rh;
   set_ray(&rh.ray, origin, dir, tnear, tfar);
   rh.hit.geomID = RTC_INVALID_GEOMETRY_ID;

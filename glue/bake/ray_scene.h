@@ -3,6 +3,7 @@
 // queries are thread-safe; each answer depends only on the ray and the triangles, never on the
 // thread that asks or on how the BVH was built (a shadow ray's answer is hit / no hit; a nearest
 // hit is the smallest t, ties resolved by Embree's watertight test).
+// Coordinates beyond 1e18 (Embree's range) are refused: such a mesh is an error, such a ray hits nothing.
 #pragma once
 #include <cstdint>
 #include <string>
