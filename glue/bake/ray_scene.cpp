@@ -8,7 +8,8 @@
 #include <glm/geometric.hpp>
 
 #include <atomic>
-#include <chrono>
+#include <csignal>
+#include <sys/time.h>
 #include <cmath>
 #include <cstring>
 #include <limits>
@@ -116,13 +117,20 @@ bool RayScene::commit(std::string *err) {
 }
 
 namespace {
+// Embree's share by sampling (as a profiler does): while timing is on, an ITIMER_PROF timer sends
+// SIGPROF every 1 ms of the process's CPU time to the thread that spent it, and the handler counts
+// whether that thread was inside a query. CPU time, not wall time: a machine loaded by other work
+// changes neither count, and a query costs two stores of a thread-local flag.
+const int kSampleUs = 1000;
+thread_local volatile sig_atomic_t g_inside = 0;
+std::atomic<long> g_in{0}, g_out{0};
 std::atomic<bool> g_timing{false};
-std::atomic<int64_t> g_timed_ns{0};
-using Clock = std::chrono::steady_clock;
-// Adds the time since t0 to the sum (only while timing is on).
-void timed_since(bool on, Clock::time_point t0) {
-  if (on) g_timed_ns.fetch_add(std::chrono::duration_cast<std::chrono::nanoseconds>(Clock::now() - t0).count(),
-                               std::memory_order_relaxed);
+struct sigaction g_old_action;
+void on_prof(int) {
+  if (g_inside)
+    g_in.fetch_add(1, std::memory_order_relaxed);
+  else
+    g_out.fetch_add(1, std::memory_order_relaxed);
 }
 void set_ray(RTCRay *r, const glm::dvec3 &o, const glm::dvec3 &d, double tnear, double tfar) {
   r->org_x = static_cast<float>(o.x);
@@ -141,11 +149,31 @@ void set_ray(RTCRay *r, const glm::dvec3 &o, const glm::dvec3 &d, double tnear, 
 }  // namespace
 
 void RayScene::set_timing(bool on) {
-  g_timed_ns.store(0);
-  g_timing.store(on);
+  if (on == g_timing.load()) {
+    if (on) g_in.store(0), g_out.store(0);
+    return;
+  }
+  itimerval t{};
+  if (on) {
+    g_in.store(0);
+    g_out.store(0);
+    struct sigaction sa {};
+    sa.sa_handler = on_prof;
+    sa.sa_flags = SA_RESTART;  // a system call the signal lands in resumes
+    sigemptyset(&sa.sa_mask);
+    sigaction(SIGPROF, &sa, &g_old_action);
+    t.it_interval.tv_usec = t.it_value.tv_usec = kSampleUs;
+    g_timing.store(true);
+    setitimer(ITIMER_PROF, &t, nullptr);
+  } else {
+    setitimer(ITIMER_PROF, &t, nullptr);  // stopped
+    g_timing.store(false);
+    sigaction(SIGPROF, &g_old_action, nullptr);
+  }
 }
 
-double RayScene::timed_ms() { return static_cast<double>(g_timed_ns.load()) / 1e6; }
+double RayScene::timed_ms() { return static_cast<double>(g_in.load()) * kSampleUs / 1e3; }
+double RayScene::sampled_ms() { return static_cast<double>(g_in.load() + g_out.load()) * kSampleUs / 1e3; }
 
 bool RayScene::occluded(const glm::dvec3 &origin, const glm::dvec3 &dir, double tnear, double tfar) const {
   if (!impl_->committed || !ray_in_range(origin, dir)) return false;
@@ -153,10 +181,9 @@ bool RayScene::occluded(const glm::dvec3 &origin, const glm::dvec3 &dir, double 
   set_ray(&r, origin, dir, tnear, tfar);
   RTCIntersectContext ctx;
   rtcInitIntersectContext(&ctx);
-  const bool timing = g_timing.load(std::memory_order_relaxed);
-  const Clock::time_point t0 = timing ? Clock::now() : Clock::time_point();
+  g_inside = 1;
   rtcOccluded1(impl_->scene, &ctx, &r);
-  timed_since(timing, t0);
+  g_inside = 0;
   return r.tfar == -std::numeric_limits<float>::infinity();
 }
 
@@ -169,10 +196,9 @@ RayScene::Hit RayScene::intersect(const glm::dvec3 &origin, const glm::dvec3 &di
   rh.hit.primID = RTC_INVALID_GEOMETRY_ID;
   RTCIntersectContext ctx;
   rtcInitIntersectContext(&ctx);
-  const bool timing = g_timing.load(std::memory_order_relaxed);
-  const Clock::time_point t0 = timing ? Clock::now() : Clock::time_point();
+  g_inside = 1;
   rtcIntersect1(impl_->scene, &ctx, &rh);
-  timed_since(timing, t0);
+  g_inside = 0;
   if (rh.hit.geomID == RTC_INVALID_GEOMETRY_ID) return h;
   h.t = rh.ray.tfar;
   h.id = rh.hit.geomID < impl_->ids.size() ? impl_->ids[rh.hit.geomID] : -1;

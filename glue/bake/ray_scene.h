@@ -36,11 +36,14 @@ class RayScene {
   Hit intersect(const glm::dvec3 &origin, const glm::dvec3 &dir, double tnear, double tfar) const;
 
   long triangles() const { return triangles_; }
-  // The time spent inside Embree's queries (rtcOccluded1 / rtcIntersect1), summed over every thread
-  // and ray scene, for the bench's "Embree's share" (docs/accuracy_cost.md): off by default; on,
-  // each query reads the clock twice. set_timing(true) also starts the sum from 0.
+  // The CPU time spent inside Embree's queries (rtcOccluded1 / rtcIntersect1), over every thread and
+  // ray scene, for the bench's "Embree's share" (docs/accuracy_cost.md): sampled every 1 ms of the
+  // process's CPU time (SIGPROF, ITIMER_PROF), so other work on the machine does not count. Off by
+  // default; set_timing(true) starts the counts from 0 (the process's SIGPROF handler is ours until
+  // set_timing(false)). sampled_ms: all the CPU time sampled meanwhile.
   static void set_timing(bool on);
   static double timed_ms();
+  static double sampled_ms();
   // A hash of every mesh added (ids, positions, indices, in order; glue/bake/content_hash.h): what
   // the rays see, for the bake directory's staleness check (glue/bake/bake_dir.h).
   uint64_t content_hash() const { return hash_; }

@@ -112,6 +112,13 @@ std::vector<std::string> bake_report(const BakeSummary &s) {
              "rays per value",
              s.report.passes, s.bounce.max_bounces, s.bounce.threshold, s.bounce.gather_rays);
     r.push_back(b);
+    if (s.report.cached > 0) {
+      snprintf(b, sizeof b,
+               "bounces: %ld gather rays traced in the first pass, their hits read back %ld times by the passes "
+               "after it (the same rays every pass)",
+               s.report.rays, s.report.cached);
+      r.push_back(b);
+    }
   }
   // Where the probes' cube maps come from (not stored here: made at load from this page).
   snprintf(b, sizeof b,
