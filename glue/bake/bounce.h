@@ -1,9 +1,12 @@
 // tiershade bake: diffuse interreflection (radiosity) on the baked luxel grids, by gathering: each
 // pass shoots the radiance the previous pass added (the first: the faces' emission plus their
 // reflection of the direct light) back into every luxel through cosine-weighted gather rays, until
-// the light a pass adds falls below a share of all the light so far or the pass count is reached (vrad's bounces, fact sheet
-// section 1). Per basis vector as vrad: each bumped value takes light only from directions on the
-// face's front with a positive dot product with its basis vector.
+// the light a pass adds falls below a share of all the light so far or the pass count is reached
+// (vrad's bounces, fact sheet section 1). The same rays every pass, as vrad iterates its bounces
+// over transfers computed once: the first pass keeps each ray's hit, the passes after it read them
+// back (docs/baking.md, "Bounces"). Per basis vector as vrad: each bumped value takes light only from
+// directions on the face's front with a positive dot product with its basis vector (a ratio
+// estimator over the lobe's front share).
 #pragma once
 #include <array>
 #include <cstdint>
