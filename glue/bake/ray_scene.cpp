@@ -9,6 +9,7 @@
 
 #include <atomic>
 #include <csignal>
+#include <ctime>
 #include <sys/time.h>
 #include <cmath>
 #include <cstring>
@@ -126,6 +127,12 @@ thread_local volatile sig_atomic_t g_inside = 0;
 std::atomic<long> g_in{0}, g_out{0};
 std::atomic<bool> g_timing{false};
 struct sigaction g_old_action;
+double g_cpu0_ms = 0;  // the process's CPU time when timing started
+double process_cpu_now_ms() {
+  timespec t{};
+  clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &t);
+  return t.tv_sec * 1e3 + t.tv_nsec / 1e6;
+}
 void on_prof(int) {
   if (g_inside)
     g_in.fetch_add(1, std::memory_order_relaxed);
@@ -150,13 +157,14 @@ void set_ray(RTCRay *r, const glm::dvec3 &o, const glm::dvec3 &d, double tnear, 
 
 void RayScene::set_timing(bool on) {
   if (on == g_timing.load()) {
-    if (on) g_in.store(0), g_out.store(0);
+    if (on) g_in.store(0), g_out.store(0), g_cpu0_ms = process_cpu_now_ms();
     return;
   }
   itimerval t{};
   if (on) {
     g_in.store(0);
     g_out.store(0);
+    g_cpu0_ms = process_cpu_now_ms();
     struct sigaction sa {};
     sa.sa_handler = on_prof;
     sa.sa_flags = SA_RESTART;  // a system call the signal lands in resumes
@@ -172,8 +180,13 @@ void RayScene::set_timing(bool on) {
   }
 }
 
-double RayScene::timed_ms() { return static_cast<double>(g_in.load()) * kSampleUs / 1e3; }
-double RayScene::sampled_ms() { return static_cast<double>(g_in.load() + g_out.load()) * kSampleUs / 1e3; }
+// The samples' share inside times the CPU time since timing started: the timer fires on the kernel's
+// ticks (250 or 1000 a second), so the count of samples is not the ms, but their split is the share.
+double RayScene::timed_ms() {
+  const long in = g_in.load(), all = in + g_out.load();
+  return all > 0 ? sampled_ms() * static_cast<double>(in) / all : 0.0;
+}
+double RayScene::sampled_ms() { return process_cpu_now_ms() - g_cpu0_ms; }
 
 bool RayScene::occluded(const glm::dvec3 &origin, const glm::dvec3 &dir, double tnear, double tfar) const {
   if (!impl_->committed || !ray_in_range(origin, dir)) return false;

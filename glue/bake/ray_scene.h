@@ -37,10 +37,11 @@ class RayScene {
 
   long triangles() const { return triangles_; }
   // The CPU time spent inside Embree's queries (rtcOccluded1 / rtcIntersect1), over every thread and
-  // ray scene, for the bench's "Embree's share" (docs/accuracy_cost.md): sampled every 1 ms of the
-  // process's CPU time (SIGPROF, ITIMER_PROF), so other work on the machine does not count. Off by
-  // default; set_timing(true) starts the counts from 0 (the process's SIGPROF handler is ours until
-  // set_timing(false)). sampled_ms: all the CPU time sampled meanwhile.
+  // ray scene, for the bench's "Embree's share" (docs/accuracy_cost.md): the share of SIGPROF samples
+  // (ITIMER_PROF, every 1 ms of the process's CPU time, at the kernel's tick at most) that land inside
+  // a query, times the process's CPU time since timing started (sampled_ms), so other work on the
+  // machine does not count. Off by default; set_timing(true) starts the counts from 0 (the process's
+  // SIGPROF handler is ours until set_timing(false)).
   static void set_timing(bool on);
   static double timed_ms();
   static double sampled_ms();
