@@ -17,7 +17,8 @@
 //     reflector (no emission twice); with area lights off, the first bounce's gather rays find the
 //     model and its light agrees with the sampled one (mean over the 9 x 9 central luxels, 1024 rays
 //     each: about 1 % noise, 4 % allowed);
-//   - the irradiance volume's ray sees the model's front (Le) and passes its back.
+//   - the irradiance volume's ray sees the model's front (Le) and passes its back;
+//   - the scene path: world_lighting's room with an emissive model quad added lights the ceiling above.
 #include <cmath>
 #include <cstdio>
 #include <cstring>
@@ -28,6 +29,9 @@
 #include "bake/irradiance_volume.h"
 #include "bake/ray_scene.h"
 #include "bake/world_bake.h"
+#include "scene/prepare.h"
+#include "scene/scene.h"
+#include "scene/selection.h"
 #include "unit_check.h"
 
 namespace {
@@ -258,6 +262,57 @@ void volume_rays() {
         std::to_string(up.x) + ", without the emitters " + std::to_string(none.x) + ", from above " + std::to_string(down.x));
 }
 
+// The scene path (glue/scene/bake_inputs.cpp, prepare.cpp): world_lighting's room with a small model
+// quad (the floor's, 0.4 x 0.3, facing up, 0.3 above the floor at the room's centre) of emission 50:
+// it is found as a model emitter (the bake samples two meshes: it and the ceiling lamp) and lights the
+// ceiling above it by about Le A / (pi d^2) (a small square 2.7 below: 0.26; 25 % allowed for the
+// square's size and the luxel grid); the bake hash's materials change with its emission.
+void scene_model() {
+  Scene room;
+  std::string err;
+  if (!load_scene("scenes/world_lighting.gltf", &room, &err)) return check(false, "load world_lighting", err);
+  SceneMaterial mm;
+  mm.name = "emissive_model";
+  mm.where = "materials[test]";
+  mm.shader = SceneShader::Model;
+  room.materials.push_back(mm);
+  ScenePrimitive model = room.primitives[0];  // the floor quad, x [-4, 4], z [-3, 3], facing up
+  model.material = static_cast<int>(room.materials.size()) - 1;
+  model.instance = -1;
+  model.where = "test model";
+  for (size_t i = 0; i < model.position.size(); i += 3) {
+    model.position[i] *= 0.05f;
+    model.position[i + 1] = 0.3f;
+    model.position[i + 2] = model.position[i + 2] * 0.05f + 0.5f;
+  }
+  room.primitives.push_back(model);
+  room.lights.clear();  // (the lamps' light would drown the gain)
+  auto bake = [&](float le, PreparedScene *ps) {
+    room.materials.back().emission[0] = room.materials.back().emission[1] = room.materials.back().emission[2] = le;
+    SceneSelection sel;
+    return select_scene_variants(room, Tier::SM3, "", &sel, &err) &&
+        prepare_scene(room, sel, 16, 16, Api::GL33, 1.f, ps, &err);
+  };
+  PreparedScene lit, dark;
+  if (!bake(50.f, &lit) || !bake(0.f, &dark)) return check(false, "prepare the room with an emissive model", err);
+  // The ceiling (face 1): its flat block's largest gain.
+  const lm_face_place &pl = lit.lightmap_places.at(1);
+  double gain = 0;
+  for (int j = 0; j < pl.block_h - 2; ++j)
+    for (int i = 0; i < pl.block_w - 2; ++i) {
+      int tx, ty;
+      lm_page_texel(&pl, 0, i, j, &tx, &ty);
+      const size_t t = (static_cast<size_t>(ty) * lit.lightmap_w + tx) * 4;
+      gain = std::fmax(gain, lit.lightmap_page[t] - dark.lightmap_page[t]);
+    }
+  const double want = 50 * 0.4 * 0.3 / (M_PI * 2.7 * 2.7);
+  check(lit.bake_summary.area_pass.meshes == 2 && lit.bake_summary.model_emitters == 1 &&
+            std::fabs(gain / want - 1) < 0.25 && lit.bake_summary.hash.materials != dark.bake_summary.hash.materials,
+        "scene: an emissive model primitive lights the ceiling above it by Le A / (pi d^2) (25 %)",
+        "gain " + std::to_string(gain) + " against " + std::to_string(want) + ", " +
+            std::to_string(lit.bake_summary.area_pass.meshes) + " meshes");
+}
+
 }  // namespace
 
 int main() {
@@ -268,5 +323,6 @@ int main() {
   chart_disc();
   bounces();
   volume_rays();
+  scene_model();
   return finish();
 }
