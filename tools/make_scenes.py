@@ -521,6 +521,25 @@ def model_lighting():
              "hdr": {"path": "integer", "tone_map_scale": 1.0}})
 
 
+def ceiling_disc(c, rad, seg):
+    """A flat disc facing down (a ceiling fixture) centred at c: a fan of seg triangles, TEXCOORD_0
+    and TEXCOORD_1 its plan projection."""
+    pos, nrm, uv, uv1, tan, bit, idx = [list(c)], [[0.0, -1.0, 0.0]], [[0.5, 0.5]], [[0.5, 0.5]], [], [], []
+    for i in range(seg):
+        ph = 2 * math.pi * i / seg
+        x, z = rad * math.cos(ph), rad * math.sin(ph)
+        pos.append([c[0] + x, c[1], c[2] + z])
+        nrm.append([0.0, -1.0, 0.0])
+        uv.append([0.5 + 0.5 * x / rad, 0.5 + 0.5 * z / rad])
+        uv1.append([0.5 + 0.5 * x / rad, 0.5 + 0.5 * z / rad])
+    for i in range(seg + 1):
+        tan.append([1.0, 0.0, 0.0])
+        bit.append([0.0, 0.0, -1.0])
+    for i in range(seg):
+        idx += [0, 1 + i, 1 + (i + 1) % seg]
+    return fix_winding_and_tangents(dict(pos=pos, nrm=nrm, uv=uv, uv1=uv1, tan=tan, bit=bit, idx=idx))
+
+
 def world_lighting():
     write_sky_hdr(os.path.join(SCENES, "textures", "day_sky.hdr"), 64, 32, day_sky)
     g = Gltf("world_lighting")
@@ -550,6 +569,13 @@ def world_lighting():
     g.mesh("crate", [(q, crate) for q in box_quads((-2.6, 0.0, -1.8), (1.0, 1.0, 1.0))])
     g.mesh("pillar", [(q, glossy) for q in box_quads((2.4, 0.0, -1.6), (0.8, 1.8, 0.8), 0.5)])
     g.mesh("plinth", [(q, const) for q in box_quads((-0.5, 0.0, -0.5), (0.6, 0.6, 0.6))])
+    # a round ceiling light fixture: an emissive LightmappedGeneric disc with its own lightmap UVs
+    # (TEXCOORD_1), sampled by the bake as an area light of spherical triangles (glue/bake/area_lights.h)
+    lamp = g.material("ceiling_lamp", {"shader": W})
+    g.doc["materials"][lamp]["emissiveFactor"] = [1.0, 0.92, 0.78]
+    g.doc["materials"][lamp]["extensions"] = {"KHR_materials_emissive_strength": {"emissiveStrength": 100.0}}
+    g.doc["extensionsUsed"].append("KHR_materials_emissive_strength")
+    g.mesh("ceiling_lamp", [(ceiling_disc((-0.5, Y - 0.02, -0.5), 0.35, 24), lamp)])
     g.light("lamp_left", "point", (1.0, 0.85, 0.65), 6.0, (-2.5, 2.6, -1.0))
     g.light("lamp_right", "point", (0.7, 0.8, 1.0), 5.0, (2.5, 2.6, 1.0))
     g.light("lamp_low", "point", (1.0, 0.95, 0.9), 3.0, (0.0, 1.2, 2.0))

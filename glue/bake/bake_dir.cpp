@@ -33,11 +33,12 @@ const long kManifestMaxBytes = 64l << 20;  // bounded: a face is ~300 bytes of m
 // below (and its size here updated), else a stale bake would pass for a current one.
 static_assert(sizeof(WorldFace) == 200, "WorldFace changed: hash the new field in bake_input_hash");
 static_assert(sizeof(rnm_light) == 160, "rnm_light changed: hash the new field in bake_input_hash");
-// (BounceSettings::emission_sampled is set by bake_world from area_samples, which is hashed.)
-static_assert(sizeof(BounceSettings) == 40, "BounceSettings changed: hash the new field in bake_input_hash");
+// (BounceSettings::emission_sampled and model_emitters are set by bake_world from area_samples and
+// WorldBakeInput::model_emitters, which are hashed.)
+static_assert(sizeof(BounceSettings) == 48, "BounceSettings changed: hash the new field in bake_input_hash");
 // (WorldBakeInput::trace_cube is not hashed: which probes' cubes are ray traced changes no page texel,
 // and the cubes are not stored here; they are made at load, glue/scene/probe_render.h.)
-static_assert(sizeof(WorldBakeInput) == 264, "WorldBakeInput changed: hash the new field in bake_input_hash");
+static_assert(sizeof(WorldBakeInput) == 296, "WorldBakeInput changed: hash the new field in bake_input_hash");
 
 void vec(ContentHash &h, const ts_vec3d &v) {
   h.value(v.x);
@@ -88,6 +89,10 @@ BakeHash bake_input_hash(const WorldBakeInput &in) {
     vec(m, f.reflectivity);
     vec(m, f.emission);
     m.value(f.bumped);
+  }
+  for (const ModelEmitter &e : in.model_emitters) {  // emissive models (glue/bake/area_lights.h)
+    g.values(e.tri);
+    vec(m, e.emission);
   }
   for (const rnm_light &r : in.lights) {
     l.value(r.directional);
@@ -207,6 +212,8 @@ bool bake_world_dir(const BakeDirUse &use, WorldBakeInput in, const std::vector<
   sum->sky_samples = in.sky.samples;
   for (const WorldFace &f : in.faces)
     sum->emitters += f.emission.x > 0 || f.emission.y > 0 || f.emission.z > 0;
+  for (const ModelEmitter &e : in.model_emitters)
+    sum->model_emitters += e.emission.x > 0 || e.emission.y > 0 || e.emission.z > 0;
   sum->sky_pass = out->sky;
   sum->area_pass = out->area;
   for (size_t i = 0; i < in.faces.size(); ++i) {

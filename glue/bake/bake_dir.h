@@ -49,6 +49,7 @@ struct BakeSummary {
   double direct_ms = 0;
   bool sky = false;  // the scene has a sky (glue/bake/sky.h)
   int emitters = 0, area_samples = 0;  // faces with emission, sampled as area lights
+  int model_emitters = 0;  // model primitives with emission (area lights too)
   int spread_samples = 0, sky_samples = 0;
   // The quality the bake was made at (glue/bake/bake_quality.h; set by its caller: the preset's name
   // goes into the manifest).

@@ -1,9 +1,12 @@
 // tiershade bake: diffuse interreflection (radiosity) on the baked luxel grids, by gathering: each
 // pass shoots the radiance the previous pass added (the first: the faces' emission plus their
 // reflection of the direct light) back into every luxel through cosine-weighted gather rays, until
-// the light a pass adds falls below a share of all the light so far or the pass count is reached (vrad's bounces, fact sheet
-// section 1). Per basis vector as vrad: each bumped value takes light only from directions on the
-// face's front with a positive dot product with its basis vector.
+// the light a pass adds falls below a share of all the light so far or the pass count is reached
+// (vrad's bounces, fact sheet section 1). The same rays every pass, as vrad iterates its bounces
+// over transfers computed once: the first pass keeps each ray's hit, the passes after it read them
+// back (docs/baking.md, "Bounces"). Per basis vector as vrad: each bumped value takes light only from
+// directions on the face's front with a positive dot product with its basis vector (a ratio
+// estimator over the lobe's front share).
 #pragma once
 #include <array>
 #include <cstdint>
@@ -16,6 +19,7 @@
 
 class RayScene;
 struct WorldFace;
+struct ModelEmitter;
 
 // One face's luxel grid: w x h luxels (grid points, a = i / (w - 1), b = j / (h - 1)), 4 values
 // each (flat, b0, b1, b2) as rgb.
@@ -35,11 +39,15 @@ struct BounceSettings {
   // The faces' emission already reached the luxels as area lights (glue/bake/area_lights.h): the
   // first pass sends only the light the faces reflect (set by bake_world; docs/baking.md).
   bool emission_sampled = false;
+  // The emissive model primitives (glue/bake/area_lights.h; null: none): when their emission was not
+  // sampled, the first pass's gather rays that reach one's front take its emission (set by bake_world).
+  const std::vector<ModelEmitter> *model_emitters = nullptr;
 };
 
 struct BounceReport {
   int passes = 0;  // bounces computed
-  long rays = 0;
+  long rays = 0;  // gather rays traced
+  long cached = 0;  // gather rays whose hits a later pass read back (traced once, in the first pass)
   std::vector<double> added;  // per pass: the largest flat value it added
   std::vector<long> pass_rays;  // per pass: its gather rays
   std::vector<double> pass_ms;  // per pass: its time (from the run that computed it)

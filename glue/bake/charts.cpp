@@ -131,6 +131,16 @@ bool chart_build(const std::vector<float> &position, const std::vector<float> &n
       return false;
     }
   }
+  // Finite geometry only (a NaN or Inf corner would send rays no ray tracer takes).
+  const std::vector<float> *arrays[] = {&position, &normal, &tangent};
+  const char *names[] = {"POSITION", "NORMAL", "TANGENT"};
+  for (int a = 0; a < 3; ++a)
+    for (size_t i = 0; i < arrays[a]->size(); ++i)
+      if (!std::isfinite((*arrays[a])[i]) || std::fabs((*arrays[a])[i]) > 1e18f) {
+        *err = where + ": " + names[a] + " of vertex " + std::to_string(i / (a == 2 ? 4 : 3)) +
+            " is not finite or beyond 1e18 (a lightmap chart needs finite geometry)";
+        return false;
+      }
   // Per-vertex tangents: the mesh's, else the fallback axis (what the renderer is given too).
   c.vertex_tangent.resize(nv * 4);
   for (size_t v = 0; v < nv; ++v) {

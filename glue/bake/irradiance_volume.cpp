@@ -8,6 +8,7 @@
 #include <map>
 #include <tuple>
 
+#include "bake/area_lights.h"
 #include "bake/glm_ts.h"
 #include "bake/ray_scene.h"
 #include "bake/world_faces.h"
@@ -107,13 +108,23 @@ glm::dvec3 volume_ray_radiance(const glm::dvec3 &p, const glm::dvec3 &d, const s
   if (back) *back = false;
   glm::dvec3 o = p;
   RayScene::Hit hit = rays.intersect(o, d, 1e-5, INFINITY);
+  // An emissive model's front: its emission (glue/bake/area_lights.h).
+  auto emitter = [&](const RayScene::Hit &h, glm::dvec3 *le) {
+    const int k = model_emitter_of_id(h.id);
+    return set.model_emitters && h.triangle >= 0 && h.id <= model_emitter_id(0) &&
+        k < static_cast<int>(set.model_emitters->size()) &&
+        model_emitter_seen((*set.model_emitters)[static_cast<size_t>(k)], h.triangle, d, le);
+  };
+  glm::dvec3 le;
   // (At most 1024 model surfaces passed: beyond that the ray counts as stopped by geometry.)
   for (int k = 0; k < 1024 && !set.models_occlude && (hit.id < -1 || hit.id >= static_cast<int>(faces.size())) &&
        hit.triangle >= 0;
        ++k) {
+    if (emitter(hit, &le)) return le;
     o += d * hit.t;  // through the model to what lies behind it
     hit = rays.intersect(o, d, 1e-5, INFINITY);
   }
+  if (emitter(hit, &le)) return le;
   if (hit.id < 0 || hit.id >= static_cast<int>(faces.size())) {
     if (hit.id < 0 && hit.triangle < 0) return set.sky_radiance ? set.sky_radiance(d) : glm::dvec3(0.0);  // a miss
     if (back) *back = true;  // other geometry (a model): counted with the back faces, no radiance

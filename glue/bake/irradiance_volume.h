@@ -6,7 +6,8 @@
 // luxel_exitant), a face's back counts as a back-face hit (radiance 0), other geometry (models) is
 // passed through to the world behind (as vrad, which never sees dynamic models; with
 // VolumeSettings::models_occlude it is a black back-face hit instead), a miss returns the sky hook's
-// radiance (0 without one). Samples inside the world's solids (most rays on back faces) are invalid.
+// radiance (0 without one); an emissive model's front returns its emission (VolumeSettings::model_emitters).
+// Samples inside the world's solids (most rays on back faces) are invalid.
 // A model's cube: trilinear over the valid samples around it, or Source's inverse-square weights
 // 1/(d^2 + 1) (d in Source units, inches; fact sheet section 3, Mod_LeafAmbientColorAtPos).
 // docs/irradiance_volume.md.
@@ -25,6 +26,7 @@
 
 class RayScene;
 struct WorldFace;
+struct ModelEmitter;
 
 // Trilinear (the default), Source's inverse-square over the 8 around the point, or the nearest valid
 // sample of the whole volume (what a hand-placed sample gives; for the accuracy table).
@@ -50,6 +52,9 @@ struct VolumeSettings {
   // volume's box. Otherwise only the samples a lookup at a point inside a box can read are baked
   // (volume_needed_samples); the others stay invalid and cost no rays.
   std::vector<std::array<double, 6>> regions;
+  // The emissive model primitives (glue/bake/area_lights.h; null: none): a ray that reaches one's
+  // front sees its emission, as it sees an emitting face's (they are the world's light fixtures).
+  const std::vector<ModelEmitter> *model_emitters = nullptr;
 };
 
 // What a volume's samples depend on, in parts (glue/bake/volume_file.h: volume_inputs), so that a

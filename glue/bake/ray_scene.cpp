@@ -8,7 +8,9 @@
 #include <glm/geometric.hpp>
 
 #include <atomic>
-#include <chrono>
+#include <csignal>
+#include <ctime>
+#include <sys/time.h>
 #include <cmath>
 #include <cstring>
 #include <limits>
@@ -22,6 +24,14 @@ struct RayScene::Impl {
 };
 
 namespace {
+// Embree takes rays and vertices whose coordinates lie within +-1.844e18 (its FLT_LARGE): beyond
+// that (or NaN) a query is refused here (nothing hit, nothing in the way) rather than given to it.
+const double kRayLimit = 1e18;
+bool ray_in_range(const glm::dvec3 &o, const glm::dvec3 &d) {
+  for (int k = 0; k < 3; ++k)
+    if (!(std::fabs(o[k]) <= kRayLimit && std::fabs(d[k]) <= kRayLimit)) return false;
+  return true;
+}
 void on_error(void *user, RTCError code, const char *str) {
   *static_cast<std::string *>(user) =
       "Embree error " + std::to_string(static_cast<int>(code)) + ": " + (str ? str : "(no message)");
@@ -62,8 +72,8 @@ bool RayScene::add_mesh(const std::vector<float> &position, const std::vector<ui
       return false;
     }
   for (float p : position)
-    if (!std::isfinite(p)) {
-      *err = what + ": a vertex position is not finite";
+    if (!std::isfinite(p) || std::fabs(p) > kRayLimit) {
+      *err = what + ": a vertex position is not finite or beyond 1e18 (the ray tracer's range)";
       return false;
     }
   ContentHash ch{hash_};
@@ -108,13 +118,26 @@ bool RayScene::commit(std::string *err) {
 }
 
 namespace {
+// Embree's share by sampling (as a profiler does): while timing is on, an ITIMER_PROF timer sends
+// SIGPROF every 1 ms of the process's CPU time to the thread that spent it, and the handler counts
+// whether that thread was inside a query. CPU time, not wall time: a machine loaded by other work
+// changes neither count, and a query costs two stores of a thread-local flag.
+const int kSampleUs = 1000;
+thread_local volatile sig_atomic_t g_inside = 0;
+std::atomic<long> g_in{0}, g_out{0};
 std::atomic<bool> g_timing{false};
-std::atomic<int64_t> g_timed_ns{0};
-using Clock = std::chrono::steady_clock;
-// Adds the time since t0 to the sum (only while timing is on).
-void timed_since(bool on, Clock::time_point t0) {
-  if (on) g_timed_ns.fetch_add(std::chrono::duration_cast<std::chrono::nanoseconds>(Clock::now() - t0).count(),
-                               std::memory_order_relaxed);
+struct sigaction g_old_action;
+double g_cpu0_ms = 0;  // the process's CPU time when timing started
+double process_cpu_now_ms() {
+  timespec t{};
+  clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &t);
+  return t.tv_sec * 1e3 + t.tv_nsec / 1e6;
+}
+void on_prof(int) {
+  if (g_inside)
+    g_in.fetch_add(1, std::memory_order_relaxed);
+  else
+    g_out.fetch_add(1, std::memory_order_relaxed);
 }
 void set_ray(RTCRay *r, const glm::dvec3 &o, const glm::dvec3 &d, double tnear, double tfar) {
   r->org_x = static_cast<float>(o.x);
@@ -133,38 +156,62 @@ void set_ray(RTCRay *r, const glm::dvec3 &o, const glm::dvec3 &d, double tnear, 
 }  // namespace
 
 void RayScene::set_timing(bool on) {
-  g_timed_ns.store(0);
-  g_timing.store(on);
+  if (on == g_timing.load()) {
+    if (on) g_in.store(0), g_out.store(0), g_cpu0_ms = process_cpu_now_ms();
+    return;
+  }
+  itimerval t{};
+  if (on) {
+    g_in.store(0);
+    g_out.store(0);
+    g_cpu0_ms = process_cpu_now_ms();
+    struct sigaction sa {};
+    sa.sa_handler = on_prof;
+    sa.sa_flags = SA_RESTART;  // a system call the signal lands in resumes
+    sigemptyset(&sa.sa_mask);
+    sigaction(SIGPROF, &sa, &g_old_action);
+    t.it_interval.tv_usec = t.it_value.tv_usec = kSampleUs;
+    g_timing.store(true);
+    setitimer(ITIMER_PROF, &t, nullptr);
+  } else {
+    setitimer(ITIMER_PROF, &t, nullptr);  // stopped
+    g_timing.store(false);
+    sigaction(SIGPROF, &g_old_action, nullptr);
+  }
 }
 
-double RayScene::timed_ms() { return static_cast<double>(g_timed_ns.load()) / 1e6; }
+// The samples' share inside times the CPU time since timing started: the timer fires on the kernel's
+// ticks (250 or 1000 a second), so the count of samples is not the ms, but their split is the share.
+double RayScene::timed_ms() {
+  const long in = g_in.load(), all = in + g_out.load();
+  return all > 0 ? sampled_ms() * static_cast<double>(in) / all : 0.0;
+}
+double RayScene::sampled_ms() { return process_cpu_now_ms() - g_cpu0_ms; }
 
 bool RayScene::occluded(const glm::dvec3 &origin, const glm::dvec3 &dir, double tnear, double tfar) const {
-  if (!impl_->committed) return false;
+  if (!impl_->committed || !ray_in_range(origin, dir)) return false;
   RTCRay r;
   set_ray(&r, origin, dir, tnear, tfar);
   RTCIntersectContext ctx;
   rtcInitIntersectContext(&ctx);
-  const bool timing = g_timing.load(std::memory_order_relaxed);
-  const Clock::time_point t0 = timing ? Clock::now() : Clock::time_point();
+  g_inside = 1;
   rtcOccluded1(impl_->scene, &ctx, &r);
-  timed_since(timing, t0);
+  g_inside = 0;
   return r.tfar == -std::numeric_limits<float>::infinity();
 }
 
 RayScene::Hit RayScene::intersect(const glm::dvec3 &origin, const glm::dvec3 &dir, double tnear, double tfar) const {
   Hit h;
-  if (!impl_->committed) return h;
+  if (!impl_->committed || !ray_in_range(origin, dir)) return h;
   RTCRayHit rh;
   set_ray(&rh.ray, origin, dir, tnear, tfar);
   rh.hit.geomID = RTC_INVALID_GEOMETRY_ID;
   rh.hit.primID = RTC_INVALID_GEOMETRY_ID;
   RTCIntersectContext ctx;
   rtcInitIntersectContext(&ctx);
-  const bool timing = g_timing.load(std::memory_order_relaxed);
-  const Clock::time_point t0 = timing ? Clock::now() : Clock::time_point();
+  g_inside = 1;
   rtcIntersect1(impl_->scene, &ctx, &rh);
-  timed_since(timing, t0);
+  g_inside = 0;
   if (rh.hit.geomID == RTC_INVALID_GEOMETRY_ID) return h;
   h.t = rh.ray.tfar;
   h.id = rh.hit.geomID < impl_->ids.size() ? impl_->ids[rh.hit.geomID] : -1;

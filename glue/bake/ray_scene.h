@@ -3,6 +3,7 @@
 // queries are thread-safe; each answer depends only on the ray and the triangles, never on the
 // thread that asks or on how the BVH was built (a shadow ray's answer is hit / no hit; a nearest
 // hit is the smallest t, ties resolved by Embree's watertight test).
+// Coordinates beyond 1e18 (Embree's range) are refused: such a mesh is an error, such a ray hits nothing.
 #pragma once
 #include <cstdint>
 #include <string>
@@ -35,11 +36,15 @@ class RayScene {
   Hit intersect(const glm::dvec3 &origin, const glm::dvec3 &dir, double tnear, double tfar) const;
 
   long triangles() const { return triangles_; }
-  // The time spent inside Embree's queries (rtcOccluded1 / rtcIntersect1), summed over every thread
-  // and ray scene, for the bench's "Embree's share" (docs/accuracy_cost.md): off by default; on,
-  // each query reads the clock twice. set_timing(true) also starts the sum from 0.
+  // The CPU time spent inside Embree's queries (rtcOccluded1 / rtcIntersect1), over every thread and
+  // ray scene, for the bench's "Embree's share" (docs/accuracy_cost.md): the share of SIGPROF samples
+  // (ITIMER_PROF, every 1 ms of the process's CPU time, at the kernel's tick at most) that land inside
+  // a query, times the process's CPU time since timing started (sampled_ms), so other work on the
+  // machine does not count. Off by default; set_timing(true) starts the counts from 0 (the process's
+  // SIGPROF handler is ours until set_timing(false)).
   static void set_timing(bool on);
   static double timed_ms();
+  static double sampled_ms();
   // A hash of every mesh added (ids, positions, indices, in order; glue/bake/content_hash.h): what
   // the rays see, for the bake directory's staleness check (glue/bake/bake_dir.h).
   uint64_t content_hash() const { return hash_; }

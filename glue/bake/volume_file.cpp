@@ -2,6 +2,8 @@
 // hash, reading it back (volume_file.h).
 #include "bake/volume_file.h"
 
+#include "bake/area_lights.h"
+
 #include <cinttypes>
 #include <cmath>
 #include <cstring>
@@ -91,6 +93,11 @@ VolumeInputs volume_inputs(const double lo[3], const double hi[3], const VolumeS
     vec(mat, f.reflectivity);
     vec(mat, f.emission);
   }
+  if (set.model_emitters)  // the emissive models' light (their triangles are the rays' geometry)
+    for (const ModelEmitter &e : *set.model_emitters) {
+      vec(mat, e.emission);
+      mat.values(e.tri);
+    }
   for (const LuxelGrid &g : grids) {
     lm.value(g.w);
     lm.value(g.h);

@@ -264,9 +264,10 @@ bool bake_world(const WorldBakeInput &in, WorldBake *out, std::string *err) {
     as.samples = s.area_samples;
     as.threads = s.bounce.threads;
     as.seed = s.bounce.seed;
-    if (!area_lights(s.faces, bump, *s.rays, as, &grids, &out->area, err)) return false;
+    if (!area_lights(s.faces, bump, s.model_emitters, *s.rays, as, &grids, &out->area, err)) return false;
   }
   s.bounce.emission_sampled = bake_luxels && s.area_samples > 0;
+  s.bounce.model_emitters = &s.model_emitters;  // (their emission gathered when not sampled)
   // The interreflected light (glue/bake/bounce.h), then the page.
   const auto t_bounce = Clock::now();
   if (bake_luxels) {
@@ -372,6 +373,11 @@ bool bake_world(const WorldBakeInput &in, WorldBake *out, std::string *err) {
             long probe_rays = 0;
             lit_values(s, to_glm(pos) + d * t, to_ts(n), b3, v4, &scratch, &rng, &probe_rays, msg, sizeof msg);
             rad = to_glm(v4[0]) * 0.6;
+          } else if (hit.id <= model_emitter_id(0) &&
+                     model_emitter_of_id(hit.id) < static_cast<int>(s.model_emitters.size())) {
+            // An emissive model: its emission from the front (its back as other models: nothing).
+            model_emitter_seen(s.model_emitters[static_cast<size_t>(model_emitter_of_id(hit.id))], hit.triangle, d,
+                               &rad);
           } else if (s.sky.present()) {  // nothing: the sky
             rad = to_glm(sky_radiance(s.sky, to_ts(d)));
           }

@@ -43,9 +43,12 @@ struct WorldBakeInput {
   const BakeHooks *hooks = nullptr;
   // The sky (glue/bake/sky.h): absent (the default), no sky pass.
   BakeSky sky;
-  // Emitting faces sampled as area lights (glue/bake/area_lights.h): points per luxel and emitter;
+  // Emitters sampled as area lights (glue/bake/area_lights.h): points per luxel and emitter;
   // 0: the emission reaches the luxels through the bounces' gather alone.
   int area_samples = kBakeDraft.area_samples;
+  // The model primitives with an emissive material (glue/bake/area_lights.h): they light the faces
+  // like emitting faces; in `rays` with the ids model_emitter_id(k).
+  std::vector<ModelEmitter> model_emitters;
   // Per light (empty, or one per light): a sun's angular radius in radians (vrad's
   // _sunspreadangle): its shadow rays are jittered within that cone, `spread_samples` per luxel
   // (vrad: 30 per sample point) shared among its supersamples, each taking a square of strata

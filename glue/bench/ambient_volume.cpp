@@ -63,6 +63,7 @@ struct World {
   std::vector<LuxelGrid> grids;
   RayScene rays;
   SceneVolumeSetup setup;
+  std::vector<ModelEmitter> emitters;  // the emissive models the volume's rays see (glue/bake/area_lights.h)
 };
 bool world_of(const Scene &s, const SceneSelection &sel, const PreparedScene &p, World *w, std::string *err) {
   std::vector<int> face_of_draw(sel.draws.size(), -1);
@@ -76,8 +77,11 @@ bool world_of(const Scene &s, const SceneSelection &sel, const PreparedScene &p,
     return false;
   }
   w->grids = flat_grids_from_page(p.lightmap_places, p.lightmap_page, p.lightmap_w);
-  if (!build_scene_rays(s, face_of_draw, &w->rays, err)) return false;
+  std::vector<int> emitter_of;
+  w->emitters = scene_model_emitters(s, face_of_draw, &emitter_of);
+  if (!build_scene_rays(s, face_of_draw, &w->rays, err, &emitter_of)) return false;
   w->setup = scene_volume_setup(s, w->faces);
+  w->setup.set.model_emitters = &w->emitters;
   const uint64_t h = volume_inputs_hash(volume_inputs(w->setup.lo, w->setup.hi, w->setup.set, w->faces, w->grids,
                                                       w->rays.content_hash(), w->setup.sky_hash));
   if (h != p.volume.inputs_hash) {

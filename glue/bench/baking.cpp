@@ -272,9 +272,12 @@ bool run(const BenchOptions &opt, std::string *md, std::string *err) {
   o << " (" << 100 * ref_noise.rel_rms / std::sqrt(2.0) << " % of its RMS). **frame**: display codes (sRGB x 255) of the sm3 frame\n"
     << "shaded in double precision from each page over the room's " << W << "x" << H << " pixels. Times: medians of 3 bakes "
     << "on " << cores << " cores\n(the machine shared with other work: ratios within one run are what to compare). **Embree**: "
-    << "the time inside\nEmbree's queries over the bake's CPU time (every thread's), from a fourth bake with the queries timed.\n\n"
-    << "| preset | values | passes | rays | bake s | CPU s | Embree | lightmap RMS | / ref | frame mean | frame max |\n"
-    << "|---|---|---|---|---|---|---|---|---|---|---|\n";
+    << "the CPU time inside\nEmbree's queries over the bake's CPU time (every thread's), from a fourth bake sampled every 1 ms "
+    << "of CPU time\n(SIGPROF: other work on the machine counts in neither). **Mrays/s/core**: every ray of the bake over "
+    << "its CPU seconds\n(the bounces trace their gather rays in their first pass and iterate over the kept hits after it: "
+    << "docs/baking.md).\n\n"
+    << "| preset | values | passes | rays | bake s | CPU s | Embree | Mrays/s/core | lightmap RMS | / ref | frame mean | frame max |\n"
+    << "|---|---|---|---|---|---|---|---|---|---|---|---|\n";
   for (const char *name : {"draft", "default", "final"}) {
     Setting st{name, BakeQuality()};
     bake_quality_preset(name, &st.q);
@@ -283,11 +286,34 @@ bool run(const BenchOptions &opt, std::string *md, std::string *err) {
     fprintf(stderr, "bench baking: preset %s\n", name);
     if (!bake(room, st, W, H, 3, true, true, &bk, err)) return false;
     const Err e = error_of(bk, ref);
-    snprintf(b, sizeof b, "| **%s** | %s | %d | %.2fM | %.2f | %.2f | %.0f %% | %.4f | %.3f | %.2f | %.1f |\n", name,
+    snprintf(b, sizeof b, "| **%s** | %s | %d | %.2fM | %.2f | %.2f | %.0f %% | %.2f | %.4f | %.3f | %.2f | %.1f |\n", name,
              values(st.q).c_str(), bk.passes, bk.all_rays() / 1e6, bk.ms / 1000, bk.cpu_ms / 1000,
-             bk.cpu_ms > 0 ? 100 * bk.embree_ms / bk.cpu_ms : 0.0, e.rms, e.rel_rms, e.code_mean, e.code_max);
+             bk.cpu_ms > 0 ? 100 * bk.embree_ms / bk.cpu_ms : 0.0, bk.cpu_ms > 0 ? bk.all_rays() / (bk.cpu_ms * 1e3) : 0.0,
+             e.rms, e.rel_rms, e.code_mean, e.code_max);
     o << b;
     pts.push_back({name, bk.ms / 1000, e.rel_rms, true});
+  }
+  // Bake time against luxel count: the default preset at 1x, 4x and 16x the scene's luxels (2x and
+  // 4x its density), CPU time per luxel (the issue: linear in the luxels).
+  o << "\nThe default preset at 1x, 4x and 16x the room's luxels (" << density << ", " << 2 * density << " and "
+    << 4 * density << " luxels per unit; the page grows with them): bake and CPU time, and CPU time per luxel over the "
+       "1x bake's\n(1.00: linear in the luxels).\n\n"
+    << "| luxels | x | rays | bake s | CPU s | Embree | Mrays/s/core | CPU us per luxel | per luxel / 1x |\n"
+    << "|---|---|---|---|---|---|---|---|---|\n";
+  double per_luxel_1x = 0;
+  for (int mult : {1, 2, 4}) {
+    Setting st{"default", BakeQuality()};
+    bake_quality_preset("default", &st.q);
+    st.q.luxels_per_unit = density * mult;
+    Bake bk;
+    fprintf(stderr, "bench baking: default at %g luxels per unit\n", st.q.luxels_per_unit);
+    if (!bake(room, st, W, H, 1, false, true, &bk, err)) return false;
+    const double per = bk.luxels > 0 ? bk.cpu_ms * 1e3 / bk.luxels : 0;
+    if (mult == 1) per_luxel_1x = per;
+    snprintf(b, sizeof b, "| %ld | %d | %.2fM | %.2f | %.2f | %.0f %% | %.2f | %.1f | %.2f |\n", bk.luxels, mult * mult,
+             bk.all_rays() / 1e6, bk.ms / 1000, bk.cpu_ms / 1000, bk.cpu_ms > 0 ? 100 * bk.embree_ms / bk.cpu_ms : 0.0,
+             bk.cpu_ms > 0 ? bk.all_rays() / (bk.cpu_ms * 1e3) : 0.0, per, per_luxel_1x > 0 ? per / per_luxel_1x : 0.0);
+    o << b;
   }
   auto row = [&](const char *label, int bounces, int gather, int ss, double dens) {
     Setting st{label, room.lightmaps.quality};  // the scene's own (what render bakes at load)
@@ -312,8 +338,8 @@ bool run(const BenchOptions &opt, std::string *md, std::string *err) {
   };
   o << "\nSingle settings, from the scene's own (its `lightmaps` and `sky.samples` " << room.lightmaps.quality.sky_samples
     << " keys: what `render` bakes at load):\n**irradiance**: relative error of the page's values (channels >= 1e-3); the "
-    << "RMS and irradiance columns need the\nconverged bake's density. Mrays/s per core: the bounce passes' gather rays "
-    << "over their own time; a bake over 3 s runs once.\n\n"
+    << "RMS and irradiance columns need the\nconverged bake's density. Mrays/s per core: the bounce passes' traced gather rays "
+    << "(the first pass's: the later passes read its hits back) over their own wall time; a bake over 3 s runs once.\n\n"
     << "| setting | luxels | passes | gather rays | bake ms | direct ms | bounce ms | Mrays/s/core | lightmap RMS | / ref | "
        "irradiance max | irradiance mean | frame max | frame mean |\n"
     << "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n";

@@ -89,13 +89,13 @@ std::vector<std::string> bake_report(const BakeSummary &s) {
     snprintf(b, sizeof b, "sky: %ld rays through the openings (%.0f ms)", s.sky_pass.rays, s.sky_pass.ms);
     r.push_back(b);
   }
-  if (s.emitters == 0)
-    r.push_back("no emissive face: no area-light rays");
+  if (s.emitters == 0 && s.model_emitters == 0)
+    r.push_back("no emissive face or model: no area-light rays");
   else if (s.area_samples == 0)
-    r.push_back("emissive faces reach the luxels through the bounces alone (area lights off)");
+    r.push_back("emissive faces and models reach the luxels through the bounces alone (area lights off)");
   else if (s.resumed_after < 0) {
-    snprintf(b, sizeof b, "%d emissive faces as area lights: %ld shadow rays (%.0f ms)", s.emitters,
-             s.area_pass.rays, s.area_pass.ms);
+    snprintf(b, sizeof b, "%d emissive faces and %d emissive models as area lights: %ld shadow rays (%.0f ms)",
+             s.emitters, s.model_emitters, s.area_pass.rays, s.area_pass.ms);
     r.push_back(b);
   }
   if (black)
@@ -112,6 +112,13 @@ std::vector<std::string> bake_report(const BakeSummary &s) {
              "rays per value",
              s.report.passes, s.bounce.max_bounces, s.bounce.threshold, s.bounce.gather_rays);
     r.push_back(b);
+    if (s.report.cached > 0) {
+      snprintf(b, sizeof b,
+               "bounces: %ld gather rays traced in the first pass, their hits read back %ld times by the passes "
+               "after it (the same rays every pass)",
+               s.report.rays, s.report.cached);
+      r.push_back(b);
+    }
   }
   // Where the probes' cube maps come from (not stored here: made at load from this page).
   snprintf(b, sizeof b,

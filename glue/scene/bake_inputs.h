@@ -4,6 +4,8 @@
 #include <string>
 #include <vector>
 
+#include <glm/vec3.hpp>
+
 #include "bake/ray_scene.h"
 #include "bake/world_bake.h"
 #include "scene/scene.h"
@@ -21,6 +23,18 @@ BakeQuality scene_bake_quality(const Scene &s, std::string *note);
 double process_cpu_ms();
 
 // One Embree scene of every primitive's triangles (glue/bake/ray_scene.h): a world face's carry its
-// face index (face_of_draw[primitive], the bounces and probes read its luxels), other geometry -2.
+// face index (face_of_draw[primitive], the bounces and probes read its luxels), an emissive model's
+// model_emitter_id((*emitter_of)[primitive]) (glue/bake/area_lights.h), other geometry -2.
 // Errors name the scene file and the primitive.
-bool build_scene_rays(const Scene &s, const std::vector<int> &face_of_draw, RayScene *rays, std::string *err);
+bool build_scene_rays(const Scene &s, const std::vector<int> &face_of_draw, RayScene *rays, std::string *err,
+                      const std::vector<int> *emitter_of = nullptr);
+
+// The mean linear colour of a texture's image (sRGB-decoded: base colour and emissive textures are
+// sRGB); 1 without an image.
+glm::dvec3 texture_mean_linear(const Scene &s, const SceneTextureRef &t);
+
+// The primitives that are no world face (face_of_draw[primitive] < 0) whose material emits
+// (emissiveFactor x KHR_materials_emissive_strength x the emissive texture's mean, as a face's
+// emission): the bake's model emitters, in world space; *emitter_of: per primitive, its index (-1).
+std::vector<ModelEmitter> scene_model_emitters(const Scene &s, const std::vector<int> &face_of_draw,
+                                               std::vector<int> *emitter_of);

@@ -118,19 +118,6 @@ std::string key_solid(const char *sampler, float r, float g, float b, float a) {
       "," + std::to_string(a);
 }
 
-// The mean linear colour of a texture's image (sRGB-decoded: base colour and emissive textures are
-// sRGB); 1 without an image.
-glm::dvec3 mean_linear(const Scene &s, const SceneTextureRef &t) {
-  if (t.image < 0 || t.image >= static_cast<int>(s.images.size())) return glm::dvec3(1.0);
-  const SceneImage &im = s.images[static_cast<size_t>(t.image)];
-  glm::dvec3 sum(0.0);
-  for (size_t i = 0; i + 3 < im.rgba.size(); i += 4)
-    sum += glm::dvec3(srgb_decode<double>(im.rgba[i]), srgb_decode<double>(im.rgba[i + 1]),
-                      srgb_decode<double>(im.rgba[i + 2]));
-  const size_t n = im.rgba.size() / 4;
-  return n ? sum / static_cast<double>(n) : glm::dvec3(1.0);
-}
-
 // The index of the item (a probe, an ambient sample: anything with a `position`) nearest c, the
 // lowest index on a tie; -1 for none.
 template <class T>
@@ -341,8 +328,8 @@ bool prepare_scene(const Scene &s, const SceneSelection &sel, int w, int h, Api 
     }
     // What the face gives the bounces: its reflectivity (the base colour times its texture's mean, as
     // vrad takes a texture's reflectivity) and its emission (the glTF emissive terms; docs/baking.md).
-    const glm::dvec3 base = d3f(m.base_color) * mean_linear(s, m.base_texture);
-    const glm::dvec3 emit = d3f(m.emission) * mean_linear(s, m.emissive_texture);
+    const glm::dvec3 base = d3f(m.base_color) * texture_mean_linear(s, m.base_texture);
+    const glm::dvec3 emit = d3f(m.emission) * texture_mean_linear(s, m.emissive_texture);
     f.reflectivity = ts_v3d(base.x, base.y, base.z);
     f.emission = ts_v3d(emit.x, emit.y, emit.z);
     f.bumped = m.normal_texture.image >= 0;  // BUMPMAP 0 samples the flat lightmap alone
@@ -379,8 +366,11 @@ bool prepare_scene(const Scene &s, const SceneSelection &sel, int w, int h, Api 
     const bool from_file = !s.lightmaps.image_rgba.empty();
     if (from_file) ws.page_in = &s.lightmaps.image_rgba;
     // Visibility: one BVH of every triangle of the scene, world and model (glue/bake/ray_scene.h).
+    // Emissive model primitives light the faces as area lights (glue/bake/area_lights.h).
+    std::vector<int> emitter_of;
+    ws.model_emitters = scene_model_emitters(s, face_of_draw, &emitter_of);
     rays.reset(new RayScene);
-    if (!build_scene_rays(s, face_of_draw, rays.get(), err)) return false;
+    if (!build_scene_rays(s, face_of_draw, rays.get(), err, &emitter_of)) return false;
     ws.rays = rays.get();
     const BakeDirUse use{s.lightmaps.bake, s.lightmaps.bake_checkpoint, s.lightmaps.bake_progress};
     if (!bake_world_dir(use, ws, face_where, &bake, &ps.bake_summary, err)) {
@@ -412,7 +402,7 @@ bool prepare_scene(const Scene &s, const SceneSelection &sel, int w, int h, Api 
     ps.bake_direct_rays = bake.direct_rays;
     ps.bake_sky_rays = bake.sky.rays, ps.bake_area_rays = bake.area.rays;
     ps.bake_sky_ms = bake.sky.ms, ps.bake_area_ms = bake.area.ms, ps.bake_cubes_ms = bake.cubes_ms;
-    if (!bake_scene_volume(s, sel, ws.faces, bake, ws.page_w, *rays, &ps.volume, err)) return false;
+    if (!bake_scene_volume(s, sel, ws.faces, bake, ws.page_w, *rays, &ps.volume, err, &ws.model_emitters)) return false;
   }
   for (size_t di = 0; di < sel.draws.size(); ++di) {
     const SceneDrawChoice &c = sel.draws[di];

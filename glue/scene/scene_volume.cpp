@@ -59,12 +59,13 @@ SceneVolumeSetup scene_volume_setup(const Scene &s, const std::vector<WorldFace>
 
 bool bake_scene_volume(const Scene &s, const SceneSelection &sel, const std::vector<WorldFace> &faces,
                        const WorldBake &bake, int page_w, const RayScene &rays, IrradianceVolume *out,
-                       std::string *err) {
+                       std::string *err, const std::vector<ModelEmitter> *model_emitters) {
   *out = IrradianceVolume();
   bool models = false;
   for (const SceneDrawChoice &c : sel.draws) models = models || c.family == "model_lighting";
   if (!models || faces.empty() || !s.ambient.empty() || !s.volume.enabled) return true;  // only what the scene calls for
   SceneVolumeSetup u = scene_volume_setup(s, faces);
+  u.set.model_emitters = model_emitters;  // the rays see the emissive models (glue/bake/area_lights.h)
   const std::vector<LuxelGrid> grids = flat_grids_from_page(bake.place, bake.page, page_w);
   const VolumeInputs in = volume_inputs(u.lo, u.hi, u.set, faces, grids, rays.content_hash(), u.sky_hash);
   u.set.threads = s.lightmaps.threads;  // the same bytes for any count

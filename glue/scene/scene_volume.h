@@ -30,7 +30,7 @@ std::vector<std::array<double, 6>> scene_model_regions(const Scene &s);
 // enabled; otherwise leaves *out empty (no samples). Bounds: the scene's "bounds" or the faces' box.
 bool bake_scene_volume(const Scene &s, const SceneSelection &sel, const std::vector<WorldFace> &faces,
                        const WorldBake &bake, int page_w, const RayScene &rays, IrradianceVolume *out,
-                       std::string *err);
+                       std::string *err, const std::vector<ModelEmitter> *model_emitters = nullptr);
 
 // The cube at a model's centre with the scene's lookup (trilinear or inverse-square).
 void scene_volume_cube(const Scene &s, const IrradianceVolume &v, const double center[3], float cube[6][3]);

@@ -181,17 +181,25 @@ void test_world_lighting() {
   if (!ok) return;
   // The back wall is four quads around its window; the sky's sun is the fourth light
   // (extras.tiershade.sky.sun, its spread in radians).
-  check(s.materials.size() == 7 && s.primitives.size() == 24 && s.lights.size() == 4 && s.probes.size() == 2,
-        "world_lighting: 7 materials, 24 quads, 4 lights, 2 probes");
+  check(s.materials.size() == 8 && s.primitives.size() == 25 && s.lights.size() == 4 && s.probes.size() == 2,
+        "world_lighting: 8 materials, 24 quads and the ceiling lamp's disc, 4 lights, 2 probes");
   check(s.sky.image >= 0 && s.lightmaps.quality.sky_samples == 16 && s.lights.back().light.type == TS_LIGHT_DIRECTIONAL &&
             std::fabs(s.lights.back().spread - 4 * M_PI / 180) < 1e-12,
         "world_lighting: the sky and its soft sun");
   std::string why;
   check(well_formed(s, &why), "world_lighting: well formed", why);
   bool quads = true, world = true;
-  for (const ScenePrimitive &p : s.primitives) quads = quads && p.position.size() == 12 && p.indices.size() == 6;
+  const SceneMaterial *lamp_m = material(s, "ceiling_lamp");
+  const ScenePrimitive *lamp = prim_of(s, "ceiling_lamp");
+  for (const ScenePrimitive &p : s.primitives)
+    quads = quads && (&p == lamp || (p.position.size() == 12 && p.indices.size() == 6));
+  // The ceiling lamp (an emitter of any shape: glue/bake/area_lights.h): a 24-triangle disc with its own
+  // lightmap UVs, facing down, emissiveFactor x emissiveStrength 100.
+  check(lamp && lamp_m && lamp->indices.size() == 72 && lamp->uv1.size() == 50 && near(lamp->normal[1], -1) &&
+            near(lamp_m->emission[0], 100) && near(lamp_m->emission[2], 78),
+        "world_lighting: the ceiling lamp, a TEXCOORD_1 disc emitting 100 x [1, 0.92, 0.78]");
   for (const SceneMaterial &m : s.materials) world = world && m.shader == SceneShader::World;
-  check(quads, "world_lighting: every primitive a 4-vertex quad");
+  check(quads, "world_lighting: every primitive but the lamp a 4-vertex quad");
   check(world, "world_lighting: every material LightmappedGeneric");
   const ScenePrimitive *fl = prim_of(s, "floor");
   check(fl && near(fl->normal[1], 1) && near(fl->position[1], 0) && fl->tangent.size() == 16,
