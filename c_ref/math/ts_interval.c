@@ -363,7 +363,7 @@ static axis_cells axis_of(ts_iv c, int len, int linear) {
   return a;
 }
 static int wrap_index(int i, int len, int wrap) {
-  if (wrap == TS_WRAP_REPEAT) return ((i % len) + len) % len;
+  if (wrap != TS_WRAP_CLAMP) return ((i % len) + len) % len;
   return i < 0 ? 0 : (i >= len ? len - 1 : i);
 }
 static const float *texel_at(const ts_tex2d *t, int x, int y) {
@@ -518,7 +518,7 @@ ts_vec4iv ts_textureCubeiv(const ts_texcube *c, ts_vec3iv d) {
     quot_range(tl, th, ml, mh, &qtl, &qth);
     const double w = 0x1p-20;
     const double s0 = 0.5 * qsl + 0.5 - w, s1 = 0.5 * qsh + 0.5 + w, t0 = 0.5 * qtl + 0.5 - w, t1 = 0.5 * qth + 0.5 + w;
-    const ts_tex2d face = {c->size, c->size, c->faces[f], TS_WRAP_CLAMP, TS_WRAP_CLAMP, c->filter};
+    const ts_tex2d face = {.w = c->size, .h = c->size, .texels = c->faces[f], .wrap_s = TS_WRAP_CLAMP, .wrap_t = TS_WRAP_CLAMP, .filter = c->filter};
     r = join4(r, ts_texture2Div(&face, ts_v2iv(mk(s0, s1), mk(t0, t1))));
     any_face = 1;
     if (c->filter == TS_FILTER_LINEAR) {
@@ -592,4 +592,15 @@ ts_vec4iv ts_texture3Div(const ts_tex3d *t, ts_vec3iv uvw) {
     ch[c] = mk(acc.lo[c] - e, acc.hi[c] + e);
   }
   return ts_v4iv(ch[0], ch[1], ch[2], ch[3]);
+}
+
+ts_vec4iv ts_texture2D_gradiv(const ts_tex2d *t, ts_vec2iv uv, const ts_vec4f *grad) {
+  ts_vec4iv r = ts_texture2Div(t, uv);
+  if (!grad || t->mip_levels <= 1 || t->mip_filter == TS_MIP_NONE) return r;
+  for (int l = 1; l < t->mip_levels; ++l) {
+    const ts_tex2d lv = ts_mip_level(t, l);
+    const ts_vec4iv s = ts_texture2Div(&lv, uv);
+    r = ts_v4iv(ts_ivjoin(r.x, s.x), ts_ivjoin(r.y, s.y), ts_ivjoin(r.z, s.z), ts_ivjoin(r.w, s.w));
+  }
+  return r;
 }

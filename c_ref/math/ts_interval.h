@@ -127,6 +127,9 @@ ts_vec3iv ts_min3iv(ts_vec3iv a, ts_vec3iv b);
  * of dEQP's tcuTexLookupVerifier as the GLES 3 filtering tests set it (coordBits 20, uvwBits 7;
  * ts_interval.c); a coordinate range over more than two texel cells: the hull of the texels. ---- */
 ts_vec4iv ts_texture2Div(const ts_tex2d *t, ts_vec2iv uv);
+/* with derivatives (ts_texture2D_gradf) on a mip chain: GLSL ES leaves the level of detail's
+ * computation to the implementation within wide limits, so the hull of every level's lookup. */
+ts_vec4iv ts_texture2D_gradiv(const ts_tex2d *t, ts_vec2iv uv, const ts_vec4f *grad);
 /* cube: every face the direction box can select (dEQP getPossibleCubeFaces), each as a 2D
  * CLAMP_TO_EDGE lookup of the face coordinates; seamless filtering at face edges covered; a box
  * holding the zero vector: any result. 3D: the 2D rule on three axes (trilinear). ts_interval.c */

@@ -54,6 +54,83 @@ ts_vec4f ts_texture2Df(const ts_tex2d *t, ts_vec2f uv) {
   return sample2d_f(t->texels, t->w, t->h, t->wrap_s, t->wrap_t, t->filter, uv.x, uv.y);
 }
 
+/* ---- mip chains: llvmpipe's level of detail (Mesa 22.3.6 gallivm, default GALLIVM_PERF) ---- */
+
+/* lp_bld_arit.c lp_build_fast_log2: ipart = lp_build_extract_exponent(x, -1) = biased exponent -
+ * 128 (as a float), fpart = lp_build_extract_mantissa(x) = the mantissa bits under exponent 0,
+ * in [1, 2); their sum. */
+float ts_fast_log2f(float x) {
+  const uint32_t b = ts_fbits(x);
+  const int e = (int)((b & 0x7f800000u) >> 23) - 128;
+  return (float)e + ts_bitsf((b & 0x007fffffu) | 0x3f800000u);
+}
+
+void ts_mip_select(const ts_tex2d *t, ts_vec4f g, int *l0, int *l1, float *weight, float *lod) {
+  /* lp_build_rho, implicit derivatives, no_rho_approx (GALLIVM_PERF without rho_approx), 2D:
+   * ddx_ddy = (ds/dx, ds/dy, dt/dx, dt/dy) * (w, w, h, h) of level 0, squared; rho^2 =
+   * max(ds/dx^2 + dt/dx^2, ds/dy^2 + dt/dy^2) (lp_build_max: maxps). */
+  const float fw = (float)t->w, fh = (float)t->h;
+  float a = g.x * fw, b = g.y * fw, c = g.z * fh, d = g.w * fh;
+  a = a * a;
+  b = b * b;
+  c = c * c;
+  d = d * d;
+  const float rho2 = ts_lp_maxf(a + c, b + d);
+  const int last = t->mip_levels - 1;
+  *weight = 0.0f;
+  if (t->mip_filter == TS_MIP_NEAREST) {
+    /* lp_build_lod_selector's shortcut (no bias, no min/max LOD clamp: GL's defaults):
+     * lp_build_ilog2_sqrt = (biased exponent - 126) >> 1 (arithmetic), then
+     * lp_build_nearest_mip_level clamps it to [0, last]. */
+    const int ip = ((int)((ts_fbits(rho2) & 0x7f800000u) >> 23) - 126) >> 1;
+    *lod = (float)ip;
+    *l0 = *l1 = ip < 0 ? 0 : (ip > last ? last : ip);
+    return;
+  }
+  /* LINEAR (no brilinear): lod = 0.5 * fast_log2(rho^2); lp_build_ifloor_fract (SSE4.1 round:
+   * floor, then a - floor); lp_build_linear_mip_levels: level0 < first -> both first, weight 0;
+   * level0 >= last -> both last, weight 0. */
+  const float l = ts_fast_log2f(rho2) * 0.5f;
+  const float fl = ts_floorf(l);
+  float f = l - fl;
+  int i0 = ts_lp_itruncf(fl), i1 = (int)((unsigned)i0 + 1u);
+  *lod = l;
+  if (i0 < 0) i0 = i1 = 0, f = 0.0f;
+  if (i0 >= last) i0 = i1 = last, f = 0.0f;
+  *l0 = i0;
+  *l1 = i1;
+  *weight = f;
+}
+
+ts_tex2d ts_mip_level(const ts_tex2d *t, int level) {
+  ts_tex2d r = *t;
+  r.mip_levels = 1;
+  r.mip_filter = TS_MIP_NONE;
+  if (level > 0) {
+    r.w = t->mip_w[level];
+    r.h = t->mip_h[level];
+    r.texels = t->mip_texels[level];
+  }
+  /* the addressing of level 0's size (lp_sampler_static_texture_state: pot_width of width0) */
+  if (t->wrap_s == TS_WRAP_REPEAT && !ts_is_pot(t->w)) r.wrap_s = TS_WRAP_REPEAT_NPOT;
+  if (t->wrap_t == TS_WRAP_REPEAT && !ts_is_pot(t->h)) r.wrap_t = TS_WRAP_REPEAT_NPOT;
+  return r;
+}
+
+/* lp_bld_sample_soa.c lp_build_sample_mipmap: level0's filtered texel; with a linear mip filter and
+ * a weight > 0 also level1's, and lerp(weight, c0, c1) = mad(weight, c1 - c0, c0) per channel. */
+ts_vec4f ts_texture2D_gradf(const ts_tex2d *t, ts_vec2f uv, const ts_vec4f *grad) {
+  if (!grad || t->mip_levels <= 1 || t->mip_filter == TS_MIP_NONE) return ts_texture2Df(t, uv);
+  int l0, l1;
+  float w, lod;
+  ts_mip_select(t, *grad, &l0, &l1, &w, &lod);
+  const ts_tex2d a = ts_mip_level(t, l0);
+  const ts_vec4f c0 = ts_texture2Df(&a, uv);
+  if (!(w > 0.0f)) return c0;
+  const ts_tex2d b = ts_mip_level(t, l1);
+  return ts_lerp4_f(w, c0, ts_texture2Df(&b, uv));
+}
+
 /* lp_build_cube_lookup (non-seamless, no derivatives), read in lp_bld_sample.c:
  * as_gt_at = |x| > |y| (unordered: NaN -> true); mx = maxps(|x|,|y|);
  * ar_ge = |z| >= mx (unordered); major = ar_ge ? Z : (as_gt_at ? X : Y).
@@ -107,6 +184,22 @@ TS_SAMPLE2D(d, double, ts_vec4d)
 
 ts_vec4d ts_texture2Dd(const ts_tex2d *t, ts_vec2d uv) {
   return sample2d_d(t->texels, t->w, t->h, t->wrap_s, t->wrap_t, t->filter, uv.x, uv.y);
+}
+
+/* The double reference of ts_texture2D_gradf: the same levels and weight (chosen in float as
+ * llvmpipe chooses them), each level filtered and the two blended in double. */
+ts_vec4d ts_texture2D_gradd(const ts_tex2d *t, ts_vec2d uv, const ts_vec4f *grad) {
+  if (!grad || t->mip_levels <= 1 || t->mip_filter == TS_MIP_NONE) return ts_texture2Dd(t, uv);
+  int l0, l1;
+  float w, lod;
+  ts_mip_select(t, *grad, &l0, &l1, &w, &lod);
+  const ts_tex2d a = ts_mip_level(t, l0), b = ts_mip_level(t, l1);
+  const ts_vec4d c0 = ts_texture2Dd(&a, uv);
+  if (!(w > 0.0f)) return c0;
+  const ts_vec4d c1 = ts_texture2Dd(&b, uv);
+  const double wd = w;
+  return ts_v4d(c0.x + wd * (c1.x - c0.x), c0.y + wd * (c1.y - c0.y), c0.z + wd * (c1.z - c0.z),
+                c0.w + wd * (c1.w - c0.w));
 }
 
 ts_vec4d ts_textureCubed(const ts_texcube *c, ts_vec3d d) {

@@ -23,8 +23,8 @@ static float ts_fract_safe(float u) {
 /* lp_build_sample_wrap_nearest (float coords, normalized). */
 static int ts_wrap_nearest_f(float u, int len, int wrap) {
   float lf = (float)len;
-  if (wrap == TS_WRAP_REPEAT) {
-    if (ts_is_pot(len)) /* ifloor(u*len) & (len-1) */
+  if (wrap == TS_WRAP_REPEAT || wrap == TS_WRAP_REPEAT_NPOT) {
+    if (wrap == TS_WRAP_REPEAT && ts_is_pot(len)) /* ifloor(u*len) & (len-1) */
       return ts_lp_itruncf(ts_floorf(u * lf)) & (len - 1);
     return ts_clampi(ts_lp_itruncf(ts_fract_safe(u) * lf), 0, len - 1); /* itrunc */
   }
@@ -34,14 +34,15 @@ static int ts_wrap_nearest_f(float u, int len, int wrap) {
 /* lp_build_sample_wrap_linear: the two texels i0, i1 and the weight w of i1. */
 static void ts_wrap_linear_f(float u, int len, int wrap, int *i0, int *i1, float *w) {
   float lf = (float)len, c, fl;
-  if (wrap == TS_WRAP_REPEAT) {
-    if (!ts_is_pot(len)) u = u - ts_floorf(u);
+  if (wrap == TS_WRAP_REPEAT || wrap == TS_WRAP_REPEAT_NPOT) {
+    const int pot = wrap == TS_WRAP_REPEAT && ts_is_pot(len);
+    if (!pot) u = u - ts_floorf(u);
     c = u * lf - 0.5f;
     fl = ts_floorf(c);
     *w = c - fl;
     *i0 = ts_lp_itruncf(fl);
     *i1 = (int)((unsigned)*i0 + 1u);
-    if (ts_is_pot(len)) {
+    if (pot) {
       *i0 &= len - 1;
       *i1 &= len - 1;
     } else {
@@ -73,13 +74,13 @@ static int ts_itrunc_d(double x) {
 }
 
 static int ts_wrap_nearest_d(double u, int len, int wrap) {
-  if (wrap == TS_WRAP_REPEAT) u -= floor(u);
+  if (wrap != TS_WRAP_CLAMP) u -= floor(u);
   return ts_clampi(ts_itrunc_d(floor(u * len)), 0, len - 1);
 }
 
 static void ts_wrap_linear_d(double u, int len, int wrap, int *i0, int *i1, double *w) {
   double c, fl;
-  if (wrap == TS_WRAP_REPEAT) {
+  if (wrap != TS_WRAP_CLAMP) {
     u -= floor(u);
     c = u * len - 0.5;
     fl = floor(c);

@@ -8,8 +8,8 @@
 TSV_INL void VFN(wrap_linear)(VF u, int len, int wrap, VI *i0, VI *i1, VF *w) {
   const float lf = (float)len;
   VI a, b;
-  if (wrap == TS_WRAP_REPEAT) {
-    const int pot = len > 0 && (len & (len - 1)) == 0;
+  if (wrap != TS_WRAP_CLAMP) {
+    const int pot = wrap == TS_WRAP_REPEAT && len > 0 && (len & (len - 1)) == 0;
     if (!pot) u = u - VFN(floor)(u);
     const VF c = u * lf - 0.5f;
     const VF fl = VFN(floor)(c);
@@ -93,6 +93,51 @@ static V4v VFN(texture2D)(const ts_tex2d *t, VF u, VF v) {
   const float *tx[TSV_W];
   for (int j = 0; j < TSV_W; ++j) tx[j] = t->texels;
   return VFN(bilinear)(tx, t->w, t->h, t->wrap_s, t->wrap_t, u, v);
+}
+
+/* ts_texture2D_gradf on TSV_W lanes (g: the lanes' quad derivatives ds/dx, ds/dy, dt/dx, dt/dy):
+ * the levels chosen per lane by ts_mip_select; lanes that share their two levels (the usual
+ * case: the level of detail varies slowly over a run of pixels) filter with the vector path,
+ * lerp(weight, c0, c1) where the weight is > 0; a block whose lanes differ, per lane. */
+static V4v VFN(texture2D_grad)(const ts_tex2d *t, VF u, VF v, const ts_vec4f *g[TSV_W]) {
+  if (!g[0] || t->mip_levels <= 1 || t->mip_filter == TS_MIP_NONE) return VFN(texture2D)(t, u, v);
+  int l0[TSV_W], l1[TSV_W];
+  float wt[TSV_W], lod;
+  int same = 1, any = 0;
+  for (int j = 0; j < TSV_W; ++j) {
+    ts_mip_select(t, *g[j], &l0[j], &l1[j], &wt[j], &lod);
+    same = same && l0[j] == l0[0] && l1[j] == l1[0];
+    any = any || wt[j] > 0.0f;
+  }
+  if (!same || t->filter != TS_FILTER_LINEAR) {
+    float r[4][TSV_W];
+    for (int j = 0; j < TSV_W; ++j) {
+      const ts_vec4f s = ts_texture2D_gradf(t, ts_v2f(u[j], v[j]), g[j]);
+      r[0][j] = s.x;
+      r[1][j] = s.y;
+      r[2][j] = s.z;
+      r[3][j] = s.w;
+    }
+    return VFN(load4)(r);
+  }
+  const ts_tex2d a = ts_mip_level(t, l0[0]);
+  const float *tx[TSV_W];
+  for (int j = 0; j < TSV_W; ++j) tx[j] = a.texels;
+  const V4v c0 = VFN(bilinear)(tx, a.w, a.h, a.wrap_s, a.wrap_t, u, v);
+  if (!any) return c0;
+  const ts_tex2d b = ts_mip_level(t, l1[0]);
+  for (int j = 0; j < TSV_W; ++j) tx[j] = b.texels;
+  const V4v c1 = VFN(bilinear)(tx, b.w, b.h, b.wrap_s, b.wrap_t, u, v);
+  VF w;
+  __builtin_memcpy(&w, wt, sizeof w);
+  const VI lerp = w > 0.0f;
+  const V4v m = VFN(lerp4)(w, c0, c1);
+  V4v r;
+  r.x = VFN(sel)(lerp, m.x, c0.x);
+  r.y = VFN(sel)(lerp, m.y, c0.y);
+  r.z = VFN(sel)(lerp, m.z, c0.z);
+  r.w = VFN(sel)(lerp, m.w, c0.w);
+  return r;
 }
 
 /* ts_textureCubef: face and coordinates by selects on sign bits (see ts_sampler.c). */

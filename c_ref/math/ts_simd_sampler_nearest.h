@@ -12,8 +12,8 @@
 TSV_INL VI VFN(wrap_nearest)(VF u, int len, int wrap) {
   const float lf = (float)len;
   VI i;
-  if (wrap == TS_WRAP_REPEAT) {
-    if (len > 0 && (len & (len - 1)) == 0) return VFN(itrunc)(VFN(floor)(u * lf)) & (len - 1);
+  if (wrap != TS_WRAP_CLAMP) {
+    if (wrap == TS_WRAP_REPEAT && len > 0 && (len & (len - 1)) == 0) return VFN(itrunc)(VFN(floor)(u * lf)) & (len - 1);
     /* lp_build_fract_safe: min(u - floor(u), 0x1.fffffep-1), a NaN gives the constant */
     const VF top = VFN(splat)(0x1.fffffep-1f);
     VF f = u - VFN(floor)(u);
@@ -36,4 +36,13 @@ static V4v VFN(texture2D_nearest)(const ts_tex2d *t, VF u, VF v) {
 /* texture2D with the texture's own filter. */
 TSV_INL V4v VFN(tex2d)(const ts_tex2d *t, VF u, VF v) {
   return t->filter == TS_FILTER_NEAREST ? VFN(texture2D_nearest)(t, u, v) : VFN(texture2D)(t, u, v);
+}
+
+/* texture2D with the lanes' quad derivatives (ts_simd_sampler.h texture2D_grad): lane j's are
+ * grad[pix[j] * stride]; no derivatives (grad NULL) or a single level: VFN(tex2d). */
+TSV_INL V4v VFN(tex2d_grad)(const ts_tex2d *t, VF u, VF v, const ts_vec4f *grad, int stride, const size_t *pix) {
+  if (!grad || t->mip_levels <= 1 || t->mip_filter == TS_MIP_NONE) return VFN(tex2d)(t, u, v);
+  const ts_vec4f *g[TSV_W];
+  for (int j = 0; j < TSV_W; ++j) g[j] = &grad[pix[j] * (size_t)stride];
+  return VFN(texture2D_grad)(t, u, v, g);
 }

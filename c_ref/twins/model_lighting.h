@@ -35,6 +35,12 @@ typedef struct {
 typedef struct {
   const ts_tex2d *albedo, *normal_map, *exponent_map, *light_warp;
   const ts_texcube *envmap;
+  /* The uv's quad derivatives (ds/dx, ds/dy, dt/dx, dt/dy: ts_texture2D_gradf) for the textures a
+   * mip chain may minify (albedo, normal and exponent maps; the light warp ramp is indexed by
+   * lighting, not by the surface, and stays one level): NULL = none (level 0). One value for
+   * model_lighting_f; pixel i's at uv_grad[i * uv_grad_stride] for the batch. */
+  const ts_vec4f *uv_grad;
+  int uv_grad_stride;
 } ml_textures;
 
 /* model_lighting_f: float32, bit-exact with llvmpipe; model_lighting_d: double, the accuracy reference */

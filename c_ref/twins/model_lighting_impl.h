@@ -18,14 +18,14 @@ V4 FN(model_lighting)(const ml_variant *v, const ts_vec4f rec[ML_SLOTS], const m
   V3 P = FN(xyz)(rec[ML_SLOT_POSITION]);
   V4 uvw = FN(vec4_in)(rec[ML_SLOT_UV]);
   V4 params = FN(vec4_in)(rec[ML_SLOT_PARAMS]);
-  V4 base = v->albedo_texture ? M(texture2D)(tex->albedo, M(v2)(uvw.x, uvw.y)) : FN(vec4_in)(rec[ML_SLOT_ALBEDO]);
+  V4 base = v->albedo_texture ? M(texture2D_grad)(tex->albedo, M(v2)(uvw.x, uvw.y), tex->uv_grad) : FN(vec4_in)(rec[ML_SLOT_ALBEDO]);
 
   V3 N, V = M(v3)(K(0.0), K(0.0), K(0.0)), R = V, spec = V, rim = V;
   V4 nmap = M(v4)(K(0.0), K(0.0), K(0.0), K(0.0)), phong = nmap, rim_params = nmap;
   V4 expmap = M(v4)(K(1.0), K(1.0), K(1.0), K(1.0));
   TS_REAL NdotV = K(0.0), k = K(0.0);
   if (v->phong) {
-    nmap = M(texture2D)(tex->normal_map, M(v2)(uvw.x, uvw.y));
+    nmap = M(texture2D_grad)(tex->normal_map, M(v2)(uvw.x, uvw.y), tex->uv_grad);
     V3 tn = M(sub3)(M(scale3)(FN(xyz4)(nmap), K(2.0)), M(v3)(K(1.0), K(1.0), K(1.0)));
     V3 T = FN(xyz)(rec[ML_SLOT_TANGENT]), B = FN(xyz)(rec[ML_SLOT_BITANGENT]), Ng = FN(xyz)(rec[ML_SLOT_NORMAL]);
     N = FN(safe_normalize)(M(add3)(M(add3)(M(scale3)(T, tn.x), M(scale3)(B, tn.y)), M(scale3)(Ng, tn.z)));
@@ -34,7 +34,7 @@ V4 FN(model_lighting)(const ml_variant *v, const ts_vec4f rec[ML_SLOTS], const m
     R = M(sub3)(M(scale3)(N, MUL(K(2.0), NdotV)), V);
     phong = FN(vec4_in)(rec[ML_SLOT_PHONG]);
     if (v->exponent_map) {
-      expmap = M(texture2D)(tex->exponent_map, M(v2)(uvw.x, uvw.y));
+      expmap = M(texture2D_grad)(tex->exponent_map, M(v2)(uvw.x, uvw.y), tex->uv_grad);
       k = ADD(K(1.0), MUL(phong.y, expmap.x));
     } else {
       k = phong.x;

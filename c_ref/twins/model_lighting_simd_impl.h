@@ -55,14 +55,14 @@ static V4v VFN(ml_block)(const ml_variant *v, const ml_batch_input *in, const ml
   const V3v P = VFN(ml_rec3)(in, ML_SLOT_POSITION, pix);
   const V4v uvw = TSV_REC(in, ML_SLOT_UV, pix);
   const V4v params = TSV_REC(in, ML_SLOT_PARAMS, pix);
-  const V4v base = v->albedo_texture ? VFN(texture2D)(tex->albedo, uvw.x, uvw.y) : TSV_REC(in, ML_SLOT_ALBEDO, pix);
+  const V4v base = v->albedo_texture ? VFN(tex2d_grad)(tex->albedo, uvw.x, uvw.y, tex->uv_grad, tex->uv_grad_stride, pix) : TSV_REC(in, ML_SLOT_ALBEDO, pix);
 
   V3v N, V = VFN(v3)(zero, zero, zero), R = V, spec = V, rim = V;
   V4v nmap = {zero, zero, zero, zero}, phong = nmap, rim_params = nmap;
   V4v expmap = {one, one, one, one};
   VF NdotV = zero, k = zero;
   if (v->phong) {
-    nmap = VFN(texture2D)(tex->normal_map, uvw.x, uvw.y);
+    nmap = VFN(tex2d_grad)(tex->normal_map, uvw.x, uvw.y, tex->uv_grad, tex->uv_grad_stride, pix);
     const V3v tn = VFN(sub3)(VFN(scale3)(VFN(xyz)(nmap), VFN(splat)(2.0f)), VFN(v3)(one, one, one));
     const V3v T = VFN(ml_rec3)(in, ML_SLOT_TANGENT, pix), B = VFN(ml_rec3)(in, ML_SLOT_BITANGENT, pix);
     const V3v Ng = VFN(ml_rec3)(in, ML_SLOT_NORMAL, pix);
@@ -72,7 +72,7 @@ static V4v VFN(ml_block)(const ml_variant *v, const ml_batch_input *in, const ml
     R = VFN(sub3)(VFN(scale3)(N, 2.0f * NdotV), V);
     phong = TSV_REC(in, ML_SLOT_PHONG, pix);
     if (v->exponent_map) {
-      expmap = VFN(texture2D)(tex->exponent_map, uvw.x, uvw.y);
+      expmap = VFN(tex2d_grad)(tex->exponent_map, uvw.x, uvw.y, tex->uv_grad, tex->uv_grad_stride, pix);
       k = 1.0f + phong.y * expmap.x;
     } else {
       k = phong.x;

@@ -33,6 +33,11 @@ typedef struct {
 typedef struct {
   const ts_tex2d *base, *normalmap, *lightmap, *envmap_mask;
   const ts_texcube *envmap;
+  /* The uv's quad derivatives for base, normal map and envmap mask (ts_texture2D_gradf; the
+   * lightmap stays one level, LINEAR, as Source samples it): NULL = none. One value for
+   * world_lighting_f; pixel i's at uv_grad[i * uv_grad_stride] for the batch. */
+  const ts_vec4f *uv_grad;
+  int uv_grad_stride;
 } wl_textures;
 
 /* world_lighting_f: float32, bit-exact with llvmpipe; world_lighting_d: double, the accuracy reference */

@@ -21,14 +21,14 @@ V4 FN(world_lighting)(const wl_variant *v, const ts_vec4f rec[WL_SLOTS], const w
   V4 lm_offset = FN(vec4_in)(rec[WL_SLOT_LM_OFFSET]);
   V4 tint_scale = FN(vec4_in)(rec[WL_SLOT_TINT_SCALE]);
   V2 base_uv = M(v2)(uv.x, uv.y), lm_uv = M(v2)(uv.z, uv.w), off = M(v2)(lm_offset.x, lm_offset.y);
-  V4 base = M(texture2D)(tx->base, base_uv);
+  V4 base = M(texture2D_grad)(tx->base, base_uv, tx->uv_grad);
 
   V3 diffuse, n = M(v3)(K(0.0), K(0.0), K(1.0));
   V4 bump = M(v4)(K(0.0), K(0.0), K(0.0), K(0.0));
   if (v->bumpmap == WL_BUMP_NONE) {
     diffuse = FN(wl_lightmap)(v, tx->lightmap, lm_uv, off, K(0.0));
   } else {
-    bump = M(texture2D)(tx->normalmap, base_uv);
+    bump = M(texture2D_grad)(tx->normalmap, base_uv, tx->uv_grad);
     V3 l0 = FN(wl_lightmap)(v, tx->lightmap, lm_uv, off, K(1.0));
     V3 l1 = FN(wl_lightmap)(v, tx->lightmap, lm_uv, off, K(2.0));
     V3 l2 = FN(wl_lightmap)(v, tx->lightmap, lm_uv, off, K(3.0));
@@ -57,7 +57,7 @@ V4 FN(world_lighting)(const wl_variant *v, const ts_vec4f rec[WL_SLOTS], const w
                        env_tint.w);
     V3 tint = FN(xyz4)(env_tint), spec;
     if (v->envmapmask == WL_MASK_TEXTURE) {
-      V4 m = M(texture2D)(tx->envmap_mask, base_uv);
+      V4 m = M(texture2D_grad)(tx->envmap_mask, base_uv, tx->uv_grad);
       spec = M(mul3)(env, M(mul3)(M(v3)(m.x, m.y, m.z), tint));
     } else if (v->envmapmask == WL_MASK_NORMAL_ALPHA) {
       spec = M(mul3)(env, M(scale3)(tint, bump.w));

@@ -61,14 +61,14 @@ static V4v VFN(wl_block)(const wl_variant *v, const wl_batch_input *in, const wl
   const V4v uv = TSV_REC(in, WL_SLOT_UV, pix);
   const V4v lm_offset = TSV_REC(in, WL_SLOT_LM_OFFSET, pix);
   const V4v tint_scale = TSV_REC(in, WL_SLOT_TINT_SCALE, pix);
-  const V4v base = VFN(tex2d)(tx->base, uv.x, uv.y);
+  const V4v base = VFN(tex2d_grad)(tx->base, uv.x, uv.y, tx->uv_grad, tx->uv_grad_stride, pix);
 
   V3v diffuse, n = VFN(v3)(zero, zero, one);
   V4v bump = {zero, zero, zero, zero};
   if (v->bumpmap == WL_BUMP_NONE) {
     diffuse = VFN(wl_lightmap)(v, tx->lightmap, uv.z, uv.w, lm_offset.x, lm_offset.y, 0.0f);
   } else {
-    bump = VFN(tex2d)(tx->normalmap, uv.x, uv.y);
+    bump = VFN(tex2d_grad)(tx->normalmap, uv.x, uv.y, tx->uv_grad, tx->uv_grad_stride, pix);
     const V3v l0 = VFN(wl_lightmap)(v, tx->lightmap, uv.z, uv.w, lm_offset.x, lm_offset.y, 1.0f);
     const V3v l1 = VFN(wl_lightmap)(v, tx->lightmap, uv.z, uv.w, lm_offset.x, lm_offset.y, 2.0f);
     const V3v l2 = VFN(wl_lightmap)(v, tx->lightmap, uv.z, uv.w, lm_offset.x, lm_offset.y, 3.0f);
@@ -100,7 +100,7 @@ static V4v VFN(wl_block)(const wl_variant *v, const wl_batch_input *in, const wl
     const V3v tint = VFN(xyz)(env_tint);
     V3v spec;
     if (v->envmapmask == WL_MASK_TEXTURE) {
-      const V4v m = VFN(tex2d)(tx->envmap_mask, uv.x, uv.y);
+      const V4v m = VFN(tex2d_grad)(tx->envmap_mask, uv.x, uv.y, tx->uv_grad, tx->uv_grad_stride, pix);
       spec = VFN(mul3)(env, VFN(mul3)(VFN(xyz)(m), tint));
     } else if (v->envmapmask == WL_MASK_NORMAL_ALPHA) {
       spec = VFN(mul3)(env, VFN(scale3)(tint, bump.w));

@@ -122,12 +122,21 @@ TextureDesc blank_texture(const std::string &sampler, int w, int h, bool linear,
 }
 
 ts_tex2d tex2d_of(const TextureDesc &t) {
-  ts_tex2d x;
-  x.w = t.w;
-  x.h = t.h;
-  x.texels = t.rgba.data();
-  x.wrap_s = x.wrap_t = t.repeat ? TS_WRAP_REPEAT : TS_WRAP_CLAMP;
-  x.filter = t.linear ? TS_FILTER_LINEAR : TS_FILTER_NEAREST;
+  const int wrap = t.repeat ? TS_WRAP_REPEAT : TS_WRAP_CLAMP;
+  ts_tex2d x = ts_tex2d_single(t.w, t.h, t.rgba.data(), wrap, wrap, t.linear ? TS_FILTER_LINEAR : TS_FILTER_NEAREST);
+  if (!t.mips.empty() && t.mip_filter != TS_MIP_NONE && t.mips.size() < TS_MAX_MIP_LEVELS) {
+    x.mip_levels = static_cast<int>(t.mips.size()) + 1;
+    x.mip_filter = t.mip_filter;
+    x.mip_w[0] = t.w;
+    x.mip_h[0] = t.h;
+    x.mip_texels[0] = t.rgba.data();
+    for (size_t k = 0; k < t.mips.size(); ++k) {
+      const int l = static_cast<int>(k) + 1;
+      x.mip_w[l] = std::max(1, t.w >> l);
+      x.mip_h[l] = std::max(1, t.h >> l);
+      x.mip_texels[l] = t.mips[k].data();
+    }
+  }
   return x;
 }
 

@@ -146,7 +146,7 @@ void random_textures(Rng &r, InputSet, FamilyInputs *out) {
 MlTextureViews::MlTextureViews(const FamilyInputs &in) {
   for (int i = 0; i < 4; ++i) t2[i] = tex2d_of(in.textures.at(i));
   cube = texcube_of(in.textures.at(ML_TEX_ENVMAP));
-  tex = {&t2[ML_TEX_ALBEDO], &t2[ML_TEX_NORMAL], &t2[ML_TEX_EXPONENT], &t2[ML_TEX_WARP], &cube};
+  tex = {&t2[ML_TEX_ALBEDO], &t2[ML_TEX_NORMAL], &t2[ML_TEX_EXPONENT], &t2[ML_TEX_WARP], &cube, nullptr, 0};
 }
 
 void ml_pack_lights(const ts_vec4f *lights, int n, ts_vec4f *out) {

@@ -1,6 +1,8 @@
 // tiershade gl: program building and full-screen RGBA32F draws (see gl_render.h).
 #include "gl/float_target.h"
 
+#include <algorithm>
+
 #include "gl/errors.h"
 
 #include <chrono>
@@ -86,6 +88,11 @@ GLuint GlRenderer::upload_texture(const TextureDesc &t) {
   g.PixelStorei(GL_UNPACK_ALIGNMENT, 4);
   if (t.kind == TexKind::Tex2D) {
     g.TexImage2D(GL_TEXTURE_2D, 0, GL_RGBA32F, t.w, t.h, 0, GL_RGBA, GL_FLOAT, t.rgba.data());
+    for (size_t k = 0; k < t.mips.size(); ++k) {  // the complete chain tiershade built (mipmaps.h)
+      const int l = static_cast<int>(k) + 1;
+      g.TexImage2D(GL_TEXTURE_2D, l, GL_RGBA32F, std::max(1, t.w >> l), std::max(1, t.h >> l), 0, GL_RGBA, GL_FLOAT,
+                   t.mips[k].data());
+    }
   } else if (t.kind == TexKind::Tex3D) {
     g.TexImage3D(GL_TEXTURE_3D, 0, GL_RGBA32F, t.w, t.h, t.d, 0, GL_RGBA, GL_FLOAT, t.rgba.data());
   } else {
@@ -96,7 +103,12 @@ GLuint GlRenderer::upload_texture(const TextureDesc &t) {
   }
   const GLint filter = t.linear ? GL_LINEAR : GL_NEAREST;
   const GLint wrap = t.repeat && t.kind != TexKind::Cube ? GL_REPEAT : GL_CLAMP_TO_EDGE;
-  g.TexParameteri(target, GL_TEXTURE_MIN_FILTER, filter);
+  GLint min_filter = filter;
+  if (t.kind == TexKind::Tex2D && !t.mips.empty() && t.mip_filter == 1)
+    min_filter = t.linear ? GL_LINEAR_MIPMAP_NEAREST : GL_NEAREST_MIPMAP_NEAREST;
+  else if (t.kind == TexKind::Tex2D && !t.mips.empty() && t.mip_filter == 2)
+    min_filter = t.linear ? GL_LINEAR_MIPMAP_LINEAR : GL_NEAREST_MIPMAP_LINEAR;
+  g.TexParameteri(target, GL_TEXTURE_MIN_FILTER, min_filter);
   g.TexParameteri(target, GL_TEXTURE_MAG_FILTER, filter);
   g.TexParameteri(target, GL_TEXTURE_WRAP_S, wrap);
   g.TexParameteri(target, GL_TEXTURE_WRAP_T, wrap);

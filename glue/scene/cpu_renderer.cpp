@@ -39,6 +39,10 @@ struct DrawCtx {
   // not interpolated.
   int used[6];
   int nused = 0;
+  // A texture the variant samples at the uv has a mip chain: the pixels get their quad's uv
+  // derivatives (uv_grad_run) for llvmpipe's level of detail.
+  bool mips = false;
+  int uv_slot = 0;
 };
 
 void make_ctx(const PreparedScene &p, std::vector<DrawCtx> *out) {
@@ -55,13 +59,17 @@ void make_ctx(const PreparedScene &p, std::vector<DrawCtx> *out) {
     if (d.world) {
       c.wl = wl_variant_of(*d.variant);
       // u_base u_normalmap u_lightmap u_envmap_mask u_envmap
-      c.wt = {&c.t2[0], &c.t2[1], &c.t2[2], &c.t2[3], &c.cube};
+      c.wt = {&c.t2[0], &c.t2[1], &c.t2[2], &c.t2[3], &c.cube, nullptr, 0};
     } else {
       c.ml = ml_variant_of(*d.variant);
       // u_albedo u_normal_map u_exponent_map u_light_warp u_envmap
-      c.mt = {&c.t2[0], &c.t2[1], &c.t2[2], &c.t2[3], &c.cube};
+      c.mt = {&c.t2[0], &c.t2[1], &c.t2[2], &c.t2[3], &c.cube, nullptr, 0};
     }
     c.rec = d.shared;
+    c.uv_slot = d.world ? static_cast<int>(WL_SLOT_UV) : static_cast<int>(ML_SLOT_UV);
+    // the textures sampled at the uv (model: albedo, normal, exponent; world: base, normal, mask)
+    for (int k : d.world ? std::vector<int>{0, 1, 3} : std::vector<int>{0, 1, 2})
+      c.mips = c.mips || c.t2[k].mip_levels > 1;
     c.nused = 0;
     for (int k = 0; k < 6; ++k) {
       bool use = true;
@@ -238,6 +246,51 @@ void interp_run(const float *vd, const uint32_t *indices, const int32_t *tri, co
     for (int q = 0; q < n; ++q) pp[static_cast<size_t>(one_w) * pitch + q].w = 1.f;
 }
 
+// The quad derivatives of the uv (pixel slot uv_slot, .xy) of pixels x0 .. x0 + n - 1 of row y,
+// as llvmpipe's sampler takes them (lp_bld_quad.c lp_build_packed_ddx_ddy_twocoord: per 2x2 quad
+// at even (x, y), top-right minus top-left and bottom-left minus top-left, for every pixel of
+// the quad): the pixel's triangle's planes evaluated at the quad's pixels, covered or not (the
+// helper pixels llvmpipe shades with the triangle's planes). Out: (ds/dx, ds/dy, dt/dx, dt/dy).
+// A pixel interpolated without llvmpipe's planes (interp_run's fallback) gets 0: level 0.
+void uv_grad_run(const float *vd, const uint32_t *indices, const int32_t *tri, const uint8_t *sub, int d, int y,
+                 int x0, int n, const int *used, int nused, int uv_slot, float W, float H, const int32_t *at,
+                 PlaneCache *pc, ts_vec4f *grad) {
+  ts_vec4f tmp[2 * kPixelSlots];
+  const int w = static_cast<int>(W);
+  int last_t = -1, last_s = -1, last_qx = -1, last_qy = -1;
+  ts_vec4f last{0, 0, 0, 0};
+  for (int q = 0; q < n; ++q) {
+    const int t = tri[x0 + q];
+    const int sb = sub ? sub[x0 + q] : 0;
+    const int px = at ? at[x0 + q] % w : x0 + q, py = at ? at[x0 + q] / w : y;
+    PlaneCache::Entry &ce = pc->at(d, t);
+    if (ce.draw != d || ce.tri != t) {
+      const uint32_t *idx = &indices[static_cast<size_t>(t) * 3];
+      const float *v[3] = {&vd[idx[0] * kVStride], &vd[idx[1] * kVStride], &vd[idx[2] * kVStride]};
+      ce.draw = d;
+      ce.tri = t;
+      setup_planes(v, W, H, used, nused, &ce.set);
+    }
+    const LpTriSet &ts = ce.set;
+    int s = -1;
+    if (ts.n > 0) s = sub ? (sb < ts.n && ts.valid[sb] ? sb : -1) : lp_covering(ts, px, py);
+    if (s < 0) {
+      grad[q] = ts_v4f(0, 0, 0, 0);
+      continue;
+    }
+    const int qx = px & ~1, qy = py & ~1;
+    if (t != last_t || s != last_s || qx != last_qx || qy != last_qy) {
+      lp_interp_span(ts.pl[s], qx, qy, 2, &uv_slot, 1, tmp, 2, 0);  // TL, TR at tmp[uv_slot * 2 + 0, 1]
+      const ts_vec4f tl = tmp[uv_slot * 2], tr = tmp[uv_slot * 2 + 1];
+      lp_interp_span(ts.pl[s], qx, qy + 1, 1, &uv_slot, 1, tmp, 1, 0);  // BL at tmp[uv_slot]
+      const ts_vec4f bl = tmp[uv_slot];
+      last = ts_v4f(tr.x - tl.x, bl.x - tl.x, tr.y - tl.y, bl.y - tl.y);
+      last_t = t, last_s = s, last_qx = qx, last_qy = qy;
+    }
+    grad[q] = last;
+  }
+}
+
 // Shades n pixels of one draw with the batched twin: pixel slot k of pixel i at
 // pix[k * pitch + i], the shared slots from the draw's record.
 template <class BatchInput>
@@ -251,13 +304,21 @@ BatchInput batch_input(const DrawCtx &c, const ts_vec4f *pix, int pitch, int slo
   return in;
 }
 
-void shade_run(const DrawCtx &c, const ts_vec4f *pix, int pitch, int n, ts_vec4f *res) {
+// grad: the pixels' uv derivatives (uv_grad_run), or nullptr (level 0).
+void shade_run(const DrawCtx &c, const ts_vec4f *pix, int pitch, int n, ts_vec4f *res,
+               const ts_vec4f *grad = nullptr) {
   if (c.world) {
     const wl_batch_input in = batch_input<wl_batch_input>(c, pix, pitch, WL_SLOTS);
-    world_lighting_f_batch(&c.wl, &in, &c.wt, res, n);
+    wl_textures wt = c.wt;
+    wt.uv_grad = grad;
+    wt.uv_grad_stride = 1;
+    world_lighting_f_batch(&c.wl, &in, &wt, res, n);
   } else {
     const ml_batch_input in = batch_input<ml_batch_input>(c, pix, pitch, ML_SLOTS);
-    model_lighting_f_batch(&c.ml, &in, &c.mt, res, n);
+    ml_textures mt = c.mt;
+    mt.uv_grad = grad;
+    mt.uv_grad_stride = 1;
+    model_lighting_f_batch(&c.ml, &in, &mt, res, n);
   }
 }
 
@@ -313,6 +374,7 @@ void scene_shade_cpu(const PreparedScene &p, const SceneVisibility &vis, ImageF 
   std::atomic<int> rows{0};
   // Per thread: the run's pixel slots and results (kept across rows).
   std::vector<std::vector<ts_vec4f>> pix_of(static_cast<size_t>(parallel_workers(p.h, threads)));
+  std::vector<std::vector<ts_vec4f>> grad_of(pix_of.size());
   std::vector<PlaneCache> cache(pix_of.size());
   const float W = static_cast<float>(p.w), H = static_cast<float>(p.h);
   std::vector<float> clip;
@@ -356,7 +418,15 @@ void scene_shade_cpu(const PreparedScene &p, const SceneVisibility &vis, ImageF 
           const int n = std::min(kChunk, x1 - c0);
           interp_run(vd, indices, tri, sub, vb1, vb2, d, y, c0, n, used, nused, pp, kChunk, vis.pixel_planes, W, H,
                      c.world ? -1 : ML_SLOT_POSITION, at, &cache[static_cast<size_t>(t)]);
-          shade_run(c, pp, kChunk, n, orow_px + (c0 - x));
+          ts_vec4f *gr = nullptr;
+          if (c.mips && vis.pixel_planes) {
+            std::vector<ts_vec4f> &g = grad_of[static_cast<size_t>(t)];
+            g.resize(kChunk);
+            gr = g.data();
+            uv_grad_run(vd, indices, tri, sub, d, y, c0, n, used, nused, c.uv_slot, W, H, at,
+                        &cache[static_cast<size_t>(t)], gr);
+          }
+          shade_run(c, pp, kChunk, n, orow_px + (c0 - x), gr);
         }
         x = x1;
       }

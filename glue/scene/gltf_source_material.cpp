@@ -63,6 +63,12 @@ bool texture_ref(const tinygltf::Model &m, int index, const std::string &place, 
     const tinygltf::Sampler &sm = m.samplers[t.sampler];
     r.linear = sm.magFilter != TINYGLTF_TEXTURE_FILTER_NEAREST;
     r.repeat = sm.wrapS == TINYGLTF_TEXTURE_WRAP_REPEAT && sm.wrapT == TINYGLTF_TEXTURE_WRAP_REPEAT;
+    if (sm.minFilter == TINYGLTF_TEXTURE_FILTER_NEAREST_MIPMAP_NEAREST ||
+        sm.minFilter == TINYGLTF_TEXTURE_FILTER_LINEAR_MIPMAP_NEAREST)
+      r.mip = 1;
+    else if (sm.minFilter == TINYGLTF_TEXTURE_FILTER_NEAREST_MIPMAP_LINEAR ||
+             sm.minFilter == TINYGLTF_TEXTURE_FILTER_LINEAR_MIPMAP_LINEAR)
+      r.mip = 2;
   }
   *out = r;
   return true;

@@ -2,6 +2,7 @@
 // slots and textures, the world bake (glue/bake/world_bake.h) and the probe cube maps, all
 // limited to what the selected variants use. Host geometry in double with GLM.
 #include "scene/prepare.h"
+#include "scene/mipmaps.h"
 
 #include <algorithm>
 #include <array>
@@ -70,8 +71,12 @@ TextureDesc solid(const char *sampler, float r, float g, float b, float a) {
 }
 
 // An image as a texture: colour images are sRGB-decoded and multiplied by a factor.
+// With the sampler's mipmap filter (a material texture the shaders sample at the surface's uv;
+// glue/scene/mipmaps.h), its chain: mips kMipNone for the light warp ramp, which is indexed by
+// lighting and stays one level, as do lightmaps.
+enum MipUse { kMipNone, kMipColor, kMipNormal };
 TextureDesc image_texture(const Scene &s, const SceneTextureRef &ref, const char *sampler, bool srgb,
-                          const float factor[4]) {
+                          const float factor[4], MipUse mips) {
   const SceneImage &im = s.images.at(ref.image);
   TextureDesc t;
   t.sampler = sampler;
@@ -87,6 +92,10 @@ TextureDesc image_texture(const Scene &s, const SceneTextureRef &ref, const char
       if (factor) v *= factor[c];
       t.rgba[i + c] = v;
     }
+  if (ref.mip != 0 && mips != kMipNone) {
+    build_mip_chain(&t, mips == kMipNormal ? MipContent::NormalMap : MipContent::Color);
+    if (!t.mips.empty()) t.mip_filter = ref.mip;
+  }
   return t;
 }
 
@@ -108,7 +117,7 @@ struct TexturePool {
 };
 std::string key_of(const char *sampler, const SceneTextureRef &r, bool srgb, const float *factor) {
   std::string k = std::string(sampler) + "|" + std::to_string(r.image) + "|" + (r.linear ? "L" : "N") +
-      (r.repeat ? "R" : "C") + (srgb ? "s" : "l");
+      (r.repeat ? "R" : "C") + (srgb ? "s" : "l") + "m" + std::to_string(r.mip);
   if (factor)
     for (int c = 0; c < 4; ++c) k += "|" + std::to_string(factor[c]);
   return k;
@@ -205,7 +214,7 @@ bool model_draw(const Scene &s, const PreparedScene &ps, const SceneDrawChoice &
   if (v.value("ALBEDO_TEXTURE")) {
     if (m.base_texture.image >= 0)
       d->tex.push_back(pool->get(key_of("u_albedo", m.base_texture, true, m.base_color),
-                                 [&] { return image_texture(s, m.base_texture, "u_albedo", true, m.base_color); }));
+                                 [&] { return image_texture(s, m.base_texture, "u_albedo", true, m.base_color, kMipColor); }));
     else
       d->tex.push_back(pool->get(
           key_solid("u_albedo", m.base_color[0], m.base_color[1], m.base_color[2], m.base_color[3]),
@@ -216,20 +225,20 @@ bool model_draw(const Scene &s, const PreparedScene &ps, const SceneDrawChoice &
   const bool phong = v.value("PHONG") != 0;
   if (phong && m.normal_texture.image >= 0)
     d->tex.push_back(pool->get(key_of("u_normal_map", m.normal_texture, false, nullptr),
-                               [&] { return image_texture(s, m.normal_texture, "u_normal_map", false, nullptr); }));
+                               [&] { return image_texture(s, m.normal_texture, "u_normal_map", false, nullptr, kMipNormal); }));
   else
     d->tex.push_back(pool->get(key_solid("u_normal_map", 0.5f, 0.5f, 1.f, 1.f),
                                [&] { return solid("u_normal_map", 0.5f, 0.5f, 1.f, 1.f); }));
   if (v.value("PHONG_EXPONENT_MAP") && m.phong_exponent_texture.image >= 0)
     d->tex.push_back(pool->get(key_of("u_exponent_map", m.phong_exponent_texture, false, nullptr), [&] {
-      return image_texture(s, m.phong_exponent_texture, "u_exponent_map", false, nullptr);
+      return image_texture(s, m.phong_exponent_texture, "u_exponent_map", false, nullptr, kMipColor);
     }));
   else
     d->tex.push_back(
         pool->get(key_solid("u_exponent_map", 1, 1, 1, 1), [&] { return solid("u_exponent_map", 1, 1, 1, 1); }));
   if (v.value("LIGHT_WARP") && m.light_warp_texture.image >= 0)
     d->tex.push_back(pool->get(key_of("u_light_warp", m.light_warp_texture, false, nullptr),
-                               [&] { return image_texture(s, m.light_warp_texture, "u_light_warp", false, nullptr); }));
+                               [&] { return image_texture(s, m.light_warp_texture, "u_light_warp", false, nullptr, kMipNone); }));
   else
     d->tex.push_back(pool->get("u_light_warp|identity", [&] {
       // An identity ramp (value = u), for a LIGHT_WARP variant whose material has no ramp.
@@ -477,14 +486,14 @@ bool prepare_scene(const Scene &s, const SceneSelection &sel, int w, int h, Api 
                     : v4(0, 0, 0, 0);
     if (m.base_texture.image >= 0)
       d.tex.push_back(pool.get(key_of("u_base", m.base_texture, true, m.base_color),
-                               [&] { return image_texture(s, m.base_texture, "u_base", true, m.base_color); }));
+                               [&] { return image_texture(s, m.base_texture, "u_base", true, m.base_color, kMipColor); }));
     else
       d.tex.push_back(pool.get(
           key_solid("u_base", m.base_color[0], m.base_color[1], m.base_color[2], m.base_color[3]),
           [&] { return solid("u_base", m.base_color[0], m.base_color[1], m.base_color[2], m.base_color[3]); }));
     if (v.value("BUMPMAP") && m.normal_texture.image >= 0)
       d.tex.push_back(pool.get(key_of("u_normalmap", m.normal_texture, false, nullptr),
-                               [&] { return image_texture(s, m.normal_texture, "u_normalmap", false, nullptr); }));
+                               [&] { return image_texture(s, m.normal_texture, "u_normalmap", false, nullptr, m.ssbump ? kMipColor : kMipNormal); }));
     else
       d.tex.push_back(pool.get(key_solid("u_normalmap", 0.5f, 0.5f, 1.f, 1.f),
                                [&] { return solid("u_normalmap", 0.5f, 0.5f, 1.f, 1.f); }));
@@ -494,7 +503,7 @@ bool prepare_scene(const Scene &s, const SceneSelection &sel, int w, int h, Api 
                              [&] { return encode_page(ws, bake, code, d.lightmap_page); }));
     if (v.value("ENVMAPMASK") == 1 && m.envmap_mask_texture.image >= 0)
       d.tex.push_back(pool.get(key_of("u_envmap_mask", m.envmap_mask_texture, false, nullptr), [&] {
-        return image_texture(s, m.envmap_mask_texture, "u_envmap_mask", false, nullptr);
+        return image_texture(s, m.envmap_mask_texture, "u_envmap_mask", false, nullptr, kMipColor);
       }));
     else
       d.tex.push_back(

@@ -64,13 +64,13 @@ bool scene_reference_linear(const Scene &s, const PreparedScene &p, const std::v
       c.page = page32_view;  // the draw's page: its rows of the stacked pages
       c.page.h = p.lightmap_h / std::max(1, p.lightmap_pages);
       c.page.texels += static_cast<size_t>(d.lightmap_page) * c.page.h * p.lightmap_w * 4;
-      c.wt = {&c.t2[0], &c.t2[1], &c.page, &c.t2[3], &c.cube};
+      c.wt = {&c.t2[0], &c.t2[1], &c.page, &c.t2[3], &c.cube, nullptr, 0};
       continue;
     }
     c.v = ml_variant_of(*d.variant);
     c.v.tier = TS_TIER_ID_SM3;
     c.v.output_mode = 0;
-    c.tex = {&c.t2[0], &c.t2[1], &c.t2[2], &c.t2[3], &c.cube};
+    c.tex = {&c.t2[0], &c.t2[1], &c.t2[2], &c.t2[3], &c.cube, nullptr, 0};
   }
   const int nl = static_cast<int>(packed.size());
   rgb->assign(n * 3, 0.0);

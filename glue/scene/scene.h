@@ -22,8 +22,11 @@ struct SceneImage {
 // A texture reference: an image and how it is sampled (glTF sampler; default linear + repeat).
 struct SceneTextureRef {
   int image = -1;  // -1: none
-  bool linear = true;
+  bool linear = true;  // the sampler's magFilter (also the image part of its minification)
   bool repeat = true;
+  // the mipmap part of the sampler's minFilter: 0 none (9728 NEAREST, 9729 LINEAR, or no
+  // minFilter), 1 *_MIPMAP_NEAREST (9984, 9985), 2 *_MIPMAP_LINEAR (9986, 9987)
+  int mip = 0;
 };
 
 // Which Source shader a material stands for ("shader" in the material's extras).

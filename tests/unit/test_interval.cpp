@@ -280,7 +280,7 @@ void check_texture(Rng &r) {
   std::string first;
   for (int wrap = 0; wrap < 2; ++wrap)
     for (int filter = 0; filter < 2; ++filter) {
-      const ts_tex2d t = {w, h, tx.data(), wrap, wrap, filter};
+      const ts_tex2d t = ts_tex2d_single(w, h, tx.data(), wrap, wrap, filter);
       for (int i = 0; i < 20000; ++i) {
         const float u0 = r.uniform(-1.5f, 2.5f), v0 = r.uniform(-1.5f, 2.5f);
         // wide ranges (the hull fallback) and narrow ones (a point, a fragment's coordinate)
@@ -299,7 +299,7 @@ void check_texture(Rng &r) {
   check(bad == 0, "texture2D llvmpipe mirror inside (" + std::to_string(trials) + " lookups)", first);
   // a point coordinate at a texel centre on a LINEAR texture: within 2^-7 of the weight either side,
   // so far narrower than the hull of the texture (texels in [-3, 3])
-  const ts_tex2d lin = {w, h, tx.data(), TS_WRAP_CLAMP, TS_WRAP_CLAMP, TS_FILTER_LINEAR};
+  const ts_tex2d lin = ts_tex2d_single(w, h, tx.data(), TS_WRAP_CLAMP, TS_WRAP_CLAMP, TS_FILTER_LINEAR);
   const ts_vec4iv c = ts_texture2Div(&lin, ts_v2iv(ts_ivpoint(2.5f / w), ts_ivpoint(1.5f / h)));
   const float t21 = tx[(1 * w + 2) * 4];
   check(ts_ivcontains(c.x, t21) && c.x.hi - c.x.lo < 6.f * 4 / 128 + 1e-5f,

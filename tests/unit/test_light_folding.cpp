@@ -67,8 +67,8 @@ double angle_deg(V3 a, V3 b) {
 // ---- shading set-up ----------------------------------------------------------
 
 const float kDummyTexel[4] = {1.0f, 1.0f, 1.0f, 1.0f};
-const ts_tex2d kDummyAlbedoTex = {1, 1, kDummyTexel, TS_WRAP_REPEAT, TS_WRAP_REPEAT, TS_FILTER_NEAREST};
-const ml_textures kDummyAlbedo = {&kDummyAlbedoTex, nullptr, nullptr, nullptr, nullptr};
+const ts_tex2d kDummyAlbedoTex = ts_tex2d_single(1, 1, kDummyTexel, TS_WRAP_REPEAT, TS_WRAP_REPEAT, TS_FILTER_NEAREST);
+const ml_textures kDummyAlbedo = {&kDummyAlbedoTex, nullptr, nullptr, nullptr, nullptr, nullptr, 0};
 
 ml_variant variant(int tier, int half_lambert, int num_lights) {
   ml_variant v = {};

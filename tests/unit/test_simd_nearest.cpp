@@ -70,7 +70,7 @@ Tex make_tex(Rng &r, int w, int h, int wrap, int filter) {
   x.texels.resize(static_cast<size_t>(w) * h * 4);
   for (size_t i = 0; i < x.texels.size(); ++i)
     x.texels[i] = i % 4 == 3 ? static_cast<float>(120 + r.next() % 11) / 255.f : r.uniform(0.02f, 1.f);
-  x.t = {w, h, nullptr, wrap, wrap, filter};
+  x.t = ts_tex2d_single(w, h, nullptr, wrap, wrap, filter);
   return x;
 }
 
@@ -96,7 +96,7 @@ int main() {
     Tex tex[4] = {make_tex(r, w, h, wrap, TS_FILTER_NEAREST), make_tex(r, w, h, wrap, TS_FILTER_NEAREST),
                   make_tex(r, 2 * w, h, wrap, TS_FILTER_NEAREST), make_tex(r, w, 2 * h, wrap, TS_FILTER_NEAREST)};
     for (Tex &t : tex) t.t.texels = t.texels.data();
-    const wl_textures tx = {&tex[0].t, &tex[1].t, &tex[2].t, &tex[3].t, &cube};
+    const wl_textures tx = {&tex[0].t, &tex[1].t, &tex[2].t, &tex[3].t, &cube, nullptr, 0};
     // Records: uv and the lightmap offsets hard or random, the rest random but sane.
     std::vector<ts_vec4f> recs(static_cast<size_t>(n) * WL_SLOTS);
     for (int i = 0; i < n; ++i) {
@@ -151,7 +151,7 @@ int main() {
                 t.t.texels = t.texels.data();
                 t.t.filter = TS_FILTER_LINEAR;
               }
-              const wl_textures tl = {&lin[0].t, &lin[1].t, &lin[2].t, &lin[3].t, &cube};
+              const wl_textures tl = {&lin[0].t, &lin[1].t, &lin[2].t, &lin[3].t, &cube, nullptr, 0};
               std::vector<ts_vec4f> a(static_cast<size_t>(n)), b(static_cast<size_t>(n));
               world_lighting_f_records(&v, recs.data(), &tx, a.data(), n);
               world_lighting_f_records(&v, recs.data(), &tl, b.data(), n);
