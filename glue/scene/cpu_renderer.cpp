@@ -442,7 +442,7 @@ void scene_shade_cpu(const PreparedScene &p, const SceneVisibility &vis, ImageF 
 }
 
 void scene_shade_records(const PreparedScene &p, const std::vector<int> &draw, const std::vector<float> &slots,
-                         ImageF *out, int threads) {
+                         ImageF *out, int threads, const std::vector<float> *grads) {
   std::vector<DrawCtx> ctx;
   make_ctx(p, &ctx);
   out->w = p.w;
@@ -452,6 +452,7 @@ void scene_shade_records(const PreparedScene &p, const std::vector<int> &draw, c
     std::vector<ts_vec4f> pix(static_cast<size_t>(kPixelSlots) * p.w);
     std::vector<ts_vec4f> res(static_cast<size_t>(p.w));
     const size_t row = static_cast<size_t>(y) * p.w;
+    const ts_vec4f *grow = grads ? reinterpret_cast<const ts_vec4f *>(grads->data()) + row : nullptr;
     int x = 0;
     while (x < p.w) {
       const int d = draw[row + x];
@@ -465,7 +466,7 @@ void scene_shade_records(const PreparedScene &p, const std::vector<int> &draw, c
       for (int i = 0; i < n; ++i)
         for (int k = 0; k < kPixelSlots; ++k)
           std::memcpy(&pix[static_cast<size_t>(k) * p.w + i], &slots[(row + x + i) * 24 + k * 4], 4 * sizeof(float));
-      shade_run(ctx[d], pix.data(), p.w, n, res.data());
+      shade_run(ctx[d], pix.data(), p.w, n, res.data(), grow ? grow + x : nullptr);
       std::memcpy(&out->rgba[(row + x) * 4], res.data(), static_cast<size_t>(n) * sizeof(ts_vec4f));
       x = x1;
     }
@@ -474,12 +475,13 @@ void scene_shade_records(const PreparedScene &p, const std::vector<int> &draw, c
 }
 
 void scene_records_cpu(const PreparedScene &p, const SceneVisibility &vis, std::vector<int> *draw,
-                       std::vector<float> *slots, int threads) {
+                       std::vector<float> *slots, int threads, std::vector<float> *grads) {
   std::vector<std::vector<float>> vary;
   visible_vertex_stage(p, vis, &vary);
   const size_t n = static_cast<size_t>(p.w) * p.h;
   draw->assign(vis.draw.begin(), vis.draw.end());
   slots->assign(n * kVary, 0.f);
+  if (grads) grads->assign(n * 4, 0.f);
   const int all[kPixelSlots] = {0, 1, 2, 3, 4, 5};
   std::vector<PlaneCache> caches(static_cast<size_t>(parallel_workers(p.h, threads)));
   parallel_rows_by_worker(p.h, threads, [&](int t, int y) {
@@ -504,6 +506,12 @@ void scene_records_cpu(const PreparedScene &p, const SceneVisibility &vis, std::
         for (int k = 0; k < kPixelSlots; ++k)
           std::memcpy(&(*slots)[(row + x + i) * kVary + k * 4], &pix[static_cast<size_t>(k) * p.w + i],
                       sizeof(ts_vec4f));
+      if (grads && vis.pixel_planes)
+        uv_grad_run(vary[d].data(), p.draws[d].geo->indices.data(), vis.tri.data() + row,
+                    vis.sub.size() == vis.tri.size() ? vis.sub.data() + row : nullptr, d, y, x, x1 - x, all,
+                    kPixelSlots, p.draws[d].world ? static_cast<int>(WL_SLOT_UV) : static_cast<int>(ML_SLOT_UV),
+                    static_cast<float>(p.w), static_cast<float>(p.h), vis.at.empty() ? nullptr : vis.at.data() + row,
+                    &cache, reinterpret_cast<ts_vec4f *>(grads->data()) + row + x);
       x = x1;
     }
   });

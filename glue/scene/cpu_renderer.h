@@ -39,12 +39,14 @@ void scene_rasterize_cpu(const PreparedScene &p, SceneVisibility *vis, int threa
 void scene_shade_cpu(const PreparedScene &p, const SceneVisibility &vis, ImageF *out, int threads = 0,
                      const std::function<void(double)> &progress = nullptr);
 
-// Shades GL's G-buffer (per pixel draw index and 6 slots, glue/scene/gl_renderer.h) with the C twin.
+// Shades GL's G-buffer (per pixel draw index and 6 slots, glue/scene/gl_renderer.h) with the C twin;
+// grads (4 floats a pixel, SceneGl::gbuffer's or scene_records_cpu's): the uv's quad derivatives,
+// for the level of detail of mipmapped textures (none: every texture's level 0).
 void scene_shade_records(const PreparedScene &p, const std::vector<int> &draw, const std::vector<float> &slots,
-                         ImageF *out, int threads = 0);
+                         ImageF *out, int threads = 0, const std::vector<float> *grads = nullptr);
 
 // The C fallback's G-buffer: per pixel the draw index (-1 background) and the 6 pixel slots
 // (24 floats, every slot, interpolated as scene_shade_cpu interpolates them), the same layout
 // as SceneGl::gbuffer, for scene_shade_records and scene_reference_linear.
 void scene_records_cpu(const PreparedScene &p, const SceneVisibility &vis, std::vector<int> *draw,
-                       std::vector<float> *slots, int threads = 0);
+                       std::vector<float> *slots, int threads = 0, std::vector<float> *grads = nullptr);

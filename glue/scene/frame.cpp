@@ -451,10 +451,10 @@ bool SceneRenderer::frame(SceneRenderResult *out, std::string *err) {
     if (cfg.on_lit) cfg.on_lit(res.lit);
     if (cfg.progress) cfg.progress("GL lit pass (a variant's first draw JIT-compiles it)", 1.0);
     if (cfg.check) {
-      std::vector<float> slots;
-      if (!m.sgl->gbuffer(&draw_of_pixel, &slots, err)) return false;
+      std::vector<float> slots, grads;
+      if (!m.sgl->gbuffer(&draw_of_pixel, &slots, err, &grads)) return false;
       ImageF c;
-      scene_shade_records(p, draw_of_pixel, slots, &c, cfg.threads);
+      scene_shade_records(p, draw_of_pixel, slots, &c, cfg.threads, &grads);
       DiffStats st;
       diff_image(res.lit, c, &st);
       res.check_mismatched = st.mismatched_pixels;

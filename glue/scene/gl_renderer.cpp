@@ -346,17 +346,17 @@ bool SceneGl::gbuffer_msaa(std::vector<int> *draw, std::vector<float> *slots, st
   return ok;
 }
 
-bool SceneGl::gbuffer(std::vector<int> *draw, std::vector<float> *slots, std::string *err) {
-  return gbuffer_passes(draw, slots, err, nullptr, 1.f);
+bool SceneGl::gbuffer(std::vector<int> *draw, std::vector<float> *slots, std::string *err, std::vector<float> *grads) {
+  return gbuffer_passes(draw, slots, err, nullptr, 1.f, grads);
 }
 
 bool SceneGl::gbuffer_passes(std::vector<int> *draw, std::vector<float> *slots, std::string *err,
-                             const std::function<void()> &resolve, float scale) {
+                             const std::function<void()> &resolve, float scale, std::vector<float> *grads) {
   const size_t n = static_cast<size_t>(p_->w) * p_->h;
   if (gb_programs_.empty()) {
     const Target t = target_for_api(api_);
-    gb_programs_.assign(7, {});
-    for (int slot = -1; slot < 6; ++slot) {
+    gb_programs_.assign(8, {});
+    for (int slot = -1; slot < 7; ++slot) {  // slot 6: the uv's quad derivatives
       for (size_t k = 0; k < variant_names_.size(); ++k) {
         size_t di = 0;
         while (prog_of_draw_[di] != static_cast<int>(k)) ++di;
@@ -377,7 +377,8 @@ bool SceneGl::gbuffer_passes(std::vector<int> *draw, std::vector<float> *slots, 
   std::vector<float> img;
   draw->assign(n, -1);
   slots->assign(n * 24, 0.f);
-  for (int slot = -1; slot < 6; ++slot) {
+  if (grads) grads->assign(n * 4, 0.f);
+  for (int slot = -1; slot < (grads ? 7 : 6); ++slot) {
     if (!draw_all(gb_programs_[slot + 1], false, slot, err, nullptr)) return false;
     if (resolve) resolve();
     if (!read(&img)) {
@@ -389,6 +390,8 @@ bool SceneGl::gbuffer_passes(std::vector<int> *draw, std::vector<float> *slots, 
         for (int c = 0; c < 4; ++c) img[i * 4 + c] *= scale;
       if (slot < 0) {
         (*draw)[i] = img[i * 4 + 3] > 0.5f ? static_cast<int>(img[i * 4]) : -1;
+      } else if (slot == 6) {
+        std::memcpy(&(*grads)[i * 4], &img[i * 4], 4 * sizeof(float));
       } else {
         std::memcpy(&(*slots)[i * 24 + slot * 4], &img[i * 4], 4 * sizeof(float));
       }

@@ -45,8 +45,11 @@ class SceneGl : NonCopyable {
                   const std::function<void(int draw, GLuint program)> &before_draw = nullptr);
   // Updates the shared slots (uniforms) of the draws from p (e.g. a new tone-map scale).
   void update(const PreparedScene &p) { p_ = &p; }
-  // G-buffer: per pixel the draw index (-1 background) and the 6 pixel slots (24 floats).
-  bool gbuffer(std::vector<int> *draw, std::vector<float> *slots, std::string *err);
+  // G-buffer: per pixel the draw index (-1 background) and the 6 pixel slots (24 floats); with
+  // grads, also the uv's quad derivatives a mipmapped texture's level of detail comes from (4
+  // floats a pixel: scene_shade_records' grads; shaders/scene_gbuffer.fs slot 6).
+  bool gbuffer(std::vector<int> *draw, std::vector<float> *slots, std::string *err,
+               std::vector<float> *grads = nullptr);
   // The same G-buffer drawn with the multisampled state (after set_msaa and init): an RGBA32F
   // target of the same sample count, only sample 0 written (glSampleCoverage 1/4 of 4), resolved
   // by glBlitFramebuffer ((v + 0 + 0 + 0) / 4, exact) and scaled back by 4: the records llvmpipe's
@@ -66,7 +69,7 @@ class SceneGl : NonCopyable {
   bool read(std::vector<float> *rgba);
   bool init_msaa(std::string *err);
   bool gbuffer_passes(std::vector<int> *draw, std::vector<float> *slots, std::string *err,
-                      const std::function<void()> &resolve, float scale);
+                      const std::function<void()> &resolve, float scale, std::vector<float> *grads = nullptr);
   GlRenderer &r_;
   Api api_;
   const PreparedScene *p_ = nullptr;

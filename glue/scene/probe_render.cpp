@@ -185,11 +185,11 @@ bool render_probe_cube_gl(ProbeView *v, SceneGl *g, const double pos[3], int siz
     put_face(img, size, face, rgba);
     if (!check && !draws) continue;
     std::vector<int> draw;
-    std::vector<float> slots;
-    if (!g->gbuffer(&draw, &slots, err)) return false;
+    std::vector<float> slots, grads;
+    if (!g->gbuffer(&draw, &slots, err, check ? &grads : nullptr)) return false;
     if (draws) std::copy(draw.begin(), draw.end(), draws->begin() + static_cast<long>(face * n));
     if (!check) continue;
-    scene_shade_records(v->p, draw, slots, &twin);
+    scene_shade_records(v->p, draw, slots, &twin, 0, &grads);
     for (size_t i = 0; i < static_cast<size_t>(size) * size; ++i)
       *check += std::memcmp(&img.rgba[i * 4], &twin.rgba[i * 4], 3 * sizeof(float)) != 0;
   }

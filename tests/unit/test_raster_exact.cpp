@@ -28,6 +28,7 @@ namespace {
 
 struct Count {
   long cover_diff = 0, both = 0, exact = 0, floats = 0, float_diff = 0;
+  long grad_nonzero = 0, grad_diff = 0;  // the uv's quad derivatives (mipmaps' level of detail)
 };
 
 // GL's and the C fallback's records of one scene at w x h.
@@ -43,15 +44,15 @@ bool compare_scene(const char *name, int w, int h, GlContext &ctx, Count c[2], s
   GlRenderer r(ctx);
   SceneGl g(r, Api::GL33);
   std::vector<int> gd;
-  std::vector<float> gs;
-  if (!g.init(p, err) || !g.gbuffer(&gd, &gs, err)) return false;
+  std::vector<float> gs, gg;
+  if (!g.init(p, err) || !g.gbuffer(&gd, &gs, err, &gg)) return false;
   SceneVisibility vis;
   scene_rasterize_cpu(p, &vis);
   for (int planes = 0; planes < 2; ++planes) {
     std::vector<int> cd;
-    std::vector<float> cs;
+    std::vector<float> cs, cg;
     vis.pixel_planes = planes == 1;
-    scene_records_cpu(p, vis, &cd, &cs);
+    scene_records_cpu(p, vis, &cd, &cs, 0, &cg);
     const size_t n = static_cast<size_t>(w) * h;
     for (size_t i = 0; i < n; ++i) {
       if (gd[i] != cd[i]) {
@@ -61,6 +62,10 @@ bool compare_scene(const char *name, int w, int h, GlContext &ctx, Count c[2], s
       if (gd[i] < 0) continue;
       ++c[planes].both;
       bool same = true;
+      for (int k = 0; k < 4; ++k) {
+        c[planes].grad_nonzero += gg[i * 4 + k] != 0.f;
+        c[planes].grad_diff += std::memcmp(&gg[i * 4 + k], &cg[i * 4 + k], 4) != 0;
+      }
       for (int k = 0; k < 24; ++k) {
         // A slot the variant does not have is vec4(0) on GL (scene_gbuffer.fs): not compared.
         const float *slot = &gs[i * 24 + (k / 4) * 4];
@@ -215,6 +220,14 @@ void test_scenes() {
                 ": the C rasteriser's records are GL's, bit for bit",
             std::to_string(c[1].cover_diff) + " pixels of another draw, " + std::to_string(c[1].float_diff) +
                 " floats differ");
+      // The derivatives llvmpipe's sampler takes (scene_gbuffer.fs slot 6) against the C
+      // fallback's from the triangles' planes (cpu_renderer.cpp uv_grad_run): 0 bits apart, and
+      // not all zero (every shipped scene has textured draws).
+      check(c[1].grad_nonzero > 0 && c[1].grad_diff == 0,
+            std::string("raster exact: ") + name + " " + std::to_string(sw) + "x" + std::to_string(sh) +
+                ": the uv's quad derivatives are llvmpipe's, bit for bit (" + std::to_string(c[1].grad_nonzero) +
+                " non-zero)",
+            std::to_string(c[1].grad_diff) + " of " + std::to_string(c[1].both * 4) + " derivatives differ");
     }
   }
 }
