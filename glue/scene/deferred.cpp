@@ -9,10 +9,17 @@
 #include "scene/selection.h"
 #include "twins/model_lighting.h"
 
+// The deferred frames' records carry no derivatives: their textures are sampled at level 0.
+static PrepareOptions level_zero_only() {
+  PrepareOptions o;
+  o.mipmaps = false;
+  return o;
+}
+
 bool scene_gbuffer_cpu(const Scene &s, Tier tier, int w, int h, bool all_features, SceneGBufferCpu *g,
                        std::string *err) {
   if (!select_scene_variants(s, tier, "", &g->sel, err, all_features) ||
-      !prepare_scene(s, g->sel, w, h, Api::GL33, s.hdr.tone_map_scale, &g->p, err))
+      !prepare_scene(s, g->sel, w, h, Api::GL33, s.hdr.tone_map_scale, &g->p, err, level_zero_only()))
     return false;
   SceneVisibility vis;
   scene_rasterize_cpu(g->p, &vis);

@@ -175,6 +175,7 @@ bool SceneRenderer::init(const Scene &s, const SceneSelection &sel, const SceneR
   auto t0 = Clock::now();
   const Api cube_api = m.cpu ? Api::GL33 : cfg.api;
   PrepareOptions popt;  // the world probes' cubes: by the frame's renderer (glue/scene/probe_render.h)
+  popt.mipmaps = cfg.mipmaps;
   popt.gl_probe_cubes = !m.cpu && cfg.gl_probe_cubes;
   popt.threads = cfg.threads;
   if (!prepare_scene(s, sel, cfg.w, cfg.h, cube_api, s.hdr.tone_map_scale, &m.p, err, popt)) return false;
@@ -368,12 +369,12 @@ bool SceneRenderer::Impl::msaa_frame(SceneRenderResult *res, std::string *err) {
   if (cfg.on_lit) cfg.on_lit(res->lit);
   if (cfg.check && !cpu) {
     std::vector<int> draw;
-    std::vector<float> slots;
+    std::vector<float> slots, grads;
     // The records as the multisample shader variant interpolates them (llvmpipe's one-sample
     // variant differs in the last bit on about 1 interior pixel in 2,400-11,000).
-    if (!sgl->gbuffer_msaa(&draw, &slots, err)) return false;
+    if (!sgl->gbuffer_msaa(&draw, &slots, err, &grads)) return false;
     ImageF twin;
-    scene_shade_records(p, draw, slots, &twin, cfg.threads);
+    scene_shade_records(p, draw, slots, &twin, cfg.threads, &grads);
     std::vector<uint8_t> codes(twin.rgba.size());
     for (size_t i = 0; i < codes.size(); ++i) codes[i] = ts_unorm8_from_float(twin.rgba[i]);
     scene_render_msaa_cpu(p, res->msaa_samples, &c, cfg.threads);

@@ -26,6 +26,7 @@ struct SceneRenderConfig {
   int w = 1280, h = 720;
   int threads = 0;  // C fallback workers (0 = all cores)
   bool check = false;  // GL: also shade GL's own G-buffer with the C twin and compare bit for bit
+  bool mipmaps = true;  // the samplers' mip chains (PrepareOptions::mipmaps; false: level 0 only)
   // MSAA samples per pixel (0 or 1: none; 2, 4, 8: the integer path's multisampled RGBA8
   // target, glue/scene/msaa.h).
   int msaa = 0;

@@ -316,7 +316,8 @@ bool SceneGl::frame(ImageF *out, std::string *err, double *draw_ms,
   return true;
 }
 
-bool SceneGl::gbuffer_msaa(std::vector<int> *draw, std::vector<float> *slots, std::string *err) {
+bool SceneGl::gbuffer_msaa(std::vector<int> *draw, std::vector<float> *slots, std::string *err,
+                           std::vector<float> *grads) {
   const GlFns &g = gl();
   if (!ms_fbo_) {
     *err = "gbuffer_msaa without a multisampled target (set_msaa before init)";
@@ -341,7 +342,7 @@ bool SceneGl::gbuffer_msaa(std::vector<int> *draw, std::vector<float> *slots, st
     g.BindFramebuffer(GL_READ_FRAMEBUFFER, gbm_fbo_);
     g.BindFramebuffer(GL_DRAW_FRAMEBUFFER, fbo_);
     g.BlitFramebuffer(0, 0, tw_, th_, 0, 0, tw_, th_, GL_COLOR_BUFFER_BIT, GL_NEAREST);
-  }, static_cast<float>(msaa_got_));
+  }, static_cast<float>(msaa_got_), grads);
   gbm_pass_ = false;
   return ok;
 }

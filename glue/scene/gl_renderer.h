@@ -54,7 +54,8 @@ class SceneGl : NonCopyable {
   // target of the same sample count, only sample 0 written (glSampleCoverage 1/4 of 4), resolved
   // by glBlitFramebuffer ((v + 0 + 0 + 0) / 4, exact) and scaled back by 4: the records llvmpipe's
   // multisample shader variant interpolated at sample 0's pixels (for MSAA --check).
-  bool gbuffer_msaa(std::vector<int> *draw, std::vector<float> *slots, std::string *err);
+  bool gbuffer_msaa(std::vector<int> *draw, std::vector<float> *slots, std::string *err,
+                    std::vector<float> *grads = nullptr);
   const GlFns &gl() const { return r_.gl(); }
   GLuint program_of(int draw) const { return programs_.at(prog_of_draw_.at(draw)); }
   // The host time of the last pass's per-draw set-up (program, uniforms, textures, attribute

@@ -105,11 +105,13 @@ ts_vec4f v4(float x, float y, float z, float w) { return ts_v4f(x, y, z, w); }
 struct TexturePool {
   std::vector<TextureDesc> *out;
   std::map<std::string, int> index;
+  bool mipmaps = true;  // PrepareOptions::mipmaps
   template <class Make>
   int get(const std::string &key, Make make) {
     auto it = index.find(key);
     if (it != index.end()) return it->second;
     out->push_back(make());
+    if (!mipmaps) out->back().mips.clear(), out->back().mip_filter = 0;
     const int i = static_cast<int>(out->size()) - 1;
     index[key] = i;
     return i;
@@ -304,7 +306,7 @@ bool prepare_scene(const Scene &s, const SceneSelection &sel, int w, int h, Api 
   for (int k = 0; k < 3; ++k) ps.eye[k] = static_cast<float>(cam.eye[k]);
   const Tier tier = sel.variants.empty() ? Tier::SM3 : sel.variants[0].tier;
   SceneProbeSet probes(s);
-  TexturePool pool{&ps.textures, {}};
+  TexturePool pool{&ps.textures, {}, opt.mipmaps};
   DrawGeometryCache geometry;
 
   // World: faces from the World primitives, baked only if some draw is a world draw.

@@ -109,6 +109,9 @@ struct PrepareOptions {
   // glue/scene/probe_render.h); false: by the C fallback, here, on `threads` workers (0: all cores).
   bool gl_probe_cubes = false;
   int threads = 0;
+  // The samplers' mip chains (docs/rendering.md "Mipmaps"); false: every texture one level, for
+  // the records-only paths whose records carry no derivatives (deferred frames, the reference).
+  bool mipmaps = true;
 };
 
 // api: cube maps are NEAREST on GLES (Mesa forces seamless filtering there; docs/conformance.md),

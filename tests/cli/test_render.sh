@@ -142,4 +142,28 @@ run scenes/world_lighting.gltf --size 32x18 --backend cpu -o "$TMP/pc"
 if [ "$RC" -eq 0 ] && grep -q 'note: probe by_the_crate: its 32 x 32 cube map rendered in-engine by the C fallback' "$OUT"; then
   pass "probe cubes by the C fallback: the note names the source"
 else fail "probe cubes by the C fallback: the note names the source" "status $RC: $(grep '^note' "$OUT" | head -n 3)"; fi
+# --- mipmaps (docs/rendering.md "Mipmaps"): the C fallback's frame equals GL 3.3's byte for byte
+# with each mipmap mode of the glTF sampler (the shipped scenes ask 9987 LINEAR_MIPMAP_LINEAR),
+# and differs from the frame of the same scene without mipmaps (9729), so the chain is used.
+# magFilter 9728 (NEAREST) also takes the image filter of the minified levels.
+mip_case() {  # name, scene, sed expression
+  local name=$1 scene=$2 expr=$3 f="$HERE/scenes/.mip_test_$$.gltf" g="$HERE/scenes/.mip_none_$$.gltf"
+  sed "$expr" "$HERE/scenes/$scene" > "$f"
+  sed "$expr; s/\"minFilter\": 998[4-7]/\"minFilter\": 9729/" "$HERE/scenes/$scene" > "$g"
+  run "${f#$HERE/}" --size 160x90 --backend cpu --quiet -o "$TMP/mc"
+  local rc1=$RC
+  run "${f#$HERE/}" --size 160x90 --backend osmesa --api gl33 --quiet -o "$TMP/mg"
+  local rc2=$RC
+  run "${g#$HERE/}" --size 160x90 --backend cpu --quiet -o "$TMP/mn"
+  rm -f "$f" "$g"
+  if [ "$rc1" -ne 0 ] || [ "$rc2" -ne 0 ] || [ "$RC" -ne 0 ]; then fail "$name" "status $rc1/$rc2/$RC: $(head -n 2 "$ERR")"
+  elif ! cmp -s "$TMP/mc.exr" "$TMP/mg.exr"; then fail "$name" "the C fallback's frame differs from GL 3.3's"
+  elif cmp -s "$TMP/mc.exr" "$TMP/mn.exr"; then fail "$name" "the frame equals the frame without mipmaps"
+  else pass "$name: C frame = GL 3.3 frame byte for byte, and not the unmipmapped frame"; fi
+}
+for mf in 9984 9985 9986 9987; do
+  mip_case "mipmaps $mf (world)" world_lighting.gltf "s/\"minFilter\": 9987/\"minFilter\": $mf/"
+done
+mip_case "mipmaps 9987, magFilter NEAREST (model)" model_lighting.gltf \
+  "s/\"minFilter\": 9987/\"minFilter\": 9987/; s/\"magFilter\": 9729/\"magFilter\": 9728/"
 cli_finish

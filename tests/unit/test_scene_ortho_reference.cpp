@@ -35,11 +35,20 @@ namespace {
 
 const char *kGrid = "scenes/sphere_grid.gltf";
 
-// *sel must outlive *p (the prepared draws point into it).
+// The records-only paths (deferred frames, the double reference) carry no derivatives and sample
+// level 0 (PrepareOptions::mipmaps false): frames compared with them are prepared the same way.
+PrepareOptions no_mipmaps() {
+  PrepareOptions o;
+  o.mipmaps = false;
+  return o;
+}
+
+// *sel must outlive *p (the prepared draws point into it). mipmaps: the samplers' chains.
 bool prepared(const Scene &s, Tier tier, const std::string &hdr, int w, int h, SceneSelection *sel, PreparedScene *p,
-              std::string *err) {
+              std::string *err, bool mipmaps = false) {
   return select_scene_variants(s, tier, hdr, sel, err) &&
-      prepare_scene(s, *sel, w, h, Api::GL33, s.hdr.tone_map_scale, p, err);
+      prepare_scene(s, *sel, w, h, Api::GL33, s.hdr.tone_map_scale, p, err,
+                    mipmaps ? PrepareOptions() : no_mipmaps());
 }
 
 void test_camera(const Scene &s) {
@@ -113,7 +122,7 @@ void test_coverage_and_records(const Scene &s) {
     SceneSelection sel;
     PreparedScene p;
     std::string err;
-    if (!prepared(s, tier, "", w, h, &sel, &p, &err)) return check(false, "prepare the grid", err);
+    if (!prepared(s, tier, "", w, h, &sel, &p, &err, true)) return check(false, "prepare the grid", err);
     SceneVisibility vis;
     scene_rasterize_cpu(p, &vis, 2);
     const std::string tn = tier_name(tier);
@@ -135,9 +144,9 @@ void test_coverage_and_records(const Scene &s) {
     ImageF direct, via;
     scene_shade_cpu(p, vis, &direct, 2);
     std::vector<int> draw;
-    std::vector<float> slots;
-    scene_records_cpu(p, vis, &draw, &slots, 2);
-    scene_shade_records(p, draw, slots, &via, 2);
+    std::vector<float> slots, grads;
+    scene_records_cpu(p, vis, &draw, &slots, 2, &grads);
+    scene_shade_records(p, draw, slots, &via, 2, &grads);
     long lit = 0;
     for (int d : draw) lit += d >= 0;
     check(direct.rgba == via.rgba && draw == vis.draw && lit > w * h / 3,
@@ -158,7 +167,7 @@ void test_deferred(const Scene &s) {
     PreparedScene p;
     SceneSelection sel;
     if (!scene_deferred_frame(s, tier, w, h, &f, &err) || !select_scene_variants(s, tier, "", &sel, &err) ||
-        !prepare_scene(s, sel, w, h, Api::GL33, s.hdr.tone_map_scale, &p, &err))
+        !prepare_scene(s, sel, w, h, Api::GL33, s.hdr.tone_map_scale, &p, &err, no_mipmaps()))
       return check(false, "deferred: " + tn, err);
     SceneVisibility vis;
     scene_rasterize_cpu(p, &vis, 2);

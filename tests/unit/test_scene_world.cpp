@@ -234,6 +234,7 @@ void test_reference(const Scene &room) {
   cfg.backend = Backend::CPU;
   cfg.w = w;
   cfg.h = h;
+  cfg.mipmaps = false;  // the reference's records carry no derivatives: level 0, as scene_gbuffer_cpu
   SceneRenderResult res;
   if (!render_scene(s, g.sel, cfg, &res, &err)) return check(false, "reference: the C frame", err);
   const ImageF &f = res.lit;

@@ -72,14 +72,14 @@ void test_room(Api api) {
   SceneGl g(r, api);
   ImageF gl_lit;
   std::vector<int> gl_draw;
-  std::vector<float> slots;
-  if (!g.init(p, &err) || !g.frame(&gl_lit, &err) || !g.gbuffer(&gl_draw, &slots, &err)) {
+  std::vector<float> slots, grads;
+  if (!g.init(p, &err) || !g.frame(&gl_lit, &err) || !g.gbuffer(&gl_draw, &slots, &err, &grads)) {
     check(false, cfg + ": GL frame of the room", err);
     return;
   }
   // GL against the C twin on GL's own G-buffer: every pixel, the sky's included.
   ImageF c_on_gl;
-  scene_shade_records(p, gl_draw, slots, &c_on_gl);
+  scene_shade_records(p, gl_draw, slots, &c_on_gl, 0, &grads);
   long diff = 0, sky_px = 0;
   for (size_t i = 0; i < gl_lit.rgba.size(); ++i)
     diff += unit_check::bits_of(gl_lit.rgba[i]) != unit_check::bits_of(c_on_gl.rgba[i]);
