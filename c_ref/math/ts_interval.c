@@ -593,14 +593,3 @@ ts_vec4iv ts_texture3Div(const ts_tex3d *t, ts_vec3iv uvw) {
   }
   return ts_v4iv(ch[0], ch[1], ch[2], ch[3]);
 }
-
-ts_vec4iv ts_texture2D_gradiv(const ts_tex2d *t, ts_vec2iv uv, const ts_vec4f *grad) {
-  ts_vec4iv r = ts_texture2Div(t, uv);
-  if (!grad || t->mip_levels <= 1 || t->mip_filter == TS_MIP_NONE) return r;
-  for (int l = 1; l < t->mip_levels; ++l) {
-    const ts_tex2d lv = ts_mip_level(t, l);
-    const ts_vec4iv s = ts_texture2Div(&lv, uv);
-    r = ts_v4iv(ts_ivjoin(r.x, s.x), ts_ivjoin(r.y, s.y), ts_ivjoin(r.z, s.z), ts_ivjoin(r.w, s.w));
-  }
-  return r;
-}

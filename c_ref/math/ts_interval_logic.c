@@ -122,3 +122,16 @@ ts_iv ts_absiv(ts_iv x) {
 /* pow(x, y) = exp2(y * log2(x)) (ESSL 3.00 8.2: derived precision; undefined for x < 0 and for
  * x = 0 with y <= 0, and log2(0) is undefined, so any x interval reaching 0 gives any result) */
 ts_iv ts_powiv(ts_iv x, ts_iv y) { return ts_exp2iv(ts_muliv(y, ts_log2iv(x))); }
+
+/* ts_interval.h: a mip chain sampled with derivatives, the hull of every level (the level of
+ * detail is the implementation's, within wide limits). */
+ts_vec4iv ts_texture2D_gradiv(const ts_tex2d *t, ts_vec2iv uv, const ts_vec4f *grad) {
+  ts_vec4iv r = ts_texture2Div(t, uv);
+  if (!grad || t->mip_levels <= 1 || t->mip_filter == TS_MIP_NONE) return r;
+  for (int l = 1; l < t->mip_levels; ++l) {
+    const ts_tex2d lv = ts_mip_level(t, l);
+    const ts_vec4iv s = ts_texture2Div(&lv, uv);
+    r = ts_v4iv(ts_ivjoin(r.x, s.x), ts_ivjoin(r.y, s.y), ts_ivjoin(r.z, s.z), ts_ivjoin(r.w, s.w));
+  }
+  return r;
+}
