@@ -176,18 +176,34 @@ bool webgl_scene_write_page(const std::string &bundle_dir, const std::string &du
           *err = where + ": texture " + t.at("sampler").get<std::string>() + ": 3D textures are not replayed by the page";
           return false;
         }
-        if (!texture_of.count(file)) {
+        // A texture is its level 0 and its mip chain (docs/rendering.md "Mipmaps"): one page entry each.
+        const json no_levels = json::array();
+        const json &levels = t.contains("levels") ? t.at("levels") : no_levels;
+        std::string key = file;
+        for (const json &l : levels) key += "|" + l.get<std::string>();
+        if (!texture_of.count(key)) {
           const size_t w = t.at("w").get<size_t>(), h = t.at("h").get<size_t>();
           const size_t texels = kind == "cube" ? w * w * 6 : w * h;
           std::string b64;
           if (!data_b64(dump_dir + "/" + file, texels * 16, &b64, err)) return false;
-          texture_of[file] = static_cast<int>(scene["textures"].size());
-          scene["textures"].push_back({{"kind", kind}, {"w", w}, {"h", h}, {"data", b64}});
+          json lv = json::array();
+          for (size_t k = 0; k < levels.size(); ++k) {
+            const size_t lw = std::max<size_t>(1, w >> (k + 1)), lh = std::max<size_t>(1, h >> (k + 1));
+            std::string lb64;
+            if (k >= 30 || !data_b64(dump_dir + "/" + levels[k].get<std::string>(), lw * lh * 16, &lb64, err)) {
+              if (err->empty()) *err = where + ": texture " + t.at("sampler").get<std::string>() + ": too many levels";
+              return false;
+            }
+            lv.push_back(lb64);
+          }
+          texture_of[key] = static_cast<int>(scene["textures"].size());
+          scene["textures"].push_back({{"kind", kind}, {"w", w}, {"h", h}, {"data", b64}, {"levels", lv}});
         }
         jd["textures"].push_back({{"sampler", t.at("sampler")},
-                                  {"texture", texture_of[file]},
+                                  {"texture", texture_of[key]},
                                   {"linear", t.at("linear")},
-                                  {"repeat", t.at("repeat")}});
+                                  {"repeat", t.at("repeat")},
+                                  {"mip_filter", t.contains("mip_filter") ? t.at("mip_filter") : json("none")}});
       }
       scene["draws"].push_back(jd);
     }

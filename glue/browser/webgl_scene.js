@@ -157,7 +157,7 @@
     // one GL texture per (data, filter, wrap) the draws use
     const texCache = {};
     function texture(t) {
-      const key = t.texture + (t.linear ? 'L' : 'N') + (t.repeat ? 'R' : 'C');
+      const key = t.texture + (t.linear ? 'L' : 'N') + (t.repeat ? 'R' : 'C') + (t.mip_filter || 'none');
       if (texCache[key]) return texCache[key];
       const d = S.textures[t.texture], data = floats(d.data);
       if (t.linear && !linearFloat) throw new Error('LINEAR float texture ' + t.sampler + ' needs OES_texture_float_linear');
@@ -172,9 +172,18 @@
                         data.subarray(f * face, (f + 1) * face));
       } else {
         gl.texImage2D(gl.TEXTURE_2D, 0, gl.RGBA32F, d.w, d.h, 0, gl.RGBA, gl.FLOAT, data);
+        // the mip chain tiershade built (levels 1..n, max(1, size >> k) a side)
+        (d.levels || []).forEach(function (b64, k) {
+          const l = k + 1;
+          gl.texImage2D(gl.TEXTURE_2D, l, gl.RGBA32F, Math.max(1, d.w >> l), Math.max(1, d.h >> l), 0, gl.RGBA,
+                        gl.FLOAT, floats(b64));
+        });
       }
       const filter = t.linear ? gl.LINEAR : gl.NEAREST, wrap = t.repeat && d.kind !== 'cube' ? gl.REPEAT : gl.CLAMP_TO_EDGE;
-      gl.texParameteri(target, gl.TEXTURE_MIN_FILTER, filter);
+      let minFilter = filter;
+      if (t.mip_filter === 'nearest') minFilter = t.linear ? gl.LINEAR_MIPMAP_NEAREST : gl.NEAREST_MIPMAP_NEAREST;
+      if (t.mip_filter === 'linear') minFilter = t.linear ? gl.LINEAR_MIPMAP_LINEAR : gl.NEAREST_MIPMAP_LINEAR;
+      gl.texParameteri(target, gl.TEXTURE_MIN_FILTER, minFilter);
       gl.texParameteri(target, gl.TEXTURE_MAG_FILTER, filter);
       gl.texParameteri(target, gl.TEXTURE_WRAP_S, wrap);
       gl.texParameteri(target, gl.TEXTURE_WRAP_T, wrap);

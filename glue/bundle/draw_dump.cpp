@@ -1,6 +1,8 @@
 // tiershade bundle: the draw dump (see draw_dump.h and docs/bundles.md).
 #include "bundle/draw_dump.h"
 
+#include <algorithm>
+
 #include <cstdio>
 #include <cstring>
 #include <map>
@@ -100,6 +102,14 @@ bool check_draw(const DumpDraw &d, size_t i, std::string *err) {
       *err = where + "texture " + t.sampler + " has a size that does not match its texels";
       return false;
     }
+    for (size_t k = 0; k < t.mips.size(); ++k) {
+      const int l = static_cast<int>(k) + 1;
+      if (t.kind != TexKind::Tex2D || l >= 31 ||
+          t.mips[k].size() != static_cast<size_t>(std::max(1, t.w >> l)) * std::max(1, t.h >> l) * 4) {
+        *err = where + "texture " + t.sampler + ": mip level " + std::to_string(l) + " does not match its size";
+        return false;
+      }
+    }
   }
   for (const auto &u : d.uniforms) {
     const size_t per = u.values.size() / static_cast<size_t>(u.array_size > 0 ? u.array_size : 1);
@@ -111,17 +121,19 @@ bool check_draw(const DumpDraw &d, size_t i, std::string *err) {
   return true;
 }
 
-uint64_t content_hash(const TextureDesc &t) {
-  uint64_t h = 1469598103934665603ull;  // FNV-1a 64 over the header and the texels
+// FNV-1a 64 over a level's header (kind, size) and its texels.
+uint64_t content_hash(TexKind kind, int w, int h, int d, const std::vector<float> &texels) {
+  uint64_t x = 1469598103934665603ull;
   auto mix = [&](const void *p, size_t n) {
     const unsigned char *c = static_cast<const unsigned char *>(p);
-    for (size_t i = 0; i < n; ++i) h = (h ^ c[i]) * 1099511628211ull;
+    for (size_t i = 0; i < n; ++i) x = (x ^ c[i]) * 1099511628211ull;
   };
-  const int hdr[4] = {static_cast<int>(t.kind), t.w, t.h, t.d};
+  const int hdr[4] = {static_cast<int>(kind), w, h, d};
   mix(hdr, sizeof hdr);
-  mix(t.rgba.data(), t.rgba.size() * sizeof(float));
-  return h;
+  mix(texels.data(), texels.size() * sizeof(float));
+  return x;
 }
+uint64_t content_hash(const TextureDesc &t) { return content_hash(t.kind, t.w, t.h, t.d, t.rgba); }
 
 }  // namespace
 
@@ -188,6 +200,20 @@ bool write_draw_dump(const std::string &dir, const DumpFrame &f, std::string *er
         }
         known = tex_of.emplace(&t, it->second).first;
       }
+      // The mip chain's levels 1..n (docs/rendering.md "Mipmaps"), each a file like level 0.
+      json levels = json::array();
+      for (size_t k = 0; k < t.mips.size(); ++k) {
+        const int l = static_cast<int>(k) + 1, lw = std::max(1, t.w >> l), lh = std::max(1, t.h >> l);
+        const uint64_t h = content_hash(t.kind, lw, lh, 1, t.mips[k]);
+        auto it = tex_files.find(h);
+        if (it == tex_files.end()) {
+          char name[48];
+          snprintf(name, sizeof name, "tex_%016llx.f32", static_cast<unsigned long long>(h));
+          if (!w.write(name, t.mips[k].data(), t.mips[k].size() * 4, err)) return false;
+          it = tex_files.emplace(h, name).first;
+        }
+        levels.push_back(it->second);
+      }
       jt.push_back({{"sampler", t.sampler},
                     {"kind", kind_name(t.kind)},
                     {"w", t.w},
@@ -195,7 +221,9 @@ bool write_draw_dump(const std::string &dir, const DumpFrame &f, std::string *er
                     {"d", t.d},
                     {"linear", t.linear},
                     {"repeat", t.repeat},
-                    {"file", known->second}});
+                    {"file", known->second},
+                    {"mip_filter", t.mips.empty() ? "none" : t.mip_filter == 1 ? "nearest" : "linear"},
+                    {"levels", levels}});
     }
     j["textures"] = jt;
     draws.push_back(j);

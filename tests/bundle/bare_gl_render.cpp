@@ -10,6 +10,7 @@
 #include <EGL/eglext.h>
 #include <GL/glcorearb.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <cstdio>
@@ -312,8 +313,29 @@ GLuint upload_texture(const Gl &gl, Api api, const std::string &dump, const json
   gl.GenTextures(1, &id);
   gl.BindTexture(target, id);
   gl.PixelStorei(GL_UNPACK_ALIGNMENT, 4);
+  // The mip chain (levels 1..n, each max(1, size >> k) a side) and its filter, when the dump has one.
+  const std::string mip = t.contains("mip_filter") ? str(t, "mip_filter", where) : "none";
+  if (mip != "none" && mip != "nearest" && mip != "linear")
+    throw Error(where + ".mip_filter: unknown \"" + mip + "\"");
+  size_t nlevels = 0;
+  if (t.contains("levels")) {
+    if (!t.at("levels").is_array()) throw Error(where + ".levels: expected an array of file names");
+    nlevels = t.at("levels").size();
+  }
+  if ((mip == "none") != (nlevels == 0) || (nlevels > 0 && kind != "2d"))
+    throw Error(where + ": mip_filter \"" + mip + "\" with " + std::to_string(nlevels) + " levels");
   if (kind == "2d") {
     gl.TexImage2D(GL_TEXTURE_2D, 0, GL_RGBA32F, w, h, 0, GL_RGBA, GL_FLOAT, rgba.data());
+    for (size_t k = 0; k < nlevels; ++k) {
+      const int l = static_cast<int>(k) + 1;
+      const long lw = std::max(1L, w >> l), lh = std::max(1L, h >> l);
+      if (l > 30 || (lw == 1 && lh == 1 && k + 1 < nlevels)) throw Error(where + ".levels: more levels than the size has");
+      const std::string lwhere = where + ".levels[" + std::to_string(k) + "]";
+      if (!t.at("levels")[k].is_string()) throw Error(lwhere + ": expected a file name");
+      const auto lv = read_array<float>(file_in(dump, t.at("levels")[k].get<std::string>(), lwhere, false),
+                                        static_cast<size_t>(lw) * lh * 4);
+      gl.TexImage2D(GL_TEXTURE_2D, l, GL_RGBA32F, lw, lh, 0, GL_RGBA, GL_FLOAT, lv.data());
+    }
   } else if (kind == "3d") {
     gl.TexImage3D(GL_TEXTURE_3D, 0, GL_RGBA32F, w, h, d, 0, GL_RGBA, GL_FLOAT, rgba.data());
   } else {
@@ -323,7 +345,10 @@ GLuint upload_texture(const Gl &gl, Api api, const std::string &dump, const json
   }
   const GLint filter = boolean(t, "linear", where) ? GL_LINEAR : GL_NEAREST;
   const GLint wrap = boolean(t, "repeat", where) && kind != "cube" ? GL_REPEAT : GL_CLAMP_TO_EDGE;
-  gl.TexParameteri(target, GL_TEXTURE_MIN_FILTER, filter);
+  GLint min_filter = filter;
+  if (mip == "nearest") min_filter = filter == GL_LINEAR ? GL_LINEAR_MIPMAP_NEAREST : GL_NEAREST_MIPMAP_NEAREST;
+  if (mip == "linear") min_filter = filter == GL_LINEAR ? GL_LINEAR_MIPMAP_LINEAR : GL_NEAREST_MIPMAP_LINEAR;
+  gl.TexParameteri(target, GL_TEXTURE_MIN_FILTER, min_filter);
   gl.TexParameteri(target, GL_TEXTURE_MAG_FILTER, filter);
   gl.TexParameteri(target, GL_TEXTURE_WRAP_S, wrap);
   gl.TexParameteri(target, GL_TEXTURE_WRAP_T, wrap);
