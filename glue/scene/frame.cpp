@@ -27,6 +27,7 @@
 #include "hdr/srgb_rgba8_codes.h"
 #include "hdr/still_frame_exposure.h"
 #include "base/image_diff.h"
+#include "base/parallel_rows.h"
 
 namespace {
 
@@ -298,15 +299,20 @@ bool SceneRenderer::Impl::post(SceneRenderResult *res, bool on_cpu, const std::v
     }
     const std::vector<int> &draw_of_pixel = *dop;
     res->display.resize(n * 4);
-    for (size_t i = 0; i < n; ++i) {
-      bool linear = any_linear;
-      if (mixed) linear = draw_of_pixel[i] >= 0 ? !p.draws[draw_of_pixel[i]].display_encoded : p.sky.present();
-      for (int c = 0; c < 3; ++c) {
-        const float v = res->lit.rgba[i * 4 + c];
-        res->display[i * 4 + c] = linear ? srgb_code(v) : ts_unorm8_from_float(v);
+    const SrgbCodeTable &codes = srgb_code_table();
+    const float *lit = res->lit.rgba.data();
+    uint8_t *disp = res->display.data();
+    parallel_rows(cfg.h, cfg.threads, [&](int y) {  // rows on every core (pure per pixel)
+      for (size_t i = static_cast<size_t>(y) * cfg.w, e = i + cfg.w; i < e; ++i) {
+        bool linear = any_linear;
+        if (mixed) linear = draw_of_pixel[i] >= 0 ? !p.draws[draw_of_pixel[i]].display_encoded : p.sky.present();
+        for (int c = 0; c < 3; ++c) {
+          const float v = lit[i * 4 + c];
+          disp[i * 4 + c] = linear ? srgb_code_in(codes, v) : ts_unorm8_from_float(v);
+        }
+        disp[i * 4 + 3] = 255;
       }
-      res->display[i * 4 + 3] = 255;
-    }
+    });
   } else {
     // The lit frame as the fp16 target stores it (writes round toward zero; c_ref/math/hdr_formats.h):
     // from here on, and in OUT.exr, the float path's frame is these fp16 values.
