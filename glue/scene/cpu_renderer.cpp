@@ -261,6 +261,52 @@ void shade_run(const DrawCtx &c, const ts_vec4f *pix, int pitch, int n, ts_vec4f
   }
 }
 
+// One row's visibility (pointers to its first pixel; at: MSAA's layers, else nullptr).
+struct RowVis {
+  const int32_t *draw, *tri;
+  const uint8_t *sub;  // nullptr: found by lp_covering
+  const float *b1, *b2;
+  const int32_t *at;
+};
+
+// Shades row y of the frame into orow (RGBA floats): runs of pixels of one draw are shaded together
+// by the batched twins (8 pixels per instruction where the host has AVX2; the same bits as one
+// pixel at a time). in_group (nullptr: every draw): the draws shaded by this pass; first: the
+// background (draw < 0) is written as 0 here.
+void shade_row(const PreparedScene &p, const std::vector<DrawCtx> &ctx, const std::vector<std::vector<float>> &vary,
+               const char *in_group, bool first, bool planes, int y, const RowVis &r, std::vector<ts_vec4f> &pix,
+               PlaneCache *cache, float *orow) {
+  pix.resize(static_cast<size_t>(kPixelSlots) * kChunk);
+  const float W = static_cast<float>(p.w), H = static_cast<float>(p.h);
+  int x = 0;
+  while (x < p.w) {
+    const int d = r.draw[x];
+    if (d < 0 || (in_group && !in_group[static_cast<size_t>(d)])) {  // background: written by the first pass
+      if (d < 0 && first) std::memset(orow + static_cast<size_t>(x) * 4, 0, 4 * sizeof(float));
+      ++x;
+      continue;
+    }
+    int x1 = x;
+    while (x1 < p.w && r.draw[x1] == d) ++x1;
+    ts_vec4f *orow_px = reinterpret_cast<ts_vec4f *>(orow) + x;
+    // In chunks of kChunk pixels, so that the slots stay in L1 between the two loops.
+    const DrawCtx &c = ctx[d];
+    int used[kPixelSlots];  // locals: the slot stores below cannot alias them
+    const int nused = c.nused;
+    std::copy(c.used, c.used + nused, used);
+    const float *vd = vary[d].data();
+    const uint32_t *indices = p.draws[d].geo->indices.data();
+    ts_vec4f *pp = pix.data();
+    for (int c0 = x; c0 < x1; c0 += kChunk) {
+      const int n = std::min(kChunk, x1 - c0);
+      interp_run(vd, indices, r.tri, r.sub, r.b1, r.b2, d, y, c0, n, used, nused, pp, kChunk, planes, W, H,
+                 c.world ? -1 : ML_SLOT_POSITION, r.at, cache);
+      shade_run(c, pp, kChunk, n, orow_px + (c0 - x));
+    }
+    x = x1;
+  }
+}
+
 }  // namespace
 
 namespace {
@@ -314,7 +360,6 @@ void scene_shade_cpu(const PreparedScene &p, const SceneVisibility &vis, ImageF 
   // Per thread: the run's pixel slots and results (kept across rows).
   std::vector<std::vector<ts_vec4f>> pix_of(static_cast<size_t>(parallel_workers(p.h, threads)));
   std::vector<PlaneCache> cache(pix_of.size());
-  const float W = static_cast<float>(p.w), H = static_cast<float>(p.h);
   std::vector<float> clip;
   for (size_t gi = 0; gi < groups.size(); ++gi) {
     const bool first = gi == 0;
@@ -323,43 +368,15 @@ void scene_shade_cpu(const PreparedScene &p, const SceneVisibility &vis, ImageF 
       in_group[di] = 1;
     }
     parallel_rows_by_worker(p.h, threads, [&](int t, int y) {
-      // Runs of pixels of one draw are shaded together by the batched twins (8 pixels per
-      // instruction where the host has AVX2; the same bits as one pixel at a time).
-      std::vector<ts_vec4f> &pix = pix_of[static_cast<size_t>(t)];
-      pix.resize(static_cast<size_t>(kPixelSlots) * kChunk);
       const size_t row = static_cast<size_t>(y) * p.w;
-      float *orow = &out->rgba[row * 4];
-      int x = 0;
-      while (x < p.w) {
-        const int d = vis.draw[row + x];
-        if (d < 0 || !in_group[static_cast<size_t>(d)]) {  // background: written by the first pass
-          if (d < 0 && first) std::memset(orow + static_cast<size_t>(x) * 4, 0, 4 * sizeof(float));
-          ++x;
-          continue;
-        }
-        int x1 = x;
-        while (x1 < p.w && vis.draw[row + x1] == d) ++x1;
-        ts_vec4f *orow_px = reinterpret_cast<ts_vec4f *>(orow) + x;
-        // In chunks of kChunk pixels, so that the slots stay in L1 between the two loops.
-        const DrawCtx &c = ctx[d];
-        int used[kPixelSlots];  // locals: the slot stores below cannot alias them
-        const int nused = c.nused;
-        std::copy(c.used, c.used + nused, used);
-        const float *vd = vary[d].data();
-        const uint32_t *indices = p.draws[d].geo->indices.data();
-        const int32_t *tri = vis.tri.data() + row;
-        const float *vb1 = vis.b1.data() + row, *vb2 = vis.b2.data() + row;
-        const int32_t *at = vis.at.empty() ? nullptr : vis.at.data() + row;
-        const uint8_t *sub = vis.sub.size() == vis.tri.size() ? vis.sub.data() + row : nullptr;
-        ts_vec4f *pp = pix.data();
-        for (int c0 = x; c0 < x1; c0 += kChunk) {
-          const int n = std::min(kChunk, x1 - c0);
-          interp_run(vd, indices, tri, sub, vb1, vb2, d, y, c0, n, used, nused, pp, kChunk, vis.pixel_planes, W, H,
-                     c.world ? -1 : ML_SLOT_POSITION, at, &cache[static_cast<size_t>(t)]);
-          shade_run(c, pp, kChunk, n, orow_px + (c0 - x));
-        }
-        x = x1;
-      }
+      const RowVis r = {vis.draw.data() + row,
+                        vis.tri.data() + row,
+                        vis.sub.size() == vis.tri.size() ? vis.sub.data() + row : nullptr,
+                        vis.b1.data() + row,
+                        vis.b2.data() + row,
+                        vis.at.empty() ? nullptr : vis.at.data() + row};
+      shade_row(p, ctx, vary, in_group.data(), first, vis.pixel_planes, y, r, pix_of[static_cast<size_t>(t)], &cache[static_cast<size_t>(t)],
+                &out->rgba[row * 4]);
       const int done = ++rows;
       if (progress && t == 0) progress(static_cast<double>(done) / (static_cast<double>(p.h) * groups.size()));
     });
@@ -369,6 +386,102 @@ void scene_shade_cpu(const PreparedScene &p, const SceneVisibility &vis, ImageF 
     }
   }
   skybox_shade_background(p.sky, p.w, p.h, vis.draw.data(), out->rgba.data(), threads);  // skybox_pass.h
+}
+
+bool scene_render_cpu(const PreparedScene &p, SceneVisibility *vis, ImageF *out, std::vector<int32_t> *draw,
+                      int threads, const std::function<void(double)> &progress) {
+  // Every draw's vertex stage and triangle set-up first, the draws shared among the workers
+  // (FTZ/DAZ set as llvmpipe computes; kept by the calling thread across frames, as
+  // scene_rasterize_cpu keeps its batch), within the budgets; else the two passes.
+  const size_t kTris = 16384;
+  size_t bytes = 0;
+  for (const PreparedDraw &d : p.draws) bytes += d.geo->vertices() * kVStride * sizeof(float);
+  static thread_local std::vector<ScreenTri> kept_tris;
+  static thread_local std::vector<std::vector<ScreenTri>> kept_draw_tris;
+  static thread_local std::vector<std::vector<float>> kept_vary;
+  std::vector<ScreenTri> &tris = kept_tris;
+  std::vector<std::vector<float>> &vary = kept_vary;
+  std::vector<std::vector<ScreenTri>> &draw_tris = kept_draw_tris;
+  tris.clear();
+  bool banded = bytes <= kVaryBudget;
+  if (banded) {
+    const int nd = static_cast<int>(p.draws.size());
+    vary.resize(p.draws.size());
+    draw_tris.resize(p.draws.size());
+    std::vector<std::vector<float>> clip(static_cast<size_t>(parallel_workers(nd, threads)));
+    parallel_rows_by_worker(nd, threads, [&](int t, int di) {
+      const size_t i = static_cast<size_t>(di);
+      vertex_stage(p, p.draws[i], &clip[static_cast<size_t>(t)], &vary[i]);
+      draw_tris[i].clear();
+      scene_tri_setup(p, di, clip[static_cast<size_t>(t)], &draw_tris[i]);
+    });
+    size_t total = 0;
+    for (const std::vector<ScreenTri> &v : draw_tris) total += v.size();
+    banded = total <= kTris;
+    if (banded)
+      for (const std::vector<ScreenTri> &v : draw_tris) tris.insert(tris.end(), v.begin(), v.end());
+  }
+  if (!banded) {
+    vary.clear();
+    draw_tris.clear();
+    tris.clear();
+    scene_rasterize_cpu(p, vis, threads);
+    scene_shade_cpu(p, *vis, out, threads, progress);
+    if (draw) *draw = vis->draw;
+    return false;
+  }
+  std::vector<DrawCtx> ctx;
+  make_ctx(p, &ctx);
+  out->w = p.w;
+  out->h = p.h;
+  const size_t n = static_cast<size_t>(p.w) * p.h;
+  if (out->rgba.size() != n * 4) fresh_buffer(&out->rgba, n * 4, 0.f);  // every pixel is written below
+  if (draw && draw->size() != n) fresh_buffer<int32_t>(draw, n, -1);
+  // Bands of kBand rows, each with the triangles that reach it in draw order (equal depths keep
+  // the first draw, as GL_LESS does); a worker takes bands t, t + n, ... and holds one band's
+  // visibility (21 bytes a pixel) at a time.
+  const int kBand = 8;
+  const int bands = (p.h + kBand - 1) / kBand;
+  std::vector<std::vector<int>> band_tris(static_cast<size_t>(bands));
+  for (size_t i = 0; i < tris.size(); ++i)
+    for (int b = tris[i].y0 / kBand; b <= tris[i].y1 / kBand; ++b) band_tris[static_cast<size_t>(b)].push_back(static_cast<int>(i));
+  const int workers = parallel_workers(bands, threads);
+  struct Worker {
+    std::vector<int32_t> draw, tri;
+    std::vector<uint8_t> sub;
+    std::vector<float> b1, b2, depth;
+    std::vector<ts_vec4f> pix;
+    PlaneCache cache;
+  };
+  std::vector<Worker> wk(static_cast<size_t>(workers));
+  const size_t bn = static_cast<size_t>(kBand) * p.w;
+  std::atomic<int> done{0};
+  parallel_rows_by_worker(bands, threads, [&](int t, int band) {
+    Worker &k = wk[static_cast<size_t>(t)];
+    const int ra = band * kBand, rb = std::min(p.h, ra + kBand);
+    const size_t m = static_cast<size_t>(rb - ra) * p.w;
+    k.draw.assign(bn, -1), k.tri.assign(bn, -1), k.sub.assign(bn, 0);
+    k.b1.assign(bn, 0.f), k.b2.assign(bn, 0.f), k.depth.assign(bn, kLpDepth24Clear);
+    VisRows v;
+    v.w = p.w, v.y0 = ra;
+    v.draw = k.draw.data(), v.tri = k.tri.data(), v.sub = k.sub.data();
+    v.b1 = k.b1.data(), v.b2 = k.b2.data(), v.depth = k.depth.data();
+    for (int ti : band_tris[static_cast<size_t>(band)]) {
+      const ScreenTri &s = tris[static_cast<size_t>(ti)];
+      scene_raster_rows(s, v, std::max(s.y0, ra), std::min(s.y1, rb - 1));
+    }
+    for (int y = ra; y < rb; ++y) {
+      const size_t o = static_cast<size_t>(y - ra) * p.w, row = static_cast<size_t>(y) * p.w;
+      const RowVis r = {v.draw + o, v.tri + o, v.sub + o, v.b1 + o, v.b2 + o, nullptr};
+      float *orow = &out->rgba[row * 4];
+      shade_row(p, ctx, vary, nullptr, true, true, y, r, k.pix, &k.cache, orow);
+      skybox_shade_row(p.sky, p.w, y, r.draw, orow);  // skybox_pass.h
+    }
+    if (draw) std::copy(k.draw.begin(), k.draw.begin() + static_cast<std::ptrdiff_t>(m), draw->begin() + static_cast<std::ptrdiff_t>(static_cast<size_t>(ra) * p.w));
+    const int d = ++done;
+    if (progress && t == 0) progress(static_cast<double>(d) / bands);
+  });
+  return true;
 }
 
 void scene_shade_records(const PreparedScene &p, const std::vector<int> &draw, const std::vector<float> &slots,

@@ -112,6 +112,22 @@ struct SceneRenderer::Impl {
     renderer.reset();
     ctx.reset();
   }
+  std::vector<int32_t> cpu_draw;  // the C fallback's draw index per pixel, when post needs it
+  // The integer path's display encoding: any pixel linear (ps20 and world draws and the skybox
+  // write linear values), and linear pixels beside display-encoded ones (post then needs each
+  // pixel's draw).
+  bool any_linear() const {
+    bool any = p.sky.present();
+    for (const PreparedDraw &d : p.draws) any = any || !d.display_encoded;
+    return any;
+  }
+  bool mixed_encoding() const {
+    if (float_path) return false;
+    const bool any = any_linear();
+    for (const PreparedDraw &d : p.draws)
+      if (d.display_encoded && any) return true;
+    return false;
+  }
   bool colour_correct(SceneRenderResult *res, bool on_cpu, std::string *err);
   bool msaa_frame(SceneRenderResult *res, std::string *err);
   bool post(SceneRenderResult *res, bool on_cpu, const std::vector<int> &draw_of_pixel, std::string *err);
@@ -289,9 +305,7 @@ bool SceneRenderer::Impl::post(SceneRenderResult *res, bool on_cpu, const std::v
     if (s.hdr.auto_exposure)
       res->notes.push_back("auto exposure runs on the float path; the integer path uses the fixed tone-map scale");
     // Which pixels hold linear values the (sRGB) render target would encode: ps20 and world draws.
-    bool mixed = false, any_linear = p.sky.present();  // the skybox writes linear values
-    for (const PreparedDraw &d : p.draws) any_linear = any_linear || !d.display_encoded;
-    for (const PreparedDraw &d : p.draws) mixed = mixed || (d.display_encoded && any_linear);
+    const bool any_linear = this->any_linear(), mixed = mixed_encoding();
     if (mixed && dop->empty()) {
       std::vector<float> slots;
       if (!sgl->gbuffer(&own, &slots, err)) return false;
@@ -433,14 +447,17 @@ bool SceneRenderer::frame(SceneRenderResult *out, std::string *err) {
   if (cfg.msaa > 1) {
     if (!m.msaa_frame(&res, err)) return false;
   } else if (cpu) {
-    SceneVisibility &vis = m.vis;  // kept across frames: reset, not reallocated
-    scene_rasterize_cpu(p, &vis, cfg.threads);
-    if (getenv("TS_DRAW_MS")) fprintf(stderr, "C rasterise: %.1f ms\n", ms_since(t0));
-    scene_shade_cpu(p, vis, &res.lit, cfg.threads, [&](double f) {
+    // Rasterised and shaded in bands (the visibility of a band at a time; a scene beyond the
+    // band path's budgets: m.vis, kept across frames). The frame buffers of the caller's last
+    // result are reused (reset, not reallocated: their page faults were a tenth of a 4K frame).
+    if (out->lit.rgba.size() == static_cast<size_t>(cfg.w) * cfg.h * 4) res.lit.rgba.swap(out->lit.rgba);
+    if (!m.float_path) res.display.swap(out->display);
+    std::vector<int32_t> *dop = m.mixed_encoding() ? &m.cpu_draw : nullptr;
+    scene_render_cpu(p, &m.vis, &res.lit, dop, cfg.threads, [&](double f) {
       if (cfg.progress) cfg.progress("C fallback lit pass", f);
     });
     res.lit_ms = ms_since(t0);
-    draw_of_pixel.swap(vis.draw);
+    draw_of_pixel.swap(m.cpu_draw);
   } else {
     std::function<void(int, GLuint)> capture;
     if (cfg.on_draw || cfg.progress)
@@ -482,7 +499,7 @@ bool SceneRenderer::frame(SceneRenderResult *out, std::string *err) {
   } else if (!m.post(&res, cpu, draw_of_pixel, err)) {
     return false;
   }
-  if (cpu && cfg.msaa <= 1) draw_of_pixel.swap(m.vis.draw);
+  if (cpu && cfg.msaa <= 1) draw_of_pixel.swap(m.cpu_draw);
   res.post_ms = ms_since(t0);
   res.frame_ms = ms_since(t_frame);
   *out = std::move(res);
