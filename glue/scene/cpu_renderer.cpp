@@ -392,19 +392,26 @@ bool scene_render_cpu(const PreparedScene &p, SceneVisibility *vis, ImageF *out,
                       int threads, const std::function<void(double)> &progress) {
   // Every draw's vertex stage and triangle set-up first, the draws shared among the workers
   // (FTZ/DAZ set as llvmpipe computes; kept by the calling thread across frames, as
-  // scene_rasterize_cpu keeps its batch), within the budgets; else the two passes.
-  const size_t kTris = 16384;
+  // scene_rasterize_cpu keeps its batch), while their memory (vertex outputs and set-up
+  // triangles, estimated from the index count) stays below the frame-sized visibility buffer the
+  // two passes would take (21 bytes a pixel) or 32 MiB; else the two passes.
+  const size_t n = static_cast<size_t>(p.w) * p.h;
   size_t bytes = 0;
-  for (const PreparedDraw &d : p.draws) bytes += d.geo->vertices() * kVStride * sizeof(float);
-  static thread_local std::vector<ScreenTri> kept_tris;
+  for (const PreparedDraw &d : p.draws)
+    bytes += d.geo->vertices() * kVStride * sizeof(float) + d.geo->indices.size() / 3 * sizeof(ScreenTri);
   static thread_local std::vector<std::vector<ScreenTri>> kept_draw_tris;
   static thread_local std::vector<std::vector<float>> kept_vary;
-  std::vector<ScreenTri> &tris = kept_tris;
   std::vector<std::vector<float>> &vary = kept_vary;
   std::vector<std::vector<ScreenTri>> &draw_tris = kept_draw_tris;
-  tris.clear();
-  bool banded = bytes <= kVaryBudget;
-  if (banded) {
+  if (bytes > std::max<size_t>(32u << 20, n * 21)) {
+    std::vector<std::vector<float>>().swap(vary);
+    std::vector<std::vector<ScreenTri>>().swap(draw_tris);
+    scene_rasterize_cpu(p, vis, threads);
+    scene_shade_cpu(p, *vis, out, threads, progress);
+    if (draw) *draw = vis->draw;
+    return false;
+  }
+  {
     const int nd = static_cast<int>(p.draws.size());
     vary.resize(p.draws.size());
     draw_tris.resize(p.draws.size());
@@ -415,26 +422,11 @@ bool scene_render_cpu(const PreparedScene &p, SceneVisibility *vis, ImageF *out,
       draw_tris[i].clear();
       scene_tri_setup(p, di, clip[static_cast<size_t>(t)], &draw_tris[i]);
     });
-    size_t total = 0;
-    for (const std::vector<ScreenTri> &v : draw_tris) total += v.size();
-    banded = total <= kTris;
-    if (banded)
-      for (const std::vector<ScreenTri> &v : draw_tris) tris.insert(tris.end(), v.begin(), v.end());
-  }
-  if (!banded) {
-    vary.clear();
-    draw_tris.clear();
-    tris.clear();
-    scene_rasterize_cpu(p, vis, threads);
-    scene_shade_cpu(p, *vis, out, threads, progress);
-    if (draw) *draw = vis->draw;
-    return false;
   }
   std::vector<DrawCtx> ctx;
   make_ctx(p, &ctx);
   out->w = p.w;
   out->h = p.h;
-  const size_t n = static_cast<size_t>(p.w) * p.h;
   if (out->rgba.size() != n * 4) fresh_buffer(&out->rgba, n * 4, 0.f);  // every pixel is written below
   if (draw && draw->size() != n) fresh_buffer<int32_t>(draw, n, -1);
   // Bands of kBand rows, each with the triangles that reach it in draw order (equal depths keep
@@ -442,9 +434,10 @@ bool scene_render_cpu(const PreparedScene &p, SceneVisibility *vis, ImageF *out,
   // visibility (21 bytes a pixel) at a time.
   const int kBand = 8;
   const int bands = (p.h + kBand - 1) / kBand;
-  std::vector<std::vector<int>> band_tris(static_cast<size_t>(bands));
-  for (size_t i = 0; i < tris.size(); ++i)
-    for (int b = tris[i].y0 / kBand; b <= tris[i].y1 / kBand; ++b) band_tris[static_cast<size_t>(b)].push_back(static_cast<int>(i));
+  std::vector<std::vector<const ScreenTri *>> band_tris(static_cast<size_t>(bands));
+  for (const std::vector<ScreenTri> &dt : draw_tris)
+    for (const ScreenTri &s : dt)
+      for (int b = s.y0 / kBand; b <= s.y1 / kBand; ++b) band_tris[static_cast<size_t>(b)].push_back(&s);
   const int workers = parallel_workers(bands, threads);
   struct Worker {
     std::vector<int32_t> draw, tri;
@@ -466,10 +459,8 @@ bool scene_render_cpu(const PreparedScene &p, SceneVisibility *vis, ImageF *out,
     v.w = p.w, v.y0 = ra;
     v.draw = k.draw.data(), v.tri = k.tri.data(), v.sub = k.sub.data();
     v.b1 = k.b1.data(), v.b2 = k.b2.data(), v.depth = k.depth.data();
-    for (int ti : band_tris[static_cast<size_t>(band)]) {
-      const ScreenTri &s = tris[static_cast<size_t>(ti)];
-      scene_raster_rows(s, v, std::max(s.y0, ra), std::min(s.y1, rb - 1));
-    }
+    for (const ScreenTri *s : band_tris[static_cast<size_t>(band)])
+      scene_raster_rows(*s, v, std::max(s->y0, ra), std::min(s->y1, rb - 1));
     for (int y = ra; y < rb; ++y) {
       const size_t o = static_cast<size_t>(y - ra) * p.w, row = static_cast<size_t>(y) * p.w;
       const RowVis r = {v.draw + o, v.tri + o, v.sub + o, v.b1 + o, v.b2 + o, nullptr};

@@ -346,7 +346,7 @@ bool SceneRenderer::Impl::post(SceneRenderResult *res, bool on_cpu, const std::v
     res->tone_map_scale = hs.tone_map_scale;
     if (on_cpu) {
       HdrFrameC f;
-      hdr_post_float_c(hdr, cfg.w, cfg.h, hs, &f, cfg.threads);
+      hdr_post_float_c(hdr, cfg.w, cfg.h, hs, &f, cfg.threads, false);
       res->display = std::move(f.display);
     } else {
       if (!pipe->post_float(hdr, hs, err) || !read_rgba8(renderer->gl(), pipe->display(), &res->display, err))
