@@ -40,6 +40,7 @@ SrgbCodeTable make_table() {
   SrgbCodeTable t;
   t.first[0] = 0.f;
   for (int c = 1; c < 256; ++c) t.first[c] = threshold(c);
+  t.first[256] = HUGE_VALF;  // no code 256: the search stops at 255
   int c = 0;
   for (int i = 0; i < SrgbCodeTable::kBuckets; ++i) {  // thresholds rise with the bit pattern
     const float lo = from_bits(static_cast<uint32_t>(i) << SrgbCodeTable::kShift);

@@ -453,8 +453,13 @@ bool scene_render_cpu(const PreparedScene &p, SceneVisibility *vis, ImageF *out,
     Worker &k = wk[static_cast<size_t>(t)];
     const int ra = band * kBand, rb = std::min(p.h, ra + kBand);
     const size_t m = static_cast<size_t>(rb - ra) * p.w;
-    k.draw.assign(bn, -1), k.tri.assign(bn, -1), k.sub.assign(bn, 0);
-    k.b1.assign(bn, 0.f), k.b2.assign(bn, 0.f), k.depth.assign(bn, kLpDepth24Clear);
+    // Only the depth and draw are reset: the triangle, sub-triangle and barycentrics of a pixel
+    // are read only where a draw covers it (written with it).
+    if (k.draw.size() != bn) {
+      k.draw.resize(bn), k.tri.resize(bn), k.sub.resize(bn), k.b1.resize(bn), k.b2.resize(bn), k.depth.resize(bn);
+    }
+    std::fill(k.draw.begin(), k.draw.end(), -1);
+    std::fill(k.depth.begin(), k.depth.end(), kLpDepth24Clear);
     VisRows v;
     v.w = p.w, v.y0 = ra;
     v.draw = k.draw.data(), v.tri = k.tri.data(), v.sub = k.sub.data();
