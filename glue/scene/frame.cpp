@@ -330,7 +330,10 @@ bool SceneRenderer::Impl::post(SceneRenderResult *res, bool on_cpu, const std::v
   } else {
     // The lit frame as the fp16 target stores it (writes round toward zero; c_ref/math/hdr_formats.h):
     // from here on, and in OUT.exr, the float path's frame is these fp16 values.
-    ts_quantize_half_batch(res->lit.rgba.data(), res->lit.rgba.data(), res->lit.rgba.size());
+    parallel_rows(cfg.h, cfg.threads, [&](int y) {  // per value: rows on every core
+      float *row = res->lit.rgba.data() + static_cast<size_t>(y) * cfg.w * 4;
+      ts_quantize_half_batch(row, row, static_cast<size_t>(cfg.w) * 4);
+    });
     const std::vector<float> &hdr = res->lit.rgba;
     HdrSettings hs;
     hs.tone_map_scale = s.hdr.tone_map_scale;
