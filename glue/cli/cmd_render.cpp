@@ -265,8 +265,8 @@ int cmd_render(int argc, char **argv) {
     bool ok = renderer.init(scene, sel, cfg, &err) && renderer.frame(&res, &err);
     res.frame_ms = std::chrono::duration<double, std::milli>(Clock::now() - t_init).count();  // init included
     first_frame = false;
+    SceneRenderResult warm;  // one result for the warm frames: its frame buffers are reused, as an engine's
     for (int i = 0; ok && i < warm_frames; ++i) {
-      SceneRenderResult warm;
       ok = renderer.frame(&warm, &err);
       warm_frame.push_back(warm.frame_ms);
       warm_lit.push_back(warm.lit_ms);

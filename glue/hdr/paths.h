@@ -80,9 +80,10 @@ void hdr_integer_frame_c(const ShaderFamily &lit, const Variant &v, const Family
 void hdr_float_frame_c(const ShaderFamily &lit, const Variant &v, const FamilyInputs &scene, const HdrSettings &s,
                        HdrFrameC *out);
 // The float path's post chain (bloom, tone map, sRGB, RGBA8) from a linear frame already
-// quantised to fp16 (rows bottom-up, rgba): the twin of HdrPipelineGl::post_float.
+// quantised to fp16 (rows bottom-up, rgba): the twin of HdrPipelineGl::post_float. keep_hdr
+// false: out->hdr is left empty (a scene frame has the lit frame already: no copy of it).
 void hdr_post_float_c(const std::vector<float> &hdr, int w, int h, const HdrSettings &s, HdrFrameC *out,
-                      int threads = 1);
+                      int threads = 1, bool keep_hdr = true);
 // The float path in double with no storage rounding (intermediate images kept in float32):
 // display values in [0, 1] (sRGB-encoded), 4 doubles per pixel.
 void hdr_float_frame_reference(const ShaderFamily &lit, const Variant &v_linear, const FamilyInputs &scene,

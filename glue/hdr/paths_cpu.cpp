@@ -109,15 +109,19 @@ void hdr_float_frame_c(const ShaderFamily &lit, const Variant &v, const FamilyIn
   hdr_post_float_c(hdr, scene.w, scene.h, s, out);
 }
 
-void hdr_post_float_c(const std::vector<float> &hdr, int w, int h, const HdrSettings &s, HdrFrameC *out, int threads) {
+void hdr_post_float_c(const std::vector<float> &hdr, int w, int h, const HdrSettings &s, HdrFrameC *out, int threads,
+                      bool keep_hdr) {
   out->w = w;
   out->h = h;
-  out->hdr = hdr;
+  if (keep_hdr)
+    out->hdr = hdr;
+  else
+    out->hdr.clear();
   const bd_variant dv = {0};
   const bb_variant bxv = {0}, byv = {1};
   if (s.bloom_amount != 0.f) {
     bloom_chain(
-        out->hdr, w, h,
+        hdr, w, h,
         [&](const ts_vec4f *pos, const ts_vec4f *rec, int count, const ts_tex2d *t, ts_vec4f *o) {
           const bd_batch_input in = {{pos, &rec[BD_SLOT_SIZE], &rec[BD_SLOT_SHAPE]}, {1, 0, 0}};
           bloom_downsample_f_batch(&dv, &in, t, o, count);
@@ -136,12 +140,15 @@ void hdr_post_float_c(const std::vector<float> &hdr, int w, int h, const HdrSett
   const ht_variant tv = {2};
   out->display.resize(static_cast<size_t>(w) * h * 4);
   const ts_vec4f size = size_of(w, h), params = ts_v4f(s.tone_map_scale, s.bloom_amount, s.bloom_exponent, 0.f);
-  parallel_rows(h, threads, [&](int y) {
+  // Per worker: the row's centres and results (kept across rows); the frame's row is read in place.
+  std::vector<std::vector<ts_vec4f>> pos_of(static_cast<size_t>(parallel_workers(h, threads))), row_of(pos_of.size());
+  parallel_rows_by_worker(h, threads, [&](int t, int y) {
     const size_t i = static_cast<size_t>(y) * w;
-    std::vector<ts_vec4f> pos, fb(static_cast<size_t>(w)), row(static_cast<size_t>(w));
+    std::vector<ts_vec4f> &pos = pos_of[static_cast<size_t>(t)], &row = row_of[static_cast<size_t>(t)];
     centres(y, w, &pos);
-    std::memcpy(fb.data(), &out->hdr[i * 4], fb.size() * sizeof(ts_vec4f));
-    const ht_batch_input in = {{pos.data(), fb.data(), &size, &params}, {1, 1, 0, 0}};
+    row.resize(static_cast<size_t>(w));
+    const ts_vec4f *fb = reinterpret_cast<const ts_vec4f *>(&hdr[i * 4]);  // 4 floats a pixel
+    const ht_batch_input in = {{pos.data(), fb, &size, &params}, {1, 1, 0, 0}};
     hdr_tonemap_f_batch(&tv, &in, &bloom, row.data(), w);
     ts_unorm8_from_float_batch(&row[0].x, &out->display[i * 4], row.size() * 4);
   });

@@ -22,26 +22,31 @@ float from_bits(uint32_t b) {
   return f;
 }
 
-struct Thresholds {
-  float first[256];  // first[c]: the smallest non-negative float whose code is >= c (c >= 1)
-  Thresholds() {
-    first[0] = 0.f;
-    for (int c = 1; c < 256; ++c) {
-      uint32_t lo = 0, hi = 0x7f800000u;  // code(lo) < c <= code(hi) (+Inf gives 255)
-      while (hi - lo > 1) {
-        const uint32_t mid = lo + (hi - lo) / 2;
-        if (srgb_code_direct(from_bits(mid)) >= c)
-          hi = mid;
-        else
-          lo = mid;
-      }
-      first[c] = from_bits(hi);
-    }
+// The smallest float whose code is >= c, by bisection over bit patterns (code(lo) < c <= code(hi);
+// +Inf gives 255).
+float threshold(int c) {
+  uint32_t lo = 0, hi = 0x7f800000u;
+  while (hi - lo > 1) {
+    const uint32_t mid = lo + (hi - lo) / 2;
+    if (srgb_code_direct(from_bits(mid)) >= c)
+      hi = mid;
+    else
+      lo = mid;
   }
-};
+  return from_bits(hi);
+}
 
-const Thresholds &thresholds() {
-  static const Thresholds t;
+SrgbCodeTable make_table() {
+  SrgbCodeTable t;
+  t.first[0] = 0.f;
+  for (int c = 1; c < 256; ++c) t.first[c] = threshold(c);
+  t.first[256] = HUGE_VALF;  // no code 256: the search stops at 255
+  int c = 0;
+  for (int i = 0; i < SrgbCodeTable::kBuckets; ++i) {  // thresholds rise with the bit pattern
+    const float lo = from_bits(static_cast<uint32_t>(i) << SrgbCodeTable::kShift);
+    while (c < 255 && t.first[c + 1] <= lo) ++c;
+    t.bucket[i] = static_cast<uint8_t>(lo > 0.f ? c : 0);
+  }
   return t;
 }
 
@@ -49,11 +54,7 @@ const Thresholds &thresholds() {
 
 uint8_t srgb_code_direct(float v) { return ts_unorm8_from_float(encode_clamped(v)); }
 
-uint8_t srgb_code(float v) {
-  if (!(v > 0.f)) return 0;  // negative, zero, denormal (DAZ) and NaN: code 0, as the formula
-  const float *f = thresholds().first;
-  int c = 0;
-  for (int step = 128; step > 0; step >>= 1)
-    if (c + step < 256 && f[c + step] <= v) c += step;
-  return static_cast<uint8_t>(c);
+const SrgbCodeTable &srgb_code_table() {
+  static const SrgbCodeTable t = make_table();
+  return t;
 }

@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstring>
+#include <thread>
 
 #include "exposure/exposure_control.h"
 #include "twins/luminance_compare.h"
@@ -46,21 +47,48 @@ void radix_sort(std::vector<float> *v) {
   }
 }
 
-}  // namespace
-
-StaticLuminance::StaticLuminance(const float *rgba, int w, int h, double wx, double wy) {
-  const ae_window win = ae_center_window(w, h, wx, wy);
-  for (int y = win.y0; y < win.y0 + win.h && y < h; ++y)
+// The sorted finite luminances of rows ya..yb - 1 of the window (in *sorted) and the rgba of its
+// pixels whose luminance is not finite (in *odd, row order).
+void window_rows(const float *rgba, int w, const ae_window &win, int ya, int yb, std::vector<float> *sorted,
+                 std::vector<float> *odd) {
+  sorted->reserve(static_cast<size_t>(std::max(0, yb - ya)) * std::max(0, win.w));
+  for (int y = ya; y < yb; ++y)
     for (int x = win.x0; x < win.x0 + win.w && x < w; ++x) {
       const float *p = rgba + (static_cast<size_t>(y) * w + x) * 4;
       const float l = ts_dot3f(ts_v3f(p[0], p[1], p[2]), kLumWeights);
       if (std::isfinite(l)) {
-        sorted_.push_back(l);
+        sorted->push_back(l);
       } else {
-        odd_.insert(odd_.end(), p, p + 4);
+        odd->insert(odd->end(), p, p + 4);
       }
     }
-  radix_sort(&sorted_);
+  radix_sort(sorted);
+}
+
+}  // namespace
+
+StaticLuminance::StaticLuminance(const float *rgba, int w, int h, double wx, double wy) {
+  const ae_window win = ae_center_window(w, h, wx, wy);
+  const int y0 = win.y0, y1 = std::min(win.y0 + win.h, h);
+  if (y1 - y0 < 64 || std::thread::hardware_concurrency() < 2) {
+    window_rows(rgba, w, win, y0, y1, &sorted_, &odd_);
+    return;
+  }
+  // The two halves of the rows on two threads, then merged by the radix sort's keys (the
+  // ascending order of keys is unique: the same order as one sort of the whole window).
+  const int mid = y0 + (y1 - y0) / 2;
+  std::vector<float> lo, lo_odd, hi;
+  std::thread t([&] { window_rows(rgba, w, win, y0, mid, &lo, &lo_odd); });
+  window_rows(rgba, w, win, mid, y1, &hi, &odd_);
+  t.join();
+  odd_.insert(odd_.begin(), lo_odd.begin(), lo_odd.end());  // row order
+  auto key = [](float f) {
+    uint32_t u;
+    std::memcpy(&u, &f, 4);
+    return (u & 0x80000000u) ? ~u : (u | 0x80000000u);
+  };
+  sorted_.resize(lo.size() + hi.size());
+  std::merge(lo.begin(), lo.end(), hi.begin(), hi.end(), sorted_.begin(), [&](float a, float b) { return key(a) < key(b); });
 }
 
 uint32_t StaticLuminance::count(int bucket, float scale) const {

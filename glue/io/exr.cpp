@@ -70,29 +70,14 @@ bool write_exr_any(const char *fn, const std::string &path, const ImageF &img, I
   std::string why;
   if (!image_ok(img, &why)) return io_error(err, fn, path, why);
   const int w = img.w, h = img.h;
-  const size_t n = (size_t)4 * w * h;
 
-  // Flip to file order (top row first) and convert to the channel type.
-  std::vector<float> fbuf;
-  std::vector<Imath::half> hbuf;
-  char *base;
-  size_t elem;
-  if (type == Imf::FLOAT) {
-    fbuf.resize(n);
-    for (int y = 0; y < h; ++y)
-      std::memcpy(&fbuf[(size_t)4 * w * (h - 1 - y)], &img.rgba[(size_t)4 * w * y], sizeof(float) * 4 * w);
-    base = reinterpret_cast<char *>(fbuf.data());
-    elem = sizeof(float);
-  } else {
-    hbuf.resize(n);
-    for (int y = 0; y < h; ++y) {
-      const float *src = &img.rgba[(size_t)4 * w * y];
-      Imath::half *dst = &hbuf[(size_t)4 * w * (h - 1 - y)];
-      for (int i = 0; i < 4 * w; ++i) dst[i] = Imath::half(src[i]);
-    }
-    base = reinterpret_cast<char *>(hbuf.data());
-    elem = sizeof(Imath::half);
-  }
+  // Flipped to file order (top row first) and converted to the channel type a block of kRows
+  // rows at a time (OpenEXR takes a new frame buffer between writePixels calls): a frame's copy
+  // would be as large as the frame (127 MiB at 3840x2160), the block is a few MiB at most.
+  const int kRows = 64;
+  const size_t elem = type == Imf::FLOAT ? sizeof(float) : sizeof(Imath::half);
+  const size_t row_bytes = (size_t)4 * w * elem;
+  std::vector<char> block(row_bytes * (size_t)std::min(kRows, h));
 
   AtomicFile file(path);
   if (!file.open(&why)) return io_error(err, fn, path, why);
@@ -101,14 +86,27 @@ bool write_exr_any(const char *fn, const std::string &path, const ImageF &img, I
     Imf::Header header(w, h);
     header.compression() = Imf::ZIP_COMPRESSION;
     static const char *const names[4] = {"R", "G", "B", "A"};
-    Imf::FrameBuffer fb;
-    for (int c = 0; c < 4; ++c) {
-      header.channels().insert(names[c], Imf::Channel(type));
-      fb.insert(names[c], Imf::Slice(type, base + c * elem, 4 * elem, 4 * elem * (size_t)w));
-    }
+    for (int c = 0; c < 4; ++c) header.channels().insert(names[c], Imf::Channel(type));
     Imf::OutputFile out(os, header);
-    out.setFrameBuffer(fb);
-    out.writePixels(h);
+    for (int y0 = 0; y0 < h; y0 += kRows) {
+      const int rows = std::min(kRows, h - y0);
+      for (int r = 0; r < rows; ++r) {
+        const float *src = &img.rgba[(size_t)4 * w * (h - 1 - (y0 + r))];
+        char *dst = &block[row_bytes * r];
+        if (type == Imf::FLOAT) {
+          std::memcpy(dst, src, row_bytes);
+        } else {
+          Imath::half *hd = reinterpret_cast<Imath::half *>(dst);
+          for (int i = 0; i < 4 * w; ++i) hd[i] = Imath::half(src[i]);
+        }
+      }
+      // The slices address file row y at base + y * yStride: the block's first row is row y0.
+      char *base = reinterpret_cast<char *>(reinterpret_cast<uintptr_t>(block.data()) - (uintptr_t)y0 * row_bytes);
+      Imf::FrameBuffer fb;
+      for (int c = 0; c < 4; ++c) fb.insert(names[c], Imf::Slice(type, base + c * elem, 4 * elem, row_bytes));
+      out.setFrameBuffer(fb);
+      out.writePixels(rows);
+    }
   } catch (const std::exception &e) {
     return io_error(err, fn, path, os.failed() ? os.reason() : std::string(e.what()));
   }

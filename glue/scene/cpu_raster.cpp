@@ -144,17 +144,17 @@ int64_t ceil_div(int64_t a, int64_t b) { return -floor_div(-a, b); }
 // The visible pixel i of s with edge values l (double, normalised) and llvmpipe's depth value
 // zq: depth test LESS against the 24-bit values, then the perspective-correct barycentrics (the
 // C rasteriser's own, for what is not interpolated with llvmpipe's planes).
-inline void shade_pixel(const ScreenTri &s, SceneVisibility *vis, size_t i, float zq, double l0, double l1,
+inline void shade_pixel(const ScreenTri &s, const VisRows &vis, size_t i, float zq, double l0, double l1,
                         double l2) {
-  if (!(zq < vis->depth[i])) return;
+  if (!(zq < vis.depth[i])) return;
   double B1, B2;
   scene_tri_bary(s, l0, l1, l2, &B1, &B2);
-  vis->depth[i] = zq;
-  vis->draw[i] = s.draw;
-  vis->tri[i] = s.tri;
-  vis->sub[i] = static_cast<uint8_t>(s.sub);
-  vis->b1[i] = static_cast<float>(B1);
-  vis->b2[i] = static_cast<float>(B2);
+  vis.depth[i] = zq;
+  vis.draw[i] = s.draw;
+  vis.tri[i] = s.tri;
+  vis.sub[i] = static_cast<uint8_t>(s.sub);
+  vis.b1[i] = static_cast<float>(B1);
+  vis.b2[i] = static_cast<float>(B2);
 }
 
 // llvmpipe's depth values of pixels x0 .. x0 + n - 1 of row y of s (in chunks of kZChunk).
@@ -167,8 +167,8 @@ inline void depth_chunk(const ScreenTri &s, int x0, int y, int n, float *out) {
 
 // Rows ya..yb of a triangle with 64-bit edge values: per row, the covered span from the
 // three edge inequalities (exact integer division), then the edge values stepped along x.
-void raster_small(const ScreenTri &s, SceneVisibility *vis, int ya, int yb) {
-  const int w = vis->w;
+void raster_small(const ScreenTri &s, const VisRows &vis, int ya, int yb) {
+  const int w = vis.w;
   int64_t A[3], C[3];  // e_k(x) = C_k(y) + A_k x at the pixel centre (x, y)
   for (int k = 0; k < 3; ++k) A[k] = -s.dy[k] * kSub;
   for (int y = ya; y <= yb; ++y) {
@@ -187,7 +187,7 @@ void raster_small(const ScreenTri &s, SceneVisibility *vis, int ya, int yb) {
     }
     if (lo > hi) continue;
     int64_t e0 = C[0] + A[0] * lo, e1 = C[1] + A[1] * lo, e2 = C[2] + A[2] * lo;
-    const size_t row = static_cast<size_t>(y) * w;
+    const size_t row = static_cast<size_t>(y - vis.y0) * w;
     float zq[kZChunk];
     for (int64_t x = lo; x <= hi; ++x) {
       const int64_t zi = (x - lo) % kZChunk;
@@ -202,7 +202,7 @@ void raster_small(const ScreenTri &s, SceneVisibility *vis, int ya, int yb) {
 }
 
 // The general case (coordinates up to 1e9 * 256): 128-bit edge values per pixel.
-void raster_wide(const ScreenTri &s, SceneVisibility *vis, int ya, int yb) {
+void raster_wide(const ScreenTri &s, const VisRows &vis, int ya, int yb) {
   for (int y = ya; y <= yb; ++y) {
     const int64_t py = static_cast<int64_t>(y) * kSub + kSub / 2;
     for (int x = s.x0; x <= s.x1; ++x) {
@@ -219,13 +219,20 @@ void raster_wide(const ScreenTri &s, SceneVisibility *vis, int ya, int yb) {
       if (in) {
         float zq;
         depth_chunk(s, x, y, 1, &zq);
-        shade_pixel(s, vis, static_cast<size_t>(y) * vis->w + x, zq, l[0], l[1], l[2]);
+        shade_pixel(s, vis, static_cast<size_t>(y - vis.y0) * vis.w + x, zq, l[0], l[1], l[2]);
       }
     }
   }
 }
 
 }  // namespace
+
+void scene_raster_rows(const ScreenTri &s, const VisRows &v, int ya, int yb) {
+  if (s.small)
+    raster_small(s, v, ya, yb);
+  else
+    raster_wide(s, v, ya, yb);
+}
 
 void scene_rasterize_cpu(const PreparedScene &p, SceneVisibility *vis, int threads) {
   const size_t n = static_cast<size_t>(p.w) * p.h;
@@ -262,6 +269,8 @@ void scene_rasterize_cpu(const PreparedScene &p, SceneVisibility *vis, int threa
   std::vector<ScreenTri> &tris = kept_tris;  // a local reference: the workers below see this thread's
   std::vector<float> &clip = kept_clip;
   std::vector<std::vector<int>> band_tris(static_cast<size_t>(bands));
+  VisRows rows;  // the whole buffer (its pointers taken once the maker has made it)
+  rows.w = p.w;
   size_t total = 0;
   bool first = true;
   size_t di = 0;
@@ -273,6 +282,8 @@ void scene_rasterize_cpu(const PreparedScene &p, SceneVisibility *vis, int threa
     }
     total += tris.size();
     if (first && maker.joinable()) maker.join();
+    rows.draw = vis->draw.data(), rows.tri = vis->tri.data(), rows.sub = vis->sub.data();
+    rows.b1 = vis->b1.data(), rows.b2 = vis->b2.data(), rows.depth = vis->depth.data();
     // Bands of kBand rows, each with the batch's triangles that reach it (in draw order);
     // workers take whole bands.
     for (std::vector<int> &b : band_tris) b.clear();
@@ -293,10 +304,7 @@ void scene_rasterize_cpu(const PreparedScene &p, SceneVisibility *vis, int threa
       for (int ti : band_tris[static_cast<size_t>(band)]) {
         const ScreenTri &s = tris[static_cast<size_t>(ti)];
         const int ya = std::max(s.y0, ra), yb = std::min(s.y1, rb - 1);
-        if (s.small)
-          raster_small(s, vis, ya, yb);
-        else
-          raster_wide(s, vis, ya, yb);
+        scene_raster_rows(s, rows, ya, yb);
       }
     });
     first = false;

@@ -1,6 +1,7 @@
 // tiershade scene: the C fallback's scene frames (glue/scene/cpu_renderer.h): vertex stage and shading
 // (the rasteriser: cpu_raster.cpp).
 #include "scene/cpu_renderer.h"
+#include "scene/cpu_vertex.h"
 #include "scene/raster_tri.h"
 #include "scene/lp_interp.h"
 
@@ -80,78 +81,7 @@ void make_ctx(const PreparedScene &p, std::vector<DrawCtx> *out) {
   }
 }
 
-// ---- vertex stage ----------------------------------------------------------------------
-
-const int kVary = 24;  // 6 slots x 4 (a G-buffer record)
-// Per vertex: the 24 slot floats, then llvmpipe's window position (x, y, z, 1/w: lp_window_pos),
-// the clip position, the clip mask (lp_clipmask, as a float), 3 floats of padding.
-const int kVStride = 36;
-const int kWin = 24, kClip = 28, kClipMask = 32;
-const int kPixelSlots = 6;  // ML_PIXEL_SLOTS == WL_PIXEL_SLOTS
 const int kChunk = 64;  // pixels per batched call of scene_shade_cpu (a multiple of 8)
-
-// The production vertex shaders' outputs (model_lighting.vs, world_lighting.vs) in float.
-void vertex_stage(const PreparedScene &p, const PreparedDraw &d, std::vector<float> *clip, std::vector<float> *vary) {
-  const DrawGeometry &g = *d.geo;
-  const size_t n = g.vertices();
-  clip->assign(n * 4, 0.f);
-  vary->assign(n * kVStride, 0.f);
-  const float *m = p.view_proj;
-  const bool ps20 = !d.world && d.variant->tier == Tier::PS20;
-  const int nl = ps20 ? d.variant->value("NUM_LIGHTS") : 0;
-  for (size_t i = 0; i < n; ++i) {
-    const float *P = &g.position[i * 3], *N = &g.normal[i * 3], *T = &g.tangent[i * 4], *UV = &g.uv[i * 2];
-    float Pw[3], Nw[3], Tw[4];
-    if (d.instanced) {  // object space: the world vectors as u_model makes them
-      model_point(d.model, P, Pw);
-      model_direction(d.model, N, Nw);
-      model_direction(d.model, T, Tw);
-      Tw[3] = T[3];
-      P = Pw, N = Nw, T = Tw;
-    }
-    float *c = &(*clip)[i * 4];
-    // u_view_proj * vec4(P, 1) in float, summed left to right as llvmpipe's vertex shader
-    // does (the visibility must match GL's): not glm's mat4 * vec4, which sums in pairs.
-    for (int r = 0; r < 4; ++r) c[r] = m[r] * P[0] + m[4 + r] * P[1] + m[8 + r] * P[2] + m[12 + r];
-    float *v = &(*vary)[i * kVStride];
-    lp_window_pos(c, static_cast<float>(p.w), static_cast<float>(p.h), v + kWin);
-    std::memcpy(v + kClip, c, 4 * sizeof(float));
-    v[kClipMask] = static_cast<float>(lp_clipmask(c));
-    const glm::vec3 B = glm::cross(glm::make_vec3(N), glm::make_vec3(T)) * T[3];  // cross(N, T) * w: the same products
-    auto put = [&](int slot, float x, float y, float z, float w) {
-      v[slot * 4 + 0] = x;
-      v[slot * 4 + 1] = y;
-      v[slot * 4 + 2] = z;
-      v[slot * 4 + 3] = w;
-    };
-    if (d.world) {
-      const float *L = &g.lightmap[i * 4];
-      put(WL_SLOT_UV, UV[0], UV[1], L[0], L[1]);
-      put(WL_SLOT_LM_OFFSET, L[2], L[3], c[3], 0);
-      put(WL_SLOT_NORMAL, N[0], N[1], N[2], 0);
-      put(WL_SLOT_TANGENT, T[0], T[1], T[2], 0);
-      put(WL_SLOT_BINORMAL, B[0], B[1], B[2], 0);
-      put(WL_SLOT_EYE, p.eye[0] - P[0], p.eye[1] - P[1], p.eye[2] - P[2], 0);
-    } else {
-      put(ML_SLOT_NORMAL, N[0], N[1], N[2], 0);
-      put(ML_SLOT_POSITION, P[0], P[1], P[2], 1);
-      put(ML_SLOT_UV, UV[0], UV[1], 0, 0);
-      put(ML_SLOT_TANGENT, T[0], T[1], T[2], 0);
-      put(ML_SLOT_BITANGENT, B[0], B[1], B[2], 0);
-      float att[4] = {0, 0, 0, 0};
-      for (int l = 0; l < nl && l < 2; ++l) {
-        // The per-vertex value: ts_light_attenuation of common_lights.glsl in double.
-        const ts_vec4f *L = &d.shared[ML_SLOT_LIGHT0 + 5 * l];
-        float pk[5][4];
-        for (int k = 0; k < 5; ++k) pk[k][0] = L[k].x, pk[k][1] = L[k].y, pk[k][2] = L[k].z, pk[k][3] = L[k].w;
-        const double pd[3] = {P[0], P[1], P[2]};
-        const double a = ts_packed_light_attenuation(pk, pd, nullptr);
-        att[l] = static_cast<float>(a);
-      }
-      put(ML_SLOT_VERTEX_ATTEN, att[0], att[1], att[2], att[3]);
-    }
-  }
-}
 
 // Four floats as one vector (GCC vector extension: SSE on x86; each lane an IEEE float op).
 typedef float F4 __attribute__((vector_size(16)));
@@ -322,6 +252,56 @@ void shade_run(const DrawCtx &c, const ts_vec4f *pix, int pitch, int n, ts_vec4f
   }
 }
 
+// One row's visibility (pointers to its first pixel; at: MSAA's layers, else nullptr).
+struct RowVis {
+  const int32_t *draw, *tri;
+  const uint8_t *sub;  // nullptr: found by lp_covering
+  const float *b1, *b2;
+  const int32_t *at;
+};
+
+// Shades row y of the frame into orow (RGBA floats): runs of pixels of one draw are shaded together
+// by the batched twins (8 pixels per instruction where the host has AVX2; the same bits as one
+// pixel at a time). in_group (nullptr: every draw): the draws shaded by this pass; first: the
+// background (draw < 0) is written as 0 here.
+void shade_row(const PreparedScene &p, const std::vector<DrawCtx> &ctx, const std::vector<std::vector<float>> &vary,
+               const char *in_group, bool first, bool planes, int y, const RowVis &r, std::vector<ts_vec4f> &pix,
+               PlaneCache *cache, float *orow) {
+  // the pixel slots of a chunk, then its pixels' uv derivatives (mipmaps: uv_grad_run)
+  pix.resize(static_cast<size_t>(kPixelSlots + 1) * kChunk);
+  ts_vec4f *grad = pix.data() + static_cast<size_t>(kPixelSlots) * kChunk;
+  const float W = static_cast<float>(p.w), H = static_cast<float>(p.h);
+  int x = 0;
+  while (x < p.w) {
+    const int d = r.draw[x];
+    if (d < 0 || (in_group && !in_group[static_cast<size_t>(d)])) {  // background: written by the first pass
+      if (d < 0 && first) std::memset(orow + static_cast<size_t>(x) * 4, 0, 4 * sizeof(float));
+      ++x;
+      continue;
+    }
+    int x1 = x;
+    while (x1 < p.w && r.draw[x1] == d) ++x1;
+    ts_vec4f *orow_px = reinterpret_cast<ts_vec4f *>(orow) + x;
+    // In chunks of kChunk pixels, so that the slots stay in L1 between the two loops.
+    const DrawCtx &c = ctx[d];
+    int used[kPixelSlots];  // locals: the slot stores below cannot alias them
+    const int nused = c.nused;
+    std::copy(c.used, c.used + nused, used);
+    const float *vd = vary[d].data();
+    const uint32_t *indices = p.draws[d].geo->indices.data();
+    ts_vec4f *pp = pix.data();
+    for (int c0 = x; c0 < x1; c0 += kChunk) {
+      const int n = std::min(kChunk, x1 - c0);
+      interp_run(vd, indices, r.tri, r.sub, r.b1, r.b2, d, y, c0, n, used, nused, pp, kChunk, planes, W, H,
+                 c.world ? -1 : ML_SLOT_POSITION, r.at, cache);
+      const bool mips = c.mips && planes;
+      if (mips) uv_grad_run(vd, indices, r.tri, r.sub, d, y, c0, n, used, nused, c.uv_slot, W, H, r.at, cache, grad);
+      shade_run(c, pp, kChunk, n, orow_px + (c0 - x), mips ? grad : nullptr);
+    }
+    x = x1;
+  }
+}
+
 }  // namespace
 
 namespace {
@@ -374,9 +354,7 @@ void scene_shade_cpu(const PreparedScene &p, const SceneVisibility &vis, ImageF 
   std::atomic<int> rows{0};
   // Per thread: the run's pixel slots and results (kept across rows).
   std::vector<std::vector<ts_vec4f>> pix_of(static_cast<size_t>(parallel_workers(p.h, threads)));
-  std::vector<std::vector<ts_vec4f>> grad_of(pix_of.size());
   std::vector<PlaneCache> cache(pix_of.size());
-  const float W = static_cast<float>(p.w), H = static_cast<float>(p.h);
   std::vector<float> clip;
   for (size_t gi = 0; gi < groups.size(); ++gi) {
     const bool first = gi == 0;
@@ -385,51 +363,15 @@ void scene_shade_cpu(const PreparedScene &p, const SceneVisibility &vis, ImageF 
       in_group[di] = 1;
     }
     parallel_rows_by_worker(p.h, threads, [&](int t, int y) {
-      // Runs of pixels of one draw are shaded together by the batched twins (8 pixels per
-      // instruction where the host has AVX2; the same bits as one pixel at a time).
-      std::vector<ts_vec4f> &pix = pix_of[static_cast<size_t>(t)];
-      pix.resize(static_cast<size_t>(kPixelSlots) * kChunk);
       const size_t row = static_cast<size_t>(y) * p.w;
-      float *orow = &out->rgba[row * 4];
-      int x = 0;
-      while (x < p.w) {
-        const int d = vis.draw[row + x];
-        if (d < 0 || !in_group[static_cast<size_t>(d)]) {  // background: written by the first pass
-          if (d < 0 && first) std::memset(orow + static_cast<size_t>(x) * 4, 0, 4 * sizeof(float));
-          ++x;
-          continue;
-        }
-        int x1 = x;
-        while (x1 < p.w && vis.draw[row + x1] == d) ++x1;
-        ts_vec4f *orow_px = reinterpret_cast<ts_vec4f *>(orow) + x;
-        // In chunks of kChunk pixels, so that the slots stay in L1 between the two loops.
-        const DrawCtx &c = ctx[d];
-        int used[kPixelSlots];  // locals: the slot stores below cannot alias them
-        const int nused = c.nused;
-        std::copy(c.used, c.used + nused, used);
-        const float *vd = vary[d].data();
-        const uint32_t *indices = p.draws[d].geo->indices.data();
-        const int32_t *tri = vis.tri.data() + row;
-        const float *vb1 = vis.b1.data() + row, *vb2 = vis.b2.data() + row;
-        const int32_t *at = vis.at.empty() ? nullptr : vis.at.data() + row;
-        const uint8_t *sub = vis.sub.size() == vis.tri.size() ? vis.sub.data() + row : nullptr;
-        ts_vec4f *pp = pix.data();
-        for (int c0 = x; c0 < x1; c0 += kChunk) {
-          const int n = std::min(kChunk, x1 - c0);
-          interp_run(vd, indices, tri, sub, vb1, vb2, d, y, c0, n, used, nused, pp, kChunk, vis.pixel_planes, W, H,
-                     c.world ? -1 : ML_SLOT_POSITION, at, &cache[static_cast<size_t>(t)]);
-          ts_vec4f *gr = nullptr;
-          if (c.mips && vis.pixel_planes) {
-            std::vector<ts_vec4f> &g = grad_of[static_cast<size_t>(t)];
-            g.resize(kChunk);
-            gr = g.data();
-            uv_grad_run(vd, indices, tri, sub, d, y, c0, n, used, nused, c.uv_slot, W, H, at,
-                        &cache[static_cast<size_t>(t)], gr);
-          }
-          shade_run(c, pp, kChunk, n, orow_px + (c0 - x), gr);
-        }
-        x = x1;
-      }
+      const RowVis r = {vis.draw.data() + row,
+                        vis.tri.data() + row,
+                        vis.sub.size() == vis.tri.size() ? vis.sub.data() + row : nullptr,
+                        vis.b1.data() + row,
+                        vis.b2.data() + row,
+                        vis.at.empty() ? nullptr : vis.at.data() + row};
+      shade_row(p, ctx, vary, in_group.data(), first, vis.pixel_planes, y, r, pix_of[static_cast<size_t>(t)], &cache[static_cast<size_t>(t)],
+                &out->rgba[row * 4]);
       const int done = ++rows;
       if (progress && t == 0) progress(static_cast<double>(done) / (static_cast<double>(p.h) * groups.size()));
     });
@@ -439,6 +381,98 @@ void scene_shade_cpu(const PreparedScene &p, const SceneVisibility &vis, ImageF 
     }
   }
   skybox_shade_background(p.sky, p.w, p.h, vis.draw.data(), out->rgba.data(), threads);  // skybox_pass.h
+}
+
+bool scene_render_cpu(const PreparedScene &p, SceneVisibility *vis, ImageF *out, std::vector<int32_t> *draw,
+                      int threads, const std::function<void(double)> &progress) {
+  // Every draw's vertex stage and triangle set-up first, the draws shared among the workers
+  // (FTZ/DAZ set as llvmpipe computes; kept by the calling thread across frames, as
+  // scene_rasterize_cpu keeps its batch), while their memory (vertex outputs and set-up
+  // triangles, estimated from the index count) stays below the frame-sized visibility buffer the
+  // two passes would take (21 bytes a pixel) or 32 MiB; else the two passes.
+  const size_t n = static_cast<size_t>(p.w) * p.h;
+  size_t bytes = 0;
+  for (const PreparedDraw &d : p.draws)
+    bytes += d.geo->vertices() * kVStride * sizeof(float) + d.geo->indices.size() / 3 * sizeof(ScreenTri);
+  static thread_local std::vector<std::vector<ScreenTri>> kept_draw_tris;
+  static thread_local std::vector<std::vector<float>> kept_vary;
+  std::vector<std::vector<float>> &vary = kept_vary;
+  std::vector<std::vector<ScreenTri>> &draw_tris = kept_draw_tris;
+  if (bytes > std::max<size_t>(32u << 20, n * 21)) {
+    std::vector<std::vector<float>>().swap(vary);
+    std::vector<std::vector<ScreenTri>>().swap(draw_tris);
+    scene_rasterize_cpu(p, vis, threads);
+    scene_shade_cpu(p, *vis, out, threads, progress);
+    if (draw) *draw = vis->draw;
+    return false;
+  }
+  {
+    const int nd = static_cast<int>(p.draws.size());
+    vary.resize(p.draws.size());
+    draw_tris.resize(p.draws.size());
+    std::vector<std::vector<float>> clip(static_cast<size_t>(parallel_workers(nd, threads)));
+    parallel_rows_by_worker(nd, threads, [&](int t, int di) {
+      const size_t i = static_cast<size_t>(di);
+      vertex_stage(p, p.draws[i], &clip[static_cast<size_t>(t)], &vary[i]);
+      draw_tris[i].clear();
+      scene_tri_setup(p, di, clip[static_cast<size_t>(t)], &draw_tris[i]);
+    });
+  }
+  std::vector<DrawCtx> ctx;
+  make_ctx(p, &ctx);
+  out->w = p.w;
+  out->h = p.h;
+  if (out->rgba.size() != n * 4) fresh_buffer(&out->rgba, n * 4, 0.f);  // every pixel is written below
+  if (draw && draw->size() != n) fresh_buffer<int32_t>(draw, n, -1);
+  // Bands of kBand rows, each with the triangles that reach it in draw order (equal depths keep
+  // the first draw, as GL_LESS does); a worker takes bands t, t + n, ... and holds one band's
+  // visibility (21 bytes a pixel) at a time.
+  const int kBand = 8;
+  const int bands = (p.h + kBand - 1) / kBand;
+  std::vector<std::vector<const ScreenTri *>> band_tris(static_cast<size_t>(bands));
+  for (const std::vector<ScreenTri> &dt : draw_tris)
+    for (const ScreenTri &s : dt)
+      for (int b = s.y0 / kBand; b <= s.y1 / kBand; ++b) band_tris[static_cast<size_t>(b)].push_back(&s);
+  const int workers = parallel_workers(bands, threads);
+  struct Worker {
+    std::vector<int32_t> draw, tri;
+    std::vector<uint8_t> sub;
+    std::vector<float> b1, b2, depth;
+    std::vector<ts_vec4f> pix;
+    PlaneCache cache;
+  };
+  std::vector<Worker> wk(static_cast<size_t>(workers));
+  const size_t bn = static_cast<size_t>(kBand) * p.w;
+  std::atomic<int> done{0};
+  parallel_rows_by_worker(bands, threads, [&](int t, int band) {
+    Worker &k = wk[static_cast<size_t>(t)];
+    const int ra = band * kBand, rb = std::min(p.h, ra + kBand);
+    const size_t m = static_cast<size_t>(rb - ra) * p.w;
+    // Only the depth and draw are reset: the triangle, sub-triangle and barycentrics of a pixel
+    // are read only where a draw covers it (written with it).
+    if (k.draw.size() != bn) {
+      k.draw.resize(bn), k.tri.resize(bn), k.sub.resize(bn), k.b1.resize(bn), k.b2.resize(bn), k.depth.resize(bn);
+    }
+    std::fill(k.draw.begin(), k.draw.end(), -1);
+    std::fill(k.depth.begin(), k.depth.end(), kLpDepth24Clear);
+    VisRows v;
+    v.w = p.w, v.y0 = ra;
+    v.draw = k.draw.data(), v.tri = k.tri.data(), v.sub = k.sub.data();
+    v.b1 = k.b1.data(), v.b2 = k.b2.data(), v.depth = k.depth.data();
+    for (const ScreenTri *s : band_tris[static_cast<size_t>(band)])
+      scene_raster_rows(*s, v, std::max(s->y0, ra), std::min(s->y1, rb - 1));
+    for (int y = ra; y < rb; ++y) {
+      const size_t o = static_cast<size_t>(y - ra) * p.w, row = static_cast<size_t>(y) * p.w;
+      const RowVis r = {v.draw + o, v.tri + o, v.sub + o, v.b1 + o, v.b2 + o, nullptr};
+      float *orow = &out->rgba[row * 4];
+      shade_row(p, ctx, vary, nullptr, true, true, y, r, k.pix, &k.cache, orow);
+      skybox_shade_row(p.sky, p.w, y, r.draw, orow);  // skybox_pass.h
+    }
+    if (draw) std::copy(k.draw.begin(), k.draw.begin() + static_cast<std::ptrdiff_t>(m), draw->begin() + static_cast<std::ptrdiff_t>(static_cast<size_t>(ra) * p.w));
+    const int d = ++done;
+    if (progress && t == 0) progress(static_cast<double>(d) / bands);
+  });
+  return true;
 }
 
 void scene_shade_records(const PreparedScene &p, const std::vector<int> &draw, const std::vector<float> &slots,

@@ -39,6 +39,14 @@ void scene_rasterize_cpu(const PreparedScene &p, SceneVisibility *vis, int threa
 void scene_shade_cpu(const PreparedScene &p, const SceneVisibility &vis, ImageF *out, int threads = 0,
                      const std::function<void(double)> &progress = nullptr);
 
+// The lit pass in bands of rows (tiles as wide as the frame): each worker rasterises a band
+// into a band-sized visibility buffer and shades it at once, the same pixels with the same bits
+// as scene_rasterize_cpu then scene_shade_cpu, without a frame-sized visibility buffer. draw
+// (optional): the draw index of every pixel (-1 background). A scene beyond the band path's
+// budgets (its vertex outputs, its triangles) takes the two passes with *vis: returns false.
+bool scene_render_cpu(const PreparedScene &p, SceneVisibility *vis, ImageF *out, std::vector<int32_t> *draw,
+                      int threads = 0, const std::function<void(double)> &progress = nullptr);
+
 // Shades GL's G-buffer (per pixel draw index and 6 slots, glue/scene/gl_renderer.h) with the C twin;
 // grads (4 floats a pixel, SceneGl::gbuffer's or scene_records_cpu's): the uv's quad derivatives,
 // for the level of detail of mipmapped textures (none: every texture's level 0).

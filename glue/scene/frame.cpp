@@ -27,6 +27,7 @@
 #include "hdr/srgb_rgba8_codes.h"
 #include "hdr/still_frame_exposure.h"
 #include "base/image_diff.h"
+#include "base/parallel_rows.h"
 
 namespace {
 
@@ -110,6 +111,22 @@ struct SceneRenderer::Impl {
     sgl.reset();
     renderer.reset();
     ctx.reset();
+  }
+  std::vector<int32_t> cpu_draw;  // the C fallback's draw index per pixel, when post needs it
+  // The integer path's display encoding: any pixel linear (ps20 and world draws and the skybox
+  // write linear values), and linear pixels beside display-encoded ones (post then needs each
+  // pixel's draw).
+  bool any_linear() const {
+    bool any = p.sky.present();
+    for (const PreparedDraw &d : p.draws) any = any || !d.display_encoded;
+    return any;
+  }
+  bool mixed_encoding() const {
+    if (float_path) return false;
+    const bool any = any_linear();
+    for (const PreparedDraw &d : p.draws)
+      if (d.display_encoded && any) return true;
+    return false;
   }
   bool colour_correct(SceneRenderResult *res, bool on_cpu, std::string *err);
   bool msaa_frame(SceneRenderResult *res, std::string *err);
@@ -289,9 +306,7 @@ bool SceneRenderer::Impl::post(SceneRenderResult *res, bool on_cpu, const std::v
     if (s.hdr.auto_exposure)
       res->notes.push_back("auto exposure runs on the float path; the integer path uses the fixed tone-map scale");
     // Which pixels hold linear values the (sRGB) render target would encode: ps20 and world draws.
-    bool mixed = false, any_linear = p.sky.present();  // the skybox writes linear values
-    for (const PreparedDraw &d : p.draws) any_linear = any_linear || !d.display_encoded;
-    for (const PreparedDraw &d : p.draws) mixed = mixed || (d.display_encoded && any_linear);
+    const bool any_linear = this->any_linear(), mixed = mixed_encoding();
     if (mixed && dop->empty()) {
       std::vector<float> slots;
       if (!sgl->gbuffer(&own, &slots, err)) return false;
@@ -299,19 +314,27 @@ bool SceneRenderer::Impl::post(SceneRenderResult *res, bool on_cpu, const std::v
     }
     const std::vector<int> &draw_of_pixel = *dop;
     res->display.resize(n * 4);
-    for (size_t i = 0; i < n; ++i) {
-      bool linear = any_linear;
-      if (mixed) linear = draw_of_pixel[i] >= 0 ? !p.draws[draw_of_pixel[i]].display_encoded : p.sky.present();
-      for (int c = 0; c < 3; ++c) {
-        const float v = res->lit.rgba[i * 4 + c];
-        res->display[i * 4 + c] = linear ? srgb_code(v) : ts_unorm8_from_float(v);
+    const SrgbCodeTable &codes = srgb_code_table();
+    const float *lit = res->lit.rgba.data();
+    uint8_t *disp = res->display.data();
+    parallel_rows(cfg.h, cfg.threads, [&](int y) {  // rows on every core (pure per pixel)
+      for (size_t i = static_cast<size_t>(y) * cfg.w, e = i + cfg.w; i < e; ++i) {
+        bool linear = any_linear;
+        if (mixed) linear = draw_of_pixel[i] >= 0 ? !p.draws[draw_of_pixel[i]].display_encoded : p.sky.present();
+        for (int c = 0; c < 3; ++c) {
+          const float v = lit[i * 4 + c];
+          disp[i * 4 + c] = linear ? srgb_code_in(codes, v) : ts_unorm8_from_float(v);
+        }
+        disp[i * 4 + 3] = 255;
       }
-      res->display[i * 4 + 3] = 255;
-    }
+    });
   } else {
     // The lit frame as the fp16 target stores it (writes round toward zero; c_ref/math/hdr_formats.h):
     // from here on, and in OUT.exr, the float path's frame is these fp16 values.
-    ts_quantize_half_batch(res->lit.rgba.data(), res->lit.rgba.data(), res->lit.rgba.size());
+    parallel_rows(cfg.h, cfg.threads, [&](int y) {  // per value: rows on every core
+      float *row = res->lit.rgba.data() + static_cast<size_t>(y) * cfg.w * 4;
+      ts_quantize_half_batch(row, row, static_cast<size_t>(cfg.w) * 4);
+    });
     const std::vector<float> &hdr = res->lit.rgba;
     HdrSettings hs;
     hs.tone_map_scale = s.hdr.tone_map_scale;
@@ -327,7 +350,7 @@ bool SceneRenderer::Impl::post(SceneRenderResult *res, bool on_cpu, const std::v
     res->tone_map_scale = hs.tone_map_scale;
     if (on_cpu) {
       HdrFrameC f;
-      hdr_post_float_c(hdr, cfg.w, cfg.h, hs, &f, cfg.threads);
+      hdr_post_float_c(hdr, cfg.w, cfg.h, hs, &f, cfg.threads, false);
       res->display = std::move(f.display);
     } else {
       if (!pipe->post_float(hdr, hs, err) || !read_rgba8(renderer->gl(), pipe->display(), &res->display, err))
@@ -428,14 +451,17 @@ bool SceneRenderer::frame(SceneRenderResult *out, std::string *err) {
   if (cfg.msaa > 1) {
     if (!m.msaa_frame(&res, err)) return false;
   } else if (cpu) {
-    SceneVisibility &vis = m.vis;  // kept across frames: reset, not reallocated
-    scene_rasterize_cpu(p, &vis, cfg.threads);
-    if (getenv("TS_DRAW_MS")) fprintf(stderr, "C rasterise: %.1f ms\n", ms_since(t0));
-    scene_shade_cpu(p, vis, &res.lit, cfg.threads, [&](double f) {
+    // Rasterised and shaded in bands (the visibility of a band at a time; a scene beyond the
+    // band path's budgets: m.vis, kept across frames). The frame buffers of the caller's last
+    // result are reused (reset, not reallocated: their page faults were a tenth of a 4K frame).
+    if (out->lit.rgba.size() == static_cast<size_t>(cfg.w) * cfg.h * 4) res.lit.rgba.swap(out->lit.rgba);
+    if (!m.float_path) res.display.swap(out->display);
+    std::vector<int32_t> *dop = m.mixed_encoding() ? &m.cpu_draw : nullptr;
+    scene_render_cpu(p, &m.vis, &res.lit, dop, cfg.threads, [&](double f) {
       if (cfg.progress) cfg.progress("C fallback lit pass", f);
     });
     res.lit_ms = ms_since(t0);
-    draw_of_pixel.swap(vis.draw);
+    draw_of_pixel.swap(m.cpu_draw);
   } else {
     std::function<void(int, GLuint)> capture;
     if (cfg.on_draw || cfg.progress)
@@ -477,7 +503,7 @@ bool SceneRenderer::frame(SceneRenderResult *out, std::string *err) {
   } else if (!m.post(&res, cpu, draw_of_pixel, err)) {
     return false;
   }
-  if (cpu && cfg.msaa <= 1) draw_of_pixel.swap(m.vis.draw);
+  if (cpu && cfg.msaa <= 1) draw_of_pixel.swap(m.cpu_draw);
   res.post_ms = ms_since(t0);
   res.frame_ms = ms_since(t_frame);
   *out = std::move(res);

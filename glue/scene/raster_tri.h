@@ -51,6 +51,18 @@ void fresh_buffer(std::vector<T> *out, size_t n, T v) {
   out->swap(b);
 }
 
+// Rows [y0, y0 + rows) of a visibility buffer w pixels wide (pixel (x, y) at (y - y0) * w + x):
+// the whole frame's (scene_rasterize_cpu) or a band's (scene_render_cpu's tiles).
+struct VisRows {
+  int w = 0, y0 = 0;
+  int32_t *draw = nullptr, *tri = nullptr;
+  uint8_t *sub = nullptr;
+  float *b1 = nullptr, *b2 = nullptr, *depth = nullptr;
+};
+// Rasterises rows ya..yb (inside v's rows) of s into v: depth test LESS against v.depth, then
+// the pixel's draw, triangle, sub-triangle and barycentrics.
+void scene_raster_rows(const ScreenTri &s, const VisRows &v, int ya, int yb);
+
 // The clip coordinates of a draw's vertices (u_view_proj * vec4(P, 1), summed as llvmpipe's
 // vertex shader sums them).
 void scene_clip_stage(const PreparedScene &p, const PreparedDraw &d, std::vector<float> *clip);

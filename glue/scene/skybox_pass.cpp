@@ -106,19 +106,25 @@ void skybox_record(const PreparedSky &sky, int x, int y, ts_vec4f rec[]) {
   rec[SB_SLOT_POS] = ts_v4f(static_cast<float>(x) + 0.5f, static_cast<float>(y) + 0.5f, 0.f, 0.f);
 }
 
-void skybox_shade_background(const PreparedSky &sky, int w, int h, const int *draw, float *rgba, int threads) {
+void skybox_shade_row(const PreparedSky &sky, int w, int y, const int *draw_row, float *rgba_row) {
   if (!sky.present()) return;
   const ts_texcube cube = texcube_of(sky.cube);
   const sb_variant v = {tier_id(sky.variant->tier)};
+  ts_vec4f rec[SB_SLOTS];
+  for (int x = 0; x < w; ++x) {
+    if (draw_row[x] >= 0) continue;
+    skybox_record(sky, x, y, rec);
+    const ts_vec4f c = skybox_f(&v, rec, &cube);
+    float *o = rgba_row + static_cast<size_t>(x) * 4;
+    o[0] = c.x, o[1] = c.y, o[2] = c.z, o[3] = c.w;
+  }
+}
+
+void skybox_shade_background(const PreparedSky &sky, int w, int h, const int *draw, float *rgba, int threads) {
+  if (!sky.present()) return;
   parallel_rows(h, threads, [&](int y) {
-    ts_vec4f rec[SB_SLOTS];
-    for (int x = 0; x < w; ++x) {
-      const size_t i = static_cast<size_t>(y) * w + x;
-      if (draw[i] >= 0) continue;
-      skybox_record(sky, x, y, rec);
-      const ts_vec4f c = skybox_f(&v, rec, &cube);
-      rgba[i * 4 + 0] = c.x, rgba[i * 4 + 1] = c.y, rgba[i * 4 + 2] = c.z, rgba[i * 4 + 3] = c.w;
-    }
+    const size_t row = static_cast<size_t>(y) * w;
+    skybox_shade_row(sky, w, y, draw + row, rgba + row * 4);
   });
 }
 

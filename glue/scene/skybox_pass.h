@@ -52,6 +52,8 @@ void skybox_record(const PreparedSky &sky, int x, int y, ts_vec4f rec[]);
 
 // C: shades every pixel whose draw is < 0 with the twin (skybox_f), rows in parallel. No sky: nothing.
 void skybox_shade_background(const PreparedSky &sky, int w, int h, const int *draw, float *rgba, int threads);
+// The same for row y alone (draw_row, rgba_row: the row's w pixels), on the calling thread.
+void skybox_shade_row(const PreparedSky &sky, int w, int y, const int *draw_row, float *rgba_row);
 
 // GL: the skybox's program and cube texture, and its full-screen draw into the bound framebuffer.
 class SkyboxGl {
