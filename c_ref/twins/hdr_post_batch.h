@@ -28,6 +28,19 @@ TS_BATCH_DECLARE(bloom_downsample, bd_batch_input, BD_SLOTS, bd_variant, ts_tex2
 TS_BATCH_DECLARE(bloom_blur, bb_batch_input, BB_SLOTS, bb_variant, ts_tex2d)
 TS_BATCH_DECLARE(hdr_tonemap, ht_batch_input, HT_SLOTS, ht_variant, ts_tex2d)
 
+/* hdr_tonemap_f_batch on one row of a frame, with the same bits, its bloom fetches shared with the
+ * rows before it: the row's pixels share pos.y and the size slot (stride 0), and every row of a
+ * frame passed with one `rows` has the same pixels' pos.x and count. rows->rgb[k] hold 3 * capacity
+ * floats; set rows->row[0] = rows->row[1] = -1 before a frame's first row (the bloom texture's
+ * contents change between frames). Falls back to hdr_tonemap_f_batch where that does not hold. */
+typedef struct ht_bloom_rows {
+  int row[2]; /* the bloom rows held, filtered horizontally at the row's pixels; -1: none */
+  float *rgb[2]; /* their r, g, b: rgb[k][c * count + i] */
+  int capacity; /* pixels a row may have */
+} ht_bloom_rows;
+TS_C_API void hdr_tonemap_f_row(const ht_variant *v, const ht_batch_input *in, const ts_tex2d *bloom,
+                                ht_bloom_rows *rows, ts_vec4f *out, int count);
+
 /* out[i] = ts_quantize_half(in[i]) / ts_unorm8_from_float(in[i]), i = 0..n-1 (in == out allowed
  * for the first). Pure bit operations and an exact multiply-add: no dependence on the fused mode. */
 TS_C_API void ts_quantize_half_batch(const float *in, float *out, size_t n);

@@ -56,12 +56,9 @@ static V4v VFN(bb_block)(const bb_variant *v, const bb_batch_input *in, const ts
 TSV_BATCH(bb_batch, bb_block, bb_variant, bb_batch_input, ts_tex2d)
 
 /* ---- hdr_tonemap ---- */
-static V4v VFN(ht_block)(const ht_variant *v, const ht_batch_input *in, const ts_tex2d *bloom_tex, const size_t *pix) {
-  const V4v pos = TSV_REC(in, HT_SLOT_POS, pix);
-  const V4v size = TSV_REC(in, HT_SLOT_SIZE, pix);
-  const V3v fb = VFN(xyz)(TSV_REC(in, HT_SLOT_FRAME, pix));
-  const V4v params = TSV_REC(in, HT_SLOT_PARAMS, pix);
-  V3v bloom = VFN(scale3)(VFN(hp_fetch)(bloom_tex, pos.x * size.z, pos.y * size.w), VFN(sqrt)(VFN(max)(params.x, VFN(splat)(0.0f))));
+/* Everything after the bloom fetch; raw: the bilinear bloom sample's rgb. */
+TSV_INL V4v VFN(ht_finish)(const ht_variant *v, V3v fb, V4v params, V3v raw) {
+  V3v bloom = VFN(scale3)(raw, VFN(sqrt)(VFN(max)(params.x, VFN(splat)(0.0f))));
   const VF one = VFN(splat)(1.0f);
   bloom = VFN(v3)(VFN(min)(bloom.x, one), VFN(min)(bloom.y, one), VFN(min)(bloom.z, one));
   const VF lum = VFN(dot3)(bloom, VFN(v3)(VFN(splat)(0.2125f), VFN(splat)(0.7154f), VFN(splat)(0.0721f)));
@@ -69,7 +66,87 @@ static V4v VFN(ht_block)(const ht_variant *v, const ht_batch_input *in, const ts
   const V3v c = VFN(add3)(VFN(scale3)(fb, params.x), VFN(scale3)(bloom, k));
   return VFN(rgba)(VFN(output)(c, v->output_mode), one);
 }
+
+static V4v VFN(ht_block)(const ht_variant *v, const ht_batch_input *in, const ts_tex2d *bloom_tex, const size_t *pix) {
+  const V4v pos = TSV_REC(in, HT_SLOT_POS, pix);
+  const V4v size = TSV_REC(in, HT_SLOT_SIZE, pix);
+  const V3v fb = VFN(xyz)(TSV_REC(in, HT_SLOT_FRAME, pix));
+  const V4v params = TSV_REC(in, HT_SLOT_PARAMS, pix);
+  return VFN(ht_finish)(v, fb, params, VFN(hp_fetch)(bloom_tex, pos.x * size.z, pos.y * size.w));
+}
 TSV_BATCH(ht_batch, ht_block, ht_variant, ht_batch_input, ts_tex2d)
+
+/* The tone map of one row (hdr_tonemap_f_row): the bilinear bloom sample is lerp(wy, H(y0), H(y1))
+ * with H(r) = lerp(wx, texel(r, x0), texel(r, x1)), texture2D's own lerps in its own order, so
+ * H(r) at the row's pixels is computed once (ht_hrow) and kept for the rows that read it again. */
+static void VFN(ht_hrow)(const ht_batch_input *in, const ts_tex2d *t, int r, float *rgb, int count) {
+  const float *row = t->texels + (size_t)r * (size_t)t->w * 4u;
+  for (int first = 0; first < count; first += TSV_W) {
+    size_t pix[TSV_W];
+    const int n = VFN(block_pix)(first, count, pix);
+    const V4v pos = TSV_REC(in, HT_SLOT_POS, pix);
+    const V4v size = TSV_REC(in, HT_SLOT_SIZE, pix);
+    VI x0, x1;
+    VF wx;
+    VFN(wrap_linear)(pos.x * size.z, t->w, t->wrap_s, &x0, &x1, &wx);
+    const float *p0[TSV_W], *p1[TSV_W];
+    for (int j = 0; j < TSV_W; ++j) {
+      p0[j] = row + (size_t)x0[j] * 4u;
+      p1[j] = row + (size_t)x1[j] * 4u;
+    }
+    const V4v h = VFN(lerp4)(wx, VFN(gather4)(p0), VFN(gather4)(p1));
+    for (int j = 0; j < n; ++j) {
+      rgb[first + j] = h.x[j];
+      rgb[(size_t)count + (size_t)(first + j)] = h.y[j];
+      rgb[2u * (size_t)count + (size_t)(first + j)] = h.z[j];
+    }
+  }
+}
+
+TSV_INL V4v VFN(ht_hload)(const float *rgb, int count, const size_t *pix, int n) {
+  V4v h;
+  h.w = VFN(splat)(0.0f);
+  if (n == TSV_W) {
+    __builtin_memcpy(&h.x, rgb + pix[0], sizeof(VF));
+    __builtin_memcpy(&h.y, rgb + (size_t)count + pix[0], sizeof(VF));
+    __builtin_memcpy(&h.z, rgb + 2u * (size_t)count + pix[0], sizeof(VF));
+    return h;
+  }
+  for (int j = 0; j < TSV_W; ++j) {
+    h.x[j] = rgb[pix[j]];
+    h.y[j] = rgb[(size_t)count + pix[j]];
+    h.z[j] = rgb[2u * (size_t)count + pix[j]];
+  }
+  return h;
+}
+
+static void VFN(ht_row)(const ht_variant *v, const ht_batch_input *in, const ts_tex2d *t, ht_bloom_rows *rows,
+                        ts_vec4f *out, int count) {
+  const size_t pix0[TSV_W] = {0};
+  const V4v pos0 = TSV_REC(in, HT_SLOT_POS, pix0), size0 = TSV_REC(in, HT_SLOT_SIZE, pix0);
+  VI y0, y1;
+  VF wy;
+  VFN(wrap_linear)(pos0.y * size0.w, t->h, t->wrap_t, &y0, &y1, &wy);
+  const int need[2] = {y0[0], y1[0]};
+  const float *h[2];
+  for (int k = 0; k < 2; ++k) {
+    int slot = rows->row[0] == need[k] ? 0 : rows->row[1] == need[k] ? 1 : -1;
+    if (slot < 0) {
+      slot = rows->row[0] == need[1 - k] ? 1 : 0; /* keep the other row this one needs */
+      VFN(ht_hrow)(in, t, need[k], rows->rgb[slot], count);
+      rows->row[slot] = need[k];
+    }
+    h[k] = rows->rgb[slot];
+  }
+  for (int first = 0; first < count; first += TSV_W) {
+    size_t pix[TSV_W];
+    const int n = VFN(block_pix)(first, count, pix);
+    const V3v fb = VFN(xyz)(TSV_REC(in, HT_SLOT_FRAME, pix));
+    const V4v params = TSV_REC(in, HT_SLOT_PARAMS, pix);
+    const V4v raw = VFN(lerp4)(wy, VFN(ht_hload)(h[0], count, pix, n), VFN(ht_hload)(h[1], count, pix, n));
+    VFN(store4)(VFN(ht_finish)(v, fb, params, VFN(xyz)(raw)), out + first, n);
+  }
+}
 
 /* ---- hdr_formats.c on lanes ---- */
 /* ts_quantize_half: round toward zero to fp16 and back, as bit masks. A finite value in the

@@ -73,6 +73,7 @@ struct HdrFrameC {
   std::vector<uint8_t> display;  // RGBA8 codes, rows bottom-up
   std::vector<float> hdr;  // float path: the fp16 linear frame's values (rgba)
   std::vector<float> bloom;  // float path: the quarter-size blurred bloom (rgba)
+  std::vector<float> bloom_down, bloom_x;  // float path: the downsampled and x-blurred bloom (scratch)
 };
 // `scene` holds the G-buffer and the shared slots; the tone-map scale is set by the functions.
 void hdr_integer_frame_c(const ShaderFamily &lit, const Variant &v, const FamilyInputs &scene, float tone_map_scale,

@@ -53,13 +53,15 @@ void store_row(std::vector<float> *img, size_t i, const std::vector<ts_vec4f> &r
 // The three bloom passes of the float path; `half`: store in fp16 (GL) or float32 (reference).
 // down(pos, rec, count, tex, out) and blur(dir, pos, rec, count, tex, out) shade `count` pixels
 // of a row: pos[i] is pixel i's centre, rec the slots shared by the row (its position slot unused).
+// ds, bx: the intermediate images (kept by the caller across frames; every texel is written).
 template <class Down, class Blur>
 void bloom_chain(const std::vector<float> &hdr, int w, int h, Down down, Blur blur, bool half, std::vector<float> *out,
-                 int *bw_out, int *bh_out, int threads = 1) {
+                 std::vector<float> &ds, std::vector<float> &bx, int *bw_out, int *bh_out, int threads = 1) {
   const int bw = hdr_bloom_size(w), bh = hdr_bloom_size(h);
   const size_t n = static_cast<size_t>(bw) * bh;
-  std::vector<float> ds(n * 4), bx(n * 4);
-  out->assign(n * 4, 0.f);
+  ds.resize(n * 4);
+  bx.resize(n * 4);
+  out->resize(n * 4);
   const ts_tex2d src = tex_of(hdr, w, h, true);
   const ts_vec4f drec[BD_SLOTS] = {ts_v4f(0.f, 0.f, 0.f, 0.f), size_of(w, h), ts_v4f(0.3f, 0.59f, 0.11f, 2.2f)};
   const ts_vec4f brec[BB_SLOTS] = {ts_v4f(0.f, 0.f, 0.f, 0.f), size_of(bw, bh), ts_v4f(1.f, 0.f, 0.f, 0.f)};
@@ -130,7 +132,7 @@ void hdr_post_float_c(const std::vector<float> &hdr, int w, int h, const HdrSett
           const bb_batch_input in = {{pos, &rec[BB_SLOT_SIZE], &rec[BB_SLOT_PARAMS]}, {1, 0, 0}};
           bloom_blur_f_batch(dir ? &byv : &bxv, &in, t, o, count);
         },
-        true, &out->bloom, &out->bw, &out->bh, threads);
+        true, &out->bloom, out->bloom_down, out->bloom_x, &out->bw, &out->bh, threads);
   } else {  // no bloom asked for: the passes are skipped, the combine reads black (as on GL)
     out->bw = hdr_bloom_size(w);
     out->bh = hdr_bloom_size(h);
@@ -141,7 +143,12 @@ void hdr_post_float_c(const std::vector<float> &hdr, int w, int h, const HdrSett
   out->display.resize(static_cast<size_t>(w) * h * 4);
   const ts_vec4f size = size_of(w, h), params = ts_v4f(s.tone_map_scale, s.bloom_amount, s.bloom_exponent, 0.f);
   // Per worker: the row's centres and results (kept across rows); the frame's row is read in place.
-  std::vector<std::vector<ts_vec4f>> pos_of(static_cast<size_t>(parallel_workers(h, threads))), row_of(pos_of.size());
+  // Each worker keeps the two bloom rows its last row read, filtered horizontally (hdr_tonemap_f_row).
+  const size_t workers = static_cast<size_t>(parallel_workers(h, threads));
+  std::vector<std::vector<ts_vec4f>> pos_of(workers), row_of(workers);
+  std::vector<std::vector<float>> hrows(workers * 2, std::vector<float>(static_cast<size_t>(w) * 3));
+  std::vector<ht_bloom_rows> cache(workers);
+  for (size_t t = 0; t < workers; ++t) cache[t] = {{-1, -1}, {hrows[2 * t].data(), hrows[2 * t + 1].data()}, w};
   parallel_rows_by_worker(h, threads, [&](int t, int y) {
     const size_t i = static_cast<size_t>(y) * w;
     std::vector<ts_vec4f> &pos = pos_of[static_cast<size_t>(t)], &row = row_of[static_cast<size_t>(t)];
@@ -149,7 +156,7 @@ void hdr_post_float_c(const std::vector<float> &hdr, int w, int h, const HdrSett
     row.resize(static_cast<size_t>(w));
     const ts_vec4f *fb = reinterpret_cast<const ts_vec4f *>(&hdr[i * 4]);  // 4 floats a pixel
     const ht_batch_input in = {{pos.data(), fb, &size, &params}, {1, 1, 0, 0}};
-    hdr_tonemap_f_batch(&tv, &in, &bloom, row.data(), w);
+    hdr_tonemap_f_row(&tv, &in, &bloom, &cache[static_cast<size_t>(t)], row.data(), w);
     ts_unorm8_from_float_batch(&row[0].x, &out->display[i * 4], row.size() * 4);
   });
 }
@@ -168,7 +175,7 @@ void hdr_float_frame_reference(const ShaderFamily &lit, const Variant &v_linear,
   auto to_f = [](ts_vec4d c) {
     return ts_v4f(static_cast<float>(c.x), static_cast<float>(c.y), static_cast<float>(c.z), static_cast<float>(c.w));
   };
-  std::vector<float> bloom;
+  std::vector<float> bloom, ds, bx;
   int bw = 0, bh = 0;
   bloom_chain(
       hdr, w, h,
@@ -184,7 +191,7 @@ void hdr_float_frame_reference(const ShaderFamily &lit, const Variant &v_linear,
           o[x] = to_f(bloom_blur_d(dir ? &byv : &bxv, r, t));
         }
       },
-      false, &bloom, &bw, &bh);
+      false, &bloom, ds, bx, &bw, &bh);
   const ts_tex2d tb = tex_of(bloom, bw, bh, true);
   const ht_variant tv = {2};
   display->assign(static_cast<size_t>(w) * h * 4, 0.0);

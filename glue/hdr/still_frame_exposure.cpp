@@ -21,48 +21,34 @@ bool twin_marks(const float *p, float lo, float hi, float scale) {
   rec[LC_SLOT_RANGE] = ts_v4f(lo, hi, scale, 0.0f);
   return luminance_compare_f(&v, rec).x == 1.0f;
 }
-// Ascending order of finite floats by an LSD radix sort of their order-preserving keys (sign
-// flipped for positives, all bits flipped for negatives), 3 passes of 11 bits; -0 sorts before
-// +0, which compare equal, so the order is the same as std::sort's for every query here.
-void radix_sort(std::vector<float> *v) {
-  const size_t n = v->size();
-  std::vector<uint32_t> a(n), b(n);
-  for (size_t i = 0; i < n; ++i) {
-    uint32_t u;
-    std::memcpy(&u, &(*v)[i], 4);
-    a[i] = (u & 0x80000000u) ? ~u : (u | 0x80000000u);
-  }
-  for (int pass = 0; pass < 3; ++pass) {
-    const int shift = pass * 11;
-    size_t count[2049] = {0};
-    for (uint32_t k : a) ++count[((k >> shift) & 2047u) + 1];
-    for (int i = 0; i < 2048; ++i) count[i + 1] += count[i];
-    for (uint32_t k : a) b[count[(k >> shift) & 2047u]++] = k;
-    a.swap(b);
-  }
-  for (size_t i = 0; i < n; ++i) {
-    const uint32_t k = a[i];
-    const uint32_t u = (k & 0x80000000u) ? (k & 0x7fffffffu) : ~k;
-    std::memcpy(&(*v)[i], &u, 4);
-  }
+// The order-preserving key of a float (sign flipped for positives, all bits flipped for
+// negatives): keys ascend as the floats do, -0 just before +0 (which compare equal).
+uint32_t order_key(float f) {
+  uint32_t u;
+  std::memcpy(&u, &f, 4);
+  return (u & 0x80000000u) ? ~u : (u | 0x80000000u);
 }
+constexpr int kGroups = 1 << 16;  // groups by the key's top 16 bits: sign, exponent, 7 mantissa bits
 
-// The sorted finite luminances of rows ya..yb - 1 of the window (in *sorted) and the rgba of its
-// pixels whose luminance is not finite (in *odd, row order).
-void window_rows(const float *rgba, int w, const ae_window &win, int ya, int yb, std::vector<float> *sorted,
-                 std::vector<float> *odd) {
-  sorted->reserve(static_cast<size_t>(std::max(0, yb - ya)) * std::max(0, win.w));
+// Rows ya..yb - 1 of the window: the finite luminances (in *lum, row order) and their group
+// counts (in *hist, kGroups entries, added to), and the rgba of the pixels whose luminance is not
+// finite (in *odd, row order).
+void window_rows(const float *rgba, int w, const ae_window &win, int ya, int yb, std::vector<float> *lum,
+                 std::vector<uint32_t> *hist, std::vector<float> *odd) {
+  lum->clear();
+  lum->reserve(static_cast<size_t>(std::max(0, yb - ya)) * std::max(0, win.w));
+  hist->assign(kGroups, 0u);
   for (int y = ya; y < yb; ++y)
     for (int x = win.x0; x < win.x0 + win.w && x < w; ++x) {
       const float *p = rgba + (static_cast<size_t>(y) * w + x) * 4;
       const float l = ts_dot3f(ts_v3f(p[0], p[1], p[2]), kLumWeights);
       if (std::isfinite(l)) {
-        sorted->push_back(l);
+        lum->push_back(l);
+        ++(*hist)[order_key(l) >> 16];
       } else {
         odd->insert(odd->end(), p, p + 4);
       }
     }
-  radix_sort(sorted);
 }
 
 }  // namespace
@@ -70,25 +56,76 @@ void window_rows(const float *rgba, int w, const ae_window &win, int ya, int yb,
 StaticLuminance::StaticLuminance(const float *rgba, int w, int h, double wx, double wy) {
   const ae_window win = ae_center_window(w, h, wx, wy);
   const int y0 = win.y0, y1 = std::min(win.y0 + win.h, h);
-  if (y1 - y0 < 64 || std::thread::hardware_concurrency() < 2) {
-    window_rows(rgba, w, win, y0, y1, &sorted_, &odd_);
-    return;
+  // The rows in two halves, on two threads when there are enough of them; each half keeps its
+  // luminances in row order and its group counts.
+  std::vector<float> lum[2], lo_odd;
+  std::vector<uint32_t> hist[2];
+  const bool two = y1 - y0 >= 64 && std::thread::hardware_concurrency() >= 2;
+  const int mid = two ? y0 + (y1 - y0) / 2 : y1;
+  {
+    std::thread t;
+    if (two) t = std::thread([&] { window_rows(rgba, w, win, y0, mid, &lum[0], &hist[0], &lo_odd); });
+    window_rows(rgba, w, win, mid, y1, &lum[1], &hist[1], &odd_);
+    if (!two) window_rows(rgba, w, win, y0, mid, &lum[0], &hist[0], &lo_odd);
+    if (t.joinable()) t.join();
   }
-  // The two halves of the rows on two threads, then merged by the radix sort's keys (the
-  // ascending order of keys is unique: the same order as one sort of the whole window).
-  const int mid = y0 + (y1 - y0) / 2;
-  std::vector<float> lo, lo_odd, hi;
-  std::thread t([&] { window_rows(rgba, w, win, y0, mid, &lo, &lo_odd); });
-  window_rows(rgba, w, win, mid, y1, &hi, &odd_);
-  t.join();
   odd_.insert(odd_.begin(), lo_odd.begin(), lo_odd.end());  // row order
-  auto key = [](float f) {
-    uint32_t u;
-    std::memcpy(&u, &f, 4);
-    return (u & 0x80000000u) ? ~u : (u | 0x80000000u);
+  // Counting placement: group g's elements at its start, half 0's first (any order within a
+  // group serves count(): it only counts them).
+  std::vector<uint32_t> at0(kGroups), at1(kGroups);
+  uint32_t n = 0;
+  for (int g = 0; g < kGroups; ++g) {
+    const uint32_t c = hist[0][g] + hist[1][g];
+    if (c == 0) continue;
+    start_.push_back(n);
+    at0[g] = n;
+    at1[g] = n + hist[0][g];
+    n += c;
+  }
+  start_.push_back(n);
+  grouped_.resize(n);
+  auto place = [&](const std::vector<float> &v, std::vector<uint32_t> &at) {
+    for (float l : v) grouped_[at[order_key(l) >> 16]++] = l;
   };
-  sorted_.resize(lo.size() + hi.size());
-  std::merge(lo.begin(), lo.end(), hi.begin(), hi.end(), sorted_.begin(), [&](float a, float b) { return key(a) < key(b); });
+  {
+    std::thread t;
+    if (two) t = std::thread([&] { place(lum[0], at0); });
+    place(lum[1], at1);
+    if (!two) place(lum[0], at0);
+    if (t.joinable()) t.join();
+  }
+  const size_t groups = start_.size() - 1;
+  lo_.resize(groups);
+  hi_.resize(groups);
+  for (size_t g = 0; g < groups; ++g) {
+    uint32_t kl = 0xffffffffu, kh = 0;
+    float fl = 0.f, fh = 0.f;
+    for (uint32_t i = start_[g]; i < start_[g + 1]; ++i) {
+      const uint32_t k = order_key(grouped_[i]);
+      if (k < kl) kl = k, fl = grouped_[i];
+      if (k >= kh) kh = k, fh = grouped_[i];
+    }
+    lo_[g] = fl;
+    hi_[g] = fh;
+  }
+}
+
+template <class Below>
+size_t StaticLuminance::count_below(Below below) const {
+  // The groups whose greatest element is below form a prefix (below is monotone); the next
+  // group may hold both kinds.
+  size_t a = 0, b = hi_.size();
+  while (a < b) {
+    const size_t m = a + (b - a) / 2;
+    if (below(hi_[m]))
+      a = m + 1;
+    else
+      b = m;
+  }
+  size_t n = start_[a];
+  if (a < lo_.size() && below(lo_[a]))
+    for (uint32_t i = start_[a]; i < start_[a + 1]; ++i) n += below(grouped_[i]) ? 1 : 0;
+  return n;
 }
 
 uint32_t StaticLuminance::count(int bucket, float scale) const {
@@ -98,11 +135,11 @@ uint32_t StaticLuminance::count(int bucket, float scale) const {
   // in_bucket(lum) = step(lo, lum) * step(lum, hi): marked unless lum < lo or hi < lum.
   if (std::isfinite(scale) && scale >= 0.f) {
     // lum = l * scale is monotone in l: the marked pixels are one run of the sorted luminances.
-    const auto first = std::partition_point(sorted_.begin(), sorted_.end(), [&](float l) { return l * scale < lo; });
-    const auto last = std::partition_point(first, sorted_.end(), [&](float l) { return !(hi < l * scale); });
+    const size_t first = count_below([&](float l) { return l * scale < lo; });
+    const size_t last = count_below([&](float l) { return !(hi < l * scale); });
     n = static_cast<uint32_t>(last - first);
   } else {
-    for (float l : sorted_) {
+    for (float l : grouped_) {
       const float lum = l * scale;
       if (!(lum < lo) && !(hi < lum)) ++n;
     }

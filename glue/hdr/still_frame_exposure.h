@@ -4,8 +4,12 @@
 // holding still would. The bucket counts are the exact counts of the luminance_compare twin
 // (ae_exact_count), found by binary search in the window's sorted luminances instead of a
 // pass over the window per frame: lum = luminance(c) * scale is monotone in luminance(c)
-// for a finite scale >= 0 (tests/unit/test_static_exposure.cpp checks the equality).
+// for a finite scale >= 0 (tests/unit/test_scene_render.cpp checks the equality). The
+// luminances are not sorted whole: they are grouped by the top 16 bits of their order-preserving
+// key (one counting pass), so a count needs a binary search over the groups and a scan of the
+// one group its boundary falls in.
 #pragma once
+#include <cstddef>
 #include <cstdint>
 #include <vector>
 
@@ -19,7 +23,14 @@ class StaticLuminance {
   uint32_t count(int bucket, float scale) const;
 
  private:
-  std::vector<float> sorted_;  // finite luminances of the window, ascending
+  // How many finite luminances l of the window have below(l), a predicate true for a prefix of
+  // the ascending order.
+  template <class Below>
+  size_t count_below(Below below) const;
+
+  std::vector<float> grouped_;  // finite luminances of the window, grouped by key >> 16, groups ascending
+  std::vector<uint32_t> start_;  // group g (non-empty groups only) is grouped_[start_[g], start_[g + 1])
+  std::vector<float> lo_, hi_;  // each group's least and greatest luminance
   std::vector<float> odd_;  // rgba of window pixels with a non-finite luminance
 };
 

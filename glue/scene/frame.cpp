@@ -113,6 +113,7 @@ struct SceneRenderer::Impl {
     ctx.reset();
   }
   std::vector<int32_t> cpu_draw;  // the C fallback's draw index per pixel, when post needs it
+  HdrFrameC post_c;  // the C float path's bloom images and scratch, kept across frames
   // The integer path's display encoding: any pixel linear (ps20 and world draws and the skybox
   // write linear values), and linear pixels beside display-encoded ones (post then needs each
   // pixel's draw).
@@ -349,9 +350,10 @@ bool SceneRenderer::Impl::post(SceneRenderResult *res, bool on_cpu, const std::v
     }
     res->tone_map_scale = hs.tone_map_scale;
     if (on_cpu) {
-      HdrFrameC f;
-      hdr_post_float_c(hdr, cfg.w, cfg.h, hs, &f, cfg.threads, false);
-      res->display = std::move(f.display);
+      // The caller's display buffer and the bloom images are reused across frames (no page faults).
+      post_c.display.swap(res->display);
+      hdr_post_float_c(hdr, cfg.w, cfg.h, hs, &post_c, cfg.threads, false);
+      res->display.swap(post_c.display);
     } else {
       if (!pipe->post_float(hdr, hs, err) || !read_rgba8(renderer->gl(), pipe->display(), &res->display, err))
         return false;

@@ -7,6 +7,8 @@
 //   * c_ref/twins/color_correction_batch.c: all 20 color_correction variants (LUT_ATLAS 0/1,
 //     SHADER_TRILINEAR 0/1, NUM_LOOKUPS 0..4) against color_correction_f, on a 3D LUT and its
 //     atlas (CLAMP, REPEAT POT and NPOT, NEAREST);
+//   * hdr_tonemap_f_row (the tone map a row at a time, bloom rows kept across rows) against
+//     hdr_tonemap_f per pixel, rows in three orders;
 //   * the glue: hdr_post_float_c and cc_apply_rgba8_c on each instruction set against the
 //     same calls with the scalar twins forced (ts_batch_force_isa(TS_BATCH_SCALAR)).
 // Records are random with hard values mixed in (NaN, +-Inf, 65504 and beyond, 1e30, float
@@ -244,6 +246,60 @@ void test_hdr_families(const char *mode) {
   }
 }
 
+// hdr_tonemap_f_row (the glue's tone map: one frame row at a time, the horizontally filtered
+// bloom rows kept across rows) against the scalar twin per pixel, in three row orders (top down,
+// two interleaved workers' order, bottom up) so rows are reused, replaced and refetched; bloom
+// textures of a quarter of the frame (clamp and repeat, hard texels), every output mode.
+void test_tonemap_rows(const char *mode) {
+  PostRng r(17);
+  struct TexCase {
+    const char *name;
+    int w, h, wrap, hard;
+  };
+  const TexCase cases[] = {{"21x12 clamp", 21, 12, TS_WRAP_CLAMP, 0},
+                           {"21x12 clamp hard texels", 21, 12, TS_WRAP_CLAMP, 6},
+                           {"16x8 repeat", 16, 8, TS_WRAP_REPEAT, 3}};
+  for (const TexCase &tc : cases) {
+    const Tex2 tex(r, tc.w, tc.h, tc.wrap, TS_FILTER_LINEAR, tc.hard, 6.f);
+    const int w = tc.w * 4 + 3, h = tc.h * 4 + 2;
+    std::vector<ts_vec4f> frame(static_cast<size_t>(w) * h);
+    for (ts_vec4f &f : frame)
+      f = ts_v4f(maybe_hard(r, r.uni(0.f, 20.f), 3), maybe_hard(r, r.uni(0.f, 2.f), 3),
+                 maybe_hard(r, r.uni(0.f, 0.01f), 3), 1.f);
+    const ts_vec4f size = ts_v4f(static_cast<float>(w), static_cast<float>(h), 1.f / static_cast<float>(w),
+                                 1.f / static_cast<float>(h));
+    const ts_vec4f params = ts_v4f(0.8f, 0.6f, 1.7f, 0.f);
+    std::vector<int> orders[3];
+    for (int y = 0; y < h; ++y) orders[0].push_back(y);
+    for (int y = 0; y < h; y += 2) orders[1].push_back(y);
+    for (int y = 1; y < h; y += 2) orders[1].push_back(y);
+    for (int y = h - 1; y >= 0; --y) orders[2].push_back(y);
+    for (int om = 0; om < 3; ++om) {
+      const ht_variant v = {om};
+      for (int o = 0; o < 3; ++o) {
+        std::vector<float> rgb0(static_cast<size_t>(w) * 3), rgb1(rgb0.size());
+        ht_bloom_rows rows = {{-1, -1}, {rgb0.data(), rgb1.data()}, w};
+        std::vector<ts_vec4f> pos(static_cast<size_t>(w)), got(static_cast<size_t>(w));
+        long differ = 0;
+        for (int y : orders[o]) {
+          for (int x = 0; x < w; ++x) pos[static_cast<size_t>(x)] = ts_v4f(x + 0.5f, y + 0.5f, 0.f, 0.f);
+          const ht_batch_input in = {{pos.data(), &frame[static_cast<size_t>(y) * w], &size, &params}, {1, 1, 0, 0}};
+          hdr_tonemap_f_row(&v, &in, &tex.t, &rows, got.data(), w);
+          for (int x = 0; x < w; ++x) {
+            const ts_vec4f rec[HT_SLOTS] = {pos[static_cast<size_t>(x)], frame[static_cast<size_t>(y) * w + x], size,
+                                            params};
+            differ += !same_bits(got[static_cast<size_t>(x)], hdr_tonemap_f(&v, rec, &tex.t));
+          }
+        }
+        check(differ == 0,
+              std::string("hdr_tonemap_f_row OUTPUT_MODE=") + std::to_string(om) + " order " + std::to_string(o) +
+                  " [" + tc.name + "] " + mode + " = scalar twin",
+              std::to_string(differ) + " pixels differ");
+      }
+    }
+  }
+}
+
 // color_correction on a random n^3 LUT (3D and atlas views of the same values).
 struct Luts {
   std::vector<std::vector<float>> vol, atlas;
@@ -431,6 +487,12 @@ int main() {
     test_color_correction(mode);
     test_formats(mode);
     test_glue(mode);
+    for (const Isa &isa : kIsas) {
+      if (!have_isa(isa.level)) continue;
+      ts_batch_force_isa(isa.level);
+      test_tonemap_rows((std::string(isa.name) + " " + mode).c_str());
+    }
+    ts_batch_force_isa(-1);
   }
   ts_math_set_fused(host_fma);
 
