@@ -62,10 +62,13 @@ void scene_clip_stage(const PreparedScene &p, const PreparedDraw &d, std::vector
   }
 }
 
-void scene_tri_setup(const PreparedScene &p, int di, const std::vector<float> &clip, std::vector<ScreenTri> *out) {
+namespace {
+
+// The set-up of the triangle whose first index is indices[t] (t a multiple of 3).
+void setup_tri(const PreparedScene &p, int di, const std::vector<float> &clip, size_t t, std::vector<ScreenTri> *out) {
   const float W = static_cast<float>(p.w), H = static_cast<float>(p.h);
   const std::vector<uint32_t> &indices = p.draws[di].geo->indices;
-  for (size_t t = 0; t + 2 < indices.size(); t += 3) {
+  {
     // The triangles llvmpipe draws for this one (glue/scene/lp_interp.h): the draw module's
     // window positions, its clipper against all six planes (no guard band), the fan in its
     // order; the barycentrics of the original vertices ride along as attributes 0..2.
@@ -133,6 +136,18 @@ void scene_tri_setup(const PreparedScene &p, int di, const std::vector<float> &c
       out->push_back(s);
     }
   }
+}
+
+}  // namespace
+
+void scene_tri_setup(const PreparedScene &p, int di, const std::vector<float> &clip, std::vector<ScreenTri> *out) {
+  const size_t n = p.draws[di].geo->indices.size();
+  for (size_t t = 0; t + 2 < n; t += 3) setup_tri(p, di, clip, t, out);
+}
+
+void scene_tri_setup_list(const PreparedScene &p, int di, const std::vector<float> &clip, const uint32_t *tris,
+                          size_t count, std::vector<ScreenTri> *out) {
+  for (size_t i = 0; i < count; ++i) setup_tri(p, di, clip, static_cast<size_t>(tris[i]) * 3, out);
 }
 
 namespace {

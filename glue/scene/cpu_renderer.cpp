@@ -1,6 +1,7 @@
 // tiershade scene: the C fallback's scene frames (glue/scene/cpu_renderer.h): vertex stage and shading
 // (the rasteriser: cpu_raster.cpp).
 #include "scene/cpu_renderer.h"
+#include "scene/cpu_shade.h"
 #include "scene/cpu_vertex.h"
 #include "scene/raster_tri.h"
 #include "scene/lp_interp.h"
@@ -23,29 +24,7 @@
 #include "twins/world_lighting_batch.h"
 #include "twins/world_lighting.h"
 
-namespace {
-
-// Per draw: the twin's variant, texture views and the record's shared slots.
-struct DrawCtx {
-  bool world = false;
-  ml_variant ml;
-  wl_variant wl;
-  ts_tex2d t2[4];
-  ts_texcube cube;
-  ml_textures mt;
-  wl_textures wt;
-  std::vector<ts_vec4f> rec;  // shared slots (pixel slots overwritten per pixel)
-  // The pixel slots the variant reads (world_lighting_impl.h: the normal, tangent, binormal
-  // and eye vectors only for ENVMAP, the tangent frame only with a bump map); the others are
-  // not interpolated.
-  int used[6];
-  int nused = 0;
-  // A texture the variant samples at the uv has a mip chain: the pixels get their quad's uv
-  // derivatives (uv_grad_run) for llvmpipe's level of detail.
-  bool mips = false;
-  int uv_slot = 0;
-};
-
+// The draws' contexts (cpu_shade.h).
 void make_ctx(const PreparedScene &p, std::vector<DrawCtx> *out) {
   out->resize(p.draws.size());
   for (size_t i = 0; i < p.draws.size(); ++i) {
@@ -81,6 +60,8 @@ void make_ctx(const PreparedScene &p, std::vector<DrawCtx> *out) {
   }
 }
 
+namespace {
+
 const int kChunk = 64;  // pixels per batched call of scene_shade_cpu (a multiple of 8)
 
 // Four floats as one vector (GCC vector extension: SSE on x86; each lane an IEEE float op).
@@ -91,20 +72,6 @@ inline F4 load4(const float *p) {
   return v;
 }
 inline F4 splat4(float s) { return F4{s, s, s, s}; }
-
-// A worker's set-ups of the triangles it interpolated last (llvmpipe's, glue/scene/lp_interp.h),
-// direct-mapped by triangle: the rows of a small triangle meet it again and again.
-struct PlaneCache {
-  struct Entry {
-    int draw = -1, tri = -1;
-    LpTriSet set;
-  };
-  static const unsigned kEntries = 64;
-  std::vector<Entry> e = std::vector<Entry>(kEntries);
-  Entry &at(int draw, int tri) {
-    return e[(static_cast<unsigned>(tri) * 2654435761u + static_cast<unsigned>(draw)) % kEntries];
-  }
-};
 
 // llvmpipe's set-up of the triangle of vertex records v[0..2] (layout above).
 void setup_planes(const float *const v[3], float W, float H, const int *used, int nused, LpTriSet *out) {
@@ -252,13 +219,7 @@ void shade_run(const DrawCtx &c, const ts_vec4f *pix, int pitch, int n, ts_vec4f
   }
 }
 
-// One row's visibility (pointers to its first pixel; at: MSAA's layers, else nullptr).
-struct RowVis {
-  const int32_t *draw, *tri;
-  const uint8_t *sub;  // nullptr: found by lp_covering
-  const float *b1, *b2;
-  const int32_t *at;
-};
+}  // namespace
 
 // Shades row y of the frame into orow (RGBA floats): runs of pixels of one draw are shaded together
 // by the batched twins (8 pixels per instruction where the host has AVX2; the same bits as one
@@ -301,8 +262,6 @@ void shade_row(const PreparedScene &p, const std::vector<DrawCtx> &ctx, const st
     x = x1;
   }
 }
-
-}  // namespace
 
 namespace {
 
@@ -381,98 +340,6 @@ void scene_shade_cpu(const PreparedScene &p, const SceneVisibility &vis, ImageF 
     }
   }
   skybox_shade_background(p.sky, p.w, p.h, vis.draw.data(), out->rgba.data(), threads);  // skybox_pass.h
-}
-
-bool scene_render_cpu(const PreparedScene &p, SceneVisibility *vis, ImageF *out, std::vector<int32_t> *draw,
-                      int threads, const std::function<void(double)> &progress) {
-  // Every draw's vertex stage and triangle set-up first, the draws shared among the workers
-  // (FTZ/DAZ set as llvmpipe computes; kept by the calling thread across frames, as
-  // scene_rasterize_cpu keeps its batch), while their memory (vertex outputs and set-up
-  // triangles, estimated from the index count) stays below the frame-sized visibility buffer the
-  // two passes would take (21 bytes a pixel) or 32 MiB; else the two passes.
-  const size_t n = static_cast<size_t>(p.w) * p.h;
-  size_t bytes = 0;
-  for (const PreparedDraw &d : p.draws)
-    bytes += d.geo->vertices() * kVStride * sizeof(float) + d.geo->indices.size() / 3 * sizeof(ScreenTri);
-  static thread_local std::vector<std::vector<ScreenTri>> kept_draw_tris;
-  static thread_local std::vector<std::vector<float>> kept_vary;
-  std::vector<std::vector<float>> &vary = kept_vary;
-  std::vector<std::vector<ScreenTri>> &draw_tris = kept_draw_tris;
-  if (bytes > std::max<size_t>(32u << 20, n * 21)) {
-    std::vector<std::vector<float>>().swap(vary);
-    std::vector<std::vector<ScreenTri>>().swap(draw_tris);
-    scene_rasterize_cpu(p, vis, threads);
-    scene_shade_cpu(p, *vis, out, threads, progress);
-    if (draw) *draw = vis->draw;
-    return false;
-  }
-  {
-    const int nd = static_cast<int>(p.draws.size());
-    vary.resize(p.draws.size());
-    draw_tris.resize(p.draws.size());
-    std::vector<std::vector<float>> clip(static_cast<size_t>(parallel_workers(nd, threads)));
-    parallel_rows_by_worker(nd, threads, [&](int t, int di) {
-      const size_t i = static_cast<size_t>(di);
-      vertex_stage(p, p.draws[i], &clip[static_cast<size_t>(t)], &vary[i]);
-      draw_tris[i].clear();
-      scene_tri_setup(p, di, clip[static_cast<size_t>(t)], &draw_tris[i]);
-    });
-  }
-  std::vector<DrawCtx> ctx;
-  make_ctx(p, &ctx);
-  out->w = p.w;
-  out->h = p.h;
-  if (out->rgba.size() != n * 4) fresh_buffer(&out->rgba, n * 4, 0.f);  // every pixel is written below
-  if (draw && draw->size() != n) fresh_buffer<int32_t>(draw, n, -1);
-  // Bands of kBand rows, each with the triangles that reach it in draw order (equal depths keep
-  // the first draw, as GL_LESS does); a worker takes bands t, t + n, ... and holds one band's
-  // visibility (21 bytes a pixel) at a time.
-  const int kBand = 8;
-  const int bands = (p.h + kBand - 1) / kBand;
-  std::vector<std::vector<const ScreenTri *>> band_tris(static_cast<size_t>(bands));
-  for (const std::vector<ScreenTri> &dt : draw_tris)
-    for (const ScreenTri &s : dt)
-      for (int b = s.y0 / kBand; b <= s.y1 / kBand; ++b) band_tris[static_cast<size_t>(b)].push_back(&s);
-  const int workers = parallel_workers(bands, threads);
-  struct Worker {
-    std::vector<int32_t> draw, tri;
-    std::vector<uint8_t> sub;
-    std::vector<float> b1, b2, depth;
-    std::vector<ts_vec4f> pix;
-    PlaneCache cache;
-  };
-  std::vector<Worker> wk(static_cast<size_t>(workers));
-  const size_t bn = static_cast<size_t>(kBand) * p.w;
-  std::atomic<int> done{0};
-  parallel_rows_by_worker(bands, threads, [&](int t, int band) {
-    Worker &k = wk[static_cast<size_t>(t)];
-    const int ra = band * kBand, rb = std::min(p.h, ra + kBand);
-    const size_t m = static_cast<size_t>(rb - ra) * p.w;
-    // Only the depth and draw are reset: the triangle, sub-triangle and barycentrics of a pixel
-    // are read only where a draw covers it (written with it).
-    if (k.draw.size() != bn) {
-      k.draw.resize(bn), k.tri.resize(bn), k.sub.resize(bn), k.b1.resize(bn), k.b2.resize(bn), k.depth.resize(bn);
-    }
-    std::fill(k.draw.begin(), k.draw.end(), -1);
-    std::fill(k.depth.begin(), k.depth.end(), kLpDepth24Clear);
-    VisRows v;
-    v.w = p.w, v.y0 = ra;
-    v.draw = k.draw.data(), v.tri = k.tri.data(), v.sub = k.sub.data();
-    v.b1 = k.b1.data(), v.b2 = k.b2.data(), v.depth = k.depth.data();
-    for (const ScreenTri *s : band_tris[static_cast<size_t>(band)])
-      scene_raster_rows(*s, v, std::max(s->y0, ra), std::min(s->y1, rb - 1));
-    for (int y = ra; y < rb; ++y) {
-      const size_t o = static_cast<size_t>(y - ra) * p.w, row = static_cast<size_t>(y) * p.w;
-      const RowVis r = {v.draw + o, v.tri + o, v.sub + o, v.b1 + o, v.b2 + o, nullptr};
-      float *orow = &out->rgba[row * 4];
-      shade_row(p, ctx, vary, nullptr, true, true, y, r, k.pix, &k.cache, orow);
-      skybox_shade_row(p.sky, p.w, y, r.draw, orow);  // skybox_pass.h
-    }
-    if (draw) std::copy(k.draw.begin(), k.draw.begin() + static_cast<std::ptrdiff_t>(m), draw->begin() + static_cast<std::ptrdiff_t>(static_cast<size_t>(ra) * p.w));
-    const int d = ++done;
-    if (progress && t == 0) progress(static_cast<double>(d) / bands);
-  });
-  return true;
 }
 
 void scene_shade_records(const PreparedScene &p, const std::vector<int> &draw, const std::vector<float> &slots,

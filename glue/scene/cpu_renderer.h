@@ -41,11 +41,14 @@ void scene_shade_cpu(const PreparedScene &p, const SceneVisibility &vis, ImageF 
 
 // The lit pass in bands of rows (tiles as wide as the frame): each worker rasterises a band
 // into a band-sized visibility buffer and shades it at once, the same pixels with the same bits
-// as scene_rasterize_cpu then scene_shade_cpu, without a frame-sized visibility buffer. draw
-// (optional): the draw index of every pixel (-1 background). A scene beyond the band path's
-// budgets (its vertex outputs, its triangles) takes the two passes with *vis: returns false.
-bool scene_render_cpu(const PreparedScene &p, SceneVisibility *vis, ImageF *out, std::vector<int32_t> *draw,
-                      int threads = 0, const std::function<void(double)> &progress = nullptr);
+// as scene_rasterize_cpu then scene_shade_cpu, without a frame-sized visibility buffer; the
+// draws' vertex outputs and set-up triangles held a slab of bands at a time (band_slabs.h).
+// linear (optional): per pixel 1 where it holds a linear value (its draw is not display-encoded,
+// or it is background and the scene has a skybox), else 0: what the integer path's post encodes.
+void scene_render_cpu(const PreparedScene &p, ImageF *out, std::vector<uint8_t> *linear, int threads = 0,
+                      const std::function<void(double)> &progress = nullptr);
+// The slabs' budget in bytes (0: the default, 4 bytes a pixel or 32 MiB), for the tests.
+void scene_cpu_band_budget(size_t bytes);
 
 // Shades GL's G-buffer (per pixel draw index and 6 slots, glue/scene/gl_renderer.h) with the C twin;
 // grads (4 floats a pixel, SceneGl::gbuffer's or scene_records_cpu's): the uv's quad derivatives,

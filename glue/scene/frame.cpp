@@ -112,11 +112,11 @@ struct SceneRenderer::Impl {
     renderer.reset();
     ctx.reset();
   }
-  std::vector<int32_t> cpu_draw;  // the C fallback's draw index per pixel, when post needs it
+  std::vector<uint8_t> cpu_linear;  // the C fallback's linear pixels (scene_render_cpu), when post needs them
   HdrFrameC post_c;  // the C float path's bloom images and scratch, kept across frames
   // The integer path's display encoding: any pixel linear (ps20 and world draws and the skybox
   // write linear values), and linear pixels beside display-encoded ones (post then needs each
-  // pixel's draw).
+  // pixel's draw, or the C fallback's linear flags).
   bool any_linear() const {
     bool any = p.sky.present();
     for (const PreparedDraw &d : p.draws) any = any || !d.display_encoded;
@@ -131,7 +131,8 @@ struct SceneRenderer::Impl {
   }
   bool colour_correct(SceneRenderResult *res, bool on_cpu, std::string *err);
   bool msaa_frame(SceneRenderResult *res, std::string *err);
-  bool post(SceneRenderResult *res, bool on_cpu, const std::vector<int> &draw_of_pixel, std::string *err);
+  bool post(SceneRenderResult *res, bool on_cpu, const std::vector<int> &draw_of_pixel, std::string *err,
+            const std::vector<uint8_t> *linear_of_pixel = nullptr);
 };
 
 // llvmpipe JIT-compiles a shader variant at its first draw, on the drawing thread. With Mesa's
@@ -292,7 +293,7 @@ bool SceneRenderer::Impl::colour_correct(SceneRenderResult *res, bool on_cpu, st
 // The HDR path and colour correction of a lit frame: res->lit -> res->display, on GL or by
 // the C twins (on_cpu; also used by --check on GL's own lit frame).
 bool SceneRenderer::Impl::post(SceneRenderResult *res, bool on_cpu, const std::vector<int> &draw_of_pixel_in,
-                               std::string *err) {
+                               std::string *err, const std::vector<uint8_t> *linear_of_pixel) {
   std::vector<int> own;  // GL's draw indices, fetched only when needed
   const std::vector<int> *dop = &draw_of_pixel_in;
   const size_t n = static_cast<size_t>(cfg.w) * cfg.h;
@@ -308,7 +309,8 @@ bool SceneRenderer::Impl::post(SceneRenderResult *res, bool on_cpu, const std::v
       res->notes.push_back("auto exposure runs on the float path; the integer path uses the fixed tone-map scale");
     // Which pixels hold linear values the (sRGB) render target would encode: ps20 and world draws.
     const bool any_linear = this->any_linear(), mixed = mixed_encoding();
-    if (mixed && dop->empty()) {
+    const bool flags = mixed && linear_of_pixel && linear_of_pixel->size() == n;
+    if (mixed && !flags && dop->empty()) {
       std::vector<float> slots;
       if (!sgl->gbuffer(&own, &slots, err)) return false;
       dop = &own;
@@ -321,7 +323,10 @@ bool SceneRenderer::Impl::post(SceneRenderResult *res, bool on_cpu, const std::v
     parallel_rows(cfg.h, cfg.threads, [&](int y) {  // rows on every core (pure per pixel)
       for (size_t i = static_cast<size_t>(y) * cfg.w, e = i + cfg.w; i < e; ++i) {
         bool linear = any_linear;
-        if (mixed) linear = draw_of_pixel[i] >= 0 ? !p.draws[draw_of_pixel[i]].display_encoded : p.sky.present();
+        if (flags)
+          linear = (*linear_of_pixel)[i] != 0;
+        else if (mixed)
+          linear = draw_of_pixel[i] >= 0 ? !p.draws[draw_of_pixel[i]].display_encoded : p.sky.present();
         for (int c = 0; c < 3; ++c) {
           const float v = lit[i * 4 + c];
           disp[i * 4 + c] = linear ? srgb_code_in(codes, v) : ts_unorm8_from_float(v);
@@ -453,17 +458,16 @@ bool SceneRenderer::frame(SceneRenderResult *out, std::string *err) {
   if (cfg.msaa > 1) {
     if (!m.msaa_frame(&res, err)) return false;
   } else if (cpu) {
-    // Rasterised and shaded in bands (the visibility of a band at a time; a scene beyond the
-    // band path's budgets: m.vis, kept across frames). The frame buffers of the caller's last
+    // Rasterised and shaded in bands (the visibility of a band at a time, the draws a slab of
+    // bands at a time: glue/scene/band_slabs.h). The frame buffers of the caller's last
     // result are reused (reset, not reallocated: their page faults were a tenth of a 4K frame).
     if (out->lit.rgba.size() == static_cast<size_t>(cfg.w) * cfg.h * 4) res.lit.rgba.swap(out->lit.rgba);
     if (!m.float_path) res.display.swap(out->display);
-    std::vector<int32_t> *dop = m.mixed_encoding() ? &m.cpu_draw : nullptr;
-    scene_render_cpu(p, &m.vis, &res.lit, dop, cfg.threads, [&](double f) {
+    std::vector<uint8_t> *lop = m.mixed_encoding() ? &m.cpu_linear : nullptr;
+    scene_render_cpu(p, &res.lit, lop, cfg.threads, [&](double f) {
       if (cfg.progress) cfg.progress("C fallback lit pass", f);
     });
     res.lit_ms = ms_since(t0);
-    draw_of_pixel.swap(m.cpu_draw);
   } else {
     std::function<void(int, GLuint)> capture;
     if (cfg.on_draw || cfg.progress)
@@ -502,10 +506,9 @@ bool SceneRenderer::frame(SceneRenderResult *out, std::string *err) {
     res.check_post_channels = static_cast<long>(res.display.size());
     res.check_post_mismatched = 0;
     for (size_t i = 0; i < res.display.size(); ++i) res.check_post_mismatched += res.display[i] != c.display[i];
-  } else if (!m.post(&res, cpu, draw_of_pixel, err)) {
+  } else if (!m.post(&res, cpu, draw_of_pixel, err, cpu && cfg.msaa <= 1 ? &m.cpu_linear : nullptr)) {
     return false;
   }
-  if (cpu && cfg.msaa <= 1) draw_of_pixel.swap(m.cpu_draw);
   res.post_ms = ms_since(t0);
   res.frame_ms = ms_since(t_frame);
   *out = std::move(res);
@@ -520,3 +523,4 @@ bool render_scene(const Scene &s, const SceneSelection &sel, const SceneRenderCo
   out->frame_ms = ms_since(t0);
   return true;
 }
+

@@ -69,6 +69,10 @@ void scene_clip_stage(const PreparedScene &p, const PreparedDraw &d, std::vector
 // The screen triangles of draw di (clipped and snapped as llvmpipe does, counter-clockwise,
 // bounding box in pixels).
 void scene_tri_setup(const PreparedScene &p, int di, const std::vector<float> &clip, std::vector<ScreenTri> *out);
+// The same for the triangles tris[0 .. count - 1] of draw di (triangle numbers: indices 3 t ..
+// 3 t + 2), in that order.
+void scene_tri_setup_list(const PreparedScene &p, int di, const std::vector<float> &clip, const uint32_t *tris,
+                          size_t count, std::vector<ScreenTri> *out);
 
 // Edge k's value at the sub-pixel point (px, py) (exact: 128-bit products).
 inline __int128 scene_tri_edge(const ScreenTri &s, int k, int64_t px, int64_t py) {
