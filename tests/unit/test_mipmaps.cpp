@@ -1,4 +1,4 @@
-// tiershade tests: mip chains (glue/scene/mipmaps.h) and the C sampler's level of detail
+// tiershade tests: mip chains (glue/gl/mipmaps.h) and the C sampler's level of detail
 // (c_ref/math/ts_sampler.h ts_mip_select, ts_texture2D_gradf) on cases with known answers: level
 // counts and sizes, box means, renormalised normal maps, llvmpipe's piecewise-linear log2 at and
 // between powers of two, and the levels and weights it gives. (GL against C with mipmaps on,
@@ -9,7 +9,7 @@
 
 #include "families/family.h"
 #include "math/ts_sampler.h"
-#include "scene/mipmaps.h"
+#include "gl/mipmaps.h"
 #include "unit_check.h"
 
 using unit_check::check;
