@@ -10,7 +10,7 @@
  *    `lod_property == PER_ELEMENT || explicit_lod || lod_bias || derivs`, whatever the PER_QUAD
  *    property lp_bld_nir.c gives txd in a fragment shader; so lp_build_rho's rho_per_quad is
  *    false and each pixel's level comes from its own derivatives (checked: taking a quad
- *    neighbour's instead fails 4 pixels in 9 of conform's random grid);
+ *    neighbour's instead fails 38-46 % of conform's random grid);
  *  - rho, no_rho_approx (the default: GALLIVM_PERF without rho_approx) and dims 2:
  *    ddx[i] = (size_i * dPdx_i)^2, ddy[i] = (size_i * dPdy_i)^2 (lp_build_mul, twice),
  *    rho^2 = max(ddx[0] + ddx[1], ddy[0] + ddy[1]) (lp_build_add, lp_build_max = maxps): the same
