@@ -9,7 +9,8 @@
 // gl_FragColor, texture3D):
 //   TS_ATTRIBUTE (vertex), TS_FRAG_COLOR, TS_DECLARE_FRAG_COLOR (fragment), TS_VARYING
 //   (out in the vertex shader, in in the fragment shader, so that one varyings file serves
-//   both: model_lighting_varyings.glsl), TS_TEX2D, TS_TEXCUBE, TS_TEX3D,
+//   both: model_lighting_varyings.glsl), TS_TEX2D, TS_TEXCUBE, TS_TEX3D, TS_TEX2D_GRAD
+//   (explicit derivatives; ESSL 1.00: EXT_shader_texture_lod, which the entry file enables),
 //   TS_SAMPLER3D_PRECISION, TS_HAS_TEXEL_FETCH (texelFetch exists).
 //------------------------------------------------------------------------------
 
@@ -41,6 +42,7 @@ precision highp samplerCube;
 #define TS_TEX2D(s, uv) texture2D(s, uv)
 #define TS_TEXCUBE(s, d) textureCube(s, d)
 #define TS_TEX3D(s, p) texture3D(s, p)  // GL_OES_texture_3D
+#define TS_TEX2D_GRAD(s, uv, dx, dy) texture2DGradEXT(s, uv, dx, dy)  // GL_EXT_shader_texture_lod
 #else
 #define TS_HAS_TEXEL_FETCH 1
 #ifdef TS_VERTEX
@@ -54,4 +56,5 @@ precision highp samplerCube;
 #define TS_TEX2D(s, uv) texture(s, uv)
 #define TS_TEXCUBE(s, d) texture(s, d)
 #define TS_TEX3D(s, p) texture(s, p)
+#define TS_TEX2D_GRAD(s, uv, dx, dy) textureGrad(s, uv, dx, dy)
 #endif

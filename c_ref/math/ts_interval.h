@@ -130,6 +130,10 @@ ts_vec4iv ts_texture2Div(const ts_tex2d *t, ts_vec2iv uv);
 /* with derivatives (ts_texture2D_gradf) on a mip chain: GLSL ES leaves the level of detail's
  * computation to the implementation within wide limits, so the hull of every level's lookup. */
 ts_vec4iv ts_texture2D_gradiv(const ts_tex2d *t, ts_vec2iv uv, const ts_vec4f *grad);
+/* explicit derivatives (ts_texture2DGradf): every level the GLES 3.0 LOD rules (3.8.10: any rho
+ * between max(m_u, m_v) and m_u + m_v, log2 within 1/16) select for the pixel's (dPdx, dPdy); a
+ * non-finite derivative: every level. ts_sampler_grad.c */
+ts_vec4iv ts_texture2DGradiv(const ts_tex2d *t, ts_vec2iv uv, ts_vec4f dpdx_dpdy);
 /* cube: every face the direction box can select (dEQP getPossibleCubeFaces), each as a 2D
  * CLAMP_TO_EDGE lookup of the face coordinates; seamless filtering at face edges covered; a box
  * holding the zero vector: any result. 3D: the 2D rule on three axes (trilinear). ts_interval.c */

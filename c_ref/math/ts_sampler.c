@@ -75,7 +75,10 @@ void ts_mip_select(const ts_tex2d *t, ts_vec4f g, int *l0, int *l1, float *weigh
   b = b * b;
   c = c * c;
   d = d * d;
-  const float rho2 = ts_lp_maxf(a + c, b + d);
+  ts_mip_select_rho2(t, ts_lp_maxf(a + c, b + d), l0, l1, weight, lod);
+}
+
+void ts_mip_select_rho2(const ts_tex2d *t, float rho2, int *l0, int *l1, float *weight, float *lod) {
   const int last = t->mip_levels - 1;
   *weight = 0.0f;
   if (t->mip_filter == TS_MIP_NEAREST) {

@@ -69,6 +69,13 @@ ts_vec4f ts_texture2D_gradf(const ts_tex2d *t, ts_vec2f uv, const ts_vec4f *grad
  * level of detail before clamping (a NEAREST mip filter: its integer level). */
 ts_vec4d ts_texture2D_gradd(const ts_tex2d *t, ts_vec2d uv, const ts_vec4f *grad); /* double reference */
 void ts_mip_select(const ts_tex2d *t, ts_vec4f grad, int *l0, int *l1, float *weight, float *lod);
+/* Its second half, lp_build_lod_selector from rho^2 (level 0's texel units) on. */
+void ts_mip_select_rho2(const ts_tex2d *t, float rho2, int *l0, int *l1, float *weight, float *lod);
+/* textureGrad / texture2DGradEXT (explicit derivatives) as llvmpipe samples them in a fragment
+ * shader: dpdx_dpdy = (dPdx.s, dPdx.t, dPdy.s, dPdy.t), the level of detail per pixel from them
+ * (not per quad). ts_sampler_grad.c (the Mesa functions; the spec's bound: ts_texture2DGradiv). */
+ts_vec4f ts_texture2DGradf(const ts_tex2d *t, ts_vec2f uv, ts_vec4f dpdx_dpdy);
+ts_vec4d ts_texture2DGradd(const ts_tex2d *t, ts_vec2d uv, ts_vec4f dpdx_dpdy); /* double reference */
 /* One level of t as a single-level texture (level 0: t itself without its chain). */
 ts_tex2d ts_mip_level(const ts_tex2d *t, int level);
 /* lp_build_fast_log2: (exponent - 1) + mantissa in [1, 2) (piecewise linear, exact at powers of 2). */

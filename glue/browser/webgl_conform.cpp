@@ -118,9 +118,16 @@ nlohmann::json job_json(std::vector<PageProgram> &programs, size_t p0, size_t p1
         for (const auto &t : in.textures) {
           // WebGL 1 has no 3D textures; no variant it offers samples one (target_offers)
           if (t.kind == TexKind::Tex3D && webgl == 1) continue;
-          g["textures"].push_back({{"sampler", t.sampler}, {"kind", kind_name(t.kind)}, {"w", t.w}, {"h", t.h},
-                                   {"d", t.d}, {"linear", t.linear}, {"repeat", t.repeat},
-                                   {"data", floats_b64(t.rgba)}});
+          nlohmann::json tj = {{"sampler", t.sampler}, {"kind", kind_name(t.kind)}, {"w", t.w}, {"h", t.h},
+                               {"d", t.d}, {"linear", t.linear}, {"repeat", t.repeat},
+                               {"data", floats_b64(t.rgba)}};
+          // a 2D mip chain (glue/gl/mipmaps.h): levels 1.. and the mip filter (TS_MIP_NEAREST / _LINEAR)
+          if (t.kind == TexKind::Tex2D && !t.mips.empty() && t.mip_filter != 0) {
+            tj["mip_filter"] = t.mip_filter == 1 ? "nearest" : "linear";
+            tj["levels"] = nlohmann::json::array();
+            for (const auto &m : t.mips) tj["levels"].push_back(floats_b64(m));
+          }
+          g["textures"].push_back(tj);
         }
         if (with_bounds) {
           g["cases"] = in.case_names;

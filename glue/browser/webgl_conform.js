@@ -89,6 +89,12 @@
       const data = floatsOf(t.data);
       if (t.kind === '2d') {
         gl.texImage2D(gl.TEXTURE_2D, 0, internalRGBA32F, t.w, t.h, 0, gl.RGBA, gl.FLOAT, data);
+        // a mip chain tiershade built (glue/gl/mipmaps.h): levels 1.., each max(1, size >> l)
+        (t.levels || []).forEach(function (b64, k) {
+          const l = k + 1;
+          gl.texImage2D(gl.TEXTURE_2D, l, internalRGBA32F, Math.max(1, t.w >> l), Math.max(1, t.h >> l), 0, gl.RGBA,
+                        gl.FLOAT, floatsOf(b64));
+        });
       } else if (t.kind === '3d') {
         gl.texImage3D(gl.TEXTURE_3D, 0, gl.RGBA32F, t.w, t.h, t.d, 0, gl.RGBA, gl.FLOAT, data);
       } else {
@@ -99,7 +105,10 @@
       }
       const filter = t.linear ? gl.LINEAR : gl.NEAREST;
       const wrap = t.repeat && t.kind !== 'cube' ? gl.REPEAT : gl.CLAMP_TO_EDGE;
-      gl.texParameteri(target, gl.TEXTURE_MIN_FILTER, filter);
+      let minFilter = filter;
+      if (t.mip_filter === 'nearest') minFilter = t.linear ? gl.LINEAR_MIPMAP_NEAREST : gl.NEAREST_MIPMAP_NEAREST;
+      if (t.mip_filter === 'linear') minFilter = t.linear ? gl.LINEAR_MIPMAP_LINEAR : gl.NEAREST_MIPMAP_LINEAR;
+      gl.texParameteri(target, gl.TEXTURE_MIN_FILTER, minFilter);
       gl.texParameteri(target, gl.TEXTURE_MAG_FILTER, filter);
       gl.texParameteri(target, gl.TEXTURE_WRAP_S, wrap);
       gl.texParameteri(target, gl.TEXTURE_WRAP_T, wrap);

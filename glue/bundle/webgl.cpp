@@ -86,6 +86,11 @@ bool variant_extensions(const Variant &v, Target target, const ProgramInterface 
 }
 
 bool target_offers(const Variant &v, Target target, bool *offered, std::string *why_not, std::string *err) {
+  if (!v.shader->has_target(target_name(target))) {
+    *offered = false;
+    *why_not = std::string("the shader has no ") + target_name(target) + " program (its .variants 'targets')";
+    return true;
+  }
   std::vector<ExtensionNeed> needs;
   if (!variant_extensions(v, target, nullptr, &needs, err)) return false;
   *offered = true;

@@ -270,6 +270,7 @@ int cmd_conform(int argc, char **argv) {
     ts_iv_set_mediump(1);  // the interval instance's mediump rules (c_ref/math/ts_interval.h)
   }
   std::map<std::string, int> skipped;  // --bounds: variants of families without an interval instance
+  std::map<std::string, int> no_target;  // variants of shaders without a program for the API's target
   bool first_json = true;
   if (json) printf("[\n");
   for (const auto &cfg : configs) {
@@ -287,6 +288,10 @@ int cmd_conform(int argc, char **argv) {
     for (const auto &v : sel.variants) {
       const ShaderFamily *f = find_family(v.shader->name);
       const auto &ins = inputs[f->name];
+      if (!v.shader->has_target(target_name(target_for_api(cfg.api)))) {
+        ++no_target[v.shader->name + " on " + api_name(cfg.api)];
+        continue;
+      }
       if (bounds && !has_bounds(f->name)) {
         ++skipped[f->name];
         continue;
@@ -326,6 +331,9 @@ int cmd_conform(int argc, char **argv) {
     printf("\n]\n");
   else
     printf("conform%s: %ld runs, %ld passed, %ld failed\n", bounds ? " --bounds" : "", total, total - failed, failed);
+  for (const auto &nt : no_target)
+    fprintf(stderr, "tiershade conform: skipped %d variant(s) of %s: the shader has no program for that target (its "
+            ".variants 'targets')\n", nt.second, nt.first.c_str());
   for (const auto &sk : skipped)
     fprintf(stderr, "tiershade conform --bounds: skipped %d variant(s) of %s: no interval instance of its twin yet\n",
             sk.second, sk.first.c_str());

@@ -18,6 +18,7 @@
 #include "base/image_diff.h"
 #include "families/color_correction_inputs.h"
 #include "families/model_lighting.h"
+#include "families/texture_grad.h"
 #include "families/world_lighting.h"
 #include "twins/bloom_blur.h"
 #include "twins/bloom_downsample.h"
@@ -135,7 +136,8 @@ const BoundsEntry kBounds[] = {{"hdr_tonemap", hdr_tonemap_bounds},
                                {"bloom_downsample", bloom_downsample_bounds},
                                {"color_correction", color_correction_bounds},
                                {"luminance_compare", luminance_compare_bounds},
-                               {"luminance_smooth", luminance_smooth_bounds}};
+                               {"luminance_smooth", luminance_smooth_bounds},
+                               {"texture_grad", texture_grad_bounds}};
 
 const BoundsEntry *find_bounds(const std::string &family) {
   for (const auto &e : kBounds)

@@ -21,7 +21,7 @@ struct TextureDesc {
   std::vector<float> rgba;
   bool linear = false;  // GL_LINEAR (else GL_NEAREST)
   bool repeat = false;  // GL_REPEAT (else GL_CLAMP_TO_EDGE; cube maps always clamp, seamless off)
-  // 2D only: a mip chain (glue/scene/mipmaps.h): levels 1 .. mips.size() of max(1, w >> k) x
+  // 2D only: a mip chain (glue/gl/mipmaps.h): levels 1 .. mips.size() of max(1, w >> k) x
   // max(1, h >> k), and the minification filter's mipmap part (TS_MIP_NEAREST / TS_MIP_LINEAR of
   // c_ref/math/ts_sampler.h; 0: none). The image filter (linear) is both min and mag filter's.
   std::vector<std::vector<float>> mips;

@@ -2,7 +2,7 @@
 // slots and textures, the world bake (glue/bake/world_bake.h) and the probe cube maps, all
 // limited to what the selected variants use. Host geometry in double with GLM.
 #include "scene/prepare.h"
-#include "scene/mipmaps.h"
+#include "gl/mipmaps.h"
 
 #include <algorithm>
 #include <array>
@@ -72,7 +72,7 @@ TextureDesc solid(const char *sampler, float r, float g, float b, float a) {
 
 // An image as a texture: colour images are sRGB-decoded and multiplied by a factor.
 // With the sampler's mipmap filter (a material texture the shaders sample at the surface's uv;
-// glue/scene/mipmaps.h), its chain: mips kMipNone for the light warp ramp, which is indexed by
+// glue/gl/mipmaps.h), its chain: mips kMipNone for the light warp ramp, which is indexed by
 // lighting and stays one level, as do lightmaps.
 enum MipUse { kMipNone, kMipColor, kMipNormal };
 TextureDesc image_texture(const Scene &s, const SceneTextureRef &ref, const char *sampler, bool srgb,

@@ -191,6 +191,14 @@ bool parse_shader_decl(const std::string &file, const std::string &text, ShaderD
       if (!(ls >> out->vertex)) return fail("vertex entry file expected");
     } else if (key == "tiers") {
       if (!parse_tiers(ls, &out->tiers)) return false;
+    } else if (key == "targets") {
+      std::string t;
+      while (ls >> t) {
+        Target target;
+        if (!parse_target(t, &target)) return fail("unknown target '" + t + "' (essl100, essl300, glsl330)");
+        out->targets.push_back(t);
+      }
+      if (out->targets.empty()) return fail("'targets TARGET...' expected");
     } else if (key == "static" || key == "dynamic") {
       Combo c;
       c.dynamic = key == "dynamic";
@@ -359,4 +367,8 @@ bool find_variant(const std::vector<ShaderDecl> &decls, const std::string &shade
   }
   *err = "no shader named '" + shader + "'";
   return false;
+}
+
+bool ShaderDecl::has_target(const char *target) const {
+  return targets.empty() || std::find(targets.begin(), targets.end(), target) != targets.end();
 }

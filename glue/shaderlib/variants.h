@@ -36,6 +36,11 @@ struct ShaderDecl {
   std::vector<Tier> tiers;
   std::vector<Combo> combos;
   std::vector<SkipRule> skips;
+  // `targets essl300 glsl330`: the assembler targets (target_name) the shader exists for; empty =
+  // all three. texture_grad has no essl100 program: llvmpipe's ES contexts lack
+  // EXT_shader_texture_lod.
+  std::vector<std::string> targets;
+  bool has_target(const char *target_name) const;
 };
 
 struct Variant {

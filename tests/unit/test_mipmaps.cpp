@@ -1,4 +1,4 @@
-// tiershade tests: mip chains (glue/scene/mipmaps.h) and the C sampler's level of detail
+// tiershade tests: mip chains (glue/gl/mipmaps.h) and the C sampler's level of detail
 // (c_ref/math/ts_sampler.h ts_mip_select, ts_texture2D_gradf) on cases with known answers: level
 // counts and sizes, box means, renormalised normal maps, llvmpipe's piecewise-linear log2 at and
 // between powers of two, and the levels and weights it gives. (GL against C with mipmaps on,
@@ -8,8 +8,9 @@
 #include <vector>
 
 #include "families/family.h"
+#include "math/ts_interval.h"
 #include "math/ts_sampler.h"
-#include "scene/mipmaps.h"
+#include "gl/mipmaps.h"
 #include "unit_check.h"
 
 using unit_check::check;
@@ -121,6 +122,43 @@ void lod() {
         "texture2D with derivatives: none -> level 0's lookup; beyond the chain -> the 1x1 level's texel");
 }
 
+// textureGrad (ts_sampler_grad.c): the pixel's own (dPdx, dPdy); an Inf/NaN rho^2 (overflowed or
+// non-finite derivatives) samples level 0 on llvmpipe; the GLES 3.0 bound holds both answers where
+// the spec allows them and only the last level where the exact rho reaches it.
+void explicit_derivatives() {
+  TextureDesc d = texture(64, 16);
+  for (size_t i = 0; i < d.rgba.size(); ++i) d.rgba[i] = static_cast<float>(i % 7) / 7.f;
+  build_mip_chain(&d, MipContent::Color);
+  d.mip_filter = TS_MIP_LINEAR;
+  const ts_tex2d t = tex2d_of(d);
+  const ts_vec2f uv = ts_v2f(0.3f, 0.6f);
+  const float *last = d.mips.back().data();
+  const ts_tex2d l1 = ts_mip_level(&t, 1);
+  // (dPdx, dPdy) = ((2/64, 0), (0, 0)): lambda 1 exactly -> level 1 alone
+  const ts_vec4f a = ts_texture2DGradf(&t, uv, ts_v4f(2.f / 64, 0, 0, 0)), a1 = ts_texture2Df(&l1, uv);
+  // dPdy carries it: ts_mip_select's (ds/dx, ds/dy, dt/dx, dt/dy) order is not GLSL's
+  const ts_vec4f b = ts_texture2DGradf(&t, uv, ts_v4f(0, 0, 0, 2.f / 16));
+  check(a.x == a1.x && a.y == a1.y && b.x == a1.x && b.w == a1.w,
+        "textureGrad: lambda 1 from dPdx.s = 2/w or from dPdy.t = 2/h -> level 1's lookup");
+  const ts_vec4f big = ts_texture2DGradf(&t, uv, ts_v4f(1000.f, 0, 0, 0));
+  const ts_vec4f over = ts_texture2DGradf(&t, uv, ts_v4f(1e30f, 0, 0, 0)), l0 = ts_texture2Df(&t, uv);
+  const ts_vec4f inf = ts_texture2DGradf(&t, uv, ts_v4f(0, 0, INFINITY, 0));
+  const ts_vec4f nan = ts_texture2DGradf(&t, uv, ts_v4f(NAN, 0, 0, 0));
+  check(big.x == last[0] && over.x == l0.x && over.w == l0.w && inf.y == l0.y && nan.z == l0.z,
+        "textureGrad: 1000 -> the 1x1 level; 1e30 (rho^2 overflows), Inf, NaN -> level 0 (llvmpipe 22.3)");
+  const ts_vec2iv uvi = ts_v2iv(ts_ivpoint(uv.x), ts_ivpoint(uv.y));
+  const ts_vec4iv ib = ts_texture2DGradiv(&t, uvi, ts_v4f(1000.f, 0, 0, 0));
+  const ts_vec4iv io = ts_texture2DGradiv(&t, uvi, ts_v4f(1e30f, 0, 0, 0));
+  const ts_vec4iv ia = ts_texture2DGradiv(&t, uvi, ts_v4f(2.f / 64, 0, 0, 0));
+  // (the texels here: level 0 in k/7, the 1x1 level their mean: distinct values)
+  check(ts_ivcontains(ib.x, big.x) && !ts_ivcontains(ib.x, l0.x) && ib.x.hi - ib.x.lo < 1e-5f &&
+            ts_ivcontains(io.x, l0.x) && ts_ivcontains(io.x, last[0]) && ts_ivcontains(ia.x, a.x),
+        "textureGrad bound: past the chain only the 1x1 texel; an overflowing footprint any level; lambda 1 inside",
+        std::to_string(ib.x.lo) + " " + std::to_string(ib.x.hi) + " " + std::to_string(l0.x) + " " +
+            std::to_string(io.x.lo) + " " + std::to_string(io.x.hi) + " " + std::to_string(ia.x.lo) + " " +
+            std::to_string(ia.x.hi) + " " + std::to_string(a.x));
+}
+
 }  // namespace
 
 int main() {
@@ -129,5 +167,6 @@ int main() {
   box_means();
   normal_maps();
   lod();
+  explicit_derivatives();
   return unit_check::finish();
 }

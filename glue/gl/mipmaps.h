@@ -1,8 +1,8 @@
-// tiershade scene: mip chains of material textures, built on the host so that GL and the C
-// fallback sample identical texels (docs/rendering.md, "Mipmaps"). The texels are already linear
-// (colour images are sRGB-decoded at load, glue/scene/prepare.cpp), so a box filter here is
-// filtering in linear light; a normal map is decoded, averaged, renormalised and encoded again
-// per level, so that no level shortens its normals (the alpha mask is averaged).
+// tiershade gl: mip chains of 2D textures (scene materials, conformance textures), built on the
+// host so that GL and the C twins sample identical texels (docs/rendering.md, "Mipmaps"). Scene
+// texels are already linear (colour images are sRGB-decoded at load, glue/scene/prepare.cpp), so
+// a box filter here is filtering in linear light; a normal map is decoded, averaged, renormalised
+// and encoded again per level, so that no level shortens its normals (the alpha mask is averaged).
 #pragma once
 #include "gl/float_target.h"
 

@@ -1,5 +1,5 @@
-// tiershade scene: mip chains of material textures (see mipmaps.h).
-#include "scene/mipmaps.h"
+// tiershade gl: mip chains of 2D textures (see mipmaps.h).
+#include "gl/mipmaps.h"
 
 #include <algorithm>
 #include <cmath>
