@@ -41,10 +41,29 @@ extern "C" {
   R ts_abs##S(R x);                                  \
   R ts_step##S(R edge, R x);                         \
   R ts_sign##S(R x);                                 \
-  /* vectors */                                      \
-  ts_vec2##S ts_v2##S(R x, R y);                     \
-  ts_vec3##S ts_v3##S(R x, R y, R z);                \
-  ts_vec4##S ts_v4##S(R x, R y, R z, R w);           \
+  /* vectors (the constructors inline: they sit in  \
+     the C fallback's per-pixel loops) */            \
+  static inline ts_vec2##S ts_v2##S(R x, R y) {      \
+    ts_vec2##S v;                                    \
+    v.x = x;                                         \
+    v.y = y;                                         \
+    return v;                                        \
+  }                                                  \
+  static inline ts_vec3##S ts_v3##S(R x, R y, R z) { \
+    ts_vec3##S v;                                    \
+    v.x = x;                                         \
+    v.y = y;                                         \
+    v.z = z;                                         \
+    return v;                                        \
+  }                                                  \
+  static inline ts_vec4##S ts_v4##S(R x, R y, R z, R w) { \
+    ts_vec4##S v;                                    \
+    v.x = x;                                         \
+    v.y = y;                                         \
+    v.z = z;                                         \
+    v.w = w;                                         \
+    return v;                                        \
+  }                                                  \
   R ts_dot2##S(ts_vec2##S a, ts_vec2##S b);          \
   ts_vec3##S ts_add3##S(ts_vec3##S a, ts_vec3##S b); \
   ts_vec3##S ts_sub3##S(ts_vec3##S a, ts_vec3##S b); \

@@ -3,27 +3,7 @@
  * or ts_add3d). dot3, dot4 and normalize3, whose operation order differs, stay in ts_math.c.
  * No include guard on purpose. */
 
-V2 M(v2)(TS_REAL x, TS_REAL y) {
-  V2 v;
-  v.x = x;
-  v.y = y;
-  return v;
-}
-V3 M(v3)(TS_REAL x, TS_REAL y, TS_REAL z) {
-  V3 v;
-  v.x = x;
-  v.y = y;
-  v.z = z;
-  return v;
-}
-V4 M(v4)(TS_REAL x, TS_REAL y, TS_REAL z, TS_REAL w) {
-  V4 v;
-  v.x = x;
-  v.y = y;
-  v.z = z;
-  v.w = w;
-  return v;
-}
+/* The constructors M(v2), M(v3), M(v4) are static inline in ts_math.h. */
 
 TS_REAL M(dot2)(V2 a, V2 b) { return a.x * b.x + a.y * b.y; }
 

@@ -46,3 +46,29 @@ TSV_INL V4v VFN(tex2d_grad)(const ts_tex2d *t, VF u, VF v, const ts_vec4f *grad,
   for (int j = 0; j < TSV_W; ++j) g[j] = &grad[pix[j] * (size_t)stride];
   return VFN(texture2D_grad)(t, u, v, g);
 }
+
+/* tex2d_grad of two textures at one uv (base and bump): when they have the same chain
+ * (ts_simd_sampler.h same_chain) and take the mipmapped LINEAR path, texture2D_grad2 (one level
+ * selection, one footprint); otherwise two tex2d_grad calls. Both give tex2d_grad's bits. */
+TSV_INL void VFN(tex2d_grad2)(const ts_tex2d *t, const ts_tex2d *t2, VF u, VF v, const ts_vec4f *grad, int stride,
+                              const size_t *pix, V4v *r, V4v *r2) {
+  if (!grad || t->mip_levels <= 1 || t->mip_filter == TS_MIP_NONE || t->filter != TS_FILTER_LINEAR ||
+      !VFN(same_chain)(t, t2)) {
+    *r = VFN(tex2d_grad)(t, u, v, grad, stride, pix);
+    *r2 = VFN(tex2d_grad)(t2, u, v, grad, stride, pix);
+    return;
+  }
+  const ts_vec4f *g[TSV_W];
+  for (int j = 0; j < TSV_W; ++j) g[j] = &grad[pix[j] * (size_t)stride];
+  VFN(texture2D_grad2)(t, t2, u, v, g, r, r2);
+}
+
+/* The n <= 3 samples of one lightmap (single level) at (u[k], v[k]): texture2D_n when LINEAR,
+ * else n tex2d calls. */
+TSV_INL void VFN(tex2d_n)(const ts_tex2d *t, int n, const VF *u, const VF *v, V4v *out) {
+  if (t->filter == TS_FILTER_LINEAR) {
+    VFN(texture2D_n)(t, n, u, v, out);
+    return;
+  }
+  for (int k = 0; k < n; ++k) out[k] = VFN(tex2d)(t, u[k], v[k]);
+}

@@ -7,9 +7,8 @@
 #include "twins/simd_common.h"
 
 /* common_lightmap.h */
-static V3v VFN(wl_lightmap)(const wl_variant *v, const ts_tex2d *lm, VF u, VF w, VF ox, VF oy, float k) {
-  const VF kv = VFN(splat)(k);
-  const V4v t = VFN(tex2d)(lm, u + kv * ox, w + kv * oy);
+/* the decode of a lightmap texel t */
+static V3v VFN(wl_lightmap_decode)(const wl_variant *v, V4v t) {
   const V3v rgb = VFN(v3)(t.x, t.y, t.z);
   if (v->tier == TS_TIER_ID_PS20 && v->encoding == WL_LM_LDR) {
     const V3v s = VFN(scale3)(rgb, VFN(splat)(2.0f));
@@ -25,6 +24,23 @@ static V3v VFN(wl_lightmap)(const wl_variant *v, const ts_tex2d *lm, VF u, VF w,
   }
   if (v->encoding == WL_LM_RGBE) return VFN(scale3)(rgb, VFN(exp2)(t.w * 255.0f - 128.0f));
   return rgb;
+}
+static V3v VFN(wl_lightmap)(const wl_variant *v, const ts_tex2d *lm, VF u, VF w, VF ox, VF oy, float k) {
+  const VF kv = VFN(splat)(k);
+  return VFN(wl_lightmap_decode)(v, VFN(tex2d)(lm, u + kv * ox, w + kv * oy));
+}
+/* the three RNM lightmaps, k = 1, 2, 3: each its own texture2D at uv + k * offset
+ * (ts_simd_sampler_nearest.h tex2d_n shares what their addressing has in common) */
+static void VFN(wl_lightmap3)(const wl_variant *v, const ts_tex2d *lm, VF u, VF w, VF ox, VF oy, V3v *l) {
+  VF us[3], ws[3];
+  V4v t[3];
+  for (int k = 0; k < 3; ++k) {
+    const VF kv = VFN(splat)((float)(k + 1));
+    us[k] = u + kv * ox;
+    ws[k] = w + kv * oy;
+  }
+  VFN(tex2d_n)(lm, 3, us, ws, t);
+  for (int k = 0; k < 3; ++k) l[k] = VFN(wl_lightmap_decode)(v, t[k]);
 }
 
 /* common_rnm.h itself, on lanes */
@@ -61,17 +77,19 @@ static V4v VFN(wl_block)(const wl_variant *v, const wl_batch_input *in, const wl
   const V4v uv = TSV_REC(in, WL_SLOT_UV, pix);
   const V4v lm_offset = TSV_REC(in, WL_SLOT_LM_OFFSET, pix);
   const V4v tint_scale = TSV_REC(in, WL_SLOT_TINT_SCALE, pix);
-  const V4v base = VFN(tex2d_grad)(tx->base, uv.x, uv.y, tx->uv_grad, tx->uv_grad_stride, pix);
+  V4v base;
 
   V3v diffuse, n = VFN(v3)(zero, zero, one);
   V4v bump = {zero, zero, zero, zero};
   if (v->bumpmap == WL_BUMP_NONE) {
+    base = VFN(tex2d_grad)(tx->base, uv.x, uv.y, tx->uv_grad, tx->uv_grad_stride, pix);
     diffuse = VFN(wl_lightmap)(v, tx->lightmap, uv.z, uv.w, lm_offset.x, lm_offset.y, 0.0f);
   } else {
-    bump = VFN(tex2d_grad)(tx->normalmap, uv.x, uv.y, tx->uv_grad, tx->uv_grad_stride, pix);
-    const V3v l0 = VFN(wl_lightmap)(v, tx->lightmap, uv.z, uv.w, lm_offset.x, lm_offset.y, 1.0f);
-    const V3v l1 = VFN(wl_lightmap)(v, tx->lightmap, uv.z, uv.w, lm_offset.x, lm_offset.y, 2.0f);
-    const V3v l2 = VFN(wl_lightmap)(v, tx->lightmap, uv.z, uv.w, lm_offset.x, lm_offset.y, 3.0f);
+    /* base and bump: one uv, one level selection when their chains match */
+    VFN(tex2d_grad2)(tx->base, tx->normalmap, uv.x, uv.y, tx->uv_grad, tx->uv_grad_stride, pix, &base, &bump);
+    V3v lm[3];
+    VFN(wl_lightmap3)(v, tx->lightmap, uv.z, uv.w, lm_offset.x, lm_offset.y, lm);
+    const V3v l0 = lm[0], l1 = lm[1], l2 = lm[2];
     const V3v t = VFN(xyz)(bump);
     if (v->bumpmap == WL_BUMP_RNM) {
       n = VFN(sub3)(VFN(scale3)(t, VFN(splat)(2.0f)), VFN(v3)(one, one, one));
