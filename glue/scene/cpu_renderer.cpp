@@ -189,7 +189,28 @@ void uv_grad_run(const float *vd, const uint32_t *indices, const int32_t *tri, c
   const int w = static_cast<int>(W);
   int last_t = -1, last_s = -1, last_qx = -1, last_qy = -1;
   ts_vec4f last{0, 0, 0, 0};
-  for (int q = 0; q < n; ++q) {
+  // Runs of one triangle and sub-triangle at their own pixels (the banded pass): the quads of
+  // the run at once (lp_quad_grad_span).
+  for (int q = 0; sub && !at && q < n;) {
+    const int t = tri[x0 + q], sb = sub[x0 + q];
+    int j = q + 1;
+    while (j < n && tri[x0 + j] == t && sub[x0 + j] == sb) ++j;
+    PlaneCache::Entry &ce = pc->at(d, t);
+    if (ce.draw != d || ce.tri != t) {
+      const uint32_t *idx = &indices[static_cast<size_t>(t) * 3];
+      const float *v[3] = {&vd[idx[0] * kVStride], &vd[idx[1] * kVStride], &vd[idx[2] * kVStride]};
+      ce.draw = d;
+      ce.tri = t;
+      setup_planes(v, W, H, used, nused, &ce.set);
+    }
+    const LpTriSet &ts = ce.set;
+    if (sb < ts.n && ts.valid[sb])
+      lp_quad_grad_span(ts.pl[sb], uv_slot, x0 + q, y, j - q, grad + q);
+    else
+      std::fill(grad + q, grad + j, ts_v4f(0, 0, 0, 0));
+    q = j;
+  }
+  for (int q = 0; !(sub && !at) && q < n; ++q) {
     const int t = tri[x0 + q];
     const int sb = sub ? sub[x0 + q] : 0;
     const int px = at ? at[x0 + q] % w : x0 + q, py = at ? at[x0 + q] / w : y;

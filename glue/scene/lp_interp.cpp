@@ -126,7 +126,53 @@ void depth_fused(const LpPlanes &pl, int x0, int y, int n, float *out) {
     out[i] = std::nearbyint(z * 16777215.0f);
   }
 }
+// Two quads' top-left, top-right, bottom-left (and bottom-left again) pixels in 8 lanes: their
+// .x (s) and .y (t) of slot k, as span_fused computes them.
+void quad_grad_fused(const LpPlanes &pl, int k, int x0, int y, int n, ts_vec4f *out) {
+  const int qa = x0 & ~1, qb = (x0 + n - 1) & ~1, qy = y & ~1;
+  const float fy = static_cast<float>(qy), fy1 = static_cast<float>(qy + 1);
+  const __m256 Y = _mm256_setr_ps(fy, fy, fy1, fy1, fy, fy, fy1, fy1);
+  const __m256 wdx = _mm256_set1_ps(pl.wdx), wdy = _mm256_set1_ps(pl.wdy), w0 = _mm256_set1_ps(pl.w0);
+  const __m256 sdx = _mm256_set1_ps(pl.dx[k][0]), sdy = _mm256_set1_ps(pl.dy[k][0]), s0 = _mm256_set1_ps(pl.a0[k][0]);
+  const __m256 tdx = _mm256_set1_ps(pl.dx[k][1]), tdy = _mm256_set1_ps(pl.dy[k][1]), t0 = _mm256_set1_ps(pl.a0[k][1]);
+  const __m256 one = _mm256_set1_ps(1.0f);
+  for (int qx = qa; qx <= qb; qx += 4) {
+    const float a = static_cast<float>(qx), b = static_cast<float>(qx + 2);
+    const __m256 X = _mm256_setr_ps(a, a + 1.0f, a, a, b, b + 1.0f, b, b);  // exact: integers below 2^24
+    const __m256 O = _mm256_div_ps(one, _mm256_fmadd_ps(wdy, Y, _mm256_fmadd_ps(wdx, X, w0)));
+    alignas(32) float S[8], T[8];
+    _mm256_store_ps(S, _mm256_mul_ps(_mm256_fmadd_ps(sdy, Y, _mm256_fmadd_ps(sdx, X, s0)), O));
+    _mm256_store_ps(T, _mm256_mul_ps(_mm256_fmadd_ps(tdy, Y, _mm256_fmadd_ps(tdx, X, t0)), O));
+    for (int h = 0; h < 2; ++h) {
+      const float *s = S + 4 * h, *t = T + 4 * h;
+      const ts_vec4f g = {s[1] - s[0], s[2] - s[0], t[1] - t[0], t[2] - t[0]};
+      const int p0 = std::max(x0, qx + 2 * h), p1 = std::min(x0 + n, qx + 2 * h + 2);
+      for (int p = p0; p < p1; ++p) out[p - x0] = g;
+    }
+  }
+}
 #pragma GCC pop_options
+
+typedef float LpF8 __attribute__((vector_size(32)));  // eight IEEE float ops at once, never fused
+
+void quad_grad_plain(const LpPlanes &pl, int k, int x0, int y, int n, ts_vec4f *out) {
+  const int qa = x0 & ~1, qb = (x0 + n - 1) & ~1, qy = y & ~1;
+  const float fy = static_cast<float>(qy), fy1 = static_cast<float>(qy + 1);
+  const LpF8 Y = {fy, fy, fy1, fy1, fy, fy, fy1, fy1};
+  for (int qx = qa; qx <= qb; qx += 4) {
+    const float a = static_cast<float>(qx), b = static_cast<float>(qx + 2);
+    const LpF8 X = {a, a + 1.0f, a, a, b, b + 1.0f, b, b};
+    const LpF8 O = 1.0f / (pl.wdy * Y + (pl.wdx * X + pl.w0));
+    const LpF8 S = (pl.dy[k][0] * Y + (pl.dx[k][0] * X + pl.a0[k][0])) * O;
+    const LpF8 T = (pl.dy[k][1] * Y + (pl.dx[k][1] * X + pl.a0[k][1])) * O;
+    for (int h = 0; h < 2; ++h) {
+      const int o = 4 * h;
+      const ts_vec4f g = {S[o + 1] - S[o], S[o + 2] - S[o], T[o + 1] - T[o], T[o + 2] - T[o]};
+      const int p0 = std::max(x0, qx + 2 * h), p1 = std::min(x0 + n, qx + 2 * h + 2);
+      for (int p = p0; p < p1; ++p) out[p - x0] = g;
+    }
+  }
+}
 
 void depth_plain(const LpPlanes &pl, int x0, int y, int n, float *out) {
   const float yf = static_cast<float>(y);
@@ -168,6 +214,14 @@ void lp_interp_span(const LpPlanes &pl, int x0, int y, int n, const int *used, i
     span_fused(pl, x0, y, n, used, nused, out, pitch, i0);
   else
     span_plain(pl, x0, y, n, used, nused, out, pitch, i0);
+}
+
+void lp_quad_grad_span(const LpPlanes &pl, int k, int x0, int y, int n, ts_vec4f *out) {
+  if (n <= 0) return;
+  if (ts_math_fused())
+    quad_grad_fused(pl, k, x0, y, n, out);
+  else
+    quad_grad_plain(pl, k, x0, y, n, out);
 }
 
 namespace {
