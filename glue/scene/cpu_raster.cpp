@@ -142,17 +142,19 @@ int64_t floor_div(int64_t a, int64_t b) { return a >= 0 ? a / b : -((-a + b - 1)
 int64_t ceil_div(int64_t a, int64_t b) { return -floor_div(-a, b); }
 
 // The visible pixel i of s with edge values l (double, normalised) and llvmpipe's depth value
-// zq: depth test LESS against the 24-bit values, then the perspective-correct barycentrics (the
-// C rasteriser's own, for what is not interpolated with llvmpipe's planes).
+// zq: depth test LESS against the 24-bit values, then (kBary) the perspective-correct
+// barycentrics (the C rasteriser's own, for what is not interpolated with llvmpipe's planes).
+template <bool kBary>
 inline void shade_pixel(const ScreenTri &s, const VisRows &vis, size_t i, float zq, double l0, double l1,
                         double l2) {
   if (!(zq < vis.depth[i])) return;
-  double B1, B2;
-  scene_tri_bary(s, l0, l1, l2, &B1, &B2);
   vis.depth[i] = zq;
   vis.draw[i] = s.draw;
   vis.tri[i] = s.tri;
   vis.sub[i] = static_cast<uint8_t>(s.sub);
+  if (!kBary) return;
+  double B1, B2;
+  scene_tri_bary(s, l0, l1, l2, &B1, &B2);
   vis.b1[i] = static_cast<float>(B1);
   vis.b2[i] = static_cast<float>(B2);
 }
@@ -166,7 +168,9 @@ inline void depth_chunk(const ScreenTri &s, int x0, int y, int n, float *out) {
 }
 
 // Rows ya..yb of a triangle with 64-bit edge values: per row, the covered span from the
-// three edge inequalities (exact integer division), then the edge values stepped along x.
+// three edge inequalities (exact integer division), then the edge values stepped along x (for
+// the barycentrics: kBary).
+template <bool kBary>
 void raster_small(const ScreenTri &s, const VisRows &vis, int ya, int yb) {
   const int w = vis.w;
   int64_t A[3], C[3];  // e_k(x) = C_k(y) + A_k x at the pixel centre (x, y)
@@ -192,7 +196,7 @@ void raster_small(const ScreenTri &s, const VisRows &vis, int ya, int yb) {
     for (int64_t x = lo; x <= hi; ++x) {
       const int64_t zi = (x - lo) % kZChunk;
       if (zi == 0) depth_chunk(s, static_cast<int>(x), y, static_cast<int>(std::min<int64_t>(kZChunk, hi - x + 1)), zq);
-      shade_pixel(s, vis, row + static_cast<size_t>(x), zq[zi], static_cast<double>(e0) * s.inv_area,
+      shade_pixel<kBary>(s, vis, row + static_cast<size_t>(x), zq[zi], static_cast<double>(e0) * s.inv_area,
                   static_cast<double>(e1) * s.inv_area, static_cast<double>(e2) * s.inv_area);
       e0 += A[0];
       e1 += A[1];
@@ -219,7 +223,7 @@ void raster_wide(const ScreenTri &s, const VisRows &vis, int ya, int yb) {
       if (in) {
         float zq;
         depth_chunk(s, x, y, 1, &zq);
-        shade_pixel(s, vis, static_cast<size_t>(y - vis.y0) * vis.w + x, zq, l[0], l[1], l[2]);
+        shade_pixel<true>(s, vis, static_cast<size_t>(y - vis.y0) * vis.w + x, zq, l[0], l[1], l[2]);
       }
     }
   }
@@ -228,8 +232,10 @@ void raster_wide(const ScreenTri &s, const VisRows &vis, int ya, int yb) {
 }  // namespace
 
 void scene_raster_rows(const ScreenTri &s, const VisRows &v, int ya, int yb) {
-  if (s.small)
-    raster_small(s, v, ya, yb);
+  if (s.small && !v.bary)
+    raster_small<false>(s, v, ya, yb);
+  else if (s.small)
+    raster_small<true>(s, v, ya, yb);
   else
     raster_wide(s, v, ya, yb);
 }

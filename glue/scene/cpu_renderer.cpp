@@ -123,8 +123,9 @@ void setup_planes(const float *const v[3], float W, float H, const int *used, in
 // visibility buffer's row) into pp[k * pitch + i]: with llvmpipe's plane equations of the
 // triangle as llvmpipe sets it up (planes: the buffer's pixels are the frame's), else (or where
 // no triangle of a clipped one's fan covers the pixel in llvmpipe's snapping) from the C
-// rasteriser's barycentrics (v0 b0 + v1 b1 + v2 b2, float, unfused).
-void interp_run(const float *vd, const uint32_t *indices, const int32_t *tri, const uint8_t *sub, const float *vb1,
+// rasteriser's barycentrics (v0 b0 + v1 b1 + v2 b2, float, unfused). vb1 == nullptr: no
+// barycentrics (the banded pass); false where a pixel would need them (nothing else is wrong).
+bool interp_run(const float *vd, const uint32_t *indices, const int32_t *tri, const uint8_t *sub, const float *vb1,
                 const float *vb2, int d, int y, int x0, int n, const int *used, int nused, ts_vec4f *pp, int pitch,
                 bool planes, float W, float H, int one_w, const int32_t *at, PlaneCache *pc) {
   int i = 0;
@@ -160,6 +161,7 @@ void interp_run(const float *vd, const uint32_t *indices, const int32_t *tri, co
         lp_interp_span(ts.pl[s], px, py, 1, used, nused, pp, pitch, q);
         continue;
       }
+      if (!vb1) return false;
       const float b1 = vb1[x0 + q], b2 = vb2[x0 + q], b0 = 1.f - b1 - b2;
       const F4 B0 = splat4(b0), B1 = splat4(b1), B2 = splat4(b2);
       for (int u = 0; u < nused; ++u) {
@@ -174,6 +176,7 @@ void interp_run(const float *vd, const uint32_t *indices, const int32_t *tri, co
   // constant, not an interpolated 1.
   if (one_w >= 0)
     for (int q = 0; q < n; ++q) pp[static_cast<size_t>(one_w) * pitch + q].w = 1.f;
+  return true;
 }
 
 // The quad derivatives of the uv (pixel slot uv_slot, .xy) of pixels x0 .. x0 + n - 1 of row y,
@@ -284,8 +287,9 @@ struct RowVis {
 // Shades row y of the frame into orow (RGBA floats): runs of pixels of one draw are shaded together
 // by the batched twins (8 pixels per instruction where the host has AVX2; the same bits as one
 // pixel at a time). in_group (nullptr: every draw): the draws shaded by this pass; first: the
-// background (draw < 0) is written as 0 here.
-void shade_row(const PreparedScene &p, const std::vector<DrawCtx> &ctx, const std::vector<std::vector<float>> &vary,
+// background (draw < 0) is written as 0 here. False when a pixel needs the rasteriser's
+// barycentrics and r has none (r.b1 == nullptr): the row is not finished.
+bool shade_row(const PreparedScene &p, const std::vector<DrawCtx> &ctx, const std::vector<std::vector<float>> &vary,
                const char *in_group, bool first, bool planes, int y, const RowVis &r, std::vector<ts_vec4f> &pix,
                PlaneCache *cache, float *orow) {
   // the pixel slots of a chunk, then its pixels' uv derivatives (mipmaps: uv_grad_run)
@@ -313,14 +317,16 @@ void shade_row(const PreparedScene &p, const std::vector<DrawCtx> &ctx, const st
     ts_vec4f *pp = pix.data();
     for (int c0 = x; c0 < x1; c0 += kChunk) {
       const int n = std::min(kChunk, x1 - c0);
-      interp_run(vd, indices, r.tri, r.sub, r.b1, r.b2, d, y, c0, n, used, nused, pp, kChunk, planes, W, H,
-                 c.world ? -1 : ML_SLOT_POSITION, r.at, cache);
+      if (!interp_run(vd, indices, r.tri, r.sub, r.b1, r.b2, d, y, c0, n, used, nused, pp, kChunk, planes, W, H,
+                      c.world ? -1 : ML_SLOT_POSITION, r.at, cache))
+        return false;
       const bool mips = c.mips && planes;
       if (mips) uv_grad_run(vd, indices, r.tri, r.sub, d, y, c0, n, used, nused, c.uv_slot, W, H, r.at, cache, grad);
       shade_run(c, pp, kChunk, n, orow_px + (c0 - x), mips ? grad : nullptr);
     }
     x = x1;
   }
+  return true;
 }
 
 }  // namespace
@@ -404,6 +410,12 @@ void scene_shade_cpu(const PreparedScene &p, const SceneVisibility &vis, ImageF 
   skybox_shade_background(p.sky, p.w, p.h, vis.draw.data(), out->rgba.data(), threads);  // skybox_pass.h
 }
 
+namespace {
+std::atomic<bool> g_force_redo{false};
+}  // namespace
+
+void scene_render_cpu_force_redo(bool on) { g_force_redo = on; }
+
 bool scene_render_cpu(const PreparedScene &p, SceneVisibility *vis, ImageF *out, std::vector<int32_t> *draw,
                       int threads, const std::function<void(double)> &progress) {
   // Every draw's vertex stage and triangle set-up first, the draws shared among the workers
@@ -474,20 +486,29 @@ bool scene_render_cpu(const PreparedScene &p, SceneVisibility *vis, ImageF *out,
     if (k.draw.size() != bn) {
       k.draw.resize(bn), k.tri.resize(bn), k.sub.resize(bn), k.b1.resize(bn), k.b2.resize(bn), k.depth.resize(bn);
     }
-    std::fill(k.draw.begin(), k.draw.end(), -1);
-    std::fill(k.depth.begin(), k.depth.end(), kLpDepth24Clear);
     VisRows v;
     v.w = p.w, v.y0 = ra;
     v.draw = k.draw.data(), v.tri = k.tri.data(), v.sub = k.sub.data();
     v.b1 = k.b1.data(), v.b2 = k.b2.data(), v.depth = k.depth.data();
-    for (const ScreenTri *s : band_tris[static_cast<size_t>(band)])
-      scene_raster_rows(*s, v, std::max(s->y0, ra), std::min(s->y1, rb - 1));
-    for (int y = ra; y < rb; ++y) {
-      const size_t o = static_cast<size_t>(y - ra) * p.w, row = static_cast<size_t>(y) * p.w;
-      const RowVis r = {v.draw + o, v.tri + o, v.sub + o, v.b1 + o, v.b2 + o, nullptr};
-      float *orow = &out->rgba[row * 4];
-      shade_row(p, ctx, vary, nullptr, true, true, y, r, k.pix, &k.cache, orow);
-      skybox_shade_row(p.sky, p.w, y, r.draw, orow);  // skybox_pass.h
+    // Every pixel is interpolated with llvmpipe's planes of its triangle (the set-up here and in
+    // interp_run is the same for the same clip positions): first without the barycentrics; a
+    // band where a pixel needs them is rasterised and shaded again with them.
+    for (int pass = 0; pass < 2; ++pass) {
+      v.bary = pass == 1;
+      std::fill(k.draw.begin(), k.draw.end(), -1);
+      std::fill(k.depth.begin(), k.depth.end(), kLpDepth24Clear);
+      for (const ScreenTri *s : band_tris[static_cast<size_t>(band)])
+        scene_raster_rows(*s, v, std::max(s->y0, ra), std::min(s->y1, rb - 1));
+      bool ok = true;
+      for (int y = ra; y < rb && ok; ++y) {
+        const size_t o = static_cast<size_t>(y - ra) * p.w, row = static_cast<size_t>(y) * p.w;
+        const RowVis r = {v.draw + o, v.tri + o, v.sub + o, v.bary ? v.b1 + o : nullptr, v.b2 + o, nullptr};
+        float *orow = &out->rgba[row * 4];
+        ok = shade_row(p, ctx, vary, nullptr, true, true, y, r, k.pix, &k.cache, orow);
+        if (pass == 0 && y == rb - 1 && g_force_redo) ok = false;
+        if (ok) skybox_shade_row(p.sky, p.w, y, r.draw, orow);  // skybox_pass.h
+      }
+      if (ok) break;
     }
     if (draw) std::copy(k.draw.begin(), k.draw.begin() + static_cast<std::ptrdiff_t>(m), draw->begin() + static_cast<std::ptrdiff_t>(static_cast<size_t>(ra) * p.w));
     const int d = ++done;

@@ -46,6 +46,10 @@ void scene_shade_cpu(const PreparedScene &p, const SceneVisibility &vis, ImageF 
 // budgets (its vertex outputs, its triangles) takes the two passes with *vis: returns false.
 bool scene_render_cpu(const PreparedScene &p, SceneVisibility *vis, ImageF *out, std::vector<int32_t> *draw,
                       int threads = 0, const std::function<void(double)> &progress = nullptr);
+// Tests only: every band of scene_render_cpu is shaded without the barycentrics, then found to
+// need them at its last row and rasterised and shaded again with them (the path a band takes
+// when a pixel is not interpolated with llvmpipe's planes).
+void scene_render_cpu_force_redo(bool on);
 
 // Shades GL's G-buffer (per pixel draw index and 6 slots, glue/scene/gl_renderer.h) with the C twin;
 // grads (4 floats a pixel, SceneGl::gbuffer's or scene_records_cpu's): the uv's quad derivatives,

@@ -107,7 +107,25 @@ void span_fused(const LpPlanes &pl, int x0, int y, int n, const int *used, int n
                 int i0) {
   const float yf = static_cast<float>(y);
   const __m128 Y = _mm_set1_ps(yf);
-  for (int i = 0; i < n; ++i) {
+  int i = 0;
+  // Two pixels per 8-lane vector (pixel i in lanes 0-3, i + 1 in 4-7): the same operations per
+  // lane as the one-pixel loop below; slot k's two results are adjacent in out.
+  const __m256 Y8 = _mm256_set1_ps(yf), wdx = _mm256_set1_ps(pl.wdx), wdy = _mm256_set1_ps(pl.wdy);
+  const __m256 w0 = _mm256_set1_ps(pl.w0), one = _mm256_set1_ps(1.0f);
+  for (; i + 1 < n; i += 2) {
+    const float xa = static_cast<float>(x0 + i), xb = static_cast<float>(x0 + i + 1);
+    const __m256 X = _mm256_setr_ps(xa, xa, xa, xa, xb, xb, xb, xb);
+    const __m256 O = _mm256_div_ps(one, _mm256_fmadd_ps(wdy, Y8, _mm256_fmadd_ps(wdx, X, w0)));
+    for (int u = 0; u < nused; ++u) {
+      const int k = used[u];
+      const __m256 dy = _mm256_broadcast_ps(reinterpret_cast<const __m128 *>(&pl.dy[k]));
+      const __m256 dx = _mm256_broadcast_ps(reinterpret_cast<const __m128 *>(&pl.dx[k]));
+      const __m256 a0 = _mm256_broadcast_ps(reinterpret_cast<const __m128 *>(&pl.a0[k]));
+      const __m256 a = _mm256_fmadd_ps(dy, Y8, _mm256_fmadd_ps(dx, X, a0));
+      _mm256_storeu_ps(&out[static_cast<size_t>(k) * pitch + i0 + i].x, _mm256_mul_ps(a, O));
+    }
+  }
+  for (; i < n; ++i) {
     const float xf = static_cast<float>(x0 + i);
     const float w = std::fma(pl.wdy, yf, std::fma(pl.wdx, xf, pl.w0));
     const __m128 X = _mm_set1_ps(xf), O = _mm_set1_ps(1.0f / w);
