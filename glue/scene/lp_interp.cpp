@@ -138,7 +138,19 @@ void span_fused(const LpPlanes &pl, int x0, int y, int n, const int *used, int n
 }
 void depth_fused(const LpPlanes &pl, int x0, int y, int n, float *out) {
   const float yf = static_cast<float>(y);
-  for (int i = 0; i < n; ++i) {
+  int i = 0;
+  // Eight pixels a vector: maxps(0, z) and minps(1, m) return their second operand for a NaN, as
+  // std::max(z, 0) and std::min(m, 1) do; the rounding is the current mode's, as nearbyint's.
+  const __m256 Y = _mm256_set1_ps(yf), zdx = _mm256_set1_ps(pl.zdx), zdy = _mm256_set1_ps(pl.zdy);
+  const __m256 z0 = _mm256_set1_ps(pl.z0), zero = _mm256_setzero_ps(), one = _mm256_set1_ps(1.0f);
+  const __m256 scale = _mm256_set1_ps(16777215.0f), step = _mm256_setr_ps(0, 1, 2, 3, 4, 5, 6, 7);
+  for (; i + 8 <= n; i += 8) {
+    const __m256 X = _mm256_add_ps(_mm256_set1_ps(static_cast<float>(x0 + i)), step);  // exact below 2^24
+    __m256 z = _mm256_fmadd_ps(zdy, Y, _mm256_fmadd_ps(zdx, X, z0));
+    z = _mm256_min_ps(one, _mm256_max_ps(zero, z));
+    _mm256_storeu_ps(out + i, _mm256_round_ps(_mm256_mul_ps(z, scale), _MM_FROUND_CUR_DIRECTION));
+  }
+  for (; i < n; ++i) {
     float z = std::fma(pl.zdy, yf, std::fma(pl.zdx, static_cast<float>(x0 + i), pl.z0));
     z = std::min(std::max(z, 0.0f), 1.0f);
     out[i] = std::nearbyint(z * 16777215.0f);

@@ -3,8 +3,11 @@
 // lp_interp_span (top-right minus top-left, bottom-left minus top-left: lp_bld_quad.c
 // lp_build_packed_ddx_ddy_twocoord), in both fused modes (ts_math_set_fused), for random
 // perspective triangles, every slot, runs starting and ending at odd and even columns on odd and
-// even rows. 0 bits may differ. No GL context.
+// even rows. 0 bits may differ. And lp_depth24_span (eight pixels a vector on an FMA host)
+// against its formula one pixel at a time, planes past [0, 1] and NaN included. No GL context.
+#include <cmath>
 #include <cstdio>
+#include <algorithm>
 #include <cstring>
 #include <random>
 #include <string>
@@ -83,12 +86,47 @@ void run(bool fused) {
         std::to_string(diff) + " of " + std::to_string(values) + " differ; first " + first);
 }
 
+// lp_depth24_span's formula (lp_interp.h) for one pixel.
+float depth_ref(const LpPlanes &pl, int x, int y, bool fused) {
+  const float xf = static_cast<float>(x), yf = static_cast<float>(y);
+  float z = fused ? std::fma(pl.zdy, yf, std::fma(pl.zdx, xf, pl.z0)) : pl.zdy * yf + (pl.zdx * xf + pl.z0);
+  z = std::min(std::max(z, 0.0f), 1.0f);
+  return std::nearbyint(z * 16777215.0f);
+}
+
+void depth(bool fused) {
+  ts_math_set_fused(fused ? 1 : 0);
+  std::mt19937 rng(5);
+  std::uniform_real_distribution<float> u(-1.f, 1.f);
+  long values = 0, diff = 0, inside = 0;
+  for (int it = 0; it < 4000; ++it) {
+    LpPlanes pl{};
+    pl.z0 = 0.5f + 0.7f * u(rng), pl.zdx = u(rng) * 1e-3f, pl.zdy = u(rng) * 1e-3f;
+    if (it % 97 == 0) pl.zdx = NAN;
+    const int x0 = static_cast<int>(rng() % 1200), y = static_cast<int>(rng() % 700), n = 1 + static_cast<int>(rng() % 64);
+    float out[65];
+    out[n] = 7.f;
+    lp_depth24_span(pl, x0, y, n, out);
+    for (int i = 0; i <= n; ++i) {
+      const float e = i < n ? depth_ref(pl, x0 + i, y, fused) : 7.f;
+      ++values;
+      inside += e > 0.f && e < 16777215.f;
+      diff += std::memcmp(&out[i], &e, 4) != 0;
+    }
+  }
+  const std::string mode = fused ? "fused" : "unfused";
+  check(diff == 0 && inside > values / 2, "depth24 span " + mode + ": the formula's bits",
+        std::to_string(diff) + " of " + std::to_string(values) + " differ (" + std::to_string(inside) + " inside)");
+}
+
 }  // namespace
 
 int main() {
   ts_math_init();
   run(true);
   run(false);
+  depth(true);
+  depth(false);
   ts_math_init();
   return unit_check::finish();
 }
