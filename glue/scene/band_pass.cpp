@@ -15,7 +15,10 @@
 
 namespace {
 size_t g_band_budget = 0;  // scene_cpu_band_budget (0: the default)
+std::atomic<bool> g_force_redo{false};
 }  // namespace
+
+void scene_render_cpu_force_redo(bool on) { g_force_redo = on; }
 
 void scene_cpu_band_budget(size_t bytes) { g_band_budget = bytes; }
 
@@ -150,20 +153,29 @@ void scene_render_cpu(const PreparedScene &p, ImageF *out, std::vector<uint8_t> 
       if (k.draw.size() != bn) {
         k.draw.resize(bn), k.tri.resize(bn), k.sub.resize(bn), k.b1.resize(bn), k.b2.resize(bn), k.depth.resize(bn);
       }
-      std::fill(k.draw.begin(), k.draw.end(), -1);
-      std::fill(k.depth.begin(), k.depth.end(), kLpDepth24Clear);
       VisRows v;
       v.w = p.w, v.y0 = ra;
       v.draw = k.draw.data(), v.tri = k.tri.data(), v.sub = k.sub.data();
       v.b1 = k.b1.data(), v.b2 = k.b2.data(), v.depth = k.depth.data();
-      for (const ScreenTri *s : band_tris[static_cast<size_t>(bi)])
-        scene_raster_rows(*s, v, std::max(s->y0, ra), std::min(s->y1, rb - 1));
-      for (int y = ra; y < rb; ++y) {
-        const size_t o = static_cast<size_t>(y - ra) * p.w, row = static_cast<size_t>(y) * p.w;
-        const RowVis r = {v.draw + o, v.tri + o, v.sub + o, v.b1 + o, v.b2 + o, nullptr};
-        float *orow = &out->rgba[row * 4];
-        shade_row(p, ctx, vary, nullptr, true, true, y, r, k.pix, &k.cache, orow);
-        skybox_shade_row(p.sky, p.w, y, r.draw, orow);  // skybox_pass.h
+      // Every pixel is interpolated with llvmpipe's planes of its triangle (the set-up here and in
+      // interp_run is the same for the same clip positions): first without the barycentrics; a
+      // band where a pixel needs them is rasterised and shaded again with them.
+      for (int pass = 0; pass < 2; ++pass) {
+        v.bary = pass == 1;
+        std::fill(k.draw.begin(), k.draw.end(), -1);
+        std::fill(k.depth.begin(), k.depth.end(), kLpDepth24Clear);
+        for (const ScreenTri *s : band_tris[static_cast<size_t>(bi)])
+          scene_raster_rows(*s, v, std::max(s->y0, ra), std::min(s->y1, rb - 1));
+        bool ok = true;
+        for (int y = ra; y < rb && ok; ++y) {
+          const size_t o = static_cast<size_t>(y - ra) * p.w, row = static_cast<size_t>(y) * p.w;
+          const RowVis r = {v.draw + o, v.tri + o, v.sub + o, v.bary ? v.b1 + o : nullptr, v.b2 + o, nullptr};
+          float *orow = &out->rgba[row * 4];
+          ok = shade_row(p, ctx, vary, nullptr, true, true, y, r, k.pix, &k.cache, orow);
+          if (pass == 0 && y == rb - 1 && g_force_redo) ok = false;
+          if (ok) skybox_shade_row(p.sky, p.w, y, r.draw, orow);  // skybox_pass.h
+        }
+        if (ok) break;
       }
       if (linear)
         for (size_t i = 0; i < m; ++i) {

@@ -7,6 +7,8 @@
 #include <cstring>
 #include <thread>
 
+#include <immintrin.h>
+
 #include "base/parallel_rows.h"
 #include "scene/cpu_renderer.h"
 #include "scene/raster_tri.h"
@@ -157,17 +159,19 @@ int64_t floor_div(int64_t a, int64_t b) { return a >= 0 ? a / b : -((-a + b - 1)
 int64_t ceil_div(int64_t a, int64_t b) { return -floor_div(-a, b); }
 
 // The visible pixel i of s with edge values l (double, normalised) and llvmpipe's depth value
-// zq: depth test LESS against the 24-bit values, then the perspective-correct barycentrics (the
-// C rasteriser's own, for what is not interpolated with llvmpipe's planes).
+// zq: depth test LESS against the 24-bit values, then (kBary) the perspective-correct
+// barycentrics (the C rasteriser's own, for what is not interpolated with llvmpipe's planes).
+template <bool kBary>
 inline void shade_pixel(const ScreenTri &s, const VisRows &vis, size_t i, float zq, double l0, double l1,
                         double l2) {
   if (!(zq < vis.depth[i])) return;
-  double B1, B2;
-  scene_tri_bary(s, l0, l1, l2, &B1, &B2);
   vis.depth[i] = zq;
   vis.draw[i] = s.draw;
   vis.tri[i] = s.tri;
   vis.sub[i] = static_cast<uint8_t>(s.sub);
+  if (!kBary) return;
+  double B1, B2;
+  scene_tri_bary(s, l0, l1, l2, &B1, &B2);
   vis.b1[i] = static_cast<float>(B1);
   vis.b2[i] = static_cast<float>(B2);
 }
@@ -180,8 +184,39 @@ inline void depth_chunk(const ScreenTri &s, int x0, int y, int n, float *out) {
   lp_depth24_span(zp, x0, y, n, out);
 }
 
+// shade_pixel<false> for pixels i .. i + n - 1 of the buffer with depth values zq[0 .. n - 1],
+// four at a time without branches (SSE2; the same comparisons and stores).
+inline void depth_test_span(const ScreenTri &s, const VisRows &vis, size_t i, const float *zq, int n) {
+  float *dep = vis.depth + i;
+  int32_t *dr = vis.draw + i, *tr = vis.tri + i;
+  uint8_t *sb = vis.sub + i;
+  const __m128i D = _mm_set1_epi32(s.draw), T = _mm_set1_epi32(s.tri);
+  int k = 0;
+  for (; k + 4 <= n; k += 4) {
+    const __m128 z = _mm_loadu_ps(zq + k), old = _mm_loadu_ps(dep + k);
+    const __m128 m = _mm_cmplt_ps(z, old);  // zq < depth (false for a NaN)
+    const int bits = _mm_movemask_ps(m);
+    if (!bits) continue;
+    const __m128i mi = _mm_castps_si128(m);
+    _mm_storeu_ps(dep + k, _mm_or_ps(_mm_and_ps(m, z), _mm_andnot_ps(m, old)));
+    const __m128i od = _mm_loadu_si128(reinterpret_cast<const __m128i *>(dr + k));
+    const __m128i ot = _mm_loadu_si128(reinterpret_cast<const __m128i *>(tr + k));
+    _mm_storeu_si128(reinterpret_cast<__m128i *>(dr + k), _mm_or_si128(_mm_and_si128(mi, D), _mm_andnot_si128(mi, od)));
+    _mm_storeu_si128(reinterpret_cast<__m128i *>(tr + k), _mm_or_si128(_mm_and_si128(mi, T), _mm_andnot_si128(mi, ot)));
+    if (bits == 15) {
+      std::memset(sb + k, s.sub, 4);
+      continue;
+    }
+    for (int j = 0; j < 4; ++j)
+      if (bits & (1 << j)) sb[k + j] = static_cast<uint8_t>(s.sub);
+  }
+  for (; k < n; ++k) shade_pixel<false>(s, vis, i + static_cast<size_t>(k), zq[k], 0, 0, 0);
+}
+
 // Rows ya..yb of a triangle with 64-bit edge values: per row, the covered span from the
-// three edge inequalities (exact integer division), then the edge values stepped along x.
+// three edge inequalities (exact integer division), then the edge values stepped along x (for
+// the barycentrics: kBary).
+template <bool kBary>
 void raster_small(const ScreenTri &s, const VisRows &vis, int ya, int yb) {
   const int w = vis.w;
   int64_t A[3], C[3];  // e_k(x) = C_k(y) + A_k x at the pixel centre (x, y)
@@ -204,10 +239,18 @@ void raster_small(const ScreenTri &s, const VisRows &vis, int ya, int yb) {
     int64_t e0 = C[0] + A[0] * lo, e1 = C[1] + A[1] * lo, e2 = C[2] + A[2] * lo;
     const size_t row = static_cast<size_t>(y - vis.y0) * w;
     float zq[kZChunk];
+    if (!kBary) {
+      for (int64_t x = lo; x <= hi; x += kZChunk) {
+        const int n = static_cast<int>(std::min<int64_t>(kZChunk, hi - x + 1));
+        depth_chunk(s, static_cast<int>(x), y, n, zq);
+        depth_test_span(s, vis, row + static_cast<size_t>(x), zq, n);
+      }
+      continue;
+    }
     for (int64_t x = lo; x <= hi; ++x) {
       const int64_t zi = (x - lo) % kZChunk;
       if (zi == 0) depth_chunk(s, static_cast<int>(x), y, static_cast<int>(std::min<int64_t>(kZChunk, hi - x + 1)), zq);
-      shade_pixel(s, vis, row + static_cast<size_t>(x), zq[zi], static_cast<double>(e0) * s.inv_area,
+      shade_pixel<kBary>(s, vis, row + static_cast<size_t>(x), zq[zi], static_cast<double>(e0) * s.inv_area,
                   static_cast<double>(e1) * s.inv_area, static_cast<double>(e2) * s.inv_area);
       e0 += A[0];
       e1 += A[1];
@@ -234,7 +277,7 @@ void raster_wide(const ScreenTri &s, const VisRows &vis, int ya, int yb) {
       if (in) {
         float zq;
         depth_chunk(s, x, y, 1, &zq);
-        shade_pixel(s, vis, static_cast<size_t>(y - vis.y0) * vis.w + x, zq, l[0], l[1], l[2]);
+        shade_pixel<true>(s, vis, static_cast<size_t>(y - vis.y0) * vis.w + x, zq, l[0], l[1], l[2]);
       }
     }
   }
@@ -243,8 +286,10 @@ void raster_wide(const ScreenTri &s, const VisRows &vis, int ya, int yb) {
 }  // namespace
 
 void scene_raster_rows(const ScreenTri &s, const VisRows &v, int ya, int yb) {
-  if (s.small)
-    raster_small(s, v, ya, yb);
+  if (s.small && !v.bary)
+    raster_small<false>(s, v, ya, yb);
+  else if (s.small)
+    raster_small<true>(s, v, ya, yb);
   else
     raster_wide(s, v, ya, yb);
 }

@@ -90,8 +90,9 @@ void setup_planes(const float *const v[3], float W, float H, const int *used, in
 // visibility buffer's row) into pp[k * pitch + i]: with llvmpipe's plane equations of the
 // triangle as llvmpipe sets it up (planes: the buffer's pixels are the frame's), else (or where
 // no triangle of a clipped one's fan covers the pixel in llvmpipe's snapping) from the C
-// rasteriser's barycentrics (v0 b0 + v1 b1 + v2 b2, float, unfused).
-void interp_run(const float *vd, const uint32_t *indices, const int32_t *tri, const uint8_t *sub, const float *vb1,
+// rasteriser's barycentrics (v0 b0 + v1 b1 + v2 b2, float, unfused). vb1 == nullptr: no
+// barycentrics (the banded pass); false where a pixel would need them (nothing else is wrong).
+bool interp_run(const float *vd, const uint32_t *indices, const int32_t *tri, const uint8_t *sub, const float *vb1,
                 const float *vb2, int d, int y, int x0, int n, const int *used, int nused, ts_vec4f *pp, int pitch,
                 bool planes, float W, float H, int one_w, const int32_t *at, PlaneCache *pc) {
   int i = 0;
@@ -127,6 +128,7 @@ void interp_run(const float *vd, const uint32_t *indices, const int32_t *tri, co
         lp_interp_span(ts.pl[s], px, py, 1, used, nused, pp, pitch, q);
         continue;
       }
+      if (!vb1) return false;
       const float b1 = vb1[x0 + q], b2 = vb2[x0 + q], b0 = 1.f - b1 - b2;
       const F4 B0 = splat4(b0), B1 = splat4(b1), B2 = splat4(b2);
       for (int u = 0; u < nused; ++u) {
@@ -141,6 +143,7 @@ void interp_run(const float *vd, const uint32_t *indices, const int32_t *tri, co
   // constant, not an interpolated 1.
   if (one_w >= 0)
     for (int q = 0; q < n; ++q) pp[static_cast<size_t>(one_w) * pitch + q].w = 1.f;
+  return true;
 }
 
 // The quad derivatives of the uv (pixel slot uv_slot, .xy) of pixels x0 .. x0 + n - 1 of row y,
@@ -156,7 +159,28 @@ void uv_grad_run(const float *vd, const uint32_t *indices, const int32_t *tri, c
   const int w = static_cast<int>(W);
   int last_t = -1, last_s = -1, last_qx = -1, last_qy = -1;
   ts_vec4f last{0, 0, 0, 0};
-  for (int q = 0; q < n; ++q) {
+  // Runs of one triangle and sub-triangle at their own pixels (the banded pass): the quads of
+  // the run at once (lp_quad_grad_span).
+  for (int q = 0; sub && !at && q < n;) {
+    const int t = tri[x0 + q], sb = sub[x0 + q];
+    int j = q + 1;
+    while (j < n && tri[x0 + j] == t && sub[x0 + j] == sb) ++j;
+    PlaneCache::Entry &ce = pc->at(d, t);
+    if (ce.draw != d || ce.tri != t) {
+      const uint32_t *idx = &indices[static_cast<size_t>(t) * 3];
+      const float *v[3] = {&vd[idx[0] * kVStride], &vd[idx[1] * kVStride], &vd[idx[2] * kVStride]};
+      ce.draw = d;
+      ce.tri = t;
+      setup_planes(v, W, H, used, nused, &ce.set);
+    }
+    const LpTriSet &ts = ce.set;
+    if (sb < ts.n && ts.valid[sb])
+      lp_quad_grad_span(ts.pl[sb], uv_slot, x0 + q, y, j - q, grad + q);
+    else
+      std::fill(grad + q, grad + j, ts_v4f(0, 0, 0, 0));
+    q = j;
+  }
+  for (int q = 0; !(sub && !at) && q < n; ++q) {
     const int t = tri[x0 + q];
     const int sb = sub ? sub[x0 + q] : 0;
     const int px = at ? at[x0 + q] % w : x0 + q, py = at ? at[x0 + q] / w : y;
@@ -224,8 +248,9 @@ void shade_run(const DrawCtx &c, const ts_vec4f *pix, int pitch, int n, ts_vec4f
 // Shades row y of the frame into orow (RGBA floats): runs of pixels of one draw are shaded together
 // by the batched twins (8 pixels per instruction where the host has AVX2; the same bits as one
 // pixel at a time). in_group (nullptr: every draw): the draws shaded by this pass; first: the
-// background (draw < 0) is written as 0 here.
-void shade_row(const PreparedScene &p, const std::vector<DrawCtx> &ctx, const std::vector<std::vector<float>> &vary,
+// background (draw < 0) is written as 0 here. False when a pixel needs the rasteriser's
+// barycentrics and r has none (r.b1 == nullptr): the row is not finished.
+bool shade_row(const PreparedScene &p, const std::vector<DrawCtx> &ctx, const std::vector<std::vector<float>> &vary,
                const char *in_group, bool first, bool planes, int y, const RowVis &r, std::vector<ts_vec4f> &pix,
                PlaneCache *cache, float *orow) {
   // the pixel slots of a chunk, then its pixels' uv derivatives (mipmaps: uv_grad_run)
@@ -253,14 +278,16 @@ void shade_row(const PreparedScene &p, const std::vector<DrawCtx> &ctx, const st
     ts_vec4f *pp = pix.data();
     for (int c0 = x; c0 < x1; c0 += kChunk) {
       const int n = std::min(kChunk, x1 - c0);
-      interp_run(vd, indices, r.tri, r.sub, r.b1, r.b2, d, y, c0, n, used, nused, pp, kChunk, planes, W, H,
-                 c.world ? -1 : ML_SLOT_POSITION, r.at, cache);
+      if (!interp_run(vd, indices, r.tri, r.sub, r.b1, r.b2, d, y, c0, n, used, nused, pp, kChunk, planes, W, H,
+                      c.world ? -1 : ML_SLOT_POSITION, r.at, cache))
+        return false;
       const bool mips = c.mips && planes;
       if (mips) uv_grad_run(vd, indices, r.tri, r.sub, d, y, c0, n, used, nused, c.uv_slot, W, H, r.at, cache, grad);
       shade_run(c, pp, kChunk, n, orow_px + (c0 - x), mips ? grad : nullptr);
     }
     x = x1;
   }
+  return true;
 }
 
 namespace {

@@ -47,8 +47,12 @@ void scene_shade_cpu(const PreparedScene &p, const SceneVisibility &vis, ImageF 
 // or it is background and the scene has a skybox), else 0: what the integer path's post encodes.
 void scene_render_cpu(const PreparedScene &p, ImageF *out, std::vector<uint8_t> *linear, int threads = 0,
                       const std::function<void(double)> &progress = nullptr);
-// The slabs' budget in bytes (0: the default, 4 bytes a pixel or 32 MiB), for the tests.
+// The slabs' budget in bytes (0: the default, 2 bytes a pixel or 8 MiB), for the tests.
 void scene_cpu_band_budget(size_t bytes);
+// Tests only: every band of scene_render_cpu is shaded without the barycentrics, then found to
+// need them at its last row and rasterised and shaded again with them (the path a band takes
+// when a pixel is not interpolated with llvmpipe's planes).
+void scene_render_cpu_force_redo(bool on);
 
 // Shades GL's G-buffer (per pixel draw index and 6 slots, glue/scene/gl_renderer.h) with the C twin;
 // grads (4 floats a pixel, SceneGl::gbuffer's or scene_records_cpu's): the uv's quad derivatives,

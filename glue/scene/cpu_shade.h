@@ -59,7 +59,9 @@ struct RowVis {
 // Shades row y of the frame into orow (RGBA floats): runs of pixels of one draw are shaded together
 // by the batched twins (8 pixels per instruction where the host has AVX2; the same bits as one
 // pixel at a time). in_group (nullptr: every draw): the draws shaded by this pass; first: the
-// background (draw < 0) is written as 0 here; planes: interpolated with llvmpipe's planes.
-void shade_row(const PreparedScene &p, const std::vector<DrawCtx> &ctx, const std::vector<std::vector<float>> &vary,
+// background (draw < 0) is written as 0 here; planes: interpolated with llvmpipe's planes. False
+// when a pixel needs the rasteriser's barycentrics and r has none (r.b1 == nullptr): the row is
+// not finished.
+bool shade_row(const PreparedScene &p, const std::vector<DrawCtx> &ctx, const std::vector<std::vector<float>> &vary,
                const char *in_group, bool first, bool planes, int y, const RowVis &r, std::vector<ts_vec4f> &pix,
                PlaneCache *cache, float *orow);

@@ -107,7 +107,25 @@ void span_fused(const LpPlanes &pl, int x0, int y, int n, const int *used, int n
                 int i0) {
   const float yf = static_cast<float>(y);
   const __m128 Y = _mm_set1_ps(yf);
-  for (int i = 0; i < n; ++i) {
+  int i = 0;
+  // Two pixels per 8-lane vector (pixel i in lanes 0-3, i + 1 in 4-7): the same operations per
+  // lane as the one-pixel loop below; slot k's two results are adjacent in out.
+  const __m256 Y8 = _mm256_set1_ps(yf), wdx = _mm256_set1_ps(pl.wdx), wdy = _mm256_set1_ps(pl.wdy);
+  const __m256 w0 = _mm256_set1_ps(pl.w0), one = _mm256_set1_ps(1.0f);
+  for (; i + 1 < n; i += 2) {
+    const float xa = static_cast<float>(x0 + i), xb = static_cast<float>(x0 + i + 1);
+    const __m256 X = _mm256_setr_ps(xa, xa, xa, xa, xb, xb, xb, xb);
+    const __m256 O = _mm256_div_ps(one, _mm256_fmadd_ps(wdy, Y8, _mm256_fmadd_ps(wdx, X, w0)));
+    for (int u = 0; u < nused; ++u) {
+      const int k = used[u];
+      const __m256 dy = _mm256_broadcast_ps(reinterpret_cast<const __m128 *>(&pl.dy[k]));
+      const __m256 dx = _mm256_broadcast_ps(reinterpret_cast<const __m128 *>(&pl.dx[k]));
+      const __m256 a0 = _mm256_broadcast_ps(reinterpret_cast<const __m128 *>(&pl.a0[k]));
+      const __m256 a = _mm256_fmadd_ps(dy, Y8, _mm256_fmadd_ps(dx, X, a0));
+      _mm256_storeu_ps(&out[static_cast<size_t>(k) * pitch + i0 + i].x, _mm256_mul_ps(a, O));
+    }
+  }
+  for (; i < n; ++i) {
     const float xf = static_cast<float>(x0 + i);
     const float w = std::fma(pl.wdy, yf, std::fma(pl.wdx, xf, pl.w0));
     const __m128 X = _mm_set1_ps(xf), O = _mm_set1_ps(1.0f / w);
@@ -120,13 +138,71 @@ void span_fused(const LpPlanes &pl, int x0, int y, int n, const int *used, int n
 }
 void depth_fused(const LpPlanes &pl, int x0, int y, int n, float *out) {
   const float yf = static_cast<float>(y);
-  for (int i = 0; i < n; ++i) {
+  int i = 0;
+  // Eight pixels a vector: maxps(0, z) and minps(1, m) return their second operand for a NaN, as
+  // std::max(z, 0) and std::min(m, 1) do; the rounding is the current mode's, as nearbyint's.
+  const __m256 Y = _mm256_set1_ps(yf), zdx = _mm256_set1_ps(pl.zdx), zdy = _mm256_set1_ps(pl.zdy);
+  const __m256 z0 = _mm256_set1_ps(pl.z0), zero = _mm256_setzero_ps(), one = _mm256_set1_ps(1.0f);
+  const __m256 scale = _mm256_set1_ps(16777215.0f), step = _mm256_setr_ps(0, 1, 2, 3, 4, 5, 6, 7);
+  for (; i + 8 <= n; i += 8) {
+    const __m256 X = _mm256_add_ps(_mm256_set1_ps(static_cast<float>(x0 + i)), step);  // exact below 2^24
+    __m256 z = _mm256_fmadd_ps(zdy, Y, _mm256_fmadd_ps(zdx, X, z0));
+    z = _mm256_min_ps(one, _mm256_max_ps(zero, z));
+    _mm256_storeu_ps(out + i, _mm256_round_ps(_mm256_mul_ps(z, scale), _MM_FROUND_CUR_DIRECTION));
+  }
+  for (; i < n; ++i) {
     float z = std::fma(pl.zdy, yf, std::fma(pl.zdx, static_cast<float>(x0 + i), pl.z0));
     z = std::min(std::max(z, 0.0f), 1.0f);
     out[i] = std::nearbyint(z * 16777215.0f);
   }
 }
+// Two quads' top-left, top-right, bottom-left (and bottom-left again) pixels in 8 lanes: their
+// .x (s) and .y (t) of slot k, as span_fused computes them.
+void quad_grad_fused(const LpPlanes &pl, int k, int x0, int y, int n, ts_vec4f *out) {
+  const int qa = x0 & ~1, qb = (x0 + n - 1) & ~1, qy = y & ~1;
+  const float fy = static_cast<float>(qy), fy1 = static_cast<float>(qy + 1);
+  const __m256 Y = _mm256_setr_ps(fy, fy, fy1, fy1, fy, fy, fy1, fy1);
+  const __m256 wdx = _mm256_set1_ps(pl.wdx), wdy = _mm256_set1_ps(pl.wdy), w0 = _mm256_set1_ps(pl.w0);
+  const __m256 sdx = _mm256_set1_ps(pl.dx[k][0]), sdy = _mm256_set1_ps(pl.dy[k][0]), s0 = _mm256_set1_ps(pl.a0[k][0]);
+  const __m256 tdx = _mm256_set1_ps(pl.dx[k][1]), tdy = _mm256_set1_ps(pl.dy[k][1]), t0 = _mm256_set1_ps(pl.a0[k][1]);
+  const __m256 one = _mm256_set1_ps(1.0f);
+  for (int qx = qa; qx <= qb; qx += 4) {
+    const float a = static_cast<float>(qx), b = static_cast<float>(qx + 2);
+    const __m256 X = _mm256_setr_ps(a, a + 1.0f, a, a, b, b + 1.0f, b, b);  // exact: integers below 2^24
+    const __m256 O = _mm256_div_ps(one, _mm256_fmadd_ps(wdy, Y, _mm256_fmadd_ps(wdx, X, w0)));
+    alignas(32) float S[8], T[8];
+    _mm256_store_ps(S, _mm256_mul_ps(_mm256_fmadd_ps(sdy, Y, _mm256_fmadd_ps(sdx, X, s0)), O));
+    _mm256_store_ps(T, _mm256_mul_ps(_mm256_fmadd_ps(tdy, Y, _mm256_fmadd_ps(tdx, X, t0)), O));
+    for (int h = 0; h < 2; ++h) {
+      const float *s = S + 4 * h, *t = T + 4 * h;
+      const ts_vec4f g = {s[1] - s[0], s[2] - s[0], t[1] - t[0], t[2] - t[0]};
+      const int p0 = std::max(x0, qx + 2 * h), p1 = std::min(x0 + n, qx + 2 * h + 2);
+      for (int p = p0; p < p1; ++p) out[p - x0] = g;
+    }
+  }
+}
 #pragma GCC pop_options
+
+typedef float LpF8 __attribute__((vector_size(32)));  // eight IEEE float ops at once, never fused
+
+void quad_grad_plain(const LpPlanes &pl, int k, int x0, int y, int n, ts_vec4f *out) {
+  const int qa = x0 & ~1, qb = (x0 + n - 1) & ~1, qy = y & ~1;
+  const float fy = static_cast<float>(qy), fy1 = static_cast<float>(qy + 1);
+  const LpF8 Y = {fy, fy, fy1, fy1, fy, fy, fy1, fy1};
+  for (int qx = qa; qx <= qb; qx += 4) {
+    const float a = static_cast<float>(qx), b = static_cast<float>(qx + 2);
+    const LpF8 X = {a, a + 1.0f, a, a, b, b + 1.0f, b, b};
+    const LpF8 O = 1.0f / (pl.wdy * Y + (pl.wdx * X + pl.w0));
+    const LpF8 S = (pl.dy[k][0] * Y + (pl.dx[k][0] * X + pl.a0[k][0])) * O;
+    const LpF8 T = (pl.dy[k][1] * Y + (pl.dx[k][1] * X + pl.a0[k][1])) * O;
+    for (int h = 0; h < 2; ++h) {
+      const int o = 4 * h;
+      const ts_vec4f g = {S[o + 1] - S[o], S[o + 2] - S[o], T[o + 1] - T[o], T[o + 2] - T[o]};
+      const int p0 = std::max(x0, qx + 2 * h), p1 = std::min(x0 + n, qx + 2 * h + 2);
+      for (int p = p0; p < p1; ++p) out[p - x0] = g;
+    }
+  }
+}
 
 void depth_plain(const LpPlanes &pl, int x0, int y, int n, float *out) {
   const float yf = static_cast<float>(y);
@@ -168,6 +244,14 @@ void lp_interp_span(const LpPlanes &pl, int x0, int y, int n, const int *used, i
     span_fused(pl, x0, y, n, used, nused, out, pitch, i0);
   else
     span_plain(pl, x0, y, n, used, nused, out, pitch, i0);
+}
+
+void lp_quad_grad_span(const LpPlanes &pl, int k, int x0, int y, int n, ts_vec4f *out) {
+  if (n <= 0) return;
+  if (ts_math_fused())
+    quad_grad_fused(pl, k, x0, y, n, out);
+  else
+    quad_grad_plain(pl, k, x0, y, n, out);
 }
 
 namespace {

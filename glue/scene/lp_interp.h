@@ -52,6 +52,13 @@ const float kLpDepth24Clear = 16777215.f;  // a depth buffer cleared to 1
 void lp_interp_span(const LpPlanes &pl, int x0, int y, int n, const int *used, int nused, ts_vec4f *out, int pitch,
                     int i0);
 
+// The quad derivatives of slot k's .xy for pixels x0 .. x0 + n - 1 of row y, every pixel
+// interpolated with pl (lp_bld_quad.c lp_build_packed_ddx_ddy_twocoord: per 2x2 quad at even
+// (x, y), top-right minus top-left and bottom-left minus top-left, the quad's pixels interpolated
+// as lp_interp_span does, covered or not): out[i] = (ds/dx, ds/dy, dt/dx, dt/dy). Two quads
+// per 8-lane vector; the same bits as lp_interp_span at each of the quad's pixels.
+void lp_quad_grad_span(const LpPlanes &pl, int k, int x0, int y, int n, ts_vec4f *out);
+
 // A vertex as the draw module holds it: clip position, window position (x, y, z, 1/w), the
 // 24 slot floats.
 struct LpVert {

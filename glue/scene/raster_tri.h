@@ -58,9 +58,10 @@ struct VisRows {
   int32_t *draw = nullptr, *tri = nullptr;
   uint8_t *sub = nullptr;
   float *b1 = nullptr, *b2 = nullptr, *depth = nullptr;
+  bool bary = true;  // false: b1, b2 are not written (a pass that interpolates with llvmpipe's planes)
 };
 // Rasterises rows ya..yb (inside v's rows) of s into v: depth test LESS against v.depth, then
-// the pixel's draw, triangle, sub-triangle and barycentrics.
+// the pixel's draw, triangle, sub-triangle and (v.bary) barycentrics.
 void scene_raster_rows(const ScreenTri &s, const VisRows &v, int ya, int yb);
 
 // The clip coordinates of a draw's vertices (u_view_proj * vec4(P, 1), summed as llvmpipe's
