@@ -86,6 +86,20 @@ void setup_planes(const float *const v[3], float W, float H, const int *used, in
   lp_setup_tri(in, m, W, H, used, nused, out);
 }
 
+// Triangle t of draw d's set-up from the worker's cache, made (setup_planes) on a miss.
+const LpTriSet &cached_planes(PlaneCache *pc, const float *vd, const uint32_t *indices, int d, int t, float W,
+                              float H, const int *used, int nused) {
+  PlaneCache::Entry &ce = pc->at(d, t);
+  if (ce.draw != d || ce.tri != t) {
+    const uint32_t *idx = &indices[static_cast<size_t>(t) * 3];
+    const float *v[3] = {&vd[idx[0] * kVStride], &vd[idx[1] * kVStride], &vd[idx[2] * kVStride]};
+    ce.draw = d;
+    ce.tri = t;
+    setup_planes(v, W, H, used, nused, &ce.set);
+  }
+  return ce.set;
+}
+
 // The pixel slots used[] of pixels x0 .. x0 + n - 1 of row y (one draw d; tri, b1, b2: the
 // visibility buffer's row) into pp[k * pitch + i]: with llvmpipe's plane equations of the
 // triangle as llvmpipe sets it up (planes: the buffer's pixels are the frame's), else (or where
@@ -165,15 +179,7 @@ void uv_grad_run(const float *vd, const uint32_t *indices, const int32_t *tri, c
     const int t = tri[x0 + q], sb = sub[x0 + q];
     int j = q + 1;
     while (j < n && tri[x0 + j] == t && sub[x0 + j] == sb) ++j;
-    PlaneCache::Entry &ce = pc->at(d, t);
-    if (ce.draw != d || ce.tri != t) {
-      const uint32_t *idx = &indices[static_cast<size_t>(t) * 3];
-      const float *v[3] = {&vd[idx[0] * kVStride], &vd[idx[1] * kVStride], &vd[idx[2] * kVStride]};
-      ce.draw = d;
-      ce.tri = t;
-      setup_planes(v, W, H, used, nused, &ce.set);
-    }
-    const LpTriSet &ts = ce.set;
+    const LpTriSet &ts = cached_planes(pc, vd, indices, d, t, W, H, used, nused);
     if (sb < ts.n && ts.valid[sb])
       lp_quad_grad_span(ts.pl[sb], uv_slot, x0 + q, y, j - q, grad + q);
     else
@@ -184,15 +190,7 @@ void uv_grad_run(const float *vd, const uint32_t *indices, const int32_t *tri, c
     const int t = tri[x0 + q];
     const int sb = sub ? sub[x0 + q] : 0;
     const int px = at ? at[x0 + q] % w : x0 + q, py = at ? at[x0 + q] / w : y;
-    PlaneCache::Entry &ce = pc->at(d, t);
-    if (ce.draw != d || ce.tri != t) {
-      const uint32_t *idx = &indices[static_cast<size_t>(t) * 3];
-      const float *v[3] = {&vd[idx[0] * kVStride], &vd[idx[1] * kVStride], &vd[idx[2] * kVStride]};
-      ce.draw = d;
-      ce.tri = t;
-      setup_planes(v, W, H, used, nused, &ce.set);
-    }
-    const LpTriSet &ts = ce.set;
+    const LpTriSet &ts = cached_planes(pc, vd, indices, d, t, W, H, used, nused);
     int s = -1;
     if (ts.n > 0) s = sub ? (sb < ts.n && ts.valid[sb] ? sb : -1) : lp_covering(ts, px, py);
     if (s < 0) {
