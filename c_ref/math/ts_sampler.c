@@ -196,6 +196,10 @@ ts_vec4d ts_texture2D_gradd(const ts_tex2d *t, ts_vec2d uv, const ts_vec4f *grad
   int l0, l1;
   float w, lod;
   ts_mip_select(t, *grad, &l0, &l1, &w, &lod);
+  return ts_mip_blendd(t, uv, l0, l1, w);
+}
+
+ts_vec4d ts_mip_blendd(const ts_tex2d *t, ts_vec2d uv, int l0, int l1, float w) {
   const ts_tex2d a = ts_mip_level(t, l0), b = ts_mip_level(t, l1);
   const ts_vec4d c0 = ts_texture2Dd(&a, uv);
   if (!(w > 0.0f)) return c0;

@@ -76,6 +76,9 @@ void ts_mip_select_rho2(const ts_tex2d *t, float rho2, int *l0, int *l1, float *
  * (not per quad). ts_sampler_grad.c (the Mesa functions; the spec's bound: ts_texture2DGradiv). */
 ts_vec4f ts_texture2DGradf(const ts_tex2d *t, ts_vec2f uv, ts_vec4f dpdx_dpdy);
 ts_vec4d ts_texture2DGradd(const ts_tex2d *t, ts_vec2d uv, ts_vec4f dpdx_dpdy); /* double reference */
+/* The double references' last step: levels l0 and l1 filtered in double, blended with weight w
+ * of l1 (w <= 0 or NaN: l0 alone). */
+ts_vec4d ts_mip_blendd(const ts_tex2d *t, ts_vec2d uv, int l0, int l1, float w);
 /* One level of t as a single-level texture (level 0: t itself without its chain). */
 ts_tex2d ts_mip_level(const ts_tex2d *t, int level);
 /* lp_build_fast_log2: (exponent - 1) + mantissa in [1, 2) (piecewise linear, exact at powers of 2). */

@@ -75,13 +75,7 @@ ts_vec4d ts_texture2DGradd(const ts_tex2d *t, ts_vec2d uv, ts_vec4f dpdx_dpdy) {
   int l0, l1;
   float w, lod;
   ts_mip_select_rho2(t, explicit_rho2(t, dpdx_dpdy), &l0, &l1, &w, &lod);
-  const ts_tex2d a = ts_mip_level(t, l0), b = ts_mip_level(t, l1);
-  const ts_vec4d c0 = ts_texture2Dd(&a, uv);
-  if (!(w > 0.0f)) return c0;
-  const ts_vec4d c1 = ts_texture2Dd(&b, uv);
-  const double wd = w;
-  return ts_v4d(c0.x + wd * (c1.x - c0.x), c0.y + wd * (c1.y - c0.y), c0.z + wd * (c1.z - c0.z),
-                c0.w + wd * (c1.w - c0.w));
+  return ts_mip_blendd(t, uv, l0, l1, w);
 }
 
 /* [lo, hi] of lambda for one pixel's (dPdx, dPdy); returns 0 when a derivative is not finite
